@@ -1,0 +1,9 @@
+//! Shared helpers for the cross-crate tests: where the fixture programs live.
+
+use std::path::PathBuf;
+
+/// Folder of the fixture programs (`tests/fixtures`), for native tests.
+#[must_use]
+pub fn fixtures_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("fixtures")
+}

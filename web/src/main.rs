@@ -1,0 +1,3 @@
+fn main() {
+    schwenkbar_web::start();
+}
