@@ -1,4 +1,15 @@
-//! Schwenkbar's browser shell (filled in by the foundation issue).
+//! Schwenkbar's browser shell: a thin Yew UI over `schwenkbar-core`.
+//! State lives in one reducer ([`state::AppState`]); components only render.
 
-/// Mounts the app on the document body.
-pub fn start() {}
+pub mod app;
+pub mod components;
+pub mod i18n;
+pub mod softkeys;
+pub mod state;
+
+pub use app::App;
+
+/// Mounts the app on the document body (the trunk entry point).
+pub fn start() {
+    yew::Renderer::<App>::new().render();
+}

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Builds the release bundle into dist/ and prints its size: index.html + JS + wasm + CSS,
+# each gzip -9, summed. Fails when the sum exceeds the budget (BUNDLE_BUDGET_KB).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# shellcheck source=scripts/env.sh
+source scripts/env.sh
+BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-120}"
+wasm_env trunk build --release --offline
+total=0
+for f in dist/index.html dist/*.js dist/*.wasm dist/*.css; do
+  [ -f "$f" ] || continue
+  raw=$(stat -c %s "$f"); gz=$(gzip -9 -c "$f" | wc -c); total=$((total + gz))
+  printf '    %-48s %8d bytes, gzip -9 %7d bytes\n' "$f" "$raw" "$gz"
+done
+printf "bundle: %d bytes gzip -9 (%s KB; budget %d KB)\n" "$total" "$(awk -v t="$total" "BEGIN {printf \"%.1f\", t/1024}")" "$BUNDLE_BUDGET_KB"
+[ "$total" -le $((BUNDLE_BUDGET_KB * 1024)) ] || { echo "bundle over budget" >&2; exit 1; }

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Sets up what is missing, then runs every test: formatting and lints, the native workspace
+# tests, the browser suite in headless Chromium, and the release bundle with its size.
+# Ends with one summary line "tests: N passed, N failed".
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+# shellcheck source=scripts/env.sh
+source scripts/env.sh
+mkdir -p target
+log=target/test-output.log
+: >"$log"
+
+echo; echo "==> rustfmt --check"
+cargo fmt --all -- --check
+
+echo; echo "==> clippy (warnings are errors)"
+cargo clippy --workspace --all-targets --quiet -- -D warnings
+
+echo; echo "==> native tests: cargo test --workspace"
+cargo test --workspace 2>&1 | tee -a "$log"
+
+echo; echo "==> browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
+wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | tee -a "$log"
+
+echo; echo "==> release bundle: trunk build --release --offline"
+bash scripts/bundle.sh
+
+passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4} END {print s+0}')
+failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')
+echo
+echo "tests: $passed passed, $failed failed"
+[ "$failed" = 0 ]

@@ -1,0 +1,7 @@
+//! Small presentational components: each gets data and callbacks as props.
+
+pub mod dialog_line;
+pub mod header;
+pub mod program_pane;
+pub mod softkey_row;
+pub mod view3d;

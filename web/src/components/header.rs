@@ -1,0 +1,22 @@
+//! The mode header at the top of the TNC screen.
+
+use yew::prelude::*;
+
+use crate::i18n::Lang;
+
+#[derive(Properties, PartialEq)]
+pub struct HeaderProps {
+    pub lang: Lang,
+}
+
+#[function_component(Header)]
+pub fn header(props: &HeaderProps) -> Html {
+    let l = props.lang;
+    html! {
+        <header class="mode-header">
+            <span class="mode">{ l.t("Programmieren", "Programming") }</span>
+            <span class="title">{ "Schwenkbar" }</span>
+            <span class="subtitle">{ l.t("Bearbeitungsebene schwenken", "Tilting the working plane") }</span>
+        </header>
+    }
+}
