@@ -5,3 +5,13 @@
 //! block) → kinematics (orientation ↔ axis angles).
 
 pub mod plane;
+pub mod ast;
+pub mod diag;
+pub mod format;
+pub mod parse;
+pub mod sample;
+
+pub use ast::{Block, BlockBody, Program};
+pub use diag::{Diagnostic, Lang, Severity};
+pub use format::format_program;
+pub use parse::parse;
