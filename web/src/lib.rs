@@ -4,6 +4,7 @@
 pub mod app;
 pub mod components;
 pub mod i18n;
+pub mod render;
 pub mod softkeys;
 pub mod state;
 

@@ -1,0 +1,13 @@
+#version 300 es
+// Coloured line segments (the toolpath), transformed with the workpiece.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_colour;
+
+uniform mat4 u_mvp;
+
+out vec3 v_colour;
+
+void main() {
+  v_colour = a_colour;
+  gl_Position = u_mvp * vec4(a_position, 1.0);
+}
