@@ -1,7 +1,10 @@
 //! Small presentational components: each gets data and callbacks as props.
 
 pub mod dialog_line;
+pub mod gl_canvas;
 pub mod header;
+pub mod right_hand_demo;
 pub mod program_pane;
 pub mod softkey_row;
 pub mod view3d;
+pub mod viewer;
