@@ -33,7 +33,8 @@ fn document() -> web_sys::Document {
 
 /// A canvas of `w × h` CSS pixels in the page.
 fn canvas(w: u32, h: u32) -> HtmlCanvasElement {
-    let c: HtmlCanvasElement = document().create_element("canvas").expect("canvas").dyn_into().expect("a canvas");
+    let c: HtmlCanvasElement =
+        document().create_element("canvas").expect("canvas").dyn_into().expect("a canvas");
     c.set_attribute("style", &format!("width:{w}px;height:{h}px;display:block")).expect("style");
     document().body().expect("body").append_child(&c).expect("append");
     c
@@ -47,7 +48,8 @@ async fn sleep(ms: u64) {
 fn pixels(gl: &Gl) -> (Vec<u8>, i32, i32) {
     let (w, h) = (gl.drawing_buffer_width(), gl.drawing_buffer_height());
     let mut buf = vec![0u8; (w * h * 4) as usize];
-    gl.read_pixels_with_opt_u8_array(0, 0, w, h, Gl::RGBA, Gl::UNSIGNED_BYTE, Some(&mut buf)).expect("readPixels");
+    gl.read_pixels_with_opt_u8_array(0, 0, w, h, Gl::RGBA, Gl::UNSIGNED_BYTE, Some(&mut buf))
+        .expect("readPixels");
     (buf, w, h)
 }
 
@@ -96,7 +98,8 @@ async fn the_renderer_draws_the_blank_where_the_camera_looks() {
     let m = ac_table();
     let state = SceneState::default();
     // The default camera looks at the blank's centre (M-CS 0, 0, −20 with the centred preset).
-    let labels = r.paint(&Scene { machine: &m, state: &state, triads: NO_TRIADS }, &Camera::default()).expect("paint");
+    let labels =
+        r.paint(&Scene { machine: &m, state: &state, triads: NO_TRIADS }, &Camera::default()).expect("paint");
     assert!(labels.is_empty(), "no triads, no labels");
     let (buf, w, h) = pixels(r.gl());
     let centre = at(&buf, w, w / 2, h / 2, h);
@@ -242,7 +245,9 @@ async fn the_3d_view_component_paints_labels_and_the_right_hand_demo_writes_the_
     document().body().expect("body").append_child(&demo).expect("append");
     yew::Renderer::<schwenkbar_web::components::right_hand_demo::RightHandDemo>::with_root_and_props(
         demo.clone(),
-        schwenkbar_web::components::right_hand_demo::RightHandDemoProps { lang: schwenkbar_web::i18n::Lang::De },
+        schwenkbar_web::components::right_hand_demo::RightHandDemoProps {
+            lang: schwenkbar_web::i18n::Lang::De,
+        },
     )
     .render();
     sleep(100).await;
@@ -268,7 +273,10 @@ async fn frame_time_with_a_100000_segment_toolpath_is_within_budget() {
     let path: Vec<PathPoint> = (0..=100_000)
         .map(|i| {
             let t = f64::from(i) * 0.01;
-            PathPoint { at: DVec3::new(50.0 + 45.0 * t.cos(), 50.0 + 45.0 * t.sin(), -(t * 0.03)), rapid: i % 50 == 0 }
+            PathPoint {
+                at: DVec3::new(50.0 + 45.0 * t.cos(), 50.0 + 45.0 * t.sin(), -(t * 0.03)),
+                rapid: i % 50 == 0,
+            }
         })
         .collect();
     r.set_toolpath(&path).expect("upload once");
@@ -295,7 +303,10 @@ async fn frame_time_with_a_100000_segment_toolpath_is_within_budget() {
     }
     times.sort_by(f64::total_cmp);
     let median = times[times.len() / 2];
-    console_log!("paint CPU time at 1920x1080 with 100,000 segments: median {median:.3} ms, p90 {:.3} ms", times[times.len() * 9 / 10]);
+    console_log!(
+        "paint CPU time at 1920x1080 with 100,000 segments: median {median:.3} ms, p90 {:.3} ms",
+        times[times.len() * 9 / 10]
+    );
     assert!(median <= 2.0, "median {median} ms over the 2 ms budget");
     c.remove();
 }

@@ -3,8 +3,9 @@
 pub mod dialog_line;
 pub mod gl_canvas;
 pub mod header;
-pub mod right_hand_demo;
+pub mod preview;
 pub mod program_pane;
+pub mod right_hand_demo;
 pub mod softkey_row;
 pub mod view3d;
 pub mod viewer;

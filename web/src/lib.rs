@@ -10,7 +10,15 @@ pub mod state;
 
 pub use app::App;
 
-/// Mounts the app on the document body (the trunk entry point).
+/// Mounts the app on the document body (the trunk entry point). A URL fragment naming a 3D
+/// preview page (`#3d:…`, `#rechte-hand`; see `components::preview`) mounts that page instead.
 pub fn start() {
-    yew::Renderer::<App>::new().render();
+    let fragment = web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
+    let fragment = fragment.trim_start_matches('#');
+    if components::preview::is_preview(fragment) {
+        let props = components::preview::PreviewProps { fragment: fragment.to_string().into() };
+        yew::Renderer::<components::preview::Preview>::with_props(props).render();
+    } else {
+        yew::Renderer::<App>::new().render();
+    }
 }

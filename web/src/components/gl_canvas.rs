@@ -65,10 +65,13 @@ pub struct GlCanvasProps {
     pub on_pointer: Option<Callback<(String, PointerEvent)>>,
 }
 
+/// The animation-frame callback, reachable from itself to schedule the next frame.
+type FrameSlot = Rc<RefCell<Option<Closure<dyn FnMut(f64)>>>>;
+
 /// Starts the loop: paints dirty frames until the returned guard is dropped.
 fn start_loop(viewer: Rc<RefCell<Viewer>>, status: UseStateHandle<GlStatus>) -> impl FnOnce() {
     let handle = Rc::new(Cell::new(None::<i32>));
-    let closure: Rc<RefCell<Option<Closure<dyn FnMut(f64)>>>> = Rc::new(RefCell::new(None));
+    let closure: FrameSlot = Rc::new(RefCell::new(None));
     let (h, c) = (handle.clone(), closure.clone());
     // The handle's value is a snapshot; remember what was reported to set the state only on a
     // change (every set re-renders).

@@ -24,7 +24,13 @@ pub struct RightHandDemoProps {
 
 /// The demo's fixed camera: front right above, so every axis points partly at the viewer.
 fn demo_camera() -> Camera {
-    Camera { target: Vec3::new(0.0, 0.0, 40.0), azimuth: -55.0, elevation: 24.0, distance: 820.0, fov_y: 35.0 }
+    Camera {
+        target: Vec3::new(0.0, 20.0, 40.0),
+        azimuth: -55.0,
+        elevation: 24.0,
+        distance: 640.0,
+        fov_y: 35.0,
+    }
 }
 
 /// A drag in progress: where it started and the angle then.
@@ -68,7 +74,8 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
         }
     };
     let on_pointer = {
-        let (viewer, drag, axis, angle, set_angle) = (viewer.clone(), drag.clone(), *axis, *angle, set_angle.clone());
+        let (viewer, drag, axis, angle, set_angle) =
+            (viewer.clone(), drag.clone(), *axis, *angle, set_angle.clone());
         Callback::from(move |(kind, e): (String, PointerEvent)| {
             let at = (e.offset_x() as f32, e.offset_y() as f32);
             let mut d = drag.borrow_mut();
@@ -106,7 +113,9 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let on_slider = {
         let set_angle = set_angle.clone();
         Callback::from(move |e: InputEvent| {
-            if let Some(v) = e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.value().parse::<f64>().ok()) {
+            if let Some(v) =
+                e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.value().parse::<f64>().ok())
+            {
                 set_angle(v);
             }
         })

@@ -56,7 +56,7 @@ pub fn view3d(props: &View3dProps) -> Html {
             let mut v = viewer.borrow_mut();
             v.content = m.clone().map(|machine| Content::Machine {
                 machine,
-                state: (**state).clone(),
+                state: Box::new((**state).clone()),
                 triads: *triads,
             });
             v.dirty = true;

@@ -17,7 +17,11 @@ use crate::render::toolpath::PathPoint;
 
 /// What the viewer draws each frame it is dirty.
 pub enum Content {
-    Machine { machine: Rc<Machine>, state: SceneState, triads: Triads },
+    Machine {
+        machine: Rc<Machine>,
+        state: Box<SceneState>,
+        triads: Triads,
+    },
     /// A prepared draw list (the right-hand demo).
     List(DrawList),
 }
@@ -123,7 +127,8 @@ impl Viewer {
         let Some(layer) = &self.labels else { return };
         let Some(doc) = web_sys::window().and_then(|w| w.document()) else { return };
         while self.pool.len() < labels.len() {
-            let Some(el) = doc.create_element("span").ok().and_then(|e| e.dyn_into::<HtmlElement>().ok()) else {
+            let Some(el) = doc.create_element("span").ok().and_then(|e| e.dyn_into::<HtmlElement>().ok())
+            else {
                 return;
             };
             if layer.append_child(&el).is_err() {
@@ -137,7 +142,8 @@ impl Viewer {
                 Some(l) => {
                     el.set_text_content(Some(l.text));
                     el.set_class_name(&format!("lbl lbl-{}", l.kind));
-                    let _ = style.set_property("transform", &format!("translate({:.1}px, {:.1}px)", l.x, l.y));
+                    let _ =
+                        style.set_property("transform", &format!("translate({:.1}px, {:.1}px)", l.x, l.y));
                     let _ = style.set_property("display", "block");
                 }
                 None => {

@@ -67,7 +67,7 @@ pub struct Camera {
 impl Default for Camera {
     fn default() -> Self {
         let (azimuth, elevation) = Preset::Iso.angles();
-        Camera { target: Vec3::new(0.0, 0.0, -20.0), azimuth, elevation, distance: 1400.0, fov_y: 35.0 }
+        Camera { target: Vec3::new(0.0, 0.0, -20.0), azimuth, elevation, distance: 1800.0, fov_y: 35.0 }
     }
 }
 
@@ -247,7 +247,10 @@ mod tests {
         let before = screen(&c, Vec3::ZERO);
         c.pan(10.0, 0.0, 100.0);
         let after = screen(&c, Vec3::ZERO);
-        assert!((after.0 - before.0 - 10.0).abs() < 0.05, "the origin follows the drag: {before:?} → {after:?}");
+        assert!(
+            (after.0 - before.0 - 10.0).abs() < 0.05,
+            "the origin follows the drag: {before:?} → {after:?}"
+        );
         c.pan(0.0, 10.0, 100.0);
         assert!((screen(&c, Vec3::ZERO).1 - after.1 - 10.0).abs() < 0.05);
     }

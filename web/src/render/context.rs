@@ -27,7 +27,8 @@ impl ContextWatch {
         // Adding a listener fails only for a detached, exotic target; the view then simply
         // does not recover from a loss, which it reports like a missing WebGL2.
         let _ = canvas.add_event_listener_with_callback("webglcontextlost", lost.as_ref().unchecked_ref());
-        let _ = canvas.add_event_listener_with_callback("webglcontextrestored", restored.as_ref().unchecked_ref());
+        let _ = canvas
+            .add_event_listener_with_callback("webglcontextrestored", restored.as_ref().unchecked_ref());
         ContextWatch { canvas: canvas.clone(), lost, restored }
     }
 }
@@ -37,8 +38,9 @@ impl Drop for ContextWatch {
         let _ = self
             .canvas
             .remove_event_listener_with_callback("webglcontextlost", self.lost.as_ref().unchecked_ref());
-        let _ = self
-            .canvas
-            .remove_event_listener_with_callback("webglcontextrestored", self.restored.as_ref().unchecked_ref());
+        let _ = self.canvas.remove_event_listener_with_callback(
+            "webglcontextrestored",
+            self.restored.as_ref().unchecked_ref(),
+        );
     }
 }

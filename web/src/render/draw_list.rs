@@ -18,13 +18,18 @@ pub enum Shape {
     CurlArc,
     /// Square of side 1 in the XY plane.
     Square,
+    /// A finger of the stylised hand: like [`Shape::CurlArc`] but with a thick tube (0.33).
+    Finger,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 5] = [Shape::Cube, Shape::Cylinder, Shape::Cone, Shape::CurlArc, Shape::Square];
+    /// Every shape, in discriminant order (the renderer's mesh table is indexed by `shape as usize`).
+    pub const ALL: [Shape; 6] =
+        [Shape::Cube, Shape::Cylinder, Shape::Cone, Shape::CurlArc, Shape::Square, Shape::Finger];
     /// Sweep of [`Shape::CurlArc`] in radians.
     pub const CURL_SWEEP: f32 = 1.5 * std::f32::consts::PI;
     pub const CURL_TUBE: f32 = 0.06;
+    pub const FINGER_TUBE: f32 = 0.33;
 }
 
 /// How an instance is drawn.
@@ -104,6 +109,13 @@ pub fn cuboid(pose: DAffine3, min: DVec3, max: DVec3) -> DAffine3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn all_lists_every_shape_at_its_discriminant() {
+        for (i, s) in Shape::ALL.iter().enumerate() {
+            assert_eq!(*s as usize, i, "{s:?}");
+        }
+    }
 
     #[test]
     fn rod_maps_the_unit_cylinder_between_its_end_points() {

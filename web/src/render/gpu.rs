@@ -170,7 +170,8 @@ impl GpuLines {
         );
         interleaved_3_3(gl);
         gl.bind_vertex_array(None);
-        let vertices = i32::try_from(lines.vertex_count()).map_err(|_| RenderError::Resource("line count"))?;
+        let vertices =
+            i32::try_from(lines.vertex_count()).map_err(|_| RenderError::Resource("line count"))?;
         Ok(GpuLines { gl: gl.clone(), vao, vbo, vertices })
     }
 

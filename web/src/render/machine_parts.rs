@@ -54,15 +54,26 @@ pub fn machine(list: &mut DrawList, m: &Machine, s: &SceneState) -> Poses {
     let style = Style { pass: Pass::Opaque, tint: None };
     let layout = Layout::new(m, s);
     fixed_parts(list, m, &layout, &p, style);
-    moving_parts(list, m, s, &layout, &p, style);
+    moving_parts(list, m, s, &layout, &p, style, Sides { table: true, head: true });
     p
+}
+
+/// Which sides of the chain to draw.
+#[derive(Debug, Clone, Copy)]
+struct Sides {
+    table: bool,
+    head: bool,
 }
 
 /// The moving parts at the other candidate's rotary values, translucent.
 pub fn ghost(list: &mut DrawList, m: &Machine, s: &SceneState, rotary: &AxisValues) {
     let p = poses(m, rotary, s.axes.linear);
     let layout = Layout::new(m, s);
-    moving_parts(list, m, s, &layout, &p, Style { pass: Pass::Translucent, tint: Some(GHOST) });
+    // Only the side that rotary axes move: a ghost over parts that stand still would only veil
+    // them.
+    let has = |c: Carrier| m.joints().iter().any(|j| j.carrier == c);
+    let sides = Sides { table: has(Carrier::Table), head: has(Carrier::Head) };
+    moving_parts(list, m, s, &layout, &p, Style { pass: Pass::Translucent, tint: Some(GHOST) }, sides);
 }
 
 /// Sizes derived once per state from the machine and the blank (all in home coordinates).
@@ -141,7 +152,11 @@ fn fixed_parts(list: &mut DrawList, m: &Machine, layout: &Layout, p: &Poses, sty
     let pass = style.pass;
     list.push(
         Shape::Cube,
-        cuboid(DAffine3::IDENTITY, DVec3::new(-380.0, -320.0, bed_top - 60.0), DVec3::new(380.0, 440.0, bed_top)),
+        cuboid(
+            DAffine3::IDENTITY,
+            DVec3::new(-380.0, -320.0, bed_top - 60.0),
+            DVec3::new(380.0, 440.0, bed_top),
+        ),
         style.colour(BED),
         pass,
     );
@@ -224,10 +239,34 @@ fn spindle_top_z_default() -> f64 {
     Tool::default().length + HOLDER_LEN + SPINDLE_LEN
 }
 
-fn moving_parts(list: &mut DrawList, m: &Machine, s: &SceneState, layout: &Layout, p: &Poses, style: Style) {
-    let pass = style.pass;
+fn moving_parts(
+    list: &mut DrawList,
+    m: &Machine,
+    s: &SceneState,
+    layout: &Layout,
+    p: &Poses,
+    style: Style,
+    sides: Sides,
+) {
     let [slave, master] = m.joints();
-    // Table side.
+    if sides.table {
+        table_side(list, s, layout, p, style, slave, master);
+    }
+    if sides.head {
+        head(list, m, &s.tool, p, style);
+    }
+}
+
+fn table_side(
+    list: &mut DrawList,
+    s: &SceneState,
+    layout: &Layout,
+    p: &Poses,
+    style: Style,
+    slave: &RotaryJoint,
+    master: &RotaryJoint,
+) {
+    let pass = style.pass;
     if slave.carrier == Carrier::Table {
         let pose = p.joints[0];
         let top = disc_centre(layout, slave);
@@ -253,16 +292,32 @@ fn moving_parts(list: &mut DrawList, m: &Machine, s: &SceneState, layout: &Layou
             let span = 2.0 * (layout.table_r + 25.0);
             list.push(
                 Shape::Cube,
-                pose * beam(under + slave.direction * 12.0, under - slave.direction * 12.0, span, layout.table_r * 1.6, d),
+                pose * beam(
+                    under + slave.direction * 12.0,
+                    under - slave.direction * 12.0,
+                    span,
+                    layout.table_r * 1.6,
+                    d,
+                ),
                 style.colour(CRADLE),
                 pass,
             );
             for (q, out) in [(qa, -d), (qb, d)] {
                 let plate_end = under + (q - master.pivot - d * (under - master.pivot).dot(d)).dot(d) * d;
                 if (plate_end - q).length() > 1.0 {
-                    list.push(Shape::Cube, pose * beam(plate_end, q, 30.0, 110.0, d), style.colour(CRADLE), pass);
+                    list.push(
+                        Shape::Cube,
+                        pose * beam(plate_end, q, 30.0, 110.0, d),
+                        style.colour(CRADLE),
+                        pass,
+                    );
                 }
-                list.push(Shape::Cylinder, pose * rod(q - out * 15.0, q + out * 80.0, 42.0), style.colour(CRADLE), pass);
+                list.push(
+                    Shape::Cylinder,
+                    pose * rod(q - out * 15.0, q + out * 80.0, 42.0),
+                    style.colour(CRADLE),
+                    pass,
+                );
             }
         }
     }
@@ -273,7 +328,6 @@ fn moving_parts(list: &mut DrawList, m: &Machine, s: &SceneState, layout: &Layou
         style.colour(BLANK),
         pass,
     );
-    head(list, m, &s.tool, p, style);
 }
 
 fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) {
@@ -282,7 +336,12 @@ fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) 
     // Tool, holder and spindle ride on the tool link (tool tip at the origin at home).
     let t = p.tool;
     list.push(Shape::Cylinder, t * rod(DVec3::ZERO, DVec3::Z * (len * 0.5), r), style.colour(FLUTE), pass);
-    list.push(Shape::Cylinder, t * rod(DVec3::Z * (len * 0.5), DVec3::Z * len, r * 0.85), style.colour(TOOL), pass);
+    list.push(
+        Shape::Cylinder,
+        t * rod(DVec3::Z * (len * 0.5), DVec3::Z * len, r * 0.85),
+        style.colour(TOOL),
+        pass,
+    );
     list.push(
         Shape::Cone,
         t * DAffine3::from_mat3_translation(
@@ -293,7 +352,12 @@ fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) 
         pass,
     );
     let spindle_top = DVec3::Z * (len + HOLDER_LEN + SPINDLE_LEN);
-    list.push(Shape::Cylinder, t * rod(DVec3::Z * (len + HOLDER_LEN), spindle_top, SPINDLE_R), style.colour(SPINDLE), pass);
+    list.push(
+        Shape::Cylinder,
+        t * rod(DVec3::Z * (len + HOLDER_LEN), spindle_top, SPINDLE_R),
+        style.colour(SPINDLE),
+        pass,
+    );
 
     // Head axes, from the tool outwards: each housing joins the part below to its own pivot.
     let heads: Vec<(usize, &RotaryJoint)> =
@@ -302,7 +366,12 @@ fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) 
     for &(i, j) in heads.iter().rev() {
         let pose = p.joints[i];
         if (j.pivot - below).length() > 1.0 {
-            list.push(Shape::Cube, pose * beam(below, j.pivot, 100.0, 100.0, j.direction), style.colour(HEAD), pass);
+            list.push(
+                Shape::Cube,
+                pose * beam(below, j.pivot, 100.0, 100.0, j.direction),
+                style.colour(HEAD),
+                pass,
+            );
         }
         list.push(
             Shape::Cylinder,
@@ -315,7 +384,12 @@ fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) 
     // The vertical ram of the carriage down to the first head axis (or the spindle).
     let top = DVec3::Z * carriage_top(m);
     if (top - below).length() > 1.0 {
-        list.push(Shape::Cube, p.carriage * beam(below, top, 110.0, 110.0, DVec3::X), style.colour(HEAD), pass);
+        list.push(
+            Shape::Cube,
+            p.carriage * beam(below, top, 110.0, 110.0, DVec3::X),
+            style.colour(HEAD),
+            pass,
+        );
     }
 }
 
@@ -375,6 +449,13 @@ mod tests {
         let mut full = DrawList::default();
         machine(&mut full, &m, &SceneState::default());
         assert!(list.instances.len() < full.instances.len(), "no bed, column or bearing in the ghost");
+        // Table-table: the head stands still, so the ghost has no tool.
+        let m = Machine::builtin("ac-table").expect("machine");
+        let mut list = DrawList::default();
+        ghost(&mut list, &m, &SceneState::default(), &AxisValues::default().with(RotaryAxis::A, -45.0));
+        let tool_like = list.instances.iter().filter(|i| i.shape == Shape::Cone).count();
+        assert_eq!(tool_like, 0, "no tool holder (cone) in a table-table ghost");
+        assert!(list.instances.iter().any(|i| i.shape == Shape::Cylinder), "but the rotary table");
     }
 
     #[test]

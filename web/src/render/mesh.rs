@@ -44,12 +44,60 @@ impl Mesh {
 pub fn cuboid(min: Vec3, max: Vec3) -> Mesh {
     let mut m = Mesh::default();
     let faces: [(Vec3, [Vec3; 4]); 6] = [
-        (Vec3::X, [Vec3::new(max.x, min.y, min.z), Vec3::new(max.x, max.y, min.z), max, Vec3::new(max.x, min.y, max.z)]),
-        (-Vec3::X, [min, Vec3::new(min.x, min.y, max.z), Vec3::new(min.x, max.y, max.z), Vec3::new(min.x, max.y, min.z)]),
-        (Vec3::Y, [Vec3::new(min.x, max.y, min.z), Vec3::new(min.x, max.y, max.z), max, Vec3::new(max.x, max.y, min.z)]),
-        (-Vec3::Y, [min, Vec3::new(max.x, min.y, min.z), Vec3::new(max.x, min.y, max.z), Vec3::new(min.x, min.y, max.z)]),
-        (Vec3::Z, [Vec3::new(min.x, min.y, max.z), Vec3::new(max.x, min.y, max.z), max, Vec3::new(min.x, max.y, max.z)]),
-        (-Vec3::Z, [min, Vec3::new(min.x, max.y, min.z), Vec3::new(max.x, max.y, min.z), Vec3::new(max.x, min.y, min.z)]),
+        (
+            Vec3::X,
+            [
+                Vec3::new(max.x, min.y, min.z),
+                Vec3::new(max.x, max.y, min.z),
+                max,
+                Vec3::new(max.x, min.y, max.z),
+            ],
+        ),
+        (
+            -Vec3::X,
+            [
+                min,
+                Vec3::new(min.x, min.y, max.z),
+                Vec3::new(min.x, max.y, max.z),
+                Vec3::new(min.x, max.y, min.z),
+            ],
+        ),
+        (
+            Vec3::Y,
+            [
+                Vec3::new(min.x, max.y, min.z),
+                Vec3::new(min.x, max.y, max.z),
+                max,
+                Vec3::new(max.x, max.y, min.z),
+            ],
+        ),
+        (
+            -Vec3::Y,
+            [
+                min,
+                Vec3::new(max.x, min.y, min.z),
+                Vec3::new(max.x, min.y, max.z),
+                Vec3::new(min.x, min.y, max.z),
+            ],
+        ),
+        (
+            Vec3::Z,
+            [
+                Vec3::new(min.x, min.y, max.z),
+                Vec3::new(max.x, min.y, max.z),
+                max,
+                Vec3::new(min.x, max.y, max.z),
+            ],
+        ),
+        (
+            -Vec3::Z,
+            [
+                min,
+                Vec3::new(min.x, max.y, min.z),
+                Vec3::new(max.x, max.y, min.z),
+                Vec3::new(max.x, min.y, min.z),
+            ],
+        ),
     ];
     for (n, [a, b, c, d]) in faces {
         let (ia, ib, ic, id) = (m.push(a, n), m.push(b, n), m.push(c, n), m.push(d, n));
@@ -101,7 +149,11 @@ pub fn cone_frustum(r0: f32, r1: f32, height: f32, segments: u32) -> Mesh {
         for i in 0..segments {
             let (a, b) = (first + i, first + i + 1);
             // Counter-clockwise seen from outside.
-            if n.z > 0.0 { m.indices.extend_from_slice(&[centre, a, b]) } else { m.indices.extend_from_slice(&[centre, b, a]) }
+            if n.z > 0.0 {
+                m.indices.extend_from_slice(&[centre, a, b])
+            } else {
+                m.indices.extend_from_slice(&[centre, b, a])
+            }
         }
     }
     m
@@ -203,7 +255,8 @@ mod tests {
 
     #[test]
     fn cylinder_cone_and_torus_are_well_formed() {
-        for m in [cylinder(5.0, 50.0, 24), cone(2.0, 6.0, 16), torus_arc(20.0, 1.0, 4.7, 32, 8), square(10.0)] {
+        for m in [cylinder(5.0, 50.0, 24), cone(2.0, 6.0, 16), torus_arc(20.0, 1.0, 4.7, 32, 8), square(10.0)]
+        {
             check_indices(&m);
             check_winding(&m);
         }

@@ -46,7 +46,7 @@ pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3) -> Poses {
     let mut table = DAffine3::IDENTITY;
     for (i, j) in chain.iter().enumerate().rev() {
         if j.carrier == Carrier::Table {
-            table = table * joint_motion(j, -value(j));
+            table *= joint_motion(j, -value(j));
             joints[i] = table;
         }
     }
@@ -55,7 +55,7 @@ pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3) -> Poses {
     let mut head = carriage;
     for (i, j) in chain.iter().enumerate() {
         if j.carrier == Carrier::Head {
-            head = head * joint_motion(j, value(j));
+            head *= joint_motion(j, value(j));
             joints[i] = head;
         }
     }
@@ -125,7 +125,10 @@ mod tests {
         let v = AxisValues::default().with(RotaryAxis::B, 180.0);
         let p = poses(&m, &v, DVec3::ZERO);
         let axis = p.tool.transform_vector3(DVec3::Z);
-        assert!((axis - DVec3::Y).length() < 1e-9, "machine description: B180 = tool horizontal (+Y): {axis}");
+        assert!(
+            (axis - DVec3::Y).length() < 1e-9,
+            "machine description: B180 = tool horizontal (+Y): {axis}"
+        );
     }
 
     #[test]

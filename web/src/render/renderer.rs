@@ -71,6 +71,7 @@ fn unit_mesh(s: Shape) -> mesh::Mesh {
         Shape::Cone => mesh::cone(1.0, 1.0, 24),
         Shape::CurlArc => mesh::torus_arc(1.0, Shape::CURL_TUBE, Shape::CURL_SWEEP, 48, 10),
         Shape::Square => mesh::square(1.0),
+        Shape::Finger => mesh::torus_arc(1.0, Shape::FINGER_TUBE, Shape::CURL_SWEEP, 24, 10),
     }
 }
 
@@ -227,7 +228,11 @@ fn draw_pass(gl: &Gl, gpu: &Gpu, list: &DrawList, pass: Pass, view: &DMat4) {
             continue;
         }
         let normal: Mat3 = m3.inverse().transpose().as_mat3();
-        gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.model_view.as_ref(), false, &mv.as_mat4().to_cols_array());
+        gl.uniform_matrix4fv_with_f32_array(
+            gpu.lit_u.model_view.as_ref(),
+            false,
+            &mv.as_mat4().to_cols_array(),
+        );
         gl.uniform_matrix3fv_with_f32_array(gpu.lit_u.normal_matrix.as_ref(), false, &normal.to_cols_array());
         let c = inst.colour;
         gl.uniform4f(gpu.lit_u.colour.as_ref(), c[0], c[1], c[2], c[3]);

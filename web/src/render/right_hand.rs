@@ -147,7 +147,7 @@ pub fn check(task: (TurnAxis, f64), axis: TurnAxis, angle: f64) -> Verdict {
 }
 
 /// Skin colour of the stylised hand, translucent so the arrows show through.
-const SKIN: [f32; 4] = [0.96, 0.76, 0.60, 0.55];
+const SKIN: [f32; 4] = [0.96, 0.76, 0.60, 0.72];
 const PLANE_SIDE: f64 = 200.0;
 
 /// The demo scene: the turned plane and its triad, the fixed reference triad, the thumb arrow,
@@ -156,13 +156,16 @@ const PLANE_SIDE: f64 = 200.0;
 pub fn draw_list(axis: TurnAxis, angle: f64) -> DrawList {
     let mut list = DrawList::default();
     let r = orientation(axis, angle);
-    let m = DAffine3::from_mat3_translation(r * DMat3::from_diagonal(DVec3::new(PLANE_SIDE, PLANE_SIDE, 1.0)), DVec3::ZERO);
+    let m = DAffine3::from_mat3_translation(
+        r * DMat3::from_diagonal(DVec3::new(PLANE_SIDE, PLANE_SIDE, 1.0)),
+        DVec3::ZERO,
+    );
     list.push(Shape::Square, m, [PLANE[0], PLANE[1], PLANE[2], 0.45], Pass::Translucent);
     // The untilted axes, thin and grey, for reference.
     for u in [DVec3::X, DVec3::Y, DVec3::Z] {
         list.push(Shape::Cylinder, rod(DVec3::ZERO, u * 150.0, 1.2), [0.55, 0.58, 0.62, 1.0], Pass::Opaque);
     }
-    triad(&mut list, DVec3::ZERO, r, 110.0, "");
+    triad(&mut list, DVec3::ZERO, r, 110.0, "", "frame");
     list.labels.retain(|l| !l.text.is_empty());
 
     // Thumb along +axis, the curl around it (rotation about the thumb = positive direction).
@@ -182,33 +185,54 @@ pub fn draw_list(axis: TurnAxis, angle: f64) -> DrawList {
     let (s, c) = end.sin_cos();
     let tip_at = curl_at + frame * DVec3::new(c, s, 0.0) * radius;
     let tangent = frame * DVec3::new(-s, c, 0.0);
-    list.push(Shape::Cone, rod(tip_at - tangent * 2.0, tip_at + tangent * 16.0, 6.5), [0.98, 0.62, 0.10, 1.0], Pass::Opaque);
+    list.push(
+        Shape::Cone,
+        rod(tip_at - tangent * 2.0, tip_at + tangent * 16.0, 6.5),
+        [0.98, 0.62, 0.10, 1.0],
+        Pass::Opaque,
+    );
 
-    hand(&mut list, frame, curl_at);
+    hand(&mut list, frame, u * 75.0);
     list.labels.push(Label { text: axis.letter(), at: u * 205.0, kind: "axis" });
     list
 }
 
-/// A right hand in the same pose: fist around the axis, thumb up the axis, four fingers curling
-/// like the arrow (a palm block, a thumb rod and four finger arcs).
-fn hand(list: &mut DrawList, frame: DMat3, at: DVec3) {
-    let local = |p: DVec3| at + frame * p;
-    // Palm: beside the axis, on the side where the fingers start (local −Y, as the arc starts at
-    // +X and turns towards +Y, the palm closes the loop from −Y to +X).
+/// A right hand in the same pose: a fist round the axis, the thumb up along it, the four fingers
+/// curling like the arrow (a palm block, a thumb rod and four thick finger arcs).
+fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
+    let local = |p: DVec3| grip + frame * p;
+    // The palm lies on the local −X side of the axis; the fingers leave it there (180°) and wrap
+    // counter-clockwise about the thumb (+Z local) through −Y, +X to +Y: the positive direction.
+    let from_palm = frame * DMat3::from_rotation_z(std::f64::consts::PI);
     list.push(
         Shape::Cube,
-        DAffine3::from_mat3_translation(frame * DMat3::from_diagonal(DVec3::new(26.0, 16.0, 70.0)), local(DVec3::new(-8.0, -34.0, -45.0))),
+        DAffine3::from_mat3_translation(
+            frame * DMat3::from_diagonal(DVec3::new(16.0, 54.0, 70.0)),
+            local(DVec3::new(-32.0, 0.0, -26.0)),
+        ),
         SKIN,
         Pass::Translucent,
     );
-    // Thumb: from the palm up along the axis.
-    list.push(Shape::Cylinder, rod(local(DVec3::new(-4.0, -18.0, -12.0)), local(DVec3::new(0.0, -6.0, 22.0)), 7.0), SKIN, Pass::Translucent);
-    // Fingers: arcs around the axis below the curl arrow.
+    list.push(
+        Shape::Cylinder,
+        rod(local(DVec3::new(-26.0, 0.0, 4.0)), local(DVec3::new(-10.0, 0.0, 46.0)), 8.5),
+        SKIN,
+        Pass::Translucent,
+    );
+    list.push(
+        Shape::Cone,
+        rod(local(DVec3::new(-10.0, 0.0, 46.0)), local(DVec3::new(-5.0, 0.0, 58.0)), 8.5),
+        SKIN,
+        Pass::Translucent,
+    );
     for k in 0..4 {
-        let z = -20.0 - 14.0 * f64::from(k);
+        let z = -6.0 - 17.0 * f64::from(k);
         list.push(
-            Shape::CurlArc,
-            DAffine3::from_mat3_translation(frame * DMat3::from_diagonal(DVec3::new(24.0, 24.0, 24.0)), local(DVec3::new(0.0, 0.0, z))),
+            Shape::Finger,
+            DAffine3::from_mat3_translation(
+                from_palm * DMat3::from_diagonal(DVec3::splat(24.0)),
+                local(DVec3::new(0.0, 0.0, z)),
+            ),
             SKIN,
             Pass::Translucent,
         );

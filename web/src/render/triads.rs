@@ -14,22 +14,38 @@ pub const Z: [f32; 4] = [0.18, 0.38, 0.98, 1.0];
 pub const PLANE: [f32; 4] = [0.40, 0.78, 1.0, 0.26];
 
 /// One arrow along `axis` (unit) from `origin`: shaft and head.
-pub fn arrow(list: &mut DrawList, origin: DVec3, axis: DVec3, length: f64, radius: f64, colour: [f32; 4], pass: Pass) {
+pub fn arrow(
+    list: &mut DrawList,
+    origin: DVec3,
+    axis: DVec3,
+    length: f64,
+    radius: f64,
+    colour: [f32; 4],
+    pass: Pass,
+) {
     let head = length * 0.22;
     let neck = origin + axis * (length - head);
     list.push(Shape::Cylinder, rod(origin, neck, radius), colour, pass);
     list.push(Shape::Cone, rod(neck, origin + axis * length, radius * 2.6), colour, pass);
 }
 
-/// A triad with its axis letters and its name as labels.
-pub fn triad(list: &mut DrawList, origin: DVec3, rot: DMat3, length: f64, name: &'static str) {
+/// A triad with its axis letters and its name as labels (`kind` styles the name label, so names
+/// of frames that share an origin, such as W-CS and WPL-CS, do not overprint each other).
+pub fn triad(
+    list: &mut DrawList,
+    origin: DVec3,
+    rot: DMat3,
+    length: f64,
+    name: &'static str,
+    kind: &'static str,
+) {
     let radius = length * 0.028;
     for (i, (colour, letter, kind)) in [(X, "X", "x"), (Y, "Y", "y"), (Z, "Z", "z")].into_iter().enumerate() {
         let axis = rot.col(i).normalize_or(DVec3::Z);
         arrow(list, origin, axis, length, radius, colour, Pass::Overlay);
         list.labels.push(Label { text: letter, at: origin + axis * (length * 1.12), kind });
     }
-    list.labels.push(Label { text: name, at: origin - (rot.col(0) + rot.col(1)).normalize_or(DVec3::X) * (length * 0.25), kind: "frame" });
+    list.labels.push(Label { text: name, at: origin, kind });
 }
 
 fn compose(pose: DAffine3, f: &Frame) -> (DVec3, DMat3) {
@@ -52,18 +68,21 @@ pub fn scene(s: &Scene<'_>) -> DrawList {
 
     if s.triads.wpl {
         let side = size * 1.6;
-        let m = DAffine3::from_mat3_translation(wpl_rot * DMat3::from_diagonal(DVec3::new(side, side, 1.0)), wpl_origin);
+        let m = DAffine3::from_mat3_translation(
+            wpl_rot * DMat3::from_diagonal(DVec3::new(side, side, 1.0)),
+            wpl_origin,
+        );
         list.push(Shape::Square, m, PLANE, Pass::Translucent);
-        triad(&mut list, wpl_origin, wpl_rot, size * 0.75, "WPL-CS");
+        triad(&mut list, wpl_origin, wpl_rot, size * 0.75, "WPL-CS", "frame-wpl");
     }
     if s.triads.mcs {
-        triad(&mut list, DVec3::ZERO, DMat3::IDENTITY, size * 1.3, "M-CS");
+        triad(&mut list, DVec3::ZERO, DMat3::IDENTITY, size * 1.3, "M-CS", "frame-mcs");
     }
     if s.triads.wcs {
-        triad(&mut list, w_origin, w_rot, size * 1.0, "W-CS");
+        triad(&mut list, w_origin, w_rot, size * 1.0, "W-CS", "frame-wcs");
     }
     if s.triads.tcs {
-        triad(&mut list, p.tool.translation, p.tool.matrix3, size * 0.6, "T-CS");
+        triad(&mut list, p.tool.translation, p.tool.matrix3, size * 0.6, "T-CS", "frame-tcs");
     }
     list
 }

@@ -1,0 +1,64 @@
+//! Stand-alone pages for the 3D parts, opened by URL fragment (for teaching with a projector,
+//! for screenshots and for checking every machine by eye):
+//! `#3d:machine=b45-nutating;spb=45` = the machine after that PLANE SPATIAL (ghost = the other
+//! candidate); `#rechte-hand` (`#right-hand` in English) = the right-hand demo.
+
+use std::rc::Rc;
+
+use schwenkbar_core::axes::AxisValues;
+use schwenkbar_core::machine::Machine;
+use yew::prelude::*;
+
+use super::right_hand_demo::RightHandDemo;
+use super::view3d::View3d;
+use crate::i18n::Lang;
+use crate::render::plane_preview::{PreviewQuery, state_for};
+
+#[derive(Properties, PartialEq)]
+pub struct PreviewProps {
+    /// The URL fragment without `#`.
+    pub fragment: AttrValue,
+}
+
+/// Whether a fragment names a preview page.
+#[must_use]
+pub fn is_preview(fragment: &str) -> bool {
+    fragment.starts_with("3d") || fragment.starts_with("rechte-hand") || fragment.starts_with("right-hand")
+}
+
+#[function_component(Preview)]
+pub fn preview(props: &PreviewProps) -> Html {
+    let f = props.fragment.as_str();
+    let lang = if f.starts_with("right-hand") || f.contains("lang=en") { Lang::En } else { Lang::De };
+    if !f.starts_with("3d") {
+        return html! { <main class="preview preview-hand"><RightHandDemo {lang} /></main> };
+    }
+    let q = PreviewQuery::parse(f.trim_start_matches("3d"));
+    let Ok(machine) = Machine::builtin(&q.machine) else {
+        return html! { <p class="preview-error">{ format!("{}: {}", lang.t("Unbekannte Maschine", "Unknown machine"), q.machine) }</p> };
+    };
+    let (mut state, e) = state_for(&machine, q.orientation(), AxisValues::default());
+    if !q.ghost {
+        state.ghost = None;
+    }
+    let axes: Vec<String> =
+        state.axes.rotary.iter().map(|(a, v)| schwenkbar_core::solve::axis_word(a, v)).collect();
+    let pick = |t: &schwenkbar_core::machine::Texts| match lang {
+        Lang::De => t.de.clone(),
+        Lang::En => t.en.clone(),
+    };
+    let caption = match &e.error_message {
+        Some(m) => pick(m),
+        None => axes.join(" "),
+    };
+    html! {
+        <main class="preview preview-3d">
+            <p class="preview-caption">{ format!("{} · PLANE SPATIAL SPA{} SPB{} SPC{} → {caption}",
+                pick(&machine.name),
+                schwenkbar_core::solve::fmt_deg(q.spatial[0]),
+                schwenkbar_core::solve::fmt_deg(q.spatial[1]),
+                schwenkbar_core::solve::fmt_deg(q.spatial[2])) }</p>
+            <View3d {lang} machine={Some(Rc::new(machine))} state={Rc::new(state)} />
+        </main>
+    }
+}
