@@ -33,7 +33,9 @@ fn demo_camera() -> Camera {
     }
 }
 
-/// A drag in progress: where it started and the angle then.
+/// A drag in progress: pointer id, the last pointer position and the unrounded angle so far
+/// (summed move by move, so a drag can go round more than half a turn and small moves are not
+/// lost to the whole-degree rounding of the display).
 #[derive(Default)]
 struct Drag {
     active: Option<(i32, (f32, f32), f64)>,
@@ -87,7 +89,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                     d.active = Some((e.pointer_id(), at, angle));
                 }
                 "move" => {
-                    let Some((id, from, start)) = d.active else { return };
+                    let Some((id, last, sum)) = d.active else { return };
                     if id != e.pointer_id() {
                         return;
                     }
@@ -95,8 +97,11 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                     let (w, h) = (el.client_width() as f32, el.client_height() as f32);
                     let cam = viewer.borrow().camera;
                     let centre = pivot_on_screen(&cam.view_proj(w / h.max(1.0)), w, h);
-                    let turn = drag_turn(centre, from, at, points_towards(axis, cam.eye() - cam.target));
-                    set_angle(start + turn);
+                    // The axis runs through the origin: its sign towards the eye decides.
+                    let turn = drag_turn(centre, last, at, points_towards(axis, cam.eye()));
+                    let sum = (sum + turn).clamp(-180.0, 180.0);
+                    d.active = Some((id, at, sum));
+                    set_angle(sum);
                 }
                 _ => d.active = None,
             }

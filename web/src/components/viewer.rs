@@ -112,6 +112,13 @@ impl Viewer {
                     self.paint_ms.remove(0);
                 }
                 self.paint_ms.push(spent);
+                // In-page probe of the frame-time budget (issue 7): the median CPU time of the
+                // recent paints on the canvas, every 30 paints (a DOM write is not free).
+                if self.paints % 30 == 0 {
+                    if let (Some(r), Some(ms)) = (&self.renderer, self.median_paint_ms()) {
+                        let _ = r.canvas().set_attribute("data-paint-ms", &format!("{ms:.3}"));
+                    }
+                }
                 self.place_labels(&labels);
                 FrameOutcome::Painted
             }

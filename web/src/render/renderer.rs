@@ -111,6 +111,12 @@ impl Renderer {
         &self.gl
     }
 
+    /// The canvas drawn on.
+    #[must_use]
+    pub fn canvas(&self) -> &HtmlCanvasElement {
+        &self.canvas
+    }
+
     /// Replaces the toolpath (one upload; drawing it later costs one draw call).
     pub fn set_toolpath(&mut self, points: &[PathPoint]) -> Result<(), RenderError> {
         self.path = toolpath::lines(points);

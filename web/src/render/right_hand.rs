@@ -100,7 +100,7 @@ pub fn drag_turn(centre: (f32, f32), from: (f32, f32), to: (f32, f32), towards_v
     if towards_viewer { ccw } else { -ccw }
 }
 
-/// Whether the axis points towards the eye (its tip is nearer the eye than its origin).
+/// Whether the axis (through the origin) points towards the eye at `eye`.
 #[must_use]
 pub fn points_towards(axis: TurnAxis, eye: Vec3) -> bool {
     eye.as_dvec3().dot(axis.unit()) > 0.0
@@ -213,15 +213,16 @@ fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
         SKIN,
         Pass::Translucent,
     );
+    // Thumbs up: the thumb lies along the axis, over the thumb arrow.
     list.push(
         Shape::Cylinder,
-        rod(local(DVec3::new(-26.0, 0.0, 4.0)), local(DVec3::new(-10.0, 0.0, 46.0)), 8.5),
+        rod(local(DVec3::new(-16.0, 0.0, -4.0)), local(DVec3::new(-4.0, 0.0, 50.0)), 9.0),
         SKIN,
         Pass::Translucent,
     );
     list.push(
         Shape::Cone,
-        rod(local(DVec3::new(-10.0, 0.0, 46.0)), local(DVec3::new(-5.0, 0.0, 58.0)), 8.5),
+        rod(local(DVec3::new(-4.0, 0.0, 50.0)), local(DVec3::new(-1.0, 0.0, 64.0)), 9.0),
         SKIN,
         Pass::Translucent,
     );

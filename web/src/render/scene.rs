@@ -6,7 +6,7 @@
 //! the toolpath are given **on the table at home** (all rotary axes at 0°); the renderer moves
 //! them with the table axes.
 
-use glam::{DMat3, DVec3};
+use glam::{DMat3, DQuat, DVec3};
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::plane::RotaryAxis;
@@ -137,6 +137,28 @@ impl Default for SceneState {
     }
 }
 
+impl SceneState {
+    /// The state a `fraction` (0…1) of the way from `from` to `to`, for animating a block: the
+    /// axes travel linearly ([`MachineAxes::lerp`]), the W-CS and WPL-CS turn along the shortest
+    /// arc (quaternion slerp), so PLANE … STAY shows only the frame turning. Tool, blank, ghost
+    /// and the drawn toolpath are `to`'s. For MOVE, whose linear axes follow the rotary ones
+    /// along a curve, put the simulator's `axes_at(fraction)` into `axes` afterwards.
+    #[must_use]
+    pub fn between(from: &SceneState, to: &SceneState, fraction: f64) -> SceneState {
+        let f = fraction.clamp(0.0, 1.0);
+        let turn = |a: &Frame, b: &Frame| Frame {
+            origin: a.origin.lerp(b.origin, f),
+            rot: DMat3::from_quat(DQuat::from_mat3(&a.rot).slerp(DQuat::from_mat3(&b.rot), f)),
+        };
+        SceneState {
+            axes: from.axes.lerp(&to.axes, f),
+            wcs: turn(&from.wcs, &to.wcs),
+            wpl: turn(&from.wpl, &to.wpl),
+            ..to.clone()
+        }
+    }
+}
+
 /// Everything [`crate::render::renderer::Renderer::paint`] needs besides the camera.
 #[derive(Debug, Clone, Copy)]
 pub struct Scene<'a> {
@@ -162,6 +184,23 @@ mod tests {
         assert_eq!(m.rotary.c, Some(45.0), "a missing start axis stands at 0°");
         assert_eq!(m.rotary.b, None);
         assert_eq!(a.lerp(&b, 7.0), MachineAxes { linear: b.linear, rotary: b.rotary });
+    }
+
+    #[test]
+    fn between_turns_only_the_frame_for_stay_and_ends_at_the_target() {
+        use schwenkbar_core::orientation::spatial;
+        let from = SceneState::default();
+        let to = SceneState {
+            wpl: Frame { origin: DVec3::ZERO, rot: spatial(0.0, 15.0, 0.0) },
+            ..SceneState::default()
+        };
+        let half = SceneState::between(&from, &to, 0.5);
+        assert_eq!(half.axes, from.axes, "STAY: the axes stand still");
+        let z = half.wpl.rot.col(2);
+        let expected = spatial(0.0, 7.5, 0.0).col(2);
+        assert!((z - expected).length() < 1e-9, "halfway: SPB 7.5° ({z})");
+        let end = SceneState::between(&from, &to, 1.0);
+        assert!((end.wpl.rot.col(2) - to.wpl.rot.col(2)).length() < 1e-9);
     }
 
     #[test]
