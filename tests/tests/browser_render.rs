@@ -260,6 +260,77 @@ async fn the_3d_view_component_paints_labels_and_the_right_hand_demo_writes_the_
     demo.remove();
 }
 
+#[wasm_bindgen_test]
+async fn the_3d_view_component_survives_a_context_loss() {
+    let root = document().create_element("div").expect("div");
+    root.set_attribute("style", "width:400px;height:300px;position:relative").expect("style");
+    document().body().expect("body").append_child(&root).expect("append");
+    yew::Renderer::<schwenkbar_web::components::view3d::View3d>::with_root_and_props(
+        root.clone(),
+        schwenkbar_web::components::view3d::View3dProps {
+            lang: schwenkbar_web::i18n::Lang::En,
+            machine: None,
+            state: Rc::new(SceneState::default()),
+            toolpath: Default::default(),
+        },
+    )
+    .render();
+    sleep(200).await;
+    let canvas: HtmlCanvasElement = query(&root, "canvas.view3d").dyn_into().expect("canvas");
+    assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("ready"));
+    let gl: Gl = canvas.get_context("webgl2").expect("context").expect("the view's context").unchecked_into();
+    let ext: WebglLoseContext =
+        gl.get_extension("WEBGL_lose_context").expect("getExtension").expect("extension").unchecked_into();
+    ext.lose_context();
+    sleep(200).await;
+    assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("lost"));
+    ext.restore_context();
+    sleep(300).await;
+    assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("ready"), "restored and painting");
+    assert!(root.query_selector(".no-webgl").expect("selector").is_none(), "no failure message");
+    root.remove();
+}
+
+#[wasm_bindgen_test]
+async fn try_it_asks_for_a_signed_turn_and_tells_a_wrong_sign() {
+    let demo = document().create_element("div").expect("div");
+    document().body().expect("body").append_child(&demo).expect("append");
+    yew::Renderer::<schwenkbar_web::components::right_hand_demo::RightHandDemo>::with_root_and_props(
+        demo.clone(),
+        schwenkbar_web::components::right_hand_demo::RightHandDemoProps {
+            lang: schwenkbar_web::i18n::Lang::De,
+        },
+    )
+    .render();
+    sleep(100).await;
+    click(&demo, ".rh-start").await;
+    assert_eq!(query(&demo, ".rh-task").text_content().as_deref(), Some("Drehen Sie die Ebene um +30° um Y"));
+    set_slider(&demo, "-30").await;
+    assert_eq!(query(&demo, ".rh-block").text_content().as_deref(), Some("PLANE SPATIAL SPA+0 SPB-30 SPC+0"));
+    click(&demo, ".rh-check").await;
+    assert!(query(&demo, ".rh-verdict").class_name().contains("wrong-sign"), "−30 for +30 is the wrong sign");
+    set_slider(&demo, "30").await;
+    click(&demo, ".rh-check").await;
+    assert!(query(&demo, ".rh-verdict").class_name().contains("right"));
+    demo.remove();
+}
+
+async fn click(root: &Element, selector: &str) {
+    query(root, selector).dyn_into::<web_sys::HtmlElement>().expect("an HTML element").click();
+    sleep(50).await;
+}
+
+async fn set_slider(root: &Element, value: &str) {
+    let input: web_sys::HtmlInputElement = query(root, ".rh-slider input").dyn_into().expect("range input");
+    input.set_value(value);
+    // Bubbling, as a real input event does (yew listens at the root).
+    let init = web_sys::EventInit::new();
+    init.set_bubbles(true);
+    let ev = web_sys::Event::new_with_event_init_dict("input", &init).expect("input event");
+    input.dispatch_event(&ev).expect("dispatch");
+    sleep(50).await;
+}
+
 fn query(root: &Element, selector: &str) -> Element {
     root.query_selector(selector).expect("selector").unwrap_or_else(|| panic!("no {selector}"))
 }

@@ -147,7 +147,8 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
                             v.dirty = true;
                             v.set_label_layer(labels_ref.cast::<HtmlElement>());
                         }
-                        let (v1, v2, s2) = (viewer.clone(), viewer.clone(), status.clone());
+                        let (v1, v2) = (viewer.clone(), viewer.clone());
+                        let (s1, s2) = (status.clone(), status.clone());
                         let watch = ContextWatch::new(
                             &canvas,
                             move || {
@@ -156,6 +157,7 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
                                 if let Some(r) = &mut v.renderer {
                                     r.lost();
                                 }
+                                s1.set(GlStatus::Lost);
                             },
                             move || {
                                 let mut v = v2.borrow_mut();
