@@ -10,9 +10,10 @@ use schwenkbar_core::machine::Machine;
 use yew::prelude::*;
 
 use super::right_hand_demo::RightHandDemo;
-use super::view3d::View3d;
+use super::view3d::{SharedPath, View3d};
 use crate::i18n::Lang;
-use crate::render::plane_preview::{PreviewQuery, state_for};
+use crate::render::plane_preview::{PreviewQuery, demo_path, state_for};
+use crate::render::toolpath::PathPoint;
 
 #[derive(Properties, PartialEq)]
 pub struct PreviewProps {
@@ -41,6 +42,8 @@ pub fn preview(props: &PreviewProps) -> Html {
     if !q.ghost {
         state.ghost = None;
     }
+    let path: Rc<[PathPoint]> =
+        if q.path { demo_path(&state.blank, &state.wpl).into() } else { Rc::from(Vec::new()) };
     let axes: Vec<String> =
         state.axes.rotary.iter().map(|(a, v)| schwenkbar_core::solve::axis_word(a, v)).collect();
     let pick = |t: &schwenkbar_core::machine::Texts| match lang {
@@ -58,7 +61,7 @@ pub fn preview(props: &PreviewProps) -> Html {
                 schwenkbar_core::solve::fmt_deg(q.spatial[0]),
                 schwenkbar_core::solve::fmt_deg(q.spatial[1]),
                 schwenkbar_core::solve::fmt_deg(q.spatial[2])) }</p>
-            <View3d {lang} machine={Some(Rc::new(machine))} state={Rc::new(state)} />
+            <View3d {lang} machine={Some(Rc::new(machine))} state={Rc::new(state)} toolpath={SharedPath(path)} />
         </main>
     }
 }

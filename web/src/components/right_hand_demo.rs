@@ -64,7 +64,8 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
         let viewer = viewer.clone();
         use_effect_with((*axis, *angle), move |(axis, angle)| {
             let mut v = viewer.borrow_mut();
-            v.content = Some(Content::List(draw_list(*axis, *angle)));
+            let eye = v.camera.eye().as_dvec3();
+            v.content = Some(Content::List(draw_list(*axis, *angle, eye)));
             v.dirty = true;
         });
     }

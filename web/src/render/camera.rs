@@ -67,7 +67,7 @@ pub struct Camera {
 impl Default for Camera {
     fn default() -> Self {
         let (azimuth, elevation) = Preset::Iso.angles();
-        Camera { target: Vec3::new(0.0, 0.0, -20.0), azimuth, elevation, distance: 1800.0, fov_y: 35.0 }
+        Camera { target: Vec3::new(0.0, 0.0, -20.0), azimuth, elevation, distance: 1500.0, fov_y: 35.0 }
     }
 }
 

@@ -150,10 +150,10 @@ pub fn check(task: (TurnAxis, f64), axis: TurnAxis, angle: f64) -> Verdict {
 const SKIN: [f32; 4] = [0.96, 0.76, 0.60, 0.72];
 const PLANE_SIDE: f64 = 200.0;
 
-/// The demo scene: the turned plane and its triad, the fixed reference triad, the thumb arrow,
+/// The demo scene (seen from `eye`): the turned plane and its triad, the fixed reference triad, the thumb arrow,
 /// the curled arrow and a stylised right hand gripping the axis.
 #[must_use]
-pub fn draw_list(axis: TurnAxis, angle: f64) -> DrawList {
+pub fn draw_list(axis: TurnAxis, angle: f64, eye: DVec3) -> DrawList {
     let mut list = DrawList::default();
     let r = orientation(axis, angle);
     let m = DAffine3::from_mat3_translation(
@@ -171,8 +171,8 @@ pub fn draw_list(axis: TurnAxis, angle: f64) -> DrawList {
     // Thumb along +axis, the curl around it (rotation about the thumb = positive direction).
     let u = axis.unit();
     let frame = z_to(u);
-    arrow(&mut list, DVec3::ZERO, u, 190.0, 3.5, axis.colour(), Pass::Opaque);
-    let curl_at = u * 150.0;
+    arrow(&mut list, DVec3::ZERO, u, 250.0, 3.5, axis.colour(), Pass::Opaque);
+    let curl_at = u * 205.0;
     let radius = 34.0;
     list.push(
         Shape::CurlArc,
@@ -192,13 +192,17 @@ pub fn draw_list(axis: TurnAxis, angle: f64) -> DrawList {
         Pass::Opaque,
     );
 
-    hand(&mut list, frame, u * 75.0);
-    list.labels.push(Label { text: axis.letter(), at: u * 205.0, kind: "axis" });
+    // Turn the hand about its axis so the palm and the thumb face the viewer.
+    let e = frame.transpose() * eye;
+    let facing = e.y.atan2(e.x) + std::f64::consts::PI;
+    hand(&mut list, frame * DMat3::from_rotation_z(facing), u * 125.0);
+    list.labels.push(Label { text: axis.letter(), at: u * 268.0, kind: "axis" });
     list
 }
 
 /// A right hand in the same pose: a fist round the axis, the thumb up along it, the four fingers
-/// curling like the arrow (a palm block, a thumb rod and four thick finger arcs).
+/// curling like the arrow (a palm block, a thumb rod and four thick finger arcs). `frame` maps
+/// the hand's local +Z onto the axis; any turn about that axis keeps the hand a right hand.
 fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
     let local = |p: DVec3| grip + frame * p;
     // The palm lies on the local −X side of the axis; the fingers leave it there (180°) and wrap
@@ -216,13 +220,13 @@ fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
     // Thumbs up: the thumb lies along the axis, over the thumb arrow.
     list.push(
         Shape::Cylinder,
-        rod(local(DVec3::new(-16.0, 0.0, -4.0)), local(DVec3::new(-4.0, 0.0, 50.0)), 9.0),
+        rod(local(DVec3::new(-24.0, 0.0, -2.0)), local(DVec3::new(-17.0, 0.0, 50.0)), 9.0),
         SKIN,
         Pass::Translucent,
     );
     list.push(
         Shape::Cone,
-        rod(local(DVec3::new(-4.0, 0.0, 50.0)), local(DVec3::new(-1.0, 0.0, 64.0)), 9.0),
+        rod(local(DVec3::new(-17.0, 0.0, 50.0)), local(DVec3::new(-15.0, 0.0, 63.0)), 9.0),
         SKIN,
         Pass::Translucent,
     );
@@ -304,10 +308,36 @@ mod tests {
 
     #[test]
     fn the_demo_scene_shows_the_block_turn() {
-        let list = draw_list(TurnAxis::Y, 15.0);
+        let list = draw_list(TurnAxis::Y, 15.0, DVec3::new(500.0, -500.0, 300.0));
         let plane = list.instances.iter().find(|i| i.shape == Shape::Square).expect("plane");
         let n = plane.model.matrix3.col(2).normalize();
         assert!((n - orientation(TurnAxis::Y, 15.0).col(2)).length() < 1e-12);
         assert!(list.labels.iter().any(|l| l.text == "Y" && l.kind == "axis"));
+    }
+
+    #[test]
+    fn the_fingers_and_the_curl_arrow_turn_positively_about_the_thumb_from_any_eye() {
+        // The arc meshes run counter-clockwise about their own +Z (mesh test above); they show
+        // the positive direction only if their +Z is the +axis and nothing mirrors them.
+        for axis in TurnAxis::ALL {
+            for eye in [DVec3::new(500.0, -500.0, 300.0), DVec3::new(-300.0, 200.0, -400.0)] {
+                let list = draw_list(axis, -40.0, eye);
+                let arcs: Vec<_> = list
+                    .instances
+                    .iter()
+                    .filter(|i| matches!(i.shape, Shape::Finger | Shape::CurlArc))
+                    .collect();
+                assert_eq!(arcs.len(), 5, "four fingers and the arrow");
+                for a in arcs {
+                    let m = a.model.matrix3;
+                    assert!(m.determinant() > 0.0, "{axis:?}: mirrored");
+                    assert!(
+                        m.col(2).normalize().dot(axis.unit()) > 0.999,
+                        "{axis:?}: arc about {}",
+                        m.col(2)
+                    );
+                }
+            }
+        }
     }
 }
