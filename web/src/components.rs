@@ -3,7 +3,7 @@
 pub mod dialog_line;
 pub mod gl_canvas;
 pub mod header;
-pub mod preview;
+pub mod page3d;
 pub mod program_pane;
 pub mod right_hand_demo;
 pub mod softkey_row;

@@ -7,7 +7,7 @@ pub mod camera;
 pub mod draw_list;
 pub mod machine_parts;
 pub mod mesh;
-pub mod plane_preview;
+pub mod plane_scene;
 pub mod pose;
 pub mod right_hand;
 pub mod scene;

@@ -1,7 +1,7 @@
 //! A scene for "this PLANE block on this machine, from these axes": the solver's choice as the
 //! machine state, the other candidate as the ghost, the orientation as WPL-CS. The simulator will
-//! provide full per-block states; until then this drives the preview page (`#3d…`) and shows the
-//! lead how an `Explanation` maps onto [`SceneState`].
+//! provide full per-block states; until then this drives the 3D page (`#3d…`,
+//! `components/page3d.rs`) and shows how an `Explanation` maps onto [`SceneState`].
 
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;
@@ -70,10 +70,10 @@ pub fn demo_path(blank: &Blank, wpl: &Frame) -> Vec<PathPoint> {
     pts
 }
 
-/// Preview parameters from a URL fragment such as `machine=b45-nutating;spa=0;spb=45;spc=0`
+/// Page parameters from a URL fragment such as `machine=b45-nutating;spa=0;spb=45;spc=0`
 /// (unknown keys and bad numbers are ignored; defaults: `ac-table`, all angles 0).
 #[derive(Debug, Clone, PartialEq)]
-pub struct PreviewQuery {
+pub struct PageQuery {
     pub machine: String,
     pub spatial: [f64; 3],
     pub ghost: bool,
@@ -81,10 +81,10 @@ pub struct PreviewQuery {
     pub path: bool,
 }
 
-impl PreviewQuery {
+impl PageQuery {
     #[must_use]
-    pub fn parse(s: &str) -> PreviewQuery {
-        let mut q = PreviewQuery { machine: "ac-table".into(), spatial: [0.0; 3], ghost: true, path: true };
+    pub fn parse(s: &str) -> PageQuery {
+        let mut q = PageQuery { machine: "ac-table".into(), spatial: [0.0; 3], ghost: true, path: true };
         for part in s.split([';', '&', '?', ':']) {
             let Some((k, v)) = part.split_once('=') else { continue };
             let num = v.parse::<f64>().ok().filter(|x| x.is_finite());
@@ -153,10 +153,10 @@ mod tests {
 
     #[test]
     fn the_query_reads_machine_and_angles_and_ignores_nonsense() {
-        let q = PreviewQuery::parse(":machine=b45-nutating;spb=-30;spa=x;ghost=0;foo=1");
+        let q = PageQuery::parse(":machine=b45-nutating;spb=-30;spa=x;ghost=0;foo=1");
         assert_eq!(q.machine, "b45-nutating");
         assert_eq!(q.spatial, [0.0, -30.0, 0.0]);
         assert!(!q.ghost);
-        assert_eq!(PreviewQuery::parse("").machine, "ac-table");
+        assert_eq!(PageQuery::parse("").machine, "ac-table");
     }
 }
