@@ -4,11 +4,11 @@
 //! Data flow: text → [`parse`] (AST with spans + diagnostics) → interpret (machine states per
 //! block) → kinematics (orientation ↔ axis angles).
 
-pub mod plane;
 pub mod ast;
 pub mod diag;
 pub mod format;
 pub mod parse;
+pub mod plane;
 pub mod sample;
 
 pub use ast::{Block, BlockBody, Program};

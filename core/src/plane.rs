@@ -16,7 +16,10 @@ use serde::{Deserialize, Serialize};
 pub enum Value {
     Number(f64),
     /// `Q<index>`, negated when written `-Q<index>`.
-    Param { index: u32, negate: bool },
+    Param {
+        index: u32,
+        negate: bool,
+    },
 }
 
 /// `+` or `-` in `SEQ+`, `SYM-`.
@@ -165,14 +168,18 @@ impl<V> PlaneDef<V> {
             Ok([f(&a[0])?, f(&a[1])?, f(&a[2])?])
         }
         Ok(match self {
-            PlaneDef::Spatial { spa, spb, spc } => PlaneDef::Spatial { spa: f(spa)?, spb: f(spb)?, spc: f(spc)? },
+            PlaneDef::Spatial { spa, spb, spc } => {
+                PlaneDef::Spatial { spa: f(spa)?, spb: f(spb)?, spc: f(spc)? }
+            }
             PlaneDef::Projected { propr, promin, rot } => {
                 PlaneDef::Projected { propr: f(propr)?, promin: f(promin)?, rot: f(rot)? }
             }
             PlaneDef::Euler { eulpr, eulnu, eulrot } => {
                 PlaneDef::Euler { eulpr: f(eulpr)?, eulnu: f(eulnu)?, eulrot: f(eulrot)? }
             }
-            PlaneDef::Vector { base, normal } => PlaneDef::Vector { base: v3(base, &mut f)?, normal: v3(normal, &mut f)? },
+            PlaneDef::Vector { base, normal } => {
+                PlaneDef::Vector { base: v3(base, &mut f)?, normal: v3(normal, &mut f)? }
+            }
             PlaneDef::Points { p1, p2, p3 } => {
                 PlaneDef::Points { p1: v3(p1, &mut f)?, p2: v3(p2, &mut f)?, p3: v3(p3, &mut f)? }
             }

@@ -3,7 +3,9 @@
 
 use proptest::prelude::*;
 use schwenkbar_core::ast::{Axis, AxisWord, BinOp, Expr, Func, Line, RadiusComp};
-use schwenkbar_core::plane::{Feed, PlaneBlock, PlaneDef, Positioning, Selection, Sign, TransformMode, Value};
+use schwenkbar_core::plane::{
+    Feed, PlaneBlock, PlaneDef, Positioning, Selection, Sign, TransformMode, Value,
+};
 use schwenkbar_core::{Block, BlockBody, Program, format_program, parse};
 
 /// Numbers as the formatter can write them exactly: up to 4 decimals.
@@ -19,7 +21,11 @@ fn value(lo: i64, hi: i64) -> impl Strategy<Value = Value> {
 }
 
 fn feed() -> impl Strategy<Value = Feed> {
-    prop_oneof![Just(Feed::Max), Just(Feed::Auto), number(0, 20000).prop_map(|v| Feed::Value(Value::Number(v)))]
+    prop_oneof![
+        Just(Feed::Max),
+        Just(Feed::Auto),
+        number(0, 20000).prop_map(|v| Feed::Value(Value::Number(v)))
+    ]
 }
 
 fn axis() -> impl Strategy<Value = Axis> {
@@ -28,22 +34,27 @@ fn axis() -> impl Strategy<Value = Axis> {
 
 fn line() -> impl Strategy<Value = BlockBody> {
     let axes = prop::collection::btree_map(axis(), (value(-9999, 9999), any::<bool>()), 0..6).prop_map(|m| {
-        m.into_iter().map(|(axis, (value, incremental))| AxisWord { axis, value, incremental }).collect::<Vec<_>>()
+        m.into_iter()
+            .map(|(axis, (value, incremental))| AxisWord { axis, value, incremental })
+            .collect::<Vec<_>>()
     });
     let comp = prop::option::of(prop::sample::select(vec![RadiusComp::R0, RadiusComp::Rl, RadiusComp::Rr]));
-    (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(|(a, comp, feed, m)| {
-        BlockBody::L(Line { axes: a.into_boxed_slice(), comp, feed, m: m.into_boxed_slice() })
-    })
+    (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(
+        |(a, comp, feed, m)| {
+            BlockBody::L(Line { axes: a.into_boxed_slice(), comp, feed, m: m.into_boxed_slice() })
+        },
+    )
 }
 
 fn plane() -> impl Strategy<Value = BlockBody> {
-    let def = prop_oneof![
-        (value(-359, 359), value(-359, 359), value(-359, 359))
-            .prop_map(|(spa, spb, spc)| PlaneDef::Spatial { spa, spb, spc }),
-        (value(-180, 180), value(0, 180), value(0, 360))
-            .prop_map(|(eulpr, eulnu, eulrot)| PlaneDef::Euler { eulpr, eulnu, eulrot }),
-        Just(PlaneDef::Reset),
-    ];
+    let def =
+        prop_oneof![
+            (value(-359, 359), value(-359, 359), value(-359, 359))
+                .prop_map(|(spa, spb, spc)| PlaneDef::Spatial { spa, spb, spc }),
+            (value(-180, 180), value(0, 180), value(0, 360))
+                .prop_map(|(eulpr, eulnu, eulrot)| PlaneDef::Euler { eulpr, eulnu, eulrot }),
+            Just(PlaneDef::Reset),
+        ];
     let positioning = prop_oneof![
         Just(Positioning::Stay),
         (prop::option::of(value(0, 500)), prop::option::of(feed()))
@@ -51,8 +62,10 @@ fn plane() -> impl Strategy<Value = BlockBody> {
         prop::option::of(feed()).prop_map(|feed| Positioning::Turn { move_back: None, feed }),
     ];
     let sign = prop::sample::select(vec![Sign::Plus, Sign::Minus]);
-    let selection = prop::option::of(prop_oneof![sign.clone().prop_map(Selection::Seq), sign.prop_map(Selection::Sym)]);
-    let transform = prop::option::of(prop::sample::select(vec![TransformMode::CoordRot, TransformMode::TableRot]));
+    let selection =
+        prop::option::of(prop_oneof![sign.clone().prop_map(Selection::Seq), sign.prop_map(Selection::Sym)]);
+    let transform =
+        prop::option::of(prop::sample::select(vec![TransformMode::CoordRot, TransformMode::TableRot]));
     (def, positioning, selection, transform).prop_map(|(def, p, selection, transform)| {
         BlockBody::Plane(Box::new(PlaneBlock { def, positioning: Some(p), selection, transform }))
     })
@@ -60,12 +73,21 @@ fn plane() -> impl Strategy<Value = BlockBody> {
 
 /// Formulas the parser can produce (a sign before a number is folded into it).
 fn expr() -> impl Strategy<Value = Expr> {
-    let leaf = prop_oneof![number(-999, 999).prop_map(Expr::Num), (0u32..2000).prop_map(Expr::Param), Just(Expr::Pi)];
+    let leaf = prop_oneof![
+        number(-999, 999).prop_map(Expr::Num),
+        (0u32..2000).prop_map(Expr::Param),
+        Just(Expr::Pi)
+    ];
     leaf.prop_recursive(4, 24, 2, |inner| {
         let ops = prop::sample::select(vec![BinOp::Add, BinOp::Sub, BinOp::Mul, BinOp::Div, BinOp::Pow]);
         prop_oneof![
-            (ops, inner.clone(), inner.clone()).prop_map(|(op, a, b)| Expr::Bin(op, Box::new(a), Box::new(b))),
-            (prop::sample::select(Func::ALL.to_vec()), inner.clone()).prop_map(|(f, e)| Expr::Func(f, Box::new(e))),
+            (ops, inner.clone(), inner.clone()).prop_map(|(op, a, b)| Expr::Bin(
+                op,
+                Box::new(a),
+                Box::new(b)
+            )),
+            (prop::sample::select(Func::ALL.to_vec()), inner.clone())
+                .prop_map(|(f, e)| Expr::Func(f, Box::new(e))),
             inner.prop_filter_map("no sign on a number", |e| match e {
                 Expr::Num(_) => None,
                 e => Some(Expr::Neg(Box::new(e))),
@@ -95,8 +117,17 @@ fn program() -> impl Strategy<Value = Program> {
             .enumerate()
             .map(|(n, (body, comment))| {
                 // An empty block always carries its `;`.
-                let comment = if body == BlockBody::Empty { Some(comment.unwrap_or_default()) } else { comment };
-                Block { number: Some(n as u32), skip: false, body, comment, span: Default::default(), line: 0, column: 0 }
+                let comment =
+                    if body == BlockBody::Empty { Some(comment.unwrap_or_default()) } else { comment };
+                Block {
+                    number: Some(n as u32),
+                    skip: false,
+                    body,
+                    comment,
+                    span: Default::default(),
+                    line: 0,
+                    column: 0,
+                }
             })
             .collect(),
     })
