@@ -4,4 +4,14 @@
 //! Data flow: text → [`parse`] (AST with spans + diagnostics) → interpret (machine states per
 //! block) → kinematics (orientation ↔ axis angles).
 
+pub mod ast;
+pub mod diag;
+pub mod format;
+pub mod parse;
 pub mod plane;
+pub mod sample;
+
+pub use ast::{Block, BlockBody, Program};
+pub use diag::{Diagnostic, Lang, Severity};
+pub use format::format_program;
+pub use parse::parse;

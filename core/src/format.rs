@@ -1,0 +1,536 @@
+//! Writes a [`Program`] back in the control's canonical form: blocks renumbered from 0, signs
+//! written on coordinates and angles, one word order per block kind, `~` continuation layout
+//! for cycle parameters, every comment kept. Formatting is idempotent:
+//! `format_program(&parse(&format_program(&p)).0) == format_program(&p)`.
+
+use std::fmt::Write as _;
+
+use crate::ast::{
+    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
+    OldCycleWord, PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
+};
+use crate::plane::{
+    Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
+    Value,
+};
+
+/// The canonical text of a program, one block per line, ending with a line break.
+#[must_use]
+pub fn format_program(p: &Program) -> String {
+    let mut out = String::with_capacity(p.blocks.len() * 40);
+    for (n, b) in p.blocks.iter().enumerate() {
+        block(&mut out, n, b);
+    }
+    out
+}
+
+fn block(out: &mut String, n: usize, b: &Block) {
+    if b.skip {
+        out.push('/');
+    }
+    let _ = write!(out, "{n}");
+    let start = out.len();
+    out.push(' ');
+    if let BlockBody::CycleDef(c) = &b.body {
+        cycle_def(out, c, b.comment.as_deref());
+        return;
+    }
+    body(out, &b.body);
+    if out.len() == start + 1 {
+        out.pop();
+    }
+    if let Some(c) = &b.comment {
+        out.push_str(" ;");
+        if !c.is_empty() {
+            out.push(' ');
+            out.push_str(c);
+        }
+    }
+    out.push('\n');
+}
+
+/// A number with its sign always written (`+0`, `-40`, `+0.5`).
+fn signed(out: &mut String, v: f64) {
+    // `-0` is written `+0`: the control has no negative zero.
+    let _ = if v < 0.0 { write!(out, "-{}", -v) } else { write!(out, "+{}", v.abs()) };
+}
+
+fn value(out: &mut String, v: Value) {
+    match v {
+        Value::Number(x) => signed(out, x),
+        Value::Param { index, negate } => {
+            let _ = write!(out, "{}Q{index}", if negate { '-' } else { '+' });
+        }
+    }
+}
+
+/// Spindle speed and feed: written without `+` as the control does (`S5000`, `F1000`).
+fn plain(out: &mut String, v: Value) {
+    match v {
+        Value::Number(x) if x < 0.0 => signed(out, x),
+        Value::Number(x) => {
+            let _ = write!(out, "{}", x.abs());
+        }
+        Value::Param { index, negate } => {
+            let _ = write!(out, "{}Q{index}", if negate { "-" } else { "" });
+        }
+    }
+}
+
+fn feed(out: &mut String, f: Feed) {
+    match f {
+        Feed::Max => out.push_str(" FMAX"),
+        Feed::Auto => out.push_str(" F AUTO"),
+        Feed::Value(v) => {
+            out.push_str(" F");
+            plain(out, v);
+        }
+    }
+}
+
+fn axis_word(out: &mut String, w: AxisWord) {
+    if w.incremental {
+        out.push('I');
+    }
+    out.push_str(w.axis.as_str());
+    value(out, w.value);
+}
+
+fn axes(out: &mut String, words: &[AxisWord]) {
+    for w in words {
+        out.push(' ');
+        axis_word(out, *w);
+    }
+}
+
+fn tail(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32]) {
+    if let Some(c) = comp {
+        out.push_str(match c {
+            RadiusComp::R0 => " R0",
+            RadiusComp::Rl => " RL",
+            RadiusComp::Rr => " RR",
+        });
+    }
+    if let Some(f) = f {
+        feed(out, f);
+    }
+    ms(out, m);
+}
+
+fn ms(out: &mut String, m: &[u32]) {
+    for m in m {
+        let _ = write!(out, " M{m}");
+    }
+}
+
+fn sign(s: Sign) -> char {
+    match s {
+        Sign::Plus => '+',
+        Sign::Minus => '-',
+    }
+}
+
+fn unit(u: Unit) -> &'static str {
+    match u {
+        Unit::Mm => "MM",
+        Unit::Inch => "INCH",
+    }
+}
+
+fn label(out: &mut String, l: &Label) {
+    let _ = match l {
+        Label::Number(n) => write!(out, "{n}"),
+        Label::Name(s) => write!(out, "\"{s}\""),
+    };
+}
+
+fn body(out: &mut String, b: &BlockBody) {
+    match b {
+        BlockBody::BeginPgm { name, unit: u } => {
+            let _ = write!(out, "BEGIN PGM {name} {}", unit(*u));
+        }
+        BlockBody::EndPgm { name, unit: u } => {
+            let _ = write!(out, "END PGM {name} {}", unit(*u));
+        }
+        BlockBody::Empty => {}
+        BlockBody::Structure { text } => {
+            out.push('*');
+            if !text.is_empty() {
+                out.push(' ');
+                out.push_str(text);
+            }
+        }
+        BlockBody::BlkForm(f) => blk_form(out, f),
+        BlockBody::ToolCall(t) => tool_call(out, t),
+        BlockBody::L(Line { axes: a, comp, feed: f, m }) => {
+            out.push('L');
+            axes(out, a);
+            tail(out, *comp, *f, m);
+        }
+        BlockBody::Cc(m) => motion(out, "CC", m),
+        BlockBody::C(m) => motion(out, "C", m),
+        BlockBody::Cr(m) => motion(out, "CR", m),
+        BlockBody::Ct(m) => motion(out, "CT", m),
+        BlockBody::Lp(m) => motion(out, "LP", m),
+        BlockBody::Cp(m) => motion(out, "CP", m),
+        BlockBody::Rnd { radius, feed: f } => {
+            out.push_str("RND R");
+            value(out, *radius);
+            if let Some(f) = f {
+                feed(out, *f);
+            }
+        }
+        BlockBody::Chf { length, feed: f } => {
+            out.push_str("CHF ");
+            value(out, *length);
+            if let Some(f) = f {
+                feed(out, *f);
+            }
+        }
+        BlockBody::MFunctions(m) => {
+            for (k, m) in m.iter().enumerate() {
+                let _ = write!(out, "{}M{m}", if k == 0 { "" } else { " " });
+            }
+        }
+        BlockBody::CycleDef(c) => cycle_def(out, c, None),
+        BlockBody::CycleDefOld(c) => {
+            let _ = write!(out, "CYCL DEF {}.{}", c.number, c.sub);
+            match &c.data {
+                OldCycleData::Name(s) | OldCycleData::Text(s) => {
+                    if !s.is_empty() {
+                        out.push(' ');
+                        out.push_str(s);
+                    }
+                }
+                OldCycleData::Words(words) => {
+                    for w in words {
+                        out.push(' ');
+                        match *w {
+                            OldCycleWord::Axis(a) => axis_word(out, a),
+                            OldCycleWord::MirrorAxis(a) => out.push_str(a.as_str()),
+                            OldCycleWord::Rot { value: v, incremental } => {
+                                out.push_str(if incremental { "IROT" } else { "ROT" });
+                                value(out, v);
+                            }
+                            OldCycleWord::Scl(v) => {
+                                out.push_str("SCL ");
+                                plain(out, v);
+                            }
+                            OldCycleWord::Feed(v) => {
+                                out.push('F');
+                                plain(out, v);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        BlockBody::CyclCall { m } => {
+            out.push_str("CYCL CALL");
+            ms(out, m);
+        }
+        BlockBody::Plane(p) => plane(out, p),
+        BlockBody::TransDatum { axes: a } => {
+            out.push_str("TRANS DATUM AXIS");
+            axes(out, a);
+        }
+        BlockBody::TransDatumReset => out.push_str("TRANS DATUM RESET"),
+        BlockBody::TransMirror { axes: a } => {
+            out.push_str("TRANS MIRROR AXIS");
+            for a in a.iter() {
+                out.push(' ');
+                out.push_str(a.as_str());
+            }
+        }
+        BlockBody::TransMirrorReset => out.push_str("TRANS MIRROR RESET"),
+        BlockBody::TransRotation { rot, incremental } => {
+            out.push_str(if *incremental { "TRANS ROTATION IROT" } else { "TRANS ROTATION ROT" });
+            value(out, *rot);
+        }
+        BlockBody::TransRotationReset => out.push_str("TRANS ROTATION RESET"),
+        BlockBody::Lbl(l) => {
+            out.push_str("LBL ");
+            label(out, l);
+        }
+        BlockBody::CallLbl { label: l, rep } => {
+            out.push_str("CALL LBL ");
+            label(out, l);
+            if let Some(r) = rep {
+                let _ = write!(out, " REP {r}");
+            }
+        }
+        BlockBody::CallPgm { path } => {
+            let _ = write!(out, "CALL PGM {path}");
+        }
+        BlockBody::QAssign { target, expr: e, fn0 } => {
+            let _ = write!(out, "{}Q{target} = ", if *fn0 { "FN 0: " } else { "" });
+            match e {
+                Expr::Num(v) => signed(out, *v),
+                e => expr(out, e),
+            }
+        }
+        BlockBody::Unknown { text } | BlockBody::Invalid { text } => out.push_str(text),
+    }
+}
+
+fn blk_form(out: &mut String, f: &BlkForm) {
+    let _ = write!(out, "BLK FORM 0.{}", f.part);
+    if let Some(a) = f.tool_axis {
+        out.push(' ');
+        out.push_str(a.as_str());
+    }
+    axes(out, &f.axes);
+}
+
+fn tool_call(out: &mut String, t: &ToolCall) {
+    out.push_str("TOOL CALL");
+    match &t.tool {
+        Some(ToolRef::Number(n)) => {
+            let _ = write!(out, " {n}");
+        }
+        Some(ToolRef::Name(s)) => {
+            let _ = write!(out, " \"{s}\"");
+        }
+        None => {}
+    }
+    if let Some(a) = t.axis {
+        out.push(' ');
+        out.push_str(a.as_str());
+    }
+    for (key, v, signed_word) in [
+        ("S", t.speed, false),
+        ("F", t.feed, false),
+        ("DL", t.dl, true),
+        ("DR", t.dr, true),
+        ("DR2", t.dr2, true),
+    ] {
+        if let Some(v) = v {
+            out.push(' ');
+            out.push_str(key);
+            if signed_word { value(out, v) } else { plain(out, v) }
+        }
+    }
+}
+
+fn polar(out: &mut String, key: &str, p: Option<PolarWord>) {
+    if let Some(p) = p {
+        out.push(' ');
+        if p.incremental {
+            out.push('I');
+        }
+        out.push_str(key);
+        value(out, p.value);
+    }
+}
+
+fn motion(out: &mut String, kw: &str, m: &Motion) {
+    out.push_str(kw);
+    polar(out, "PR", m.polar_radius);
+    polar(out, "PA", m.polar_angle);
+    axes(out, &m.axes);
+    if let Some(r) = m.radius {
+        out.push_str(" R");
+        value(out, r);
+    }
+    if let Some(d) = m.direction {
+        let _ = write!(out, " DR{}", sign(d));
+    }
+    tail(out, m.comp, m.feed, &m.m);
+}
+
+fn cycle_def(out: &mut String, c: &CycleDef, comment: Option<&str>) {
+    let _ = write!(out, "CYCL DEF {}", c.number);
+    if !c.name.is_empty() {
+        out.push(' ');
+        out.push_str(&c.name);
+    }
+    if let Some(cm) = comment {
+        out.push_str(" ;");
+        if !cm.is_empty() {
+            out.push(' ');
+            out.push_str(cm);
+        }
+    }
+    if !c.params.is_empty() {
+        out.push_str(" ~");
+    }
+    out.push('\n');
+    for (k, p) in c.params.iter().enumerate() {
+        let start = out.len();
+        let _ = write!(out, "  Q{}=", p.index);
+        value(out, p.value);
+        if let Some(l) = &p.label {
+            // Labels start in one column, like on the control's screen.
+            while out.len() - start < 16 {
+                out.push(' ');
+            }
+            out.push_str(" ;");
+            out.push_str(l);
+        }
+        if k + 1 < c.params.len() {
+            out.push_str(" ~");
+        }
+        out.push('\n');
+    }
+}
+
+fn three(out: &mut String, keys: [&str; 3], v: &[Value; 3]) {
+    for (k, v) in keys.iter().zip(v) {
+        out.push(' ');
+        out.push_str(k);
+        value(out, *v);
+    }
+}
+
+fn plane(out: &mut String, p: &PlaneBlock) {
+    out.push_str("PLANE ");
+    match &p.def {
+        PlaneDef::Spatial { spa, spb, spc } => {
+            out.push_str("SPATIAL");
+            three(out, ["SPA", "SPB", "SPC"], &[*spa, *spb, *spc]);
+        }
+        PlaneDef::Projected { propr, promin, rot } => {
+            out.push_str("PROJECTED");
+            three(out, ["PROPR", "PROMIN", "ROT"], &[*propr, *promin, *rot]);
+        }
+        PlaneDef::Euler { eulpr, eulnu, eulrot } => {
+            out.push_str("EULER");
+            three(out, ["EULPR", "EULNU", "EULROT"], &[*eulpr, *eulnu, *eulrot]);
+        }
+        PlaneDef::Vector { base, normal } => {
+            out.push_str("VECTOR");
+            three(out, ["BX", "BY", "BZ"], base);
+            three(out, ["NX", "NY", "NZ"], normal);
+        }
+        PlaneDef::Points { p1, p2, p3 } => {
+            out.push_str("POINTS");
+            three(out, ["P1X", "P1Y", "P1Z"], p1);
+            three(out, ["P2X", "P2Y", "P2Z"], p2);
+            three(out, ["P3X", "P3Y", "P3Z"], p3);
+        }
+        PlaneDef::Relativ { axis, angle } => {
+            out.push_str(match axis {
+                RelAxis::Spa => "RELATIV SPA",
+                RelAxis::Spb => "RELATIV SPB",
+                RelAxis::Spc => "RELATIV SPC",
+            });
+            value(out, *angle);
+        }
+        PlaneDef::Axial { axes } => {
+            out.push_str("AXIAL");
+            for a in axes {
+                out.push(' ');
+                if a.incremental {
+                    out.push('I');
+                }
+                out.push(match a.axis {
+                    RotaryAxis::A => 'A',
+                    RotaryAxis::B => 'B',
+                    RotaryAxis::C => 'C',
+                });
+                value(out, a.value);
+            }
+        }
+        PlaneDef::Reset => out.push_str("RESET"),
+    }
+    match p.positioning {
+        None => {}
+        Some(Positioning::Stay) => out.push_str(" STAY"),
+        Some(Positioning::Move { dist, feed: f }) => {
+            out.push_str(" MOVE");
+            if let Some(d) = dist {
+                out.push_str(" DIST");
+                value(out, d);
+            }
+            if let Some(f) = f {
+                feed(out, f);
+            }
+        }
+        Some(Positioning::Turn { move_back, feed: f }) => {
+            out.push_str(" TURN");
+            match move_back {
+                None => {}
+                Some(MoveBack::Max) => out.push_str(" MB MAX"),
+                Some(MoveBack::Dist(d)) => {
+                    out.push_str(" MB");
+                    value(out, d);
+                }
+            }
+            if let Some(f) = f {
+                feed(out, f);
+            }
+        }
+    }
+    match p.selection {
+        None => {}
+        Some(Selection::Seq(s)) => {
+            let _ = write!(out, " SEQ{}", sign(s));
+        }
+        Some(Selection::Sym(s)) => {
+            let _ = write!(out, " SYM{}", sign(s));
+        }
+    }
+    match p.transform {
+        None => {}
+        Some(TransformMode::CoordRot) => out.push_str(" COORD ROT"),
+        Some(TransformMode::TableRot) => out.push_str(" TABLE ROT"),
+    }
+}
+
+/// Binding strength: sums 1, products 2, powers 3, operands of unary operators 4.
+fn prec(e: &Expr) -> u8 {
+    match e {
+        Expr::Bin(BinOp::Add | BinOp::Sub, ..) => 1,
+        Expr::Bin(BinOp::Mul | BinOp::Div, ..) => 2,
+        Expr::Bin(BinOp::Pow, ..) | Expr::Neg(_) | Expr::Func(..) => 3,
+        Expr::Num(v) if *v < 0.0 => 3,
+        _ => 4,
+    }
+}
+
+fn paren(out: &mut String, e: &Expr, needed: bool) {
+    if needed {
+        out.push('(');
+        expr(out, e);
+        out.push(')');
+    } else {
+        expr(out, e);
+    }
+}
+
+/// Writes a formula with the parentheses its tree needs (operators are left-associative,
+/// `^` right-associative; a unary operator takes a power as its operand).
+fn expr(out: &mut String, e: &Expr) {
+    match e {
+        Expr::Num(v) => {
+            let _ = write!(out, "{}", if *v == 0.0 { 0.0 } else { *v });
+        }
+        Expr::Param(n) => {
+            let _ = write!(out, "Q{n}");
+        }
+        Expr::Pi => out.push_str("PI"),
+        Expr::Neg(x) => {
+            out.push('-');
+            paren(out, x, prec(x) < 3);
+        }
+        Expr::Func(f, x) => {
+            out.push_str(f.as_str());
+            out.push(' ');
+            paren(out, x, prec(x) < 3);
+        }
+        Expr::Bin(op, a, b) => {
+            let (sym, p) = match op {
+                BinOp::Add => (" + ", 1),
+                BinOp::Sub => (" - ", 1),
+                BinOp::Mul => (" * ", 2),
+                BinOp::Div => (" / ", 2),
+                BinOp::Pow => (" ^ ", 3),
+            };
+            let left_paren = if *op == BinOp::Pow { prec(a) < 4 } else { prec(a) < p };
+            let right_paren = if *op == BinOp::Pow { prec(b) < 3 } else { prec(b) <= p && prec(b) < 3 };
+            paren(out, a, left_paren);
+            out.push_str(sym);
+            paren(out, b, right_paren);
+        }
+    }
+}

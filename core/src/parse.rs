@@ -1,0 +1,466 @@
+//! The Klartext parser: text → [`Program`] + [`Diagnostic`]s. Never panics, never gives up:
+//! a block that cannot be read becomes [`BlockBody::Invalid`] with an error and the parser
+//! carries on with the next line.
+//!
+//! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
+//! continuation lines): the driver splits lines and block headers by hand, the block families
+//! below read the words with nom. No backtracking across lines, so time is linear in the input.
+
+mod cycles;
+mod frame;
+mod labels_q;
+mod motion;
+mod plane;
+mod tool;
+mod transforms;
+mod words;
+
+use std::borrow::Cow;
+
+use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
+use crate::diag::{DiagCode, Diagnostic, Severity};
+
+pub(crate) use words::PErr;
+
+/// A finding inside one block, with offsets relative to the block text being read.
+#[derive(Debug)]
+pub(crate) struct Issue {
+    start: usize,
+    end: usize,
+    severity: Severity,
+    code: DiagCode,
+    expected: Option<&'static str>,
+}
+
+/// Per-block context handed to the family parsers: collects issues and lends scratch buffers
+/// so that collecting axis words does not allocate per word.
+pub(crate) struct Cx {
+    base: usize,
+    len: usize,
+    issues: Vec<Issue>,
+    pub(crate) axes: Vec<AxisWord>,
+    pub(crate) m: Vec<u32>,
+}
+
+impl Cx {
+    fn new() -> Self {
+        Cx { base: 0, len: 0, issues: Vec::new(), axes: Vec::with_capacity(9), m: Vec::with_capacity(4) }
+    }
+
+    /// Offset of `s` (a sub-slice of the block text) from the start of the block text.
+    pub(crate) fn off(&self, s: &str) -> usize {
+        (s.as_ptr() as usize).saturating_sub(self.base).min(self.len)
+    }
+
+    pub(crate) fn push(&mut self, at: &str, len: usize, severity: Severity, code: DiagCode) {
+        let start = self.off(at);
+        self.issues.push(Issue { start, end: (start + len).min(self.len), severity, code, expected: None });
+    }
+
+    pub(crate) fn error(&mut self, at: &str, len: usize, code: DiagCode) {
+        self.push(at, len, Severity::Error, code);
+    }
+
+    pub(crate) fn warn(&mut self, at: &str, len: usize, code: DiagCode) {
+        self.push(at, len, Severity::Warning, code);
+    }
+
+    /// Records a syntax error at `at` and returns `None` so a family parser can `return cx.fail(..)`.
+    pub(crate) fn invalid<T>(&mut self, at: &str, expected: Option<&'static str>) -> Option<T> {
+        let start = self.off(at);
+        let word = at.find([' ', '\t']).unwrap_or(at.len()).max(1);
+        self.issues.push(Issue {
+            start,
+            end: (start + word).min(self.len),
+            severity: Severity::Error,
+            code: DiagCode::InvalidInput,
+            expected,
+        });
+        None
+    }
+
+    /// Converts a nom error into an issue.
+    pub(crate) fn fail<T>(&mut self, e: nom::Err<PErr<'_>>) -> Option<T> {
+        match e {
+            nom::Err::Error(e) | nom::Err::Failure(e) => self.invalid(e.input, e.expected),
+            nom::Err::Incomplete(_) => {
+                let end = self.len;
+                self.issues.push(Issue {
+                    start: end,
+                    end,
+                    severity: Severity::Error,
+                    code: DiagCode::InvalidInput,
+                    expected: None,
+                });
+                None
+            }
+        }
+    }
+
+    /// Takes the collected axis words as an exactly sized slice.
+    pub(crate) fn take_axes(&mut self) -> Box<[AxisWord]> {
+        let b = Box::from(&self.axes[..]);
+        self.axes.clear();
+        b
+    }
+
+    pub(crate) fn take_m(&mut self) -> Box<[u32]> {
+        let b = Box::from(&self.m[..]);
+        self.m.clear();
+        b
+    }
+}
+
+/// A physical line: byte range without the line break, 1-based number.
+#[derive(Debug, Clone, Copy)]
+struct PhysLine {
+    start: usize,
+    end: usize,
+    number: u32,
+}
+
+/// Splits into lines (`\n`, `\r\n` and a lone `\r` at the end of a line).
+struct Lines<'a> {
+    src: &'a str,
+    pos: usize,
+    number: u32,
+}
+
+impl Iterator for Lines<'_> {
+    type Item = PhysLine;
+
+    fn next(&mut self) -> Option<PhysLine> {
+        if self.pos >= self.src.len() {
+            return None;
+        }
+        let rest = &self.src.as_bytes()[self.pos..];
+        let (len, next) = match rest.iter().position(|&b| b == b'\n') {
+            Some(i) => (i, self.pos + i + 1),
+            None => (rest.len(), self.src.len()),
+        };
+        let mut end = self.pos + len;
+        if end > self.pos && self.src.as_bytes()[end - 1] == b'\r' {
+            end -= 1;
+        }
+        self.number += 1;
+        let line = PhysLine { start: self.pos, end, number: self.number };
+        self.pos = next;
+        Some(line)
+    }
+}
+
+/// Splits `text` at the first `;` outside double quotes: (body, comment).
+pub(crate) fn split_comment(text: &str) -> (&str, Option<&str>) {
+    let mut quoted = false;
+    for (i, b) in text.bytes().enumerate() {
+        match b {
+            b'"' => quoted = !quoted,
+            b';' if !quoted => return (&text[..i], Some(&text[i + 1..])),
+            _ => {}
+        }
+    }
+    (text, None)
+}
+
+fn starts_new_block(text: &str) -> bool {
+    matches!(text.trim_start().as_bytes().first(), Some(b'0'..=b'9' | b'/'))
+}
+
+/// Parses a Klartext program (or a single block without block number).
+///
+/// Returns the blocks that could be read and every finding; never panics.
+#[must_use]
+pub fn parse(src: &str) -> (Program, Vec<Diagnostic>) {
+    let src = src.strip_prefix('\u{feff}').unwrap_or(src);
+    let mut p = Parser { src, blocks: Vec::new(), diags: Vec::new(), cx: Cx::new(), block_lines: Vec::new() };
+    // One block per line in the common case: reserve once instead of doubling (memory budget).
+    p.blocks.reserve_exact(src.bytes().filter(|&b| b == b'\n').count() + 1);
+    let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
+    let mut previous_number: Option<u32> = None;
+    let mut begin: Option<String> = None;
+    let mut end_seen = false;
+    while let Some(first) = lines.next() {
+        let text = &src[first.start..first.end];
+        if text.trim().is_empty() {
+            continue;
+        }
+        // A block ending in `~` owns the following lines that do not start a new block.
+        p.block_lines.clear();
+        p.block_lines.push(first);
+        let mut last = first;
+        while src[last.start..last.end].trim_end().ends_with('~') {
+            match lines.peek() {
+                Some(next)
+                    if !src[next.start..next.end].trim().is_empty()
+                        && !starts_new_block(&src[next.start..next.end]) =>
+                {
+                    last = *next;
+                    p.block_lines.push(last);
+                    lines.next();
+                }
+                _ => break,
+            }
+        }
+        let block = p.block();
+        if let Some(n) = block.number {
+            if let Some(prev) = previous_number
+                && n <= prev
+            {
+                p.diag_at(
+                    Severity::Error,
+                    DiagCode::BlockNumberNotAscending { previous: prev, number: n },
+                    block.span.start,
+                    block.span.start + digits_len(&src[block.span.start..]),
+                    None,
+                );
+            }
+            previous_number = Some(n);
+        }
+        match &block.body {
+            BlockBody::BeginPgm { name, .. } if begin.is_none() => begin = Some(name.clone()),
+            BlockBody::EndPgm { name, .. } => {
+                end_seen = true;
+                if let Some(b) = &begin
+                    && !b.eq_ignore_ascii_case(name)
+                {
+                    let code = DiagCode::PgmNameMismatch { begin: b.clone(), end: name.clone() };
+                    p.diag_at(Severity::Error, code, block.span.start, block.span.end, None);
+                }
+            }
+            _ => {}
+        }
+        p.blocks.push(block);
+    }
+    if begin.is_some() && !end_seen {
+        let at = src.len();
+        p.diag_at(Severity::Warning, DiagCode::MissingEndPgm, at, at, None);
+    }
+    (Program { blocks: p.blocks }, p.diags)
+}
+
+fn digits_len(s: &str) -> usize {
+    let t = s.trim_start_matches('/');
+    (s.len() - t.len()) + t.bytes().take_while(u8::is_ascii_digit).count()
+}
+
+struct Parser<'s> {
+    src: &'s str,
+    blocks: Vec<Block>,
+    diags: Vec<Diagnostic>,
+    cx: Cx,
+    block_lines: Vec<PhysLine>,
+}
+
+impl Parser<'_> {
+    /// Line and 1-based character column of a byte offset.
+    fn locate(&self, at: usize) -> (u32, u32) {
+        let at = at.min(self.src.len());
+        let line = self
+            .block_lines
+            .iter()
+            .rev()
+            .find(|l| l.start <= at)
+            .copied()
+            .or_else(|| {
+                // Offsets after the last block (END PGM missing): count from the last line break.
+                let start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
+                let number = self.src[..at].bytes().filter(|&b| b == b'\n').count() as u32 + 1;
+                Some(PhysLine { start, end: at, number })
+            })
+            .unwrap_or(PhysLine { start: 0, end: 0, number: 1 });
+        let prefix = self.src.get(line.start..at).unwrap_or("");
+        (line.number, prefix.chars().count() as u32 + 1)
+    }
+
+    fn diag_at(&mut self, sev: Severity, code: DiagCode, start: usize, end: usize, expected: Option<&str>) {
+        let (line, column) = self.locate(start);
+        self.diags
+            .push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
+    }
+
+    /// Reads the block made of `self.block_lines`.
+    fn block(&mut self) -> Block {
+        let src = self.src;
+        let first = self.block_lines[0];
+        let last = self.block_lines[self.block_lines.len() - 1];
+        let line_text = &src[first.start..first.end];
+        let lead = line_text.len() - line_text.trim_start().len();
+        let span = Span::new(first.start + lead, last.end);
+        let (line, column) = (first.number, line_text[..lead].chars().count() as u32 + 1);
+
+        // Header: [/] [number] [/]
+        let mut rest = &line_text[lead..];
+        let mut skip = false;
+        if let Some(r) = rest.strip_prefix('/') {
+            skip = true;
+            rest = r.trim_start();
+        }
+        let mut number = None;
+        let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+        if digits > 0 {
+            let at = first.start + (line_text.len() - rest.len());
+            match rest[..digits].parse::<u32>() {
+                Ok(n) => number = Some(n),
+                Err(_) => {
+                    self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer"))
+                }
+            }
+            rest = &rest[digits..];
+            if !rest.is_empty() && !rest.starts_with([' ', '\t']) {
+                // `12X` is neither a block number nor a word.
+                let at = first.start + (line_text.len() - rest.len());
+                self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some("Leerzeichen"));
+            }
+            rest = rest.trim_start();
+            if let Some(r) = rest.strip_prefix('/') {
+                skip = true;
+                rest = r.trim_start();
+            }
+        } else {
+            self.diag_at(Severity::Warning, DiagCode::MissingBlockNumber, span.start, span.start, None);
+        }
+
+        let (body_text, comment) = split_comment(rest);
+        let mut body_text = body_text.trim();
+        let mut comment = comment.map(|c| c.trim().to_owned());
+        let continued = self.block_lines.len() > 1;
+        let dangling_tilde = line_text.trim_end().ends_with('~');
+        if body_text.ends_with('~') {
+            body_text = strip_tilde(body_text);
+        } else if let Some(c) = comment.as_mut()
+            && c.ends_with('~')
+        {
+            *c = strip_tilde(c).to_owned();
+        }
+        let body_start = first.start + (body_text.as_ptr() as usize - line_text.as_ptr() as usize);
+
+        let is_cycle = body_text.starts_with("CYCL DEF") && !is_old_cycle(body_text);
+        // Non-cycle blocks continued with `~` are read as one line: join their words and keep a
+        // map from the joined text back to the source for diagnostics.
+        let mut segments: Vec<(usize, usize)> = Vec::new();
+        let text: Cow<'_, str> = if continued && !is_cycle {
+            let mut joined = String::from(body_text);
+            segments.push((0, body_start));
+            for l in &self.block_lines[1..] {
+                let (b, c) = split_comment(&src[l.start..l.end]);
+                let b = strip_tilde(b.trim());
+                if let Some(c) = c {
+                    let c = strip_tilde(c.trim());
+                    if !c.is_empty() {
+                        let all = comment.get_or_insert_with(String::new);
+                        if !all.is_empty() {
+                            all.push(' ');
+                        }
+                        all.push_str(c);
+                    }
+                }
+                if !b.is_empty() {
+                    if !joined.is_empty() {
+                        joined.push(' ');
+                    }
+                    let src_start = b.as_ptr() as usize - src.as_ptr() as usize;
+                    segments.push((joined.len(), src_start));
+                    joined.push_str(b);
+                }
+            }
+            Cow::Owned(joined)
+        } else {
+            Cow::Borrowed(body_text)
+        };
+
+        self.cx.base = text.as_ptr() as usize;
+        // A cycle's parameter lines follow its header in the source: offsets reach up to there.
+        self.cx.len = if is_cycle { last.end - body_start } else { text.len() };
+        self.cx.issues.clear();
+        let body = if is_cycle {
+            let params: Vec<&str> = self.block_lines[1..].iter().map(|l| &src[l.start..l.end]).collect();
+            cycles::cycle_def(&mut self.cx, &text, &params)
+        } else {
+            parse_body(&mut self.cx, &text)
+        };
+        let body = body.unwrap_or_else(|| invalid(&text));
+        if dangling_tilde && !continued {
+            let code = match &body {
+                BlockBody::CycleDef(c) => DiagCode::CycleParamsElided { cycle: c.number },
+                _ => DiagCode::ContinuationMissing,
+            };
+            let at = first.start + line_text.trim_end().len() - 1;
+            self.diag_at(Severity::Warning, code, at, at + 1, None);
+        }
+        // Map issue offsets back to the source.
+        let issues = std::mem::take(&mut self.cx.issues);
+        for issue in &issues {
+            let to_src = |off: usize| -> usize {
+                match segments.iter().rev().find(|(j, _)| *j <= off) {
+                    Some((j, s)) => s + (off - j),
+                    None => body_start + off,
+                }
+            };
+            let (start, end) = (to_src(issue.start), to_src(issue.end));
+            self.diag_at(issue.severity, issue.code.clone(), start, end.max(start), issue.expected);
+        }
+        self.cx.issues = issues;
+        self.cx.issues.clear();
+        Block { number, skip, body, comment, span, line, column }
+    }
+}
+
+/// Drops the continuation mark(s) at the end of a line part.
+pub(crate) fn strip_tilde(s: &str) -> &str {
+    s.trim_end_matches(|c: char| c == '~' || c.is_whitespace())
+}
+
+fn invalid(text: &str) -> BlockBody {
+    BlockBody::Invalid { text: text.to_owned() }
+}
+
+/// `CYCL DEF 7.0 …`: the cycle number has a sub-number.
+fn is_old_cycle(body: &str) -> bool {
+    let rest = words::sp(&body["CYCL DEF".len()..]);
+    let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+    rest.as_bytes().get(digits) == Some(&b'.')
+}
+
+/// Dispatches on the first word to the block family.
+fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    if body.is_empty() {
+        return Some(BlockBody::Empty);
+    }
+    if let Some(text) = body.strip_prefix('*') {
+        return Some(BlockBody::Structure { text: text.trim().to_owned() });
+    }
+    let Ok((rest, kw)) = words::letters(body) else {
+        return cx.invalid(body, None);
+    };
+    let digit_follows = rest.as_bytes().first().is_some_and(u8::is_ascii_digit);
+    match kw {
+        "BEGIN" | "END" => frame::pgm(cx, body),
+        "BLK" => tool::blk_form(cx, body),
+        "TOOL" if words::keyword(words::sp(rest), "CALL").is_some() => tool::tool_call(cx, body),
+        "L" | "CC" | "C" | "CR" | "CT" | "LP" | "CP" | "RND" | "CHF" if !digit_follows => {
+            motion::path(cx, kw, rest)
+        }
+        "M" if digit_follows => motion::m_only(cx, body),
+        "CYCL" => cycles::cycle_other(cx, body),
+        "PLANE" => plane::plane(cx, rest),
+        "TRANS" => transforms::trans(cx, body),
+        "LBL" | "CALL" => labels_q::label_or_call(cx, body),
+        "FN" => labels_q::fn_block(cx, body),
+        "Q" if digit_follows => labels_q::assign(cx, body, false),
+        _ => unknown(cx, body),
+    }
+}
+
+/// A block of a kind we do not model: kept with a warning if it looks like NC text.
+pub(crate) fn unknown(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let first_word = body.split([' ', '\t']).next().unwrap_or("");
+    let well_formed = first_word.bytes().all(|b| b.is_ascii_uppercase() || b.is_ascii_digit())
+        && first_word.as_bytes().first().is_some_and(u8::is_ascii_uppercase)
+        && !body.chars().any(char::is_control);
+    if well_formed {
+        cx.warn(body, first_word.len(), DiagCode::UnknownBlock);
+        Some(BlockBody::Unknown { text: body.to_owned() })
+    } else {
+        cx.invalid(body, None)
+    }
+}

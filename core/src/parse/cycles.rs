@@ -1,0 +1,128 @@
+//! Cycle definitions and calls.
+//!   def  := CYCL DEF n name [~] { NL Q<n>=value [;label] [~] }   (continuation lines, DOMAIN.md §8)
+//!   old  := CYCL DEF n.0 name | CYCL DEF n.s words        call := CYCL CALL { Mn }
+
+use super::Cx;
+use super::words::{axis_word, keyword, m_function, sp, uint, word_value};
+use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
+use crate::diag::DiagCode;
+
+/// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
+pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<BlockBody> {
+    let Some(rest) = keyword(header, "CYCL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
+        return cx.invalid(header, Some("CYCL DEF"));
+    };
+    let (rest, number) = match uint(rest) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let name = rest.trim().to_owned();
+    let mut out = Vec::with_capacity(params.len());
+    for (k, line) in params.iter().enumerate() {
+        let (body, label) = super::split_comment(line);
+        let body = super::strip_tilde(body.trim());
+        let label = label.map(|l| super::strip_tilde(l.trim()));
+        let Some(q) = body.strip_prefix('Q') else {
+            return cx.invalid(body, Some("Q…="));
+        };
+        let (r, index) = match uint(q) {
+            Ok(ok) => ok,
+            Err(e) => return cx.fail(e),
+        };
+        let Some(r) = sp(r).strip_prefix('=') else {
+            return cx.invalid(sp(r), Some("="));
+        };
+        let (r, value) = match word_value(sp(r)) {
+            Ok(ok) => ok,
+            Err(e) => return cx.fail(e),
+        };
+        if !sp(r).is_empty() {
+            return cx.invalid(sp(r), None);
+        }
+        if out.iter().any(|p: &CycleParam| p.index == index) {
+            cx.error(body, body.len(), DiagCode::Duplicate { word: format!("Q{index}") });
+            return None;
+        }
+        if k + 1 == params.len() && line.trim_end().ends_with('~') {
+            let t = line.trim_end();
+            cx.warn(&t[t.len() - 1..], 1, DiagCode::ContinuationMissing);
+        }
+        out.push(CycleParam { index, value, label: label.filter(|l| !l.is_empty()).map(str::to_owned) });
+    }
+    Some(BlockBody::CycleDef(Box::new(CycleDef { number, name, params: out })))
+}
+
+/// `CYCL CALL …` and old-style `CYCL DEF 7.1 …`.
+pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let Some(rest) = keyword(body, "CYCL").map(sp) else { return super::unknown(cx, body) };
+    if let Some(mut i) = keyword(rest, "CALL").map(sp) {
+        cx.m.clear();
+        while !i.is_empty() {
+            match m_function(i) {
+                Ok((r, m)) => {
+                    cx.m.push(m);
+                    i = sp(r);
+                }
+                // `CYCL CALL PAT`, `CYCL CALL POS …`: not modelled.
+                Err(_) if cx.m.is_empty() => return super::unknown(cx, body),
+                Err(e) => return cx.fail(e),
+            }
+        }
+        return Some(BlockBody::CyclCall { m: cx.take_m() });
+    }
+    let Some(rest) = keyword(rest, "DEF").map(sp) else { return cx.invalid(rest, Some("DEF|CALL")) };
+    let (after, number) = match uint(rest) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let Some(after) = after.strip_prefix('.') else {
+        return cycle_def(cx, body, &[]);
+    };
+    let (after, sub) = match uint(after) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let text = after.trim();
+    let data = if sub == 0 {
+        OldCycleData::Name(text.to_owned())
+    } else if matches!(number, 7 | 8 | 10 | 11 | 19) {
+        OldCycleData::Words(old_words(cx, sp(after))?)
+    } else {
+        OldCycleData::Text(text.to_owned())
+    };
+    Some(BlockBody::CycleDefOld(Box::new(CycleDefOld { number, sub, data })))
+}
+
+/// Words of cycles 7 (datum), 8 (mirror), 10 (rotation), 11 (scaling), 19 (working plane).
+fn old_words(cx: &mut Cx, mut i: &str) -> Option<Vec<OldCycleWord>> {
+    let mut out = Vec::new();
+    while !i.is_empty() {
+        let (r, w) = if let Some(r) = i.strip_prefix("IROT").or_else(|| i.strip_prefix("ROT")) {
+            let incremental = i.starts_with('I');
+            match word_value(sp(r)) {
+                Ok((r, value)) => (r, OldCycleWord::Rot { value, incremental }),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(r) = i.strip_prefix("SCL") {
+            match word_value(sp(r)) {
+                Ok((r, v)) => (r, OldCycleWord::Scl(v)),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(r) = i.strip_prefix('F') {
+            match word_value(r) {
+                Ok((r, v)) => (r, OldCycleWord::Feed(v)),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some((r, a)) = Axis::ALL.iter().find_map(|&a| keyword(i, a.as_str()).map(|r| (r, a))) {
+            (r, OldCycleWord::MirrorAxis(a))
+        } else {
+            match axis_word(i) {
+                Ok((r, w)) => (r, OldCycleWord::Axis(w)),
+                Err(e) => return cx.fail(e),
+            }
+        };
+        out.push(w);
+        i = sp(r);
+    }
+    Some(out)
+}

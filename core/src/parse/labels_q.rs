@@ -1,0 +1,208 @@
+//! Labels, calls and Q parameters with a small formula language.
+//!   lbl := LBL (n|"name")    call := CALL LBL (n|"name") [REP m[/m]] | CALL PGM path
+//!   q   := [FN 0:] Q<n> = expr      expr := term {(+|-) term}   term := unary {(*|/) unary}
+//!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
+
+use super::Cx;
+use super::words::{PResult, failure, keyword, number, quoted, sp, token, uint};
+use crate::ast::{BinOp, BlockBody, Expr, Func, Label};
+use crate::diag::DiagCode;
+
+/// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
+const MAX_DEPTH: u32 = 64;
+
+fn label(i: &str) -> PResult<'_, Label> {
+    if i.starts_with('"') {
+        let (r, name) = quoted(i)?;
+        return Ok((r, Label::Name(name.to_owned())));
+    }
+    if i.as_bytes().first().is_some_and(u8::is_ascii_digit) {
+        let (r, n) = uint(i)?;
+        return Ok((r, Label::Number(n)));
+    }
+    failure(i, "Nummer|\"Name\"")
+}
+
+/// `LBL …`, `CALL LBL …`, `CALL PGM …`.
+pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    if let Some(r) = keyword(body, "LBL") {
+        return match label(sp(r)) {
+            Ok((rest, l)) => end(cx, rest, BlockBody::Lbl(l)),
+            Err(e) => cx.fail(e),
+        };
+    }
+    let Some(r) = keyword(body, "CALL").map(sp) else { return super::unknown(cx, body) };
+    if let Some(r) = keyword(r, "PGM").map(sp) {
+        return match token(r) {
+            Ok((rest, path)) => end(cx, rest, BlockBody::CallPgm { path: path.to_owned() }),
+            Err(e) => cx.fail(e),
+        };
+    }
+    let Some(r) = keyword(r, "LBL").map(sp) else { return super::unknown(cx, body) };
+    let (r, l) = match label(r) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let r = sp(r);
+    let mut rep = None;
+    let mut rest = r;
+    if let Some(after) = r.strip_prefix("REP") {
+        match uint(sp(after)) {
+            Ok((after, n)) => {
+                rep = Some(n);
+                rest = after;
+                // The control shows `REP 2/2` (remaining/total) after a run: keep the total.
+                if let Some(total) = after.strip_prefix('/') {
+                    match uint(total) {
+                        Ok((after, _)) => rest = after,
+                        Err(e) => return cx.fail(e),
+                    }
+                }
+            }
+            Err(e) => return cx.fail(e),
+        }
+    }
+    end(cx, rest, BlockBody::CallLbl { label: l, rep })
+}
+
+/// `FN 0: Q1 = +5`; other FN functions are kept as unknown blocks.
+pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let Some(r) = keyword(body, "FN").map(sp) else { return super::unknown(cx, body) };
+    match uint(r) {
+        Ok((rest, 0)) => match sp(rest).strip_prefix(':') {
+            Some(q) => assign(cx, sp(q), true),
+            None => cx.invalid(sp(rest), Some(":")),
+        },
+        _ => super::unknown(cx, body),
+    }
+}
+
+/// `Q<n> = expr`.
+pub(super) fn assign(cx: &mut Cx, body: &str, fn0: bool) -> Option<BlockBody> {
+    let Some(q) = body.strip_prefix('Q') else { return cx.invalid(body, Some("Q")) };
+    let (r, target) = match uint(q) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some("=")) };
+    match expr(sp(r), 0) {
+        Ok((rest, e)) => end(cx, rest, BlockBody::QAssign { target, expr: e, fn0 }),
+        Err(e) => cx.fail(e),
+    }
+}
+
+fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
+    let rest = sp(rest);
+    if rest.is_empty() {
+        Some(body)
+    } else {
+        let len = rest.find(' ').unwrap_or(rest.len());
+        cx.error(rest, len, DiagCode::InvalidInput);
+        None
+    }
+}
+
+/// Bounds both the nesting depth and the number of operators of one formula, so recursion in
+/// parsing, formatting and dropping the tree stays small (a wasm stack is only about 1 MB).
+struct Budget {
+    ops: u32,
+}
+
+const MAX_OPS: u32 = 256;
+
+impl Budget {
+    fn bin<'a>(&mut self, at: &'a str, op: BinOp, a: Expr, b: Expr) -> PResult<'a, Expr> {
+        self.ops += 1;
+        if self.ops > MAX_OPS {
+            return failure(at, "kürzere Formel");
+        }
+        Ok((at, Expr::Bin(op, Box::new(a), Box::new(b))))
+    }
+}
+
+fn expr(i: &str, depth: u32) -> PResult<'_, Expr> {
+    expr_in(i, depth, &mut Budget { ops: 0 })
+}
+
+fn expr_in<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+    let (mut i, mut acc) = term(i, depth, b)?;
+    loop {
+        let s = sp(i);
+        let op = match s.as_bytes().first() {
+            Some(b'+') => BinOp::Add,
+            Some(b'-') => BinOp::Sub,
+            _ => return Ok((i, acc)),
+        };
+        let (r, rhs) = term(sp(&s[1..]), depth, b)?;
+        acc = b.bin(r, op, acc, rhs)?.1;
+        i = r;
+    }
+}
+
+fn term<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+    let (mut i, mut acc) = unary(i, depth, b)?;
+    loop {
+        let s = sp(i);
+        let op = match s.as_bytes().first() {
+            Some(b'*') => BinOp::Mul,
+            Some(b'/') => BinOp::Div,
+            _ => return Ok((i, acc)),
+        };
+        let (r, rhs) = unary(sp(&s[1..]), depth, b)?;
+        acc = b.bin(r, op, acc, rhs)?.1;
+        i = r;
+    }
+}
+
+fn unary<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+    if depth > MAX_DEPTH {
+        return failure(i, "weniger Verschachtelung");
+    }
+    match i.as_bytes().first() {
+        Some(b'+') => return unary(sp(&i[1..]), depth + 1, b),
+        Some(b'-') => {
+            let (r, e) = unary(sp(&i[1..]), depth + 1, b)?;
+            let e = match e {
+                Expr::Num(v) => Expr::Num(-v),
+                other => Expr::Neg(Box::new(other)),
+            };
+            return Ok((r, e));
+        }
+        _ => {}
+    }
+    if let Some((f, r)) = Func::ALL.iter().find_map(|&f| i.strip_prefix(f.as_str()).map(|r| (f, r))) {
+        let (r, e) = unary(sp(r), depth + 1, b)?;
+        return Ok((r, Expr::Func(f, Box::new(e))));
+    }
+    let (r, base) = atom(i, depth, b)?;
+    let s = sp(r);
+    if let Some(after) = s.strip_prefix('^') {
+        let (r, exp) = unary(sp(after), depth + 1, b)?;
+        return b.bin(r, BinOp::Pow, base, exp);
+    }
+    Ok((r, base))
+}
+
+fn atom<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+    match i.as_bytes().first() {
+        Some(b'0'..=b'9' | b'.') => {
+            let (r, v) = number(i)?;
+            Ok((r, Expr::Num(v)))
+        }
+        Some(b'Q') => {
+            let (r, n) = uint(&i[1..])?;
+            Ok((r, Expr::Param(n)))
+        }
+        Some(b'(') => {
+            let (r, e) = expr_in(sp(&i[1..]), depth + 1, b)?;
+            match sp(r).strip_prefix(')') {
+                Some(r) => Ok((r, e)),
+                None => failure(sp(r), ")"),
+            }
+        }
+        _ => match i.strip_prefix("PI") {
+            Some(r) => Ok((r, Expr::Pi)),
+            None => failure(i, "Zahl|Q|(|Funktion"),
+        },
+    }
+}

@@ -1,0 +1,233 @@
+//! Path blocks: straight lines, arcs, polar moves, rounding and chamfer, lone M functions.
+//!   path := (L|CC|C|CR|CT|LP|CP) { [I]axis±v | [I]PR v | [I]PA v | R v | DR± | R0|RL|RR | feed | Mn }
+//!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
+
+use super::Cx;
+use super::words::{PResult, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
+use crate::ast::{BlockBody, Line, Motion, PolarWord, RadiusComp};
+use crate::diag::DiagCode;
+use crate::plane::{Feed, Sign, Value};
+
+const EXPECTED: &str = "X|Y|Z|A|B|C|R0|RL|RR|F|M";
+
+/// Words of a path block, with where each optional word stood (for "not allowed here").
+#[derive(Default)]
+struct Words<'a> {
+    polar_radius: Option<(PolarWord, &'a str)>,
+    polar_angle: Option<(PolarWord, &'a str)>,
+    radius: Option<(Value, &'a str)>,
+    direction: Option<(Sign, &'a str)>,
+    comp: Option<(RadiusComp, &'a str)>,
+    feed: Option<(Feed, &'a str)>,
+    first_m: Option<&'a str>,
+}
+
+fn polar<'a>(i: &'a str, key: &'static str) -> Option<PResult<'a, PolarWord>> {
+    let (incremental, rest) = match i.strip_prefix('I') {
+        Some(r) => (true, r),
+        None => (false, i),
+    };
+    let rest = rest.strip_prefix(key)?;
+    if !rest.starts_with(['+', '-', '.', '0', '1', '2', '3', '4', '5', '6', '7', '8', '9', 'Q']) {
+        return None;
+    }
+    Some(word_value(rest).map(|(r, value)| (r, PolarWord { value, incremental })))
+}
+
+/// Stores `v` in `slot` unless the word was already there.
+fn once<'a, T>(cx: &mut Cx, slot: &mut Option<(T, &'a str)>, v: T, at: &'a str, len: usize) -> bool {
+    if slot.is_some() {
+        let word = at[..len.min(at.len())].to_owned();
+        cx.error(at, len, DiagCode::Duplicate { word });
+        return false;
+    }
+    *slot = Some((v, at));
+    true
+}
+
+/// `L`, `CC`, `C`, `CR`, `CT`, `LP`, `CP`, `RND`, `CHF` (`rest` follows the keyword).
+pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
+    cx.axes.clear();
+    cx.m.clear();
+    if !at_boundary(rest) {
+        return cx.invalid(rest, Some("Leerzeichen"));
+    }
+    match kw {
+        "RND" | "CHF" => return rounding(cx, kw, sp(rest)),
+        _ => {}
+    }
+    let mut w = Words::default();
+    let mut i = sp(rest);
+    while !i.is_empty() {
+        let at = i;
+        if let Ok((r, m)) = m_function(i) {
+            w.first_m.get_or_insert(at);
+            cx.m.push(m);
+            i = sp(r);
+            continue;
+        }
+        match axis_word(i) {
+            Ok((r, word)) => {
+                if cx.axes.iter().any(|a| a.axis == word.axis) {
+                    let len = at.len() - r.len();
+                    cx.error(at, len, DiagCode::Duplicate { word: word.axis.as_str().to_owned() });
+                    return None;
+                }
+                cx.axes.push(word);
+                i = sp(r);
+                continue;
+            }
+            Err(nom::Err::Error(_)) => {}
+            Err(e) => return cx.fail(e),
+        }
+        let (r, ok) = if i.starts_with('F') {
+            match feed(i) {
+                Ok((r, f)) => (r, once(cx, &mut w.feed, f, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(r) = keyword(i, "R0") {
+            (r, once(cx, &mut w.comp, RadiusComp::R0, at, 2))
+        } else if let Some(r) = keyword(i, "RL") {
+            (r, once(cx, &mut w.comp, RadiusComp::Rl, at, 2))
+        } else if let Some(r) = keyword(i, "RR") {
+            (r, once(cx, &mut w.comp, RadiusComp::Rr, at, 2))
+        } else if let Some(after) = i.strip_prefix("DR") {
+            match sign(after) {
+                Ok((r, s)) if at_boundary(r) => (r, once(cx, &mut w.direction, s, at, 3)),
+                _ => return cx.invalid(at, Some("DR+|DR-")),
+            }
+        } else if let Some(res) = polar(i, "PR") {
+            match res {
+                Ok((r, p)) => (r, once(cx, &mut w.polar_radius, p, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(res) = polar(i, "PA") {
+            match res {
+                Ok((r, p)) => (r, once(cx, &mut w.polar_angle, p, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(after) = i.strip_prefix('R') {
+            match word_value(after) {
+                Ok((r, v)) => (r, once(cx, &mut w.radius, v, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
+        } else {
+            return cx.invalid(at, Some(EXPECTED));
+        };
+        if !ok {
+            return None;
+        }
+        i = sp(r);
+    }
+    build(cx, kw, w, i)
+}
+
+/// Checks which words the block kind takes and builds the node.
+fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
+    let allowed = |word: &str| -> bool {
+        match kw {
+            "L" | "CT" => matches!(word, "comp" | "feed" | "m"),
+            "CC" => false,
+            "C" => matches!(word, "dir" | "comp" | "feed" | "m"),
+            "CR" => matches!(word, "radius" | "dir" | "comp" | "feed" | "m"),
+            "LP" => matches!(word, "pr" | "pa" | "comp" | "feed" | "m"),
+            "CP" => matches!(word, "pa" | "dir" | "comp" | "feed" | "m"),
+            _ => false,
+        }
+    };
+    let present: [(&str, Option<&str>); 7] = [
+        ("pr", w.polar_radius.map(|p| p.1)),
+        ("pa", w.polar_angle.map(|p| p.1)),
+        ("radius", w.radius.map(|p| p.1)),
+        ("dir", w.direction.map(|p| p.1)),
+        ("comp", w.comp.map(|p| p.1)),
+        ("feed", w.feed.map(|p| p.1)),
+        ("m", w.first_m),
+    ];
+    for (word, at) in present {
+        if let Some(at) = at
+            && !allowed(word)
+        {
+            let len = at.find([' ', '\t']).unwrap_or(at.len());
+            let text = at[..len].to_owned();
+            cx.error(at, len, DiagCode::NotAllowed { word: text });
+            return None;
+        }
+    }
+    if kw == "CR" && w.radius.is_none() {
+        cx.error(end, 0, DiagCode::MissingWord { word: "R" });
+        return None;
+    }
+    let comp = w.comp.map(|c| c.0);
+    let feed = w.feed.map(|f| f.0);
+    if kw == "L" {
+        return Some(BlockBody::L(Line { axes: cx.take_axes(), comp, feed, m: cx.take_m() }));
+    }
+    let motion = Box::new(Motion {
+        axes: cx.take_axes(),
+        polar_radius: w.polar_radius.map(|p| p.0),
+        polar_angle: w.polar_angle.map(|p| p.0),
+        radius: w.radius.map(|p| p.0),
+        direction: w.direction.map(|p| p.0),
+        comp,
+        feed,
+        m: cx.take_m(),
+    });
+    Some(match kw {
+        "CC" => BlockBody::Cc(motion),
+        "C" => BlockBody::C(motion),
+        "CR" => BlockBody::Cr(motion),
+        "CT" => BlockBody::Ct(motion),
+        "LP" => BlockBody::Lp(motion),
+        _ => BlockBody::Cp(motion),
+    })
+}
+
+/// `RND R…` and `CHF …`, each with an optional feed.
+fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
+    let v = if kw == "RND" {
+        match i.strip_prefix('R') {
+            Some(r) => word_value(r),
+            None => return cx.invalid(i, Some("R")),
+        }
+    } else {
+        word_value(i)
+    };
+    let (rest, v) = match v {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let rest = sp(rest);
+    let (rest, f) = if rest.is_empty() {
+        (rest, None)
+    } else {
+        match feed(rest) {
+            Ok((r, f)) => (sp(r), Some(f)),
+            Err(e) => return cx.fail(e),
+        }
+    };
+    if !rest.is_empty() {
+        return cx.invalid(rest, None);
+    }
+    Some(if kw == "RND" {
+        BlockBody::Rnd { radius: v, feed: f }
+    } else {
+        BlockBody::Chf { length: v, feed: f }
+    })
+}
+
+/// A block of only M functions (`M30`, `M99`).
+pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    cx.m.clear();
+    let mut i = body;
+    while !i.is_empty() {
+        match m_function(i) {
+            Ok((r, m)) => {
+                cx.m.push(m);
+                i = sp(r);
+            }
+            Err(e) => return cx.fail(e),
+        }
+    }
+    Some(BlockBody::MFunctions(cx.take_m()))
+}

@@ -1,0 +1,284 @@
+//! PLANE blocks into the shared [`crate::plane`] vocabulary, with the control's input checks.
+//!   plane := PLANE def [MOVE [DIST v] [feed] | TURN [MB v|MB MAX] [feed] | STAY] [SEQ±|SYM±] [COORD ROT|TABLE ROT]
+//!   def   := SPATIAL SPA SPB SPC | PROJECTED PROPR PROMIN ROT | EULER EULPR EULNU EULROT | VECTOR BX…NZ | POINTS P1X…P3Z | RELATIV SPA|SPB|SPC | AXIAL {[I]A|B|C} | RESET
+
+use super::Cx;
+use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
+use crate::ast::{Axis, BlockBody};
+use crate::diag::DiagCode;
+use crate::plane::{
+    AxialAngle, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, TransformMode,
+    Value,
+};
+
+/// Input range of a word and whether it is an angle ("Winkel nicht erlaubt") or another value.
+#[derive(Clone, Copy)]
+struct Range {
+    min: f64,
+    max: f64,
+    angle: bool,
+}
+
+// DOMAIN.md §5 (iTNC 530 manual figures).
+const SPATIAL: Range = Range { min: -359.9999, max: 359.9999, angle: true };
+const PROJ: Range = Range { min: -89.9999, max: 89.9999, angle: true };
+const ROT360: Range = Range { min: 0.0, max: 360.0, angle: true };
+const EULPR: Range = Range { min: -180.0, max: 180.0, angle: true };
+const EULNU: Range = Range { min: 0.0, max: 180.0, angle: true };
+// Later iTNC 530 range; the TNC 320/620/640 allow only ±9.9999999 (DOMAIN.md §5).
+const VECTOR: Range = Range { min: -99.9999999, max: 99.9999999, angle: false };
+/// Values read exactly as written; a tolerance keeps `359.9999` itself inside.
+const EPS: f64 = 1e-9;
+
+/// `KEY value` that must be there; checks the range of a written number.
+fn mandatory<'a>(
+    cx: &mut Cx,
+    i: &'a str,
+    key: &'static str,
+    range: Option<Range>,
+) -> Option<(&'a str, Value)> {
+    let i = sp(i);
+    let Some(after) = i.strip_prefix(key) else {
+        let len = i.find([' ', '\t']).unwrap_or(i.len());
+        cx.error(i, len, DiagCode::MissingWord { word: key });
+        return None;
+    };
+    let (rest, v) = match word_value(sp(after)) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    if let (Some(r), Value::Number(x)) = (range, v)
+        && (x < r.min - EPS || x > r.max + EPS)
+    {
+        let (word, value, min, max) = (key, x, r.min, r.max);
+        let code = if r.angle {
+            DiagCode::AngleNotPermitted { word, value, min, max }
+        } else {
+            DiagCode::ValueOutOfRange { word, value, min, max }
+        };
+        cx.error(i, i.len() - rest.len(), code);
+    }
+    Some((rest, v))
+}
+
+fn triple<'a>(
+    cx: &mut Cx,
+    i: &'a str,
+    keys: [&'static str; 3],
+    r: Option<Range>,
+) -> Option<(&'a str, [Value; 3])> {
+    let (i, a) = mandatory(cx, i, keys[0], r)?;
+    let (i, b) = mandatory(cx, i, keys[1], r)?;
+    let (i, c) = mandatory(cx, i, keys[2], r)?;
+    Some((i, [a, b, c]))
+}
+
+/// `rest` follows the word `PLANE`.
+pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
+    let i = sp(rest);
+    const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
+    let (i, def) = if let Some(r) = keyword(i, "SPATIAL") {
+        let (r, [spa, spb, spc]) = triple(cx, r, ["SPA", "SPB", "SPC"], Some(SPATIAL))?;
+        (r, PlaneDef::Spatial { spa, spb, spc })
+    } else if let Some(r) = keyword(i, "PROJECTED") {
+        let (r, propr) = mandatory(cx, r, "PROPR", Some(PROJ))?;
+        let (r, promin) = mandatory(cx, r, "PROMIN", Some(PROJ))?;
+        let (r, rot) = mandatory(cx, r, "ROT", Some(ROT360))?;
+        (r, PlaneDef::Projected { propr, promin, rot })
+    } else if let Some(r) = keyword(i, "EULER") {
+        let (r, eulpr) = mandatory(cx, r, "EULPR", Some(EULPR))?;
+        let (r, eulnu) = mandatory(cx, r, "EULNU", Some(EULNU))?;
+        let (r, eulrot) = mandatory(cx, r, "EULROT", Some(ROT360))?;
+        (r, PlaneDef::Euler { eulpr, eulnu, eulrot })
+    } else if let Some(r) = keyword(i, "VECTOR") {
+        let at = sp(r);
+        let (r, base) = triple(cx, r, ["BX", "BY", "BZ"], Some(VECTOR))?;
+        let at_n = sp(r);
+        let (r, normal) = triple(cx, r, ["NX", "NY", "NZ"], Some(VECTOR))?;
+        for (word, v, at) in [("B", base, at), ("N", normal, at_n)] {
+            if v.iter().all(|x| matches!(x, Value::Number(n) if *n == 0.0)) {
+                cx.error(at, 2, DiagCode::ZeroVector { word });
+            }
+        }
+        (r, PlaneDef::Vector { base, normal })
+    } else if let Some(r) = keyword(i, "POINTS") {
+        // Range UNCONFIRMED (DOMAIN.md §5): not checked.
+        let (r, p1) = triple(cx, r, ["P1X", "P1Y", "P1Z"], None)?;
+        let (r, p2) = triple(cx, r, ["P2X", "P2Y", "P2Z"], None)?;
+        let (r, p3) = triple(cx, r, ["P3X", "P3Y", "P3Z"], None)?;
+        (r, PlaneDef::Points { p1, p2, p3 })
+    } else if let Some(r) = keyword(i, "RELATIV") {
+        let r = sp(r);
+        // Range UNCONFIRMED, assumed like SPATIAL (DOMAIN.md §5).
+        let (key, axis) = match r.get(..3) {
+            Some("SPA") => ("SPA", RelAxis::Spa),
+            Some("SPB") => ("SPB", RelAxis::Spb),
+            Some("SPC") => ("SPC", RelAxis::Spc),
+            _ => {
+                cx.error(r, r.find(' ').unwrap_or(r.len()), DiagCode::MissingWord { word: "SPA|SPB|SPC" });
+                return None;
+            }
+        };
+        let (r, angle) = mandatory(cx, r, key, Some(SPATIAL))?;
+        (r, PlaneDef::Relativ { axis, angle })
+    } else if let Some(r) = keyword(i, "AXIAL") {
+        axial(cx, r)?
+    } else if let Some(r) = keyword(i, "RESET") {
+        (r, PlaneDef::Reset)
+    } else {
+        return cx.invalid(i, Some(DEFS));
+    };
+    let block = options(cx, i, def)?;
+    Some(BlockBody::Plane(Box::new(block)))
+}
+
+/// `PLANE AXIAL B-45`, `PLANE AXIAL A+0 IC+90` (range UNCONFIRMED, not checked).
+fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
+    let mut i = sp(r);
+    let mut axes: Vec<AxialAngle> = Vec::new();
+    loop {
+        let at = i;
+        let w = match axis_word(i) {
+            Ok((rest, w)) => {
+                i = sp(rest);
+                w
+            }
+            Err(nom::Err::Error(_)) => break,
+            Err(e) => return cx.fail(e),
+        };
+        let axis = match w.axis {
+            Axis::A => RotaryAxis::A,
+            Axis::B => RotaryAxis::B,
+            Axis::C => RotaryAxis::C,
+            _ => return cx.invalid(at, Some("A|B|C")),
+        };
+        if axes.iter().any(|a| a.axis == axis) {
+            cx.error(at, at.len() - i.len(), DiagCode::Duplicate { word: w.axis.as_str().to_owned() });
+            return None;
+        }
+        axes.push(AxialAngle { axis, value: w.value, incremental: w.incremental });
+    }
+    if axes.is_empty() {
+        let len = i.find(' ').unwrap_or(i.len());
+        cx.error(i, len, DiagCode::MissingWord { word: "A|B|C" });
+        return None;
+    }
+    Some((i, PlaneDef::Axial { axes }))
+}
+
+/// Positioning, selection and transformation words, in any order, each at most once.
+fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
+    let mut block = PlaneBlock { def, positioning: None, selection: None, transform: None };
+    loop {
+        i = sp(i);
+        if i.is_empty() {
+            break;
+        }
+        let at = i;
+        let (rest, positioning) = if let Some(r) = keyword(i, "MOVE") {
+            let mut r = sp(r);
+            let mut dist = None;
+            if let Some(after) = r.strip_prefix("DIST") {
+                match word_value(sp(after)) {
+                    Ok((rr, v)) => {
+                        dist = Some(v);
+                        r = sp(rr);
+                    }
+                    Err(e) => return cx.fail(e),
+                }
+            }
+            let (r, feed) = opt_feed(cx, r)?;
+            (r, Some(Positioning::Move { dist, feed }))
+        } else if let Some(r) = keyword(i, "TURN") {
+            let mut r = sp(r);
+            let mut move_back = None;
+            if let Some(after) = r.strip_prefix("MB") {
+                let after = sp(after);
+                if let Some(rr) = keyword(after, "MAX") {
+                    move_back = Some(MoveBack::Max);
+                    r = sp(rr);
+                } else {
+                    match word_value(after) {
+                        Ok((rr, v)) => {
+                            move_back = Some(MoveBack::Dist(v));
+                            r = sp(rr);
+                        }
+                        Err(e) => return cx.fail(e),
+                    }
+                }
+            }
+            let (r, feed) = opt_feed(cx, r)?;
+            (r, Some(Positioning::Turn { move_back, feed }))
+        } else if let Some(r) = keyword(i, "STAY") {
+            (r, Some(Positioning::Stay))
+        } else {
+            (i, None)
+        };
+        if let Some(p) = positioning {
+            if block.positioning.is_some() {
+                let len = at.find(' ').unwrap_or(at.len());
+                cx.error(at, len, DiagCode::Duplicate { word: at[..len].to_owned() });
+                return None;
+            }
+            block.positioning = Some(p);
+            i = rest;
+            continue;
+        }
+        let seq = i.strip_prefix("SEQ").map(|r| (r, true));
+        if let Some((r, is_seq)) = seq.or_else(|| i.strip_prefix("SYM").map(|r| (r, false))) {
+            let Ok((r, s)) =
+                sign(r).map_err(|_| ()).and_then(|(r, s)| if at_boundary(r) { Ok((r, s)) } else { Err(()) })
+            else {
+                return cx.invalid(at, Some("SEQ+|SEQ-|SYM+|SYM-"));
+            };
+            let sel = if is_seq { Selection::Seq(s) } else { Selection::Sym(s) };
+            match block.selection {
+                None => block.selection = Some(sel),
+                Some(prev) => {
+                    let code = if matches!(
+                        (prev, sel),
+                        (Selection::Seq(_), Selection::Sym(_)) | (Selection::Sym(_), Selection::Seq(_))
+                    ) {
+                        DiagCode::SeqWithSym
+                    } else {
+                        DiagCode::Duplicate { word: at[..4].to_owned() }
+                    };
+                    cx.error(at, 4, code);
+                    return None;
+                }
+            }
+            i = r;
+            continue;
+        }
+        let transform = if let Some(r) = keyword(i, "COORD") {
+            Some((r, TransformMode::CoordRot))
+        } else {
+            keyword(i, "TABLE").map(|r| (r, TransformMode::TableRot))
+        };
+        if let Some((r, t)) = transform {
+            let Some(r) = keyword(sp(r), "ROT") else { return cx.invalid(sp(r), Some("ROT")) };
+            if block.transform.is_some() {
+                let len = at.len() - r.len();
+                cx.error(at, len, DiagCode::Duplicate { word: at[..len].to_owned() });
+                return None;
+            }
+            block.transform = Some(t);
+            i = r;
+            continue;
+        }
+        return cx.invalid(at, Some("MOVE|TURN|STAY|SEQ±|SYM±|COORD ROT|TABLE ROT"));
+    }
+    if block.positioning.is_none() {
+        cx.warn(i, 0, DiagCode::MissingPositioning);
+    }
+    Some(block)
+}
+
+/// An optional feed after MOVE/TURN.
+fn opt_feed<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, Option<crate::plane::Feed>)> {
+    match feed(r) {
+        Ok((rest, f)) => Some((rest, Some(f))),
+        Err(nom::Err::Error(_)) => Some((r, None)),
+        Err(e) => cx.fail(e),
+    }
+}
