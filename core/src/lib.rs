@@ -6,6 +6,7 @@
 
 pub mod ast;
 pub mod diag;
+pub mod edit;
 pub mod format;
 pub mod parse;
 pub mod plane;

@@ -194,3 +194,40 @@ impl<V> PlaneDef<V> {
         })
     }
 }
+
+/// Input range of a PLANE word and whether it is an angle (out of range: "Winkel nicht
+/// erlaubt") or another value. One table for the parser and the softkey dialog.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InputRange {
+    pub min: f64,
+    pub max: f64,
+    pub angle: bool,
+}
+
+impl InputRange {
+    /// Values are checked as written; a tolerance keeps `359.9999` itself inside.
+    const EPS: f64 = 1e-9;
+
+    #[must_use]
+    pub fn contains(&self, x: f64) -> bool {
+        x >= self.min - Self::EPS && x <= self.max + Self::EPS
+    }
+}
+
+/// The input range of `word` (DOMAIN.md §5, iTNC 530 manual figures), `None` where no range is
+/// known (POINTS and AXIAL: UNCONFIRMED, not checked).
+#[must_use]
+pub fn input_range(word: &str) -> Option<InputRange> {
+    let r = |min, max, angle| Some(InputRange { min, max, angle });
+    match word {
+        // SPATIAL, and RELATIV (UNCONFIRMED, assumed like SPATIAL).
+        "SPA" | "SPB" | "SPC" => r(-359.9999, 359.9999, true),
+        "PROPR" | "PROMIN" => r(-89.9999, 89.9999, true),
+        "ROT" | "EULROT" => r(0.0, 360.0, true),
+        "EULPR" => r(-180.0, 180.0, true),
+        "EULNU" => r(0.0, 180.0, true),
+        // The later iTNC 530 range; the TNC 320/620/640 allow only ±9.9999999.
+        "BX" | "BY" | "BZ" | "NX" | "NY" | "NZ" => r(-99.9999999, 99.9999999, false),
+        _ => None,
+    }
+}
