@@ -288,11 +288,11 @@ pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
 
 /// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
 /// coordinate range ±99999.9999.
-pub const POINTS_COORD_LIMIT: f64 = 99_999.9999;
+pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
 
 /// PLANE RELATIV angle limit. **UNCONFIRMED** ("probably ±359.9999", DOMAIN.md §5).
 pub const RELATIV_LIMIT: f64 = 359.9999;
 
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.
-pub const AXIAL_LIMIT: f64 = 99_999.9999;
+pub const AXIAL_LIMIT: f64 = 99_999.999_9;

@@ -57,7 +57,11 @@ pub fn flat<T: Flat>(x: &T) -> Vec<f64> {
     v
 }
 
-pub fn block(def: PlaneDef<f64>, selection: Option<Selection>, transform: Option<TransformMode>) -> PlaneBlock<f64> {
+pub fn block(
+    def: PlaneDef<f64>,
+    selection: Option<Selection>,
+    transform: Option<TransformMode>,
+) -> PlaneBlock<f64> {
     PlaneBlock { def, positioning: None, selection, transform }
 }
 
