@@ -3,3 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo run --release -p schwenkbar-core --example bench_parse
+cargo run --release -p schwenkbar-core --example bench_solve

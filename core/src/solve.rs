@@ -17,7 +17,7 @@ use serde::Serialize;
 use crate::angle::{clean, short_delta, wrap180};
 use crate::axes::AxisValues;
 use crate::kinematics::{self, AxisPair, ToolAxisSolution};
-use crate::machine::{Carrier, Limits, Machine, RotaryJoint, Texts};
+use crate::machine::{Carrier, Limits, Machine, RotaryJoint};
 use crate::orientation::{self, Context, PlaneError};
 use crate::plane::{PlaneBlock, PlaneDef, RotaryAxis, Selection, Sign, TransformMode};
 use crate::unconfirmed::{self, Decision};
@@ -303,6 +303,61 @@ impl SolveError {
     }
 }
 
+/// A [`Rule`] that serialises as its texts, `{"de": …, "en": …}`. The texts are only formatted
+/// when asked for, which keeps [`solve`] free of string formatting (benchmark budget).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reason(pub Rule);
+
+impl Reason {
+    /// German text.
+    #[must_use]
+    pub fn de(&self) -> String {
+        self.0.text_de()
+    }
+    /// English text.
+    #[must_use]
+    pub fn en(&self) -> String {
+        self.0.text_en()
+    }
+}
+
+impl Serialize for Reason {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Reason", 2)?;
+        st.serialize_field("de", &self.de())?;
+        st.serialize_field("en", &self.en())?;
+        st.end()
+    }
+}
+
+/// The control's message for a [`SolveError`], serialised as `{"de": …, "en": …}`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorMessage(pub SolveError);
+
+impl ErrorMessage {
+    /// German, as the control says it ("Winkel nicht erlaubt").
+    #[must_use]
+    pub fn de(&self) -> &'static str {
+        self.0.message_de()
+    }
+    /// English ("Entered angle not permitted").
+    #[must_use]
+    pub fn en(&self) -> &'static str {
+        self.0.message_en()
+    }
+}
+
+impl Serialize for ErrorMessage {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("ErrorMessage", 2)?;
+        st.serialize_field("de", self.de())?;
+        st.serialize_field("en", self.en())?;
+        st.end()
+    }
+}
+
 /// How the residual rotation about the tool axis is done (DOMAIN.md §3.4).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "by", rename_all = "snake_case")]
@@ -357,11 +412,11 @@ pub struct Explanation {
     /// Index into `candidates`.
     pub chosen: Option<usize>,
     pub rule: Rule,
-    /// `rule` as text.
-    pub reason: Texts,
+    /// `rule` as German and English text (computed when serialised).
+    pub reason: Reason,
     pub error: Option<SolveError>,
-    /// The control's message for `error`.
-    pub error_message: Option<Texts>,
+    /// The control's message for `error`, German and English.
+    pub error_message: Option<ErrorMessage>,
     pub residual: Option<Residual>,
     pub q: QValues,
     /// The UNCONFIRMED decisions that influenced this result.
@@ -502,7 +557,7 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
         candidates: Vec::new(),
         chosen: None,
         rule: Rule::Unreachable,
-        reason: Texts { de: String::new(), en: String::new() },
+        reason: Reason(Rule::Unreachable),
         error: None,
         error_message: None,
         residual: None,
@@ -513,9 +568,9 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
 
 /// Fills rule, texts, error, chosen and Q values.
 fn finish(mut e: Explanation, rule: Rule, chosen: Option<usize>, error: Option<SolveError>) -> Explanation {
-    e.reason = Texts { de: rule.text_de(), en: rule.text_en() };
+    e.reason = Reason(rule);
     e.rule = rule;
-    e.error_message = error.map(|x| Texts { de: x.message_de().into(), en: x.message_en().into() });
+    e.error_message = error.map(ErrorMessage);
     e.error = error;
     e.chosen = if error.is_none() { chosen } else { None };
     if let Some(axes) = e.chosen_axes() {

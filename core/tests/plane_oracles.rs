@@ -171,7 +171,7 @@ fn check(row: &Row) {
             assert!(e.chosen.is_none(), "oracle {}: expected error, chose {:?}", row.id, e.chosen_axes());
             let err = e.error.unwrap_or_else(|| panic!("oracle {}: no error", row.id));
             assert_eq!(err.message_de(), *msg, "oracle {}", row.id);
-            assert_eq!(e.error_message.as_ref().map(|t| t.en.as_str()), Some("Entered angle not permitted"));
+            assert_eq!(e.error_message.map(|t| t.en()), Some("Entered angle not permitted"));
         }
     }
 }
@@ -289,7 +289,7 @@ fn oracles_13_to_22_explanations() {
     );
     // 15: SEQ− text as the UI shows it.
     let e = run(by_id(15));
-    assert_eq!(e.reason.de, "SEQ−: Master-Achse A muss negativ sein (bezogen auf die Grundstellung 0°)");
+    assert_eq!(e.reason.de(), "SEQ−: Master-Achse A muss negativ sein (bezogen auf die Grundstellung 0°)");
     assert_eq!(e.q.q120.map(|a| a.round()), Some(-45.0));
     assert_eq!(e.q.q122.map(|c| c.round()), Some(-90.0));
     assert_eq!(e.q.q121, None);
