@@ -680,6 +680,10 @@ fn solve_inner(
         }
         ToolAxisSolution::Two { solutions } => {
             e.candidates = solutions.iter().map(|p| with_residual(*p)).collect();
+            // Candidate 1 is the one on the SYM+ side of the symmetry point (stable order for the UI).
+            if wrap180(e.candidates[0].master - e.symmetry_point) < 0.0 {
+                e.candidates.swap(0, 1);
+            }
             match selection {
                 Some(sel) => choose_selected(e, sel),
                 None => choose_free(e),
