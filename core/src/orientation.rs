@@ -80,54 +80,65 @@ pub enum PlaneError {
 }
 
 impl PlaneError {
+    /// `(German, English)` message with the numbers. A range error on an angle says what the
+    /// control says, "Winkel nicht erlaubt" / "Entered angle not permitted" [S2]; on other values
+    /// "Eingabewert falsch" / "Invalid input" (the parser's wording for the same check).
+    #[must_use]
+    pub fn messages(&self) -> (String, String) {
+        match self {
+            PlaneError::NotFinite { word, value } => (
+                format!("Ungültiger Zahlenwert: {word} = {value}"),
+                format!("Invalid number: {word} = {value}"),
+            ),
+            PlaneError::OutOfRange { word, value, min, max } => {
+                let angle =
+                    !matches!(word.as_bytes().first(), Some(b'B' | b'N' | b'P')) || word.starts_with("PRO");
+                let (de, en) = if angle {
+                    ("Winkel nicht erlaubt", "Entered angle not permitted")
+                } else {
+                    ("Eingabewert falsch", "Invalid input")
+                };
+                (
+                    format!("{de}: {word} = {value} (erlaubt {min} … {max})"),
+                    format!("{en}: {word} = {value} (allowed {min} … {max})"),
+                )
+            }
+            PlaneError::ZeroVector { vector, length } => (
+                format!("{} hat die Länge null ({length})", vector.de()),
+                format!("The {} has zero length ({length})", vector.en()),
+            ),
+            PlaneError::BaseParallelToNormal { angle, .. } => (
+                format!("Basisvektor parallel zum Normalenvektor (Winkel {angle}°)"),
+                format!("Base vector parallel to the normal vector (angle {angle}°)"),
+            ),
+            PlaneError::CollinearPoints { sine, .. } => (
+                format!("Die drei Punkte liegen auf einer Geraden (sin Winkel bei P1 = {sine})"),
+                format!("The three points lie on one line (sine of the angle at P1 = {sine})"),
+            ),
+            PlaneError::MachineRequired => (
+                "PLANE AXIAL: keine Maschinenkinematik gewählt".into(),
+                "PLANE AXIAL: no machine kinematics selected".into(),
+            ),
+            PlaneError::AxisNotOnMachine { axis, machine } => (
+                format!("Achse {axis} nicht vorhanden (Maschine {machine})"),
+                format!("Axis {axis} does not exist (machine {machine})"),
+            ),
+            PlaneError::DuplicateAxis { axis } => {
+                (format!("Achse {axis} mehrfach programmiert"), format!("Axis {axis} programmed twice"))
+            }
+        }
+    }
+
     /// The message in German, with the numbers.
     #[must_use]
     pub fn message_de(&self) -> String {
-        match self {
-            PlaneError::NotFinite { word, value } => format!("Ungültiger Zahlenwert: {word} = {value}"),
-            PlaneError::OutOfRange { word, value, min, max } => {
-                format!("Eingabewert außerhalb des Bereichs: {word} = {value} (erlaubt {min} … {max})")
-            }
-            PlaneError::ZeroVector { vector, length } => {
-                format!("{} hat die Länge null ({length})", vector.de())
-            }
-            PlaneError::BaseParallelToNormal { angle, .. } => {
-                format!("Basisvektor parallel zum Normalenvektor (Winkel {angle}°)")
-            }
-            PlaneError::CollinearPoints { sine, .. } => {
-                format!("Die drei Punkte liegen auf einer Geraden (sin Winkel bei P1 = {sine})")
-            }
-            PlaneError::MachineRequired => "PLANE AXIAL: keine Maschinenkinematik gewählt".to_string(),
-            PlaneError::AxisNotOnMachine { axis, machine } => {
-                format!("Achse {axis} nicht vorhanden (Maschine {machine})")
-            }
-            PlaneError::DuplicateAxis { axis } => format!("Achse {axis} mehrfach programmiert"),
-        }
+        self.messages().0
     }
 
     /// The message in English, with the numbers.
     #[must_use]
     pub fn message_en(&self) -> String {
-        match self {
-            PlaneError::NotFinite { word, value } => format!("Invalid number: {word} = {value}"),
-            PlaneError::OutOfRange { word, value, min, max } => {
-                format!("Input value out of range: {word} = {value} (allowed {min} … {max})")
-            }
-            PlaneError::ZeroVector { vector, length } => {
-                format!("The {} has zero length ({length})", vector.en())
-            }
-            PlaneError::BaseParallelToNormal { angle, .. } => {
-                format!("Base vector parallel to the normal vector (angle {angle}°)")
-            }
-            PlaneError::CollinearPoints { sine, .. } => {
-                format!("The three points lie on one line (sine of the angle at P1 = {sine})")
-            }
-            PlaneError::MachineRequired => "PLANE AXIAL: no machine kinematics selected".to_string(),
-            PlaneError::AxisNotOnMachine { axis, machine } => {
-                format!("Axis {axis} does not exist (machine {machine})")
-            }
-            PlaneError::DuplicateAxis { axis } => format!("Axis {axis} programmed twice"),
-        }
+        self.messages().1
     }
 }
 

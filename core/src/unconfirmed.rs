@@ -73,102 +73,91 @@ impl Decision {
         Decision::InputRanges,
     ];
 
+    /// `(German, English)` text for the trainee.
+    #[must_use]
+    pub fn texts(self) -> (&'static str, &'static str) {
+        match self {
+            Decision::ProjectedSign => (
+                "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA).",
+                "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA).",
+            ),
+            Decision::VectorGramSchmidt => (
+                "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert.",
+                "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it.",
+            ),
+            Decision::RelativUntilted => (
+                "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS.",
+                "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
+            ),
+            Decision::PathMetric => (
+                "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg).",
+                "Path length = sum of the travel of all rotary axes (endless axes the short way round).",
+            ),
+            Decision::TieRule => (
+                "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
+                "Equal paths: the solution with the larger master axis value.",
+            ),
+            Decision::CoordRotFreeAxis => (
+                "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position.",
+                "COORD ROT: the free rotary axis stays at its current position.",
+            ),
+            Decision::TableRotSign => (
+                "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
+                "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
+            ),
+            Decision::TableRotHeadAxis => (
+                "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen.",
+                "TABLE ROT acts on a free table axis only; a free head axis stays where it is.",
+            ),
+            Decision::DefaultTransform => (
+                "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
+                "Without COORD ROT/TABLE ROT the control computes as with COORD ROT.",
+            ),
+            Decision::ZeroIsPlus => (
+                "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv.",
+                "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive.",
+            ),
+            Decision::SeqSameSide => (
+                "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung.",
+                "SEQ with both solutions on the requested side: the nearer one first, then the limit check.",
+            ),
+            Decision::SymmetryPoint => (
+                "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt.",
+                "Symmetry point: the master position where the tool axis points along +slave axis direction.",
+            ),
+            Decision::AxisRepresentation => (
+                "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter.",
+                "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches.",
+            ),
+            Decision::AxialMissingAxis => (
+                "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position.",
+                "PLANE AXIAL: rotary axes not programmed stay at their current position.",
+            ),
+            Decision::ResetTarget => (
+                "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
+                "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
+            ),
+            Decision::UnreachableMessage => (
+                "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“.",
+                "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
+            ),
+            Decision::InputRanges => (
+                "Eingabebereiche für EULPR (±359,9999 wegen EULPR+270 im Seed), POINTS, RELATIV, AXIAL, VECTOR (±99,9999999).",
+                "Input ranges for EULPR (±359.9999 because the seed uses EULPR+270), POINTS, RELATIV, AXIAL, VECTOR (±99.9999999).",
+            ),
+        }
+    }
+
     /// German text for the trainee.
     #[must_use]
     pub fn text_de(self) -> &'static str {
-        match self {
-            Decision::ProjectedSign => {
-                "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA)."
-            }
-            Decision::VectorGramSchmidt => {
-                "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert."
-            }
-            Decision::RelativUntilted => {
-                "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS."
-            }
-            Decision::PathMetric => {
-                "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg)."
-            }
-            Decision::TieRule => "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
-            Decision::CoordRotFreeAxis => {
-                "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position."
-            }
-            Decision::TableRotSign => "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
-            Decision::TableRotHeadAxis => {
-                "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen."
-            }
-            Decision::DefaultTransform => "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
-            Decision::ZeroIsPlus => {
-                "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv."
-            }
-            Decision::SeqSameSide => {
-                "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung."
-            }
-            Decision::SymmetryPoint => {
-                "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt."
-            }
-            Decision::AxisRepresentation => {
-                "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter."
-            }
-            Decision::AxialMissingAxis => {
-                "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position."
-            }
-            Decision::ResetTarget => "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
-            Decision::UnreachableMessage => {
-                "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“."
-            }
-            Decision::InputRanges => {
-                "Eingabebereiche für EULPR (±359,9999 wegen EULPR+270 im Seed), POINTS, RELATIV, AXIAL, VECTOR (±99,9999999)."
-            }
-        }
+        self.texts().0
     }
 
     /// English text for the trainee.
     #[must_use]
     pub fn text_en(self) -> &'static str {
-        match self {
-            Decision::ProjectedSign => {
-                "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA)."
-            }
-            Decision::VectorGramSchmidt => {
-                "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it."
-            }
-            Decision::RelativUntilted => "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
-            Decision::PathMetric => {
-                "Path length = sum of the travel of all rotary axes (endless axes the short way round)."
-            }
-            Decision::TieRule => "Equal paths: the solution with the larger master axis value.",
-            Decision::CoordRotFreeAxis => "COORD ROT: the free rotary axis stays at its current position.",
-            Decision::TableRotSign => "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
-            Decision::TableRotHeadAxis => {
-                "TABLE ROT acts on a free table axis only; a free head axis stays where it is."
-            }
-            Decision::DefaultTransform => {
-                "Without COORD ROT/TABLE ROT the control computes as with COORD ROT."
-            }
-            Decision::ZeroIsPlus => {
-                "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive."
-            }
-            Decision::SeqSameSide => {
-                "SEQ with both solutions on the requested side: the nearer one first, then the limit check."
-            }
-            Decision::SymmetryPoint => {
-                "Symmetry point: the master position where the tool axis points along +slave axis direction."
-            }
-            Decision::AxisRepresentation => {
-                "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches."
-            }
-            Decision::AxialMissingAxis => {
-                "PLANE AXIAL: rotary axes not programmed stay at their current position."
-            }
-            Decision::ResetTarget => "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
-            Decision::UnreachableMessage => {
-                "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\"."
-            }
-            Decision::InputRanges => {
-                "Input ranges for EULPR (±359.9999 because the seed uses EULPR+270), POINTS, RELATIV, AXIAL, VECTOR (±99.9999999)."
-            }
-        }
+        self.texts().1
     }
 }
 
