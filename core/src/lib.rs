@@ -4,13 +4,20 @@
 //! Data flow: text → [`parse`] (AST with spans + diagnostics) → interpret (machine states per
 //! block) → kinematics (orientation ↔ axis angles).
 
+pub mod angle;
 pub mod ast;
+pub mod axes;
 pub mod diag;
 pub mod edit;
 pub mod format;
+pub mod kinematics;
+pub mod machine;
+pub mod orientation;
 pub mod parse;
 pub mod plane;
 pub mod sample;
+pub mod solve;
+pub mod unconfirmed;
 
 pub use ast::{Block, BlockBody, Program};
 pub use diag::{Diagnostic, Lang, Severity};

@@ -1,0 +1,315 @@
+//! Machines as data: the rotary axes of the kinematic chain from the workpiece to the tool,
+//! read from `static/machines/*.json` (also compiled in, for the wasm build).
+//!
+//! JSON form (`chain` in order **workpiece → tool**, i.e. table axes first, the table axis
+//! carrying the workpiece first; then head axes, the one carrying the tool last):
+//! ```json
+//! { "id": "ac-table", "name": {"de": "…", "en": "…"}, "description": {"de": "…", "en": "…"},
+//!   "chain": [ {"axis": "C", "carrier": "table", "direction": [0,0,1], "pivot": [0,0,0], "endless": true},
+//!              {"axis": "A", "carrier": "table", "direction": [1,0,0], "pivot": [0,0,0],
+//!               "limits": {"min": -100, "max": 180}} ] }
+//! ```
+//! `direction` is the axis direction at home (all axes at 0°) in machine coordinates, a unit
+//! vector, so tilted axes such as a 45° nutating head are plain data. `pivot` (mm) is a point on
+//! the axis, for MOVE and the 3D view.
+
+use glam::{DMat3, DVec3};
+use serde::{Deserialize, Serialize};
+
+use crate::axes::AxisValues;
+use crate::plane::RotaryAxis;
+
+/// A German and an English text.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Texts {
+    pub de: String,
+    pub en: String,
+}
+
+/// Whether a rotary axis turns the workpiece (table) or the tool (head).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Carrier {
+    Table,
+    Head,
+}
+
+/// Software limit switches of a rotary axis, degrees.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Limits {
+    pub min: f64,
+    pub max: f64,
+}
+
+impl Limits {
+    /// Tolerance of the limit check (derived: far below the 4-decimal display).
+    pub const EPS: f64 = 1e-9;
+
+    /// `true` if `value` lies inside the limits.
+    #[must_use]
+    pub fn contains(&self, value: f64) -> bool {
+        value >= self.min - Self::EPS && value <= self.max + Self::EPS
+    }
+}
+
+/// One rotary axis of the chain, validated.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RotaryJoint {
+    pub axis: RotaryAxis,
+    pub carrier: Carrier,
+    /// Unit axis direction at home, machine coordinates.
+    pub direction: DVec3,
+    /// A point on the axis, mm.
+    pub pivot: DVec3,
+    pub limits: Option<Limits>,
+    /// Modulo-360 axis: always the short way round, no limits.
+    pub endless: bool,
+}
+
+/// A validated machine with two rotary axes.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Machine {
+    pub id: String,
+    pub name: Texts,
+    pub description: Texts,
+    /// Chain order workpiece → tool: `[slave, master]` (DOMAIN.md §3.1: the master is the first
+    /// rotary axis seen from the tool, i.e. the last seen from the workpiece).
+    chain: [RotaryJoint; 2],
+    /// The master's two symmetry positions, "the" symmetry point first (derived once from the
+    /// axis directions, [`crate::kinematics::symmetry_positions_of`]).
+    symmetry: [f64; 2],
+}
+
+/// A machine description that cannot be used. Every variant carries the numbers.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "code", rename_all = "snake_case")]
+pub enum MachineError {
+    /// Not valid JSON for the machine schema.
+    Json { message: String, line: usize, column: usize },
+    /// No built-in machine with this id.
+    UnknownId { id: String },
+    /// An axis letter other than A, B, C.
+    UnknownAxis { letter: String },
+    /// The same letter twice in the chain.
+    DuplicateAxis { axis: RotaryAxis },
+    /// The solver handles exactly two rotary axes.
+    AxisCount { count: usize },
+    /// A number that is NaN or infinite.
+    NotFinite { axis: RotaryAxis, field: &'static str, value: f64 },
+    /// `direction` is not a unit vector (tolerance 1e-6).
+    DirectionNotUnit { axis: RotaryAxis, direction: [f64; 3], length: f64 },
+    /// `limits.min` is not below `limits.max`.
+    LimitsInverted { axis: RotaryAxis, min: f64, max: f64 },
+    /// An endless (modulo) axis cannot have limit switches.
+    EndlessWithLimits { axis: RotaryAxis, min: f64, max: f64 },
+    /// A table axis listed after a head axis (the chain runs workpiece → table → bed → head → tool).
+    TableAfterHead { axis: RotaryAxis },
+    /// The two axes are parallel: they cannot tilt the tool in two directions.
+    ParallelAxes { slave: RotaryAxis, master: RotaryAxis, sine: f64 },
+    /// The master axis is parallel to the tool axis at home: it cannot tilt the tool.
+    MasterAlongTool { axis: RotaryAxis, sine: f64 },
+}
+
+impl std::fmt::Display for MachineError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MachineError::Json { message, line, column } => {
+                write!(f, "machine JSON {line}:{column}: {message}")
+            }
+            MachineError::UnknownId { id } => write!(f, "no built-in machine {id:?}"),
+            MachineError::UnknownAxis { letter } => write!(f, "unknown rotary axis {letter:?} (A, B or C)"),
+            MachineError::DuplicateAxis { axis } => write!(f, "axis {axis} appears twice"),
+            MachineError::AxisCount { count } => write!(f, "{count} rotary axes; exactly 2 are supported"),
+            MachineError::NotFinite { axis, field, value } => write!(f, "axis {axis}: {field} = {value}"),
+            MachineError::DirectionNotUnit { axis, direction, length } => {
+                write!(f, "axis {axis}: direction {direction:?} has length {length}, not 1")
+            }
+            MachineError::LimitsInverted { axis, min, max } => {
+                write!(f, "axis {axis}: limits min {min} ≥ max {max}")
+            }
+            MachineError::EndlessWithLimits { axis, min, max } => {
+                write!(f, "axis {axis}: endless but limited to {min} … {max}")
+            }
+            MachineError::TableAfterHead { axis } => write!(f, "table axis {axis} listed after a head axis"),
+            MachineError::ParallelAxes { slave, master, sine } => {
+                write!(f, "axes {slave} and {master} are parallel (sine {sine})")
+            }
+            MachineError::MasterAlongTool { axis, sine } => {
+                write!(f, "master axis {axis} is parallel to the tool axis at home (sine {sine})")
+            }
+        }
+    }
+}
+
+impl std::error::Error for MachineError {}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMachine {
+    id: String,
+    name: Texts,
+    description: Texts,
+    chain: Vec<RawJoint>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawJoint {
+    axis: String,
+    carrier: Carrier,
+    direction: [f64; 3],
+    #[serde(default)]
+    pivot: [f64; 3],
+    #[serde(default)]
+    limits: Option<Limits>,
+    #[serde(default)]
+    endless: bool,
+}
+
+/// The shipped machines, compiled in: `(id, JSON)`.
+const BUILTIN: [(&str, &str); 5] = [
+    ("ac-table", include_str!("../../static/machines/ac-table.json")),
+    ("ba-table", include_str!("../../static/machines/ba-table.json")),
+    ("bc-head-table", include_str!("../../static/machines/bc-head-table.json")),
+    ("ca-head", include_str!("../../static/machines/ca-head.json")),
+    ("b45-nutating", include_str!("../../static/machines/b45-nutating.json")),
+];
+
+/// Direction tolerance: |direction| must be 1 within this (so 0.7071067811865476 works).
+const UNIT_TOL: f64 = 1e-6;
+/// Sine below which two axis directions count as parallel (derived, numerical).
+const PARALLEL_TOL: f64 = 1e-6;
+
+impl Machine {
+    /// The ids of the shipped machines, in display order.
+    #[must_use]
+    pub fn builtin_ids() -> [&'static str; 5] {
+        BUILTIN.map(|(id, _)| id)
+    }
+
+    /// A shipped machine by id.
+    pub fn builtin(id: &str) -> Result<Machine, MachineError> {
+        let (_, json) = BUILTIN
+            .iter()
+            .find(|(i, _)| *i == id)
+            .ok_or_else(|| MachineError::UnknownId { id: id.to_string() })?;
+        Machine::from_json(json)
+    }
+
+    /// Reads and validates a machine description.
+    pub fn from_json(json: &str) -> Result<Machine, MachineError> {
+        let raw: RawMachine = serde_json::from_str(json).map_err(|e| MachineError::Json {
+            message: e.to_string(),
+            line: e.line(),
+            column: e.column(),
+        })?;
+        let mut joints = Vec::with_capacity(raw.chain.len());
+        for j in raw.chain {
+            joints.push(validate_joint(j)?);
+        }
+        let chain: [RotaryJoint; 2] =
+            joints.try_into().map_err(|v: Vec<RotaryJoint>| MachineError::AxisCount { count: v.len() })?;
+        let [slave, master] = &chain;
+        if slave.axis == master.axis {
+            return Err(MachineError::DuplicateAxis { axis: slave.axis });
+        }
+        if slave.carrier == Carrier::Head && master.carrier == Carrier::Table {
+            return Err(MachineError::TableAfterHead { axis: master.axis });
+        }
+        let sine = slave.direction.cross(master.direction).length();
+        if sine < PARALLEL_TOL {
+            return Err(MachineError::ParallelAxes { slave: slave.axis, master: master.axis, sine });
+        }
+        let sine = master.direction.cross(DVec3::Z).length();
+        if sine < PARALLEL_TOL {
+            return Err(MachineError::MasterAlongTool { axis: master.axis, sine });
+        }
+        let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
+        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, symmetry })
+    }
+
+    /// The rotary axes in chain order workpiece → tool.
+    #[must_use]
+    pub fn joints(&self) -> &[RotaryJoint; 2] {
+        &self.chain
+    }
+
+    /// The master axis: first rotary axis seen from the tool (DOMAIN.md §3.1, [S2]).
+    #[must_use]
+    pub fn master(&self) -> &RotaryJoint {
+        &self.chain[1]
+    }
+
+    /// The slave axis: the other one, nearest the workpiece.
+    #[must_use]
+    pub fn slave(&self) -> &RotaryJoint {
+        &self.chain[0]
+    }
+
+    /// The master's two symmetry positions in degrees, "the" symmetry point first.
+    #[must_use]
+    pub fn symmetry_positions(&self) -> [f64; 2] {
+        self.symmetry
+    }
+
+    /// The joint with this letter, if the machine has it.
+    #[must_use]
+    pub fn joint(&self, axis: RotaryAxis) -> Option<&RotaryJoint> {
+        self.chain.iter().find(|j| j.axis == axis)
+    }
+
+    /// Forward kinematics from axis values (missing axes at 0°): the orientation of the tool
+    /// relative to the workpiece, R = Π Rot(uᵢ, θᵢ) in chain order workpiece → tool
+    /// (DOMAIN.md §3.1; a table axis turns the workpiece by −θ, which is the same product).
+    #[must_use]
+    pub fn forward(&self, axes: &AxisValues) -> DMat3 {
+        let [s, m] = &self.chain;
+        self.forward_deg(axes.get(s.axis).unwrap_or(0.0), axes.get(m.axis).unwrap_or(0.0))
+    }
+
+    /// [`Machine::forward`] with `(slave, master)` in degrees.
+    #[must_use]
+    pub fn forward_deg(&self, slave: f64, master: f64) -> DMat3 {
+        let [s, m] = &self.chain;
+        DMat3::from_axis_angle(s.direction, slave.to_radians())
+            * DMat3::from_axis_angle(m.direction, master.to_radians())
+    }
+
+    /// Effective limits of an axis: an override if given, else the machine's.
+    #[must_use]
+    pub fn limits_of(&self, axis: RotaryAxis, overrides: &[(RotaryAxis, Limits)]) -> Option<Limits> {
+        overrides.iter().rev().find(|(a, _)| *a == axis).map(|(_, l)| *l).or_else(|| self.joint(axis)?.limits)
+    }
+}
+
+fn validate_joint(j: RawJoint) -> Result<RotaryJoint, MachineError> {
+    let axis = RotaryAxis::from_letter(&j.axis).ok_or(MachineError::UnknownAxis { letter: j.axis })?;
+    let finite = |field: &'static str, v: &[f64]| match v.iter().find(|x| !x.is_finite()) {
+        Some(&value) => Err(MachineError::NotFinite { axis, field, value }),
+        None => Ok(()),
+    };
+    finite("direction", &j.direction)?;
+    finite("pivot", &j.pivot)?;
+    let direction = DVec3::from_array(j.direction);
+    let length = direction.length();
+    if (length - 1.0).abs() > UNIT_TOL {
+        return Err(MachineError::DirectionNotUnit { axis, direction: j.direction, length });
+    }
+    if let Some(l) = j.limits {
+        finite("limits", &[l.min, l.max])?;
+        if l.min >= l.max {
+            return Err(MachineError::LimitsInverted { axis, min: l.min, max: l.max });
+        }
+        if j.endless {
+            return Err(MachineError::EndlessWithLimits { axis, min: l.min, max: l.max });
+        }
+    }
+    Ok(RotaryJoint {
+        axis,
+        carrier: j.carrier,
+        direction: direction / length,
+        pivot: DVec3::from_array(j.pivot),
+        limits: j.limits,
+        endless: j.endless,
+    })
+}

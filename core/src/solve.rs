@@ -1,0 +1,880 @@
+//! The control's choice of axis angles for a tilted working plane, with an explanation record
+//! the UI shows as "why the machine does this" (DOMAIN.md §3.3, §3.4, seed S2).
+//!
+//! Order of the rules (seed S2, "Schwenklösungen"):
+//! * `SEQ±`: master axis on the ± side of its home position 0°; both on that side → the nearer;
+//!   none → "Winkel nicht erlaubt"; the selected one outside the limits → "Winkel nicht erlaubt".
+//! * `SYM±`: the same, relative to the master's symmetry point.
+//! * neither: drop solutions outside the limits; two left → shortest path from the current
+//!   positions; one → take it; none → "Winkel nicht erlaubt".
+//!
+//! Every UNCONFIRMED choice comes from [`crate::unconfirmed`] and is listed in
+//! [`Explanation::decisions`] when it influenced the result.
+
+use glam::DMat3;
+use serde::Serialize;
+
+use crate::angle::{clean, short_delta, wrap180};
+use crate::axes::AxisValues;
+use crate::kinematics::{self, AxisPair, ToolAxisSolution};
+use crate::machine::{Carrier, Limits, Machine, RotaryJoint};
+use crate::orientation::{self, Context, PlaneError};
+use crate::plane::{PlaneBlock, PlaneDef, RotaryAxis, Selection, Sign, TransformMode};
+use crate::unconfirmed::{self, Decision};
+
+/// What the solver needs besides the orientation: where the axes stand and what the block asks.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SolveOptions {
+    /// Current rotary axis positions; a missing axis stands at 0°.
+    pub start: AxisValues,
+    /// Limit overrides for this call (the seed's "−90 < A < +10"); the last one per axis wins.
+    pub limits: Vec<(RotaryAxis, Limits)>,
+    /// `SEQ±`/`SYM±`; [`solve_block`] takes the block's own if it has one.
+    pub selection: Option<Selection>,
+    /// `COORD ROT`/`TABLE ROT`; [`solve_block`] takes the block's own if it has one.
+    pub transform: Option<TransformMode>,
+}
+
+/// An axis value outside its limit switches.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LimitViolation {
+    pub axis: RotaryAxis,
+    pub value: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+/// Why a candidate was not taken.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "why", rename_all = "snake_case")]
+pub enum Exclusion {
+    /// Outside the limit switches.
+    OutOfLimits(LimitViolation),
+    /// On the wrong side for `SEQ±`/`SYM±`.
+    WrongSide { selection: Selection },
+    /// The other candidate has the shorter path.
+    LongerPath { path: f64, chosen_path: f64 },
+    /// Equal path; the tie rule ([`unconfirmed::tie_prefers`]) preferred the other.
+    LostTie { path: f64 },
+}
+
+/// One way the machine can reach the orientation.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Candidate {
+    /// The axis values as the control would position them.
+    pub axes: AxisValues,
+    /// Master and slave values (the same numbers as in `axes`).
+    pub master: f64,
+    pub slave: f64,
+    /// Inside every limit switch.
+    pub in_limits: bool,
+    /// The first limit it violates.
+    pub violation: Option<LimitViolation>,
+    /// Path from the start positions ([`unconfirmed::path_length`]).
+    pub path: f64,
+    /// Rotation γ about the tool axis still to be done mathematically, degrees.
+    pub residual: f64,
+    /// Why it was not taken (None for the chosen one, or when an error left none chosen).
+    pub excluded: Option<Exclusion>,
+}
+
+/// What the inverse kinematics found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum KinematicCase {
+    /// Two solutions, mirror images about the symmetry point.
+    Two,
+    /// One solution (edge of the reachable range).
+    One,
+    /// Tool axis parallel to the slave axis: the slave is free (DOMAIN.md §3.4).
+    SlaveFree,
+    /// The tool axis cannot be reached.
+    Unreachable,
+    /// PLANE AXIAL: axis values programmed directly.
+    Axial,
+    /// PLANE RESET.
+    Reset,
+}
+
+/// The rule that decided.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "rule", rename_all = "snake_case")]
+pub enum Rule {
+    /// PLANE AXIAL: no choice to make.
+    Axial,
+    /// PLANE RESET: back to the home position.
+    Reset,
+    /// Only one solution exists (or the slave axis is free).
+    Unique { free: Option<RotaryAxis> },
+    /// `SEQ±`: the master's sign relative to its home 0°.
+    Seq { sign: Sign, master: RotaryAxis },
+    /// `SEQ±` with both solutions on that side: the nearer one.
+    SeqNearer { sign: Sign, master: RotaryAxis },
+    /// `SYM±`: the master's side relative to its symmetry point.
+    Sym { sign: Sign, master: RotaryAxis, symmetry_point: f64 },
+    /// No selection; only one solution inside the limits.
+    OnlyInLimits,
+    /// No selection; the shorter path from the current positions.
+    ShortestPath,
+    /// No selection; equal paths, the tie rule decided.
+    Tie { master: RotaryAxis },
+    /// No selection; no solution inside the limits.
+    NoneInLimits,
+    /// The kinematics cannot reach the tool axis.
+    Unreachable,
+}
+
+fn sign_char(s: Sign) -> char {
+    match s {
+        Sign::Plus => '+',
+        Sign::Minus => '−',
+    }
+}
+
+impl Rule {
+    /// `(German, English)` text for the trainee.
+    #[must_use]
+    pub fn texts(&self) -> (String, String) {
+        let pm = |sign: Sign, de: [&'static str; 2], en: [&'static str; 2]| match sign {
+            Sign::Plus => (de[0], en[0]),
+            Sign::Minus => (de[1], en[1]),
+        };
+        match *self {
+            Rule::Axial => (
+                "PLANE AXIAL: Achswinkel direkt programmiert, keine Auswahl nötig".into(),
+                "PLANE AXIAL: axis angles programmed directly, nothing to choose".into(),
+            ),
+            Rule::Reset => (
+                "PLANE RESET: Drehachsen zurück in die Grundstellung".into(),
+                "PLANE RESET: rotary axes back to the home position".into(),
+            ),
+            Rule::Unique { free: None } => {
+                ("Nur eine Lösung möglich".into(), "Only one solution exists".into())
+            }
+            Rule::Unique { free: Some(a) } => (
+                format!("Nur eine Lösung: Werkzeugachse parallel zur Achse {a}, {a} ist frei"),
+                format!("Only one solution: tool axis parallel to axis {a}, {a} is free"),
+            ),
+            Rule::Seq { sign, master } => {
+                let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
+                let s = sign_char(sign);
+                (
+                    format!(
+                        "SEQ{s}: Master-Achse {master} muss {de} sein (bezogen auf die Grundstellung 0°)"
+                    ),
+                    format!("SEQ{s}: master axis {master} must be {en} (relative to its home position 0°)"),
+                )
+            }
+            Rule::SeqNearer { sign, master } => {
+                let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
+                let s = sign_char(sign);
+                (
+                    format!("SEQ{s}: beide Lösungen haben {master} {de}, die Steuerung nimmt die nähere"),
+                    format!("SEQ{s}: both solutions have {master} {en}, the control takes the nearer one"),
+                )
+            }
+            Rule::Sym { sign, master, symmetry_point } => {
+                let (de, en) = pm(sign, ["positiven", "negativen"], ["positive", "negative"]);
+                let (s, p) = (sign_char(sign), axis_word(master, symmetry_point));
+                (
+                    format!("SYM{s}: Master-Achse {master} im {de} Halbraum ab dem Symmetriepunkt {p}"),
+                    format!(
+                        "SYM{s}: master axis {master} in the {en} half-space from the symmetry point {p}"
+                    ),
+                )
+            }
+            Rule::OnlyInLimits => (
+                "Nur eine Lösung liegt im Verfahrbereich".into(),
+                "Only one solution lies inside the traverse range".into(),
+            ),
+            Rule::ShortestPath => (
+                "Kürzester Weg von der aktuellen Position der Drehachsen".into(),
+                "Shortest path from the current rotary axis positions".into(),
+            ),
+            Rule::Tie { master } => (
+                format!("Beide Wege gleich lang: Lösung mit {master} positiver (Annahme, nicht bestätigt)"),
+                format!("Equal paths: the solution with the larger {master} (assumption, unconfirmed)"),
+            ),
+            Rule::NoneInLimits => {
+                ("Keine Lösung im Verfahrbereich".into(), "No solution inside the traverse range".into())
+            }
+            Rule::Unreachable => (
+                "Diese Werkzeugachse ist mit der Kinematik nicht erreichbar".into(),
+                "This tool axis cannot be reached with this kinematics".into(),
+            ),
+        }
+    }
+
+    /// German text for the trainee.
+    #[must_use]
+    pub fn text_de(&self) -> String {
+        self.texts().0
+    }
+
+    /// English text for the trainee.
+    #[must_use]
+    pub fn text_en(&self) -> String {
+        self.texts().1
+    }
+}
+
+/// Why no axis position was chosen. Every variant carries the numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "code", rename_all = "snake_case")]
+pub enum SolveError {
+    /// The selected (or only) solution lies outside a limit switch.
+    AxisOutOfLimit { axis: RotaryAxis, value: f64, min: f64, max: f64 },
+    /// `SEQ±`/`SYM±` asks for a side no solution is on; `values` = the master values found.
+    NoSolutionOnSide { selection: Selection, master: RotaryAxis, values: [f64; 2] },
+    /// No solution inside the limits (each candidate carries its violation).
+    NoSolutionInLimits { candidates: usize },
+    /// The kinematics cannot reach the tool axis.
+    Unreachable { tool_axis: [f64; 3] },
+    /// A NaN or infinite orientation, start position or limit.
+    NotFinite { what: &'static str, value: f64 },
+}
+
+impl SolveError {
+    /// The control's message, `(German, English)`: "Winkel nicht erlaubt" [S2] /
+    /// "Entered angle not permitted" [M:TNC7basic-SYM].
+    #[must_use]
+    pub fn messages(&self) -> (&'static str, &'static str) {
+        match self {
+            SolveError::Unreachable { .. } if unconfirmed::UNREACHABLE_IS_SEPARATE_ERROR => {
+                ("Winkel nicht berechenbar", "Angle cannot be calculated")
+            }
+            SolveError::NotFinite { .. } => ("Ungültiger Zahlenwert", "Invalid number"),
+            _ => ("Winkel nicht erlaubt", "Entered angle not permitted"),
+        }
+    }
+
+    /// The control's message, German.
+    #[must_use]
+    pub fn message_de(&self) -> &'static str {
+        self.messages().0
+    }
+
+    /// The control's message, English.
+    #[must_use]
+    pub fn message_en(&self) -> &'static str {
+        self.messages().1
+    }
+
+    /// The detail with the numbers, `(German, English)`.
+    #[must_use]
+    pub fn details(&self) -> (String, String) {
+        match *self {
+            SolveError::AxisOutOfLimit { axis, value, min, max } => {
+                let (v, lo, hi) = (axis_word(axis, value), fmt_deg(min), fmt_deg(max));
+                (
+                    format!("{v} außerhalb des Verfahrbereichs {lo} … {hi}"),
+                    format!("{v} outside the traverse range {lo} … {hi}"),
+                )
+            }
+            SolveError::NoSolutionOnSide { selection, master, values } => {
+                let (sel, v0, v1) =
+                    (selection_word(selection), axis_word(master, values[0]), axis_word(master, values[1]));
+                (
+                    format!("{sel}: keine Lösung auf dieser Seite ({v0}, {v1})"),
+                    format!("{sel}: no solution on that side ({v0}, {v1})"),
+                )
+            }
+            SolveError::NoSolutionInLimits { candidates } => (
+                format!("Keine der {candidates} Lösungen liegt im Verfahrbereich"),
+                format!("None of the {candidates} solutions lies inside the traverse range"),
+            ),
+            SolveError::Unreachable { tool_axis: [x, y, z] } => (
+                format!("Werkzeugachse ({x:.4}, {y:.4}, {z:.4}) mit dieser Kinematik nicht erreichbar"),
+                format!("Tool axis ({x:.4}, {y:.4}, {z:.4}) cannot be reached with this kinematics"),
+            ),
+            SolveError::NotFinite { what, value } => {
+                (format!("{what} = {value}"), format!("{what} = {value}"))
+            }
+        }
+    }
+
+    /// The detail with the numbers, German.
+    #[must_use]
+    pub fn detail_de(&self) -> String {
+        self.details().0
+    }
+
+    /// The detail with the numbers, English.
+    #[must_use]
+    pub fn detail_en(&self) -> String {
+        self.details().1
+    }
+}
+
+/// A [`Rule`] that serialises as its texts, `{"de": …, "en": …}`. The texts are only formatted
+/// when asked for, which keeps [`solve`] free of string formatting (benchmark budget).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reason(pub Rule);
+
+impl Reason {
+    /// German text.
+    #[must_use]
+    pub fn de(&self) -> String {
+        self.0.text_de()
+    }
+    /// English text.
+    #[must_use]
+    pub fn en(&self) -> String {
+        self.0.text_en()
+    }
+}
+
+impl Serialize for Reason {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Reason", 2)?;
+        st.serialize_field("de", &self.de())?;
+        st.serialize_field("en", &self.en())?;
+        st.end()
+    }
+}
+
+/// The control's message for a [`SolveError`], serialised as `{"de": …, "en": …}`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorMessage(pub SolveError);
+
+impl ErrorMessage {
+    /// German, as the control says it ("Winkel nicht erlaubt").
+    #[must_use]
+    pub fn de(&self) -> &'static str {
+        self.0.message_de()
+    }
+    /// English ("Entered angle not permitted").
+    #[must_use]
+    pub fn en(&self) -> &'static str {
+        self.0.message_en()
+    }
+}
+
+impl Serialize for ErrorMessage {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("ErrorMessage", 2)?;
+        st.serialize_field("de", self.de())?;
+        st.serialize_field("en", self.en())?;
+        st.end()
+    }
+}
+
+/// How the residual rotation about the tool axis is done (DOMAIN.md §3.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "by", rename_all = "snake_case")]
+pub enum Realisation {
+    /// In the coordinate system only (COORD ROT, and always outside the singular case).
+    Mathematical,
+    /// By turning the free table axis (TABLE ROT) to `value`.
+    TableAxis { axis: RotaryAxis, value: f64 },
+}
+
+/// The rotation about the tool axis left after positioning the rotary axes.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Residual {
+    /// γ in degrees, done mathematically.
+    pub gamma: f64,
+    pub realised_by: Realisation,
+}
+
+/// Q120–Q122: the computed A, B, C axis angles as the control stores them (DOMAIN.md §4,
+/// [M:iTNC-tech-p761]); `None` for an axis the machine does not have.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct QValues {
+    #[serde(rename = "Q120")]
+    pub q120: Option<f64>,
+    #[serde(rename = "Q121")]
+    pub q121: Option<f64>,
+    #[serde(rename = "Q122")]
+    pub q122: Option<f64>,
+}
+
+/// Everything the solver did, for the UI ("why the machine does this") and the CLI.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Explanation {
+    pub machine: String,
+    /// Target orientation R, row by row.
+    pub orientation: [[f64; 3]; 3],
+    pub tool_axis: [f64; 3],
+    /// The same orientation as `PLANE SPATIAL SPA SPB SPC`.
+    pub spatial: [f64; 3],
+    /// The same orientation as `PLANE EULER EULPR EULNU EULROT`.
+    pub euler: [f64; 3],
+    pub master: RotaryAxis,
+    pub slave: RotaryAxis,
+    /// Master value where the two solutions mirror ([`kinematics::symmetry_point`]).
+    pub symmetry_point: f64,
+    pub case: KinematicCase,
+    pub selection: Option<Selection>,
+    /// COORD ROT or TABLE ROT as applied (the default when the block has neither).
+    pub transform: TransformMode,
+    pub start: AxisValues,
+    pub candidates: Vec<Candidate>,
+    /// Index into `candidates`.
+    pub chosen: Option<usize>,
+    pub rule: Rule,
+    /// `rule` as German and English text (computed when serialised).
+    pub reason: Reason,
+    pub error: Option<SolveError>,
+    /// The control's message for `error`, German and English.
+    pub error_message: Option<ErrorMessage>,
+    pub residual: Option<Residual>,
+    pub q: QValues,
+    /// The UNCONFIRMED decisions that influenced this result.
+    pub decisions: Vec<Decision>,
+}
+
+impl Explanation {
+    /// The chosen axis values, if any.
+    #[must_use]
+    pub fn chosen_axes(&self) -> Option<AxisValues> {
+        self.chosen.and_then(|i| self.candidates.get(i)).map(|c| c.axes)
+    }
+}
+
+/// Solves one PLANE block: its orientation (RELATIV composed on `active`), then the choice.
+/// PLANE AXIAL and PLANE RESET position the axes directly.
+pub fn solve_block(
+    machine: &Machine,
+    block: &PlaneBlock<f64>,
+    active: DMat3,
+    opts: &SolveOptions,
+) -> Result<Explanation, PlaneError> {
+    let selection = block.selection.or(opts.selection);
+    let transform = block.transform.or(opts.transform);
+    match &block.def {
+        PlaneDef::Axial { axes } => {
+            orientation::validate(&block.def)?;
+            let targets = orientation::axial_targets(axes, machine, &opts.start)?;
+            Ok(fixed(machine, &targets, opts, KinematicCase::Axial, Rule::Axial, Vec::new()))
+        }
+        PlaneDef::Reset => {
+            let mut targets = AxisValues::default();
+            for j in machine.joints() {
+                targets.set(j.axis, unconfirmed::RESET_TARGET_DEG);
+            }
+            Ok(fixed(machine, &targets, opts, KinematicCase::Reset, Rule::Reset, vec![Decision::ResetTarget]))
+        }
+        def => {
+            let ctx = Context { active, machine: Some(machine), current: opts.start };
+            let r = orientation::orientation(def, &ctx)?;
+            let mut decisions = Vec::new();
+            match def {
+                PlaneDef::Projected { .. } => decisions.push(Decision::ProjectedSign),
+                PlaneDef::Vector { .. } => decisions.push(Decision::VectorGramSchmidt),
+                PlaneDef::Relativ { .. } if active == DMat3::IDENTITY => {
+                    decisions.push(Decision::RelativUntilted)
+                }
+                _ => {}
+            }
+            Ok(solve_inner(machine, &r, opts, selection, transform, decisions))
+        }
+    }
+}
+
+/// Solves an orientation R: candidates, the control's choice and the explanation.
+#[must_use]
+pub fn solve(machine: &Machine, r: &DMat3, opts: &SolveOptions) -> Explanation {
+    solve_inner(machine, r, opts, opts.selection, opts.transform, Vec::new())
+}
+
+/// Per-axis data the candidates need.
+struct AxisCtx {
+    axis: RotaryAxis,
+    start: f64,
+    limits: Option<Limits>,
+    endless: bool,
+    table: bool,
+}
+
+impl AxisCtx {
+    fn new(joint: &RotaryJoint, machine: &Machine, opts: &SolveOptions) -> AxisCtx {
+        AxisCtx {
+            axis: joint.axis,
+            start: opts.start.get(joint.axis).unwrap_or(0.0),
+            limits: machine.limits_of(joint.axis, &opts.limits),
+            endless: joint.endless,
+            table: joint.carrier == Carrier::Table,
+        }
+    }
+
+    /// How the axis writes a solution known modulo 360 ([`unconfirmed::PREFER_CANONICAL_VALUE`]).
+    fn represent(&self, deg: f64) -> f64 {
+        let canonical = wrap180(deg);
+        let Some(l) = self.limits.filter(|_| !self.endless) else { return canonical };
+        if unconfirmed::PREFER_CANONICAL_VALUE && l.contains(canonical) {
+            return canonical;
+        }
+        // canonical + 360·k inside the limits, k nearest to the start position.
+        let kmin = ((l.min - Limits::EPS - canonical) / 360.0).ceil();
+        let kmax = ((l.max + Limits::EPS - canonical) / 360.0).floor();
+        if kmin > kmax {
+            return canonical;
+        }
+        let k = ((self.start - canonical) / 360.0).round().clamp(kmin, kmax);
+        canonical + 360.0 * k
+    }
+
+    /// Travel from the start, endless axes the short way round (DOMAIN.md §3.3).
+    fn travel(&self, value: f64) -> f64 {
+        if self.endless { short_delta(self.start, value).abs() } else { (value - self.start).abs() }
+    }
+
+    fn violation(&self, value: f64) -> Option<LimitViolation> {
+        let l = self.limits.filter(|_| !self.endless)?;
+        (!l.contains(value)).then_some(LimitViolation { axis: self.axis, value, min: l.min, max: l.max })
+    }
+}
+
+fn candidate(s: &AxisCtx, m: &AxisCtx, slave: f64, master: f64, residual: f64) -> Candidate {
+    let violation = s.violation(slave).or_else(|| m.violation(master));
+    Candidate {
+        axes: AxisValues::default().with(s.axis, clean(slave)).with(m.axis, clean(master)),
+        master: clean(master),
+        slave: clean(slave),
+        in_limits: violation.is_none(),
+        violation,
+        path: unconfirmed::path_length([s.travel(slave), m.travel(master)]),
+        residual: clean(residual),
+        excluded: None,
+    }
+}
+
+fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase) -> Explanation {
+    let t = orientation::tool_axis(r);
+    Explanation {
+        machine: machine.id.clone(),
+        orientation: orientation::rows(r),
+        tool_axis: t.to_array().map(clean),
+        spatial: orientation::to_spatial(r),
+        euler: orientation::to_euler(r),
+        master: machine.master().axis,
+        slave: machine.slave().axis,
+        symmetry_point: kinematics::symmetry_point(machine),
+        case,
+        selection: opts.selection,
+        transform: opts.transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM),
+        start: opts.start,
+        candidates: Vec::new(),
+        chosen: None,
+        rule: Rule::Unreachable,
+        reason: Reason(Rule::Unreachable),
+        error: None,
+        error_message: None,
+        residual: None,
+        q: QValues::default(),
+        decisions: Vec::new(),
+    }
+}
+
+/// Fills rule, texts, error, chosen and Q values.
+fn finish(mut e: Explanation, rule: Rule, chosen: Option<usize>, error: Option<SolveError>) -> Explanation {
+    e.reason = Reason(rule);
+    e.rule = rule;
+    e.error_message = error.map(ErrorMessage);
+    e.error = error;
+    e.chosen = if error.is_none() { chosen } else { None };
+    if let Some(axes) = e.chosen_axes() {
+        e.q = QValues { q120: axes.a, q121: axes.b, q122: axes.c };
+    }
+    if let Some(c) = e.chosen.and_then(|i| e.candidates.get(i))
+        && e.residual.is_none()
+    {
+        e.residual = Some(Residual { gamma: c.residual, realised_by: Realisation::Mathematical });
+    }
+    e
+}
+
+/// PLANE AXIAL / RESET: one candidate, the given axis values.
+fn fixed(
+    machine: &Machine,
+    targets: &AxisValues,
+    opts: &SolveOptions,
+    case: KinematicCase,
+    rule: Rule,
+    decisions: Vec<Decision>,
+) -> Explanation {
+    let r = machine.forward(targets);
+    let mut e = header(machine, &r, opts, case);
+    e.decisions = decisions;
+    let [sj, mj] = machine.joints();
+    let (s, m) = (AxisCtx::new(sj, machine, opts), AxisCtx::new(mj, machine, opts));
+    let c = candidate(&s, &m, targets.get(s.axis).unwrap_or(0.0), targets.get(m.axis).unwrap_or(0.0), 0.0);
+    let error = c.violation.map(out_of_limit);
+    if let Some(v) = c.violation {
+        e.candidates.push(Candidate { excluded: Some(Exclusion::OutOfLimits(v)), ..c });
+    } else {
+        e.candidates.push(c);
+    }
+    finish(e, rule, Some(0), error)
+}
+
+fn out_of_limit(v: LimitViolation) -> SolveError {
+    SolveError::AxisOutOfLimit { axis: v.axis, value: v.value, min: v.min, max: v.max }
+}
+
+fn first_not_finite(r: &DMat3, opts: &SolveOptions) -> Option<SolveError> {
+    if let Some(&value) = r.to_cols_array().iter().find(|x| !x.is_finite()) {
+        return Some(SolveError::NotFinite { what: "orientation", value });
+    }
+    if let Some((_, value)) = opts.start.iter().find(|(_, v)| !v.is_finite()) {
+        return Some(SolveError::NotFinite { what: "start position", value });
+    }
+    if let Some((_, l)) = opts.limits.iter().find(|(_, l)| !(l.min.is_finite() && l.max.is_finite())) {
+        let value = if l.min.is_finite() { l.max } else { l.min };
+        return Some(SolveError::NotFinite { what: "limit", value });
+    }
+    None
+}
+
+fn solve_inner(
+    machine: &Machine,
+    r: &DMat3,
+    opts: &SolveOptions,
+    selection: Option<Selection>,
+    transform: Option<TransformMode>,
+    decisions: Vec<Decision>,
+) -> Explanation {
+    let bad = first_not_finite(r, opts);
+    let ik = if bad.is_some() {
+        ToolAxisSolution::Unreachable
+    } else {
+        kinematics::solve_tool_axis(machine, orientation::tool_axis(r))
+    };
+    let case = match ik {
+        ToolAxisSolution::Two { .. } => KinematicCase::Two,
+        ToolAxisSolution::One { .. } => KinematicCase::One,
+        ToolAxisSolution::SlaveFree { .. } => KinematicCase::SlaveFree,
+        ToolAxisSolution::Unreachable => KinematicCase::Unreachable,
+    };
+    let mut e = header(machine, r, opts, case);
+    e.selection = selection;
+    e.transform = transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM);
+    e.decisions = decisions;
+    if let Some(err) = bad {
+        return finish(e, Rule::Unreachable, None, Some(err));
+    }
+    let [sj, mj] = machine.joints();
+    let (s, m) = (AxisCtx::new(sj, machine, opts), AxisCtx::new(mj, machine, opts));
+    let with_residual = |pair: AxisPair| {
+        let (slave, master) = (s.represent(pair.slave), m.represent(pair.master));
+        let g = kinematics::residual(machine, AxisPair { slave, master }, r);
+        candidate(&s, &m, slave, master, g)
+    };
+
+    match ik {
+        ToolAxisSolution::Unreachable => {
+            e.decisions.push(Decision::UnreachableMessage);
+            let err = SolveError::Unreachable { tool_axis: e.tool_axis };
+            finish(e, Rule::Unreachable, None, Some(err))
+        }
+        ToolAxisSolution::One { solution } => {
+            e.candidates.push(with_residual(solution));
+            only_one(e, Rule::Unique { free: None })
+        }
+        ToolAxisSolution::SlaveFree { master } => {
+            let (c, realised_by) = free_slave(machine, r, &s, &m, master, transform, &mut e.decisions);
+            e.candidates.push(c);
+            let gamma = e.candidates[0].residual;
+            e.residual = Some(Residual { gamma, realised_by });
+            only_one(e, Rule::Unique { free: Some(s.axis) })
+        }
+        ToolAxisSolution::Two { solutions } => {
+            e.candidates = solutions.iter().map(|p| with_residual(*p)).collect();
+            // Candidate 1 is the one on the SYM+ side of the symmetry point (stable order for the UI).
+            if wrap180(e.candidates[0].master - e.symmetry_point) < 0.0 {
+                e.candidates.swap(0, 1);
+            }
+            match selection {
+                Some(sel) => choose_selected(e, sel),
+                None => choose_free(e),
+            }
+        }
+    }
+}
+
+/// The singular case: the master is fixed, the free slave follows COORD ROT or TABLE ROT.
+fn free_slave(
+    machine: &Machine,
+    r: &DMat3,
+    s: &AxisCtx,
+    m: &AxisCtx,
+    master_deg: f64,
+    transform: Option<TransformMode>,
+    decisions: &mut Vec<Decision>,
+) -> (Candidate, Realisation) {
+    if transform.is_none() {
+        decisions.push(Decision::DefaultTransform);
+    }
+    let master = m.represent(master_deg);
+    let turn_table = match transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM) {
+        TransformMode::CoordRot => false,
+        TransformMode::TableRot => {
+            if !s.table {
+                decisions.push(Decision::TableRotHeadAxis);
+            }
+            s.table || unconfirmed::TABLE_ROT_ON_HEAD_AXIS
+        }
+    };
+    let slave = if turn_table {
+        decisions.push(Decision::TableRotSign);
+        s.represent(
+            unconfirmed::TABLE_ROT_SIGN * kinematics::free_slave_for_zero_residual(machine, master, r),
+        )
+    } else {
+        decisions.push(Decision::CoordRotFreeAxis);
+        unconfirmed::coord_rot_free_axis(s.start)
+    };
+    let g = kinematics::residual(machine, AxisPair { slave, master }, r);
+    let c = candidate(s, m, slave, master, g);
+    let realised_by = if turn_table {
+        Realisation::TableAxis { axis: s.axis, value: c.slave }
+    } else {
+        Realisation::Mathematical
+    };
+    (c, realised_by)
+}
+
+/// Exactly one candidate: take it if it is inside the limits.
+fn only_one(mut e: Explanation, rule: Rule) -> Explanation {
+    let violation = e.candidates[0].violation;
+    if let Some(v) = violation {
+        e.candidates[0].excluded = Some(Exclusion::OutOfLimits(v));
+    }
+    finish(e, rule, Some(0), violation.map(out_of_limit))
+}
+
+/// Among `pool` (indices), the candidate with the shorter path; `true` if the tie rule decided.
+/// Marks the loser. `pool` has one or two entries.
+fn nearest(e: &mut Explanation, pool: &[usize]) -> (usize, bool) {
+    let [a, b] = match *pool {
+        [a, b] => [a, b],
+        [a, ..] => return (a, false),
+        [] => return (0, false),
+    };
+    e.decisions.push(Decision::PathMetric);
+    let (pa, pb) = (e.candidates[a].path, e.candidates[b].path);
+    let tie = (pa - pb).abs() < unconfirmed::TIE_TOLERANCE_DEG;
+    let a_wins =
+        if tie { unconfirmed::tie_prefers(e.candidates[a].master, e.candidates[b].master) } else { pa < pb };
+    let (win, lose) = if a_wins { (a, b) } else { (b, a) };
+    let chosen_path = e.candidates[win].path;
+    let path = e.candidates[lose].path;
+    e.candidates[lose].excluded =
+        Some(if tie { Exclusion::LostTie { path } } else { Exclusion::LongerPath { path, chosen_path } });
+    if tie {
+        e.decisions.push(Decision::TieRule);
+    }
+    (win, tie)
+}
+
+/// `SEQ±` / `SYM±` with two candidates (DOMAIN.md §3.3, seed S2).
+fn choose_selected(mut e: Explanation, sel: Selection) -> Explanation {
+    let (sign, reference) = match sel {
+        Selection::Seq(sign) => (sign, 0.0),
+        Selection::Sym(sign) => {
+            e.decisions.push(Decision::SymmetryPoint);
+            (sign, e.symmetry_point)
+        }
+    };
+    let side = |master: f64| {
+        let d = match sel {
+            Selection::Seq(_) => master - reference,
+            Selection::Sym(_) => wrap180(master - reference),
+        };
+        (d > 0.0 || (d == 0.0 && unconfirmed::ZERO_COUNTS_AS_PLUS), d == 0.0)
+    };
+    let mut on_side = Vec::with_capacity(2);
+    for (i, c) in e.candidates.iter_mut().enumerate() {
+        let (plus, zero) = side(c.master);
+        if zero && !e.decisions.contains(&Decision::ZeroIsPlus) {
+            e.decisions.push(Decision::ZeroIsPlus);
+        }
+        if plus == (sign == Sign::Plus) {
+            on_side.push(i);
+        } else {
+            c.excluded = Some(Exclusion::WrongSide { selection: sel });
+        }
+    }
+    let master = e.master;
+    let rule_one = match sel {
+        Selection::Seq(sign) => Rule::Seq { sign, master },
+        Selection::Sym(sign) => Rule::Sym { sign, master, symmetry_point: e.symmetry_point },
+    };
+    if on_side.is_empty() {
+        let values = [e.candidates[0].master, e.candidates[1].master];
+        return finish(
+            e,
+            rule_one,
+            None,
+            Some(SolveError::NoSolutionOnSide { selection: sel, master, values }),
+        );
+    }
+    let rule = match (sel, on_side.len()) {
+        (Selection::Seq(sign), 2) => {
+            e.decisions.push(Decision::SeqSameSide);
+            if !unconfirmed::SEQ_NEAREST_BEFORE_LIMITS {
+                on_side.retain(|&i| e.candidates[i].in_limits);
+            }
+            Rule::SeqNearer { sign, master }
+        }
+        _ => rule_one,
+    };
+    if on_side.is_empty() {
+        return finish(e, rule, None, Some(SolveError::NoSolutionInLimits { candidates: 2 }));
+    }
+    let (pick, _) = nearest(&mut e, &on_side);
+    match e.candidates[pick].violation {
+        Some(v) => {
+            e.candidates[pick].excluded = Some(Exclusion::OutOfLimits(v));
+            finish(e, rule, None, Some(out_of_limit(v)))
+        }
+        None => finish(e, rule, Some(pick), None),
+    }
+}
+
+/// No selection: limits, then shortest path (DOMAIN.md §3.3 steps 1–4, seed S2).
+fn choose_free(mut e: Explanation) -> Explanation {
+    let mut inside = Vec::with_capacity(2);
+    for (i, c) in e.candidates.iter_mut().enumerate() {
+        match c.violation {
+            Some(v) => c.excluded = Some(Exclusion::OutOfLimits(v)),
+            None => inside.push(i),
+        }
+    }
+    match inside.len() {
+        0 => {
+            let n = e.candidates.len();
+            finish(e, Rule::NoneInLimits, None, Some(SolveError::NoSolutionInLimits { candidates: n }))
+        }
+        1 => finish(e, Rule::OnlyInLimits, Some(inside[0]), None),
+        _ => {
+            let (pick, tie) = nearest(&mut e, &inside);
+            let rule = if tie { Rule::Tie { master: e.master } } else { Rule::ShortestPath };
+            finish(e, rule, Some(pick), None)
+        }
+    }
+}
+
+/// `A-45`, `C+90`, `A+12.5` (control style, up to 4 decimals).
+#[must_use]
+pub fn axis_word(axis: RotaryAxis, value: f64) -> String {
+    format!("{axis}{}", fmt_deg(value))
+}
+
+/// A signed angle with up to 4 decimals, trailing zeros dropped: `+90`, `-45`, `+12.5`.
+#[must_use]
+pub fn fmt_deg(value: f64) -> String {
+    let s = format!("{:+.4}", clean((value * 1e4).round() / 1e4));
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "+0".to_string() } else { s.to_string() }
+}
+
+fn selection_word(sel: Selection) -> String {
+    match sel {
+        Selection::Seq(s) => format!("SEQ{}", sign_char(s)),
+        Selection::Sym(s) => format!("SYM{}", sign_char(s)),
+    }
+}

@@ -1,0 +1,287 @@
+//! Every convention the sources do NOT confirm, decided once, here.
+//!
+//! DOMAIN.md marks these points **UNCONFIRMED**: no seed and no public manual states them. The
+//! rest of the core calls the constants and functions below instead of repeating a choice, so a
+//! correction after checking a real control (or the HEIDENHAIN programming station) is a one-line
+//! change in this file. The UI cites a decision through [`Decision`] (stable id, German and English
+//! text); the solver lists the decisions that influenced a result in its explanation.
+
+use glam::DVec3;
+use serde::Serialize;
+
+use crate::plane::TransformMode;
+
+/// A decision made here, as the UI and the explanation record cite it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Decision {
+    /// [`projected_traces`]: sign of PROPR/PROMIN.
+    ProjectedSign,
+    /// [`vector_frame`]: keep N, correct B.
+    VectorGramSchmidt,
+    /// [`RELATIV_UNTILTED_REFERENCE`]: RELATIV without an active tilt starts from the W-CS.
+    RelativUntilted,
+    /// [`path_length`]: sum of the axis travels.
+    PathMetric,
+    /// [`tie_prefers`]: equal paths → larger master value.
+    TieRule,
+    /// [`coord_rot_free_axis`]: COORD ROT leaves the free axis where it is.
+    CoordRotFreeAxis,
+    /// [`TABLE_ROT_SIGN`]: TABLE ROT turns the free table axis by +γ.
+    TableRotSign,
+    /// [`TABLE_ROT_ON_HEAD_AXIS`]: TABLE ROT with a free head axis acts like COORD ROT.
+    TableRotHeadAxis,
+    /// [`DEFAULT_TRANSFORM`]: neither COORD ROT nor TABLE ROT programmed.
+    DefaultTransform,
+    /// [`ZERO_COUNTS_AS_PLUS`]: SEQ/SYM with the master exactly on the reference.
+    ZeroIsPlus,
+    /// [`SEQ_NEAREST_BEFORE_LIMITS`]: SEQ with both solutions on the requested side.
+    SeqSameSide,
+    /// [`SYMMETRY_POINT_CODIRECTIONAL`]: which of the two symmetry positions is "the" one.
+    SymmetryPoint,
+    /// [`PREFER_CANONICAL_VALUE`]: how a non-endless axis writes a solution.
+    AxisRepresentation,
+    /// [`AXIAL_MISSING_AXIS_KEEPS_POSITION`].
+    AxialMissingAxis,
+    /// [`RESET_TARGET_DEG`].
+    ResetTarget,
+    /// [`UNREACHABLE_IS_SEPARATE_ERROR`]: German text of "Angle cannot be calculated".
+    UnreachableMessage,
+    /// [`EULPR_LIMIT`] and the ranges of POINTS/RELATIV/AXIAL, [`VECTOR_COMPONENT_LIMIT`].
+    InputRanges,
+}
+
+impl Decision {
+    /// Every decision, for a UI list "what this trainer assumes".
+    pub const ALL: [Decision; 17] = [
+        Decision::ProjectedSign,
+        Decision::VectorGramSchmidt,
+        Decision::RelativUntilted,
+        Decision::PathMetric,
+        Decision::TieRule,
+        Decision::CoordRotFreeAxis,
+        Decision::TableRotSign,
+        Decision::TableRotHeadAxis,
+        Decision::DefaultTransform,
+        Decision::ZeroIsPlus,
+        Decision::SeqSameSide,
+        Decision::SymmetryPoint,
+        Decision::AxisRepresentation,
+        Decision::AxialMissingAxis,
+        Decision::ResetTarget,
+        Decision::UnreachableMessage,
+        Decision::InputRanges,
+    ];
+
+    /// `(German, English)` text for the trainee.
+    #[must_use]
+    pub fn texts(self) -> (&'static str, &'static str) {
+        match self {
+            Decision::ProjectedSign => (
+                "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA).",
+                "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA).",
+            ),
+            Decision::VectorGramSchmidt => (
+                "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert.",
+                "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it.",
+            ),
+            Decision::RelativUntilted => (
+                "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS.",
+                "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
+            ),
+            Decision::PathMetric => (
+                "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg).",
+                "Path length = sum of the travel of all rotary axes (endless axes the short way round).",
+            ),
+            Decision::TieRule => (
+                "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
+                "Equal paths: the solution with the larger master axis value.",
+            ),
+            Decision::CoordRotFreeAxis => (
+                "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position.",
+                "COORD ROT: the free rotary axis stays at its current position.",
+            ),
+            Decision::TableRotSign => (
+                "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
+                "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
+            ),
+            Decision::TableRotHeadAxis => (
+                "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen.",
+                "TABLE ROT acts on a free table axis only; a free head axis stays where it is.",
+            ),
+            Decision::DefaultTransform => (
+                "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
+                "Without COORD ROT/TABLE ROT the control computes as with COORD ROT.",
+            ),
+            Decision::ZeroIsPlus => (
+                "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv.",
+                "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive.",
+            ),
+            Decision::SeqSameSide => (
+                "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung.",
+                "SEQ with both solutions on the requested side: the nearer one first, then the limit check.",
+            ),
+            Decision::SymmetryPoint => (
+                "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt.",
+                "Symmetry point: the master position where the tool axis points along +slave axis direction.",
+            ),
+            Decision::AxisRepresentation => (
+                "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter.",
+                "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches.",
+            ),
+            Decision::AxialMissingAxis => (
+                "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position.",
+                "PLANE AXIAL: rotary axes not programmed stay at their current position.",
+            ),
+            Decision::ResetTarget => (
+                "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
+                "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
+            ),
+            Decision::UnreachableMessage => (
+                "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“.",
+                "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
+            ),
+            Decision::InputRanges => (
+                "Eingabebereiche für EULPR (±359,9999 wegen EULPR+270 im Seed), POINTS, RELATIV, AXIAL, VECTOR (±99,9999999).",
+                "Input ranges for EULPR (±359.9999 because the seed uses EULPR+270), POINTS, RELATIV, AXIAL, VECTOR (±99.9999999).",
+            ),
+        }
+    }
+
+    /// German text for the trainee.
+    #[must_use]
+    pub fn text_de(self) -> &'static str {
+        self.texts().0
+    }
+
+    /// English text for the trainee.
+    #[must_use]
+    pub fn text_en(self) -> &'static str {
+        self.texts().1
+    }
+}
+
+/// PLANE PROJECTED: the two plane traces `u1` (in the Z/X plane, from PROPR) and `u2` (in the
+/// Y/Z plane, from PROMIN), angles in degrees.
+///
+/// Source: DOMAIN.md §2.3; the sign is **UNCONFIRMED**, chosen so that a single nonzero angle
+/// matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA, oracle 12). Flip the sign of the `sin` terms here
+/// if a real control disagrees.
+#[must_use]
+pub fn projected_traces(propr_deg: f64, promin_deg: f64) -> (DVec3, DVec3) {
+    let (s1, c1) = propr_deg.to_radians().sin_cos();
+    let (s2, c2) = promin_deg.to_radians().sin_cos();
+    (DVec3::new(c1, 0.0, -s1), DVec3::new(0.0, c2, s2))
+}
+
+/// PLANE VECTOR: tilted X from the base vector `b` once the tool axis `z` (unit) is fixed.
+/// Returns `None` when `b` is parallel to `z` (nothing left after the projection).
+///
+/// Source: DOMAIN.md §2.4, Gram–Schmidt keeping N (**UNCONFIRMED**, but the manual's own example
+/// has B·N ≈ −0.349, so the control must correct one of them).
+#[must_use]
+pub fn vector_frame(b: DVec3, z: DVec3) -> Option<DVec3> {
+    let x = b - b.dot(z) * z;
+    let len = x.length();
+    (len > crate::orientation::PARALLEL_EPS * b.length()).then(|| x / len)
+}
+
+/// PLANE RELATIV with nothing tilted refers to the untilted W-CS (identity).
+/// DOMAIN.md §2.6: **UNCONFIRMED** wording, consistent with seed S1.
+pub const RELATIV_UNTILTED_REFERENCE: glam::DMat3 = glam::DMat3::IDENTITY;
+
+/// Path from the current rotary positions to a candidate: the **sum** of the axis travels in
+/// degrees (each already the short way round for an endless axis).
+///
+/// DOMAIN.md §3.3: the metric (sum vs max) is **UNCONFIRMED**; the sum reproduces every seed row
+/// ("both need 45+90", "C travel 15 vs 195").
+#[must_use]
+pub fn path_length(travels: impl IntoIterator<Item = f64>) -> f64 {
+    travels.into_iter().map(f64::abs).sum()
+}
+
+/// Two paths closer than this (degrees) count as equal and go to [`tie_prefers`].
+/// Numerical choice (derived), so that 45+90 from two different atan2 calls ties.
+pub const TIE_TOLERANCE_DEG: f64 = 1e-6;
+
+/// Tie rule for equal paths: `true` if the candidate with master value `a` wins over `b`.
+///
+/// DOMAIN.md §3.3: **UNCONFIRMED** guess that fits seed S2 row 1 (from A0 C0 the control takes
+/// A+45 C+90): prefer the master axis on the positive side, i.e. the larger master value.
+#[must_use]
+pub fn tie_prefers(master_a: f64, master_b: f64) -> bool {
+    master_a >= master_b
+}
+
+/// COORD ROT in the singular case: value of the free axis, given its current value.
+/// DOMAIN.md §3.4: "the table is not moved" [S0]; whether TNC7 sends it to 0 is **UNCONFIRMED**.
+#[must_use]
+pub fn coord_rot_free_axis(current_deg: f64) -> f64 {
+    current_deg
+}
+
+/// TABLE ROT in the singular case: the free table axis takes `TABLE_ROT_SIGN · γ₀`, where γ₀ is
+/// the rotation about the tool axis still missing with the free axis at 0 (DOMAIN.md §3.4).
+/// With +1, `SPA0 SPB0 SPC+45 TABLE ROT` on A/C gives `C+45`, γ = 0 (sign **UNCONFIRMED**);
+/// with −1 the table would turn the other way and γ = 90° would remain as a coordinate rotation.
+pub const TABLE_ROT_SIGN: f64 = 1.0;
+
+/// TABLE ROT when the free axis is a head axis (e.g. C of a C/A fork head at A0): the seed
+/// says TABLE ROT "turns the C rotary axis" [S0], i.e. a table. **UNCONFIRMED**: a free head
+/// axis is not turned; the rotation is done mathematically as with COORD ROT.
+pub const TABLE_ROT_ON_HEAD_AXIS: bool = false;
+
+/// Neither COORD ROT nor TABLE ROT programmed. **UNCONFIRMED**: COORD ROT (table not moved).
+pub const DEFAULT_TRANSFORM: TransformMode = TransformMode::CoordRot;
+
+/// SEQ± / SYM±: a master value exactly on the reference (0° for SEQ, the symmetry point for
+/// SYM) counts as the `+` side. **UNCONFIRMED** (DOMAIN.md §3.3 only says "positive range").
+pub const ZERO_COUNTS_AS_PLUS: bool = true;
+
+/// SEQ± with both solutions on the requested side: the control "takes the nearer one" [S2].
+/// **UNCONFIRMED** order: `true` = pick the nearer one among all on that side and then check
+/// its limits (an out-of-limit pick is "Winkel nicht erlaubt", like any selected solution [S2]);
+/// `false` would drop out-of-limit ones first.
+pub const SEQ_NEAREST_BEFORE_LIMITS: bool = true;
+
+/// Every master axis has two symmetry positions 180° apart [S2]; the seed's B/A example calls
+/// A = −90 "the" symmetry point. **UNCONFIRMED** rule that gives −90 (and 0 for A/C): the
+/// position where the tool axis points along the **+** direction of the slave axis.
+pub const SYMMETRY_POINT_CODIRECTIONAL: bool = true;
+
+/// How a non-endless axis writes a solution angle `deg` (known modulo 360): `true` if the
+/// canonical value in (−180, +180] is used whenever it lies inside the limits; otherwise the
+/// in-limit value ±360 nearest to the current position. **UNCONFIRMED**; it reproduces the
+/// seed's "C travel 15 vs 195" (C+90 from C−105, not C−270).
+pub const PREFER_CANONICAL_VALUE: bool = true;
+
+/// PLANE AXIAL: a rotary axis not written in the block keeps its current position.
+/// **UNCONFIRMED** (DOMAIN.md §2.7 is silent).
+pub const AXIAL_MISSING_AXIS_KEEPS_POSITION: bool = true;
+
+/// PLANE RESET MOVE/TURN: "the rotary axes also return" [S0] — to 0° (**UNCONFIRMED**).
+pub const RESET_TARGET_DEG: f64 = 0.0;
+
+/// A tool axis the kinematics cannot reach: the iTNC says "Angle cannot be calculated"
+/// [M:iTNC-tech-p761]; the German wording "Winkel nicht berechenbar" is **UNCONFIRMED** (our
+/// translation). `false` would report it as "Winkel nicht erlaubt" instead.
+pub const UNREACHABLE_IS_SEPARATE_ERROR: bool = true;
+
+/// EULPR range: the manual says −180…+180 [M:iTNC-p498], but seed S1 programs `EULPR+270`.
+/// **UNCONFIRMED**: accepted up to ±359.9999 like a spatial angle.
+pub const EULPR_LIMIT: f64 = 359.9999;
+
+/// PLANE VECTOR component limit: ±9.9999999 (TNC 320/620/640) or ±99.9999999 (later iTNC 530)
+/// [M:320-p352][M:iTNC-p500]. **UNCONFIRMED** which control we mimic: the larger one.
+pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
+
+/// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
+/// coordinate range ±99999.9999.
+pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
+
+/// PLANE RELATIV angle limit. **UNCONFIRMED** ("probably ±359.9999", DOMAIN.md §5).
+pub const RELATIV_LIMIT: f64 = 359.9999;
+
+/// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
+/// on top of it when the solver positions the axes.
+pub const AXIAL_LIMIT: f64 = 99_999.999_9;
