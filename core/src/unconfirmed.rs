@@ -47,7 +47,8 @@ pub enum Decision {
     ResetTarget,
     /// [`UNREACHABLE_IS_SEPARATE_ERROR`]: German text of "Angle cannot be calculated".
     UnreachableMessage,
-    /// [`EULPR_LIMIT`] and the ranges of POINTS/RELATIV/AXIAL, [`VECTOR_COMPONENT_LIMIT`].
+    /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`]; RELATIV uses
+    /// the spatial range.
     InputRanges,
 }
 
@@ -142,8 +143,8 @@ impl Decision {
                 "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
             ),
             Decision::InputRanges => (
-                "Eingabebereiche für EULPR (±359,9999 wegen EULPR+270 im Seed), POINTS, RELATIV, AXIAL, VECTOR (±99,9999999).",
-                "Input ranges for EULPR (±359.9999 because the seed uses EULPR+270), POINTS, RELATIV, AXIAL, VECTOR (±99.9999999).",
+                "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999.",
+                "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999.",
             ),
         }
     }
@@ -267,9 +268,11 @@ pub const RESET_TARGET_DEG: f64 = 0.0;
 /// translation). `false` would report it as "Winkel nicht erlaubt" instead.
 pub const UNREACHABLE_IS_SEPARATE_ERROR: bool = true;
 
-/// EULPR range: the manual says −180…+180 [M:iTNC-p498], but seed S1 programs `EULPR+270`.
-/// **UNCONFIRMED**: accepted up to ±359.9999 like a spatial angle.
-pub const EULPR_LIMIT: f64 = 359.9999;
+/// EULPR range: seed S1's syntax table and the manual say −180…+180 [S1][M:iTNC-p498], but
+/// S1's chamfer tip programs `EULPR+270`. **UNCONFIRMED** how the control treats 270: we follow
+/// the stated input range, so `EULPR+270` is refused ("Winkel nicht erlaubt") and the shipped
+/// chamfer sample writes the same orientation as `EULPR-90`.
+pub const EULPR_LIMIT: f64 = 180.0;
 
 /// PLANE VECTOR component limit: ±9.9999999 (TNC 320/620/640) or ±99.9999999 (later iTNC 530)
 /// [M:320-p352][M:iTNC-p500]. **UNCONFIRMED** which control we mimic: the larger one.
@@ -278,9 +281,6 @@ pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
 /// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
 /// coordinate range ±99999.9999.
 pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
-
-/// PLANE RELATIV angle limit. **UNCONFIRMED** ("probably ±359.9999", DOMAIN.md §5).
-pub const RELATIV_LIMIT: f64 = 359.9999;
 
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.

@@ -32,10 +32,16 @@ fn range_errors_carry_word_value_and_range() {
     assert!(orientation::orientation(&spatial(359.9999, -359.9999, 0.0), &Context::default()).is_ok());
     assert!(
         orientation::orientation(
-            &PlaneDef::Euler { eulpr: 270.0, eulnu: 180.0, eulrot: 360.0 },
+            &PlaneDef::Euler { eulpr: -180.0, eulnu: 180.0, eulrot: 360.0 },
             &Context::default()
         )
         .is_ok()
+    );
+    // Seed S1's tip writes EULPR+270, outside the stated input range −180…+180
+    // (unconfirmed::EULPR_LIMIT): refused with the numbers; EULPR-90 is the same plane.
+    assert_eq!(
+        err(PlaneDef::Euler { eulpr: 270.0, eulnu: 45.0, eulrot: 0.0 }),
+        PlaneError::OutOfRange { word: "EULPR", value: 270.0, min: -180.0, max: 180.0 }
     );
     let msg = PlaneError::OutOfRange { word: "EULNU", value: -5.0, min: 0.0, max: 180.0 };
     assert_eq!(msg.message_de(), "Winkel nicht erlaubt: EULNU = -5 (erlaubt 0 … 180)");

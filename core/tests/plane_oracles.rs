@@ -72,10 +72,18 @@ fn oracles_05_06_euler() {
     assert_close!(r5.z_axis, [0.0, -s, s], ORACLE, "oracle 5 t");
     assert_close!(r5.x_axis, [1.0, 0.0, 0.0], ORACLE, "oracle 5 X'");
     assert_close!(r5, r_of(spatial(45.0, 0.0, 0.0)), EXACT, "oracle 5 = SPATIAL SPA+45");
-    for (pr, t) in [(90.0, [s, 0.0, s]), (180.0, [0.0, s, s]), (270.0, [-s, 0.0, s])] {
+    for (pr, t) in [(90.0, [s, 0.0, s]), (180.0, [0.0, s, s]), (-90.0, [-s, 0.0, s])] {
         let r = r_of(PlaneDef::Euler { eulpr: pr, eulnu: 45.0, eulrot: 0.0 });
         assert_close!(r.z_axis, t, ORACLE, "oracle 6 EULPR {pr}");
     }
+    // The seed's EULPR+270 is outside the input range (unconfirmed::EULPR_LIMIT) but the formula
+    // gives the same plane as EULPR-90.
+    assert_close!(
+        orientation::euler(270.0, 45.0, 0.0),
+        r_of(PlaneDef::Euler { eulpr: -90.0, eulnu: 45.0, eulrot: 0.0 }),
+        EXACT,
+        "oracle 6 EULPR 270 = -90"
+    );
 }
 
 #[test]
