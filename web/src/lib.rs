@@ -3,9 +3,16 @@
 
 pub mod app;
 pub mod components;
+pub mod dialog;
+pub mod document;
 pub mod i18n;
+pub mod keymap;
+pub mod preview;
+pub mod samples;
 pub mod softkeys;
 pub mod state;
+pub mod syntax;
+pub mod why;
 
 pub use app::App;
 
