@@ -17,6 +17,7 @@ pub mod parse;
 pub mod plane;
 pub mod sample;
 pub mod solve;
+pub mod text;
 pub mod unconfirmed;
 
 pub use ast::{Block, BlockBody, Program};

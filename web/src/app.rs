@@ -1,25 +1,77 @@
 //! The root component: one reducer, the TNC screen layout, the keyboard.
 
+use std::rc::Rc;
+
 use wasm_bindgen::JsCast;
 use web_sys::HtmlElement;
 use yew::prelude::*;
 
+use crate::browser;
 use crate::components::dialog_area::DialogArea;
 use crate::components::header::Header;
 use crate::components::program_pane::ProgramPane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::view3d::View3d;
 use crate::components::why_panel::WhyPanel;
+use crate::i18n::Text;
 use crate::keymap::{self, KeyPress};
+use crate::persist;
 use crate::softkeys;
 use crate::state::{Action, AppState};
 
 #[function_component(App)]
 pub fn app() -> Html {
-    let state = use_reducer(AppState::default);
+    let state =
+        use_reducer(|| AppState::start(browser::load_saved().as_deref(), browser::fragment().as_deref()));
+    // Keep the trainee's work: save whenever something that survives a reload changed.
+    {
+        let deps = (
+            Rc::as_ptr(&state.doc) as usize,
+            state.cursor,
+            state.machine.as_ref().map(|m| m.id.clone()),
+            state.lang,
+            state.projector,
+        );
+        let state = state.clone();
+        use_effect_with(deps, move |_| {
+            if let Err(message) = browser::save(&persist::to_json(&state.saved())) {
+                state.dispatch(Action::Notice(message));
+            }
+        });
+    }
     let on_action = {
         let state = state.clone();
-        Callback::from(move |a: Action| state.dispatch(a))
+        Callback::from(move |a: Action| match a {
+            Action::Download => {
+                let bytes = schwenkbar_core::text::encode_latin1(&state.doc.text);
+                if let Err(message) = browser::download(&state.file_name(), &bytes) {
+                    state.dispatch(Action::Notice(message));
+                }
+            }
+            Action::Share => {
+                let notice = match browser::set_fragment(&state.share_fragment()) {
+                    Ok(()) => Text::new(
+                        "Link steht in der Adresszeile: kopieren und weitergeben",
+                        "The link is in the address bar: copy and pass it on",
+                    ),
+                    Err(message) => message,
+                };
+                state.dispatch(Action::Notice(notice));
+            }
+            other => state.dispatch(other),
+        })
+    };
+    let on_import = {
+        let state = state.clone();
+        Callback::from(move |file: web_sys::File| {
+            let state = state.clone();
+            yew::platform::spawn_local(async move {
+                match browser::read_file(file).await {
+                    Ok(bytes) => state.dispatch(Action::Import(schwenkbar_core::text::decode(bytes))),
+                    Err(message) => state.dispatch(Action::Notice(message)),
+                }
+            });
+        })
     };
     let onkeydown = {
         let state = state.clone();
@@ -63,7 +115,7 @@ pub fn app() -> Html {
                 <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()} lang={l} />
             </main>
             <DialogArea {dialog} text={state.dialog_text()} lang={l} on_action={on_action.clone()} />
-            <SoftkeyRow row={softkeys::row(&state)} {on_action} />
+            <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
         </div>
     }
 }

@@ -2,11 +2,13 @@
 //! State lives in one reducer ([`state::AppState`]); components only render.
 
 pub mod app;
+pub mod browser;
 pub mod components;
 pub mod dialog;
 pub mod document;
 pub mod i18n;
 pub mod keymap;
+pub mod persist;
 pub mod preview;
 pub mod samples;
 pub mod softkeys;

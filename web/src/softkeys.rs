@@ -75,7 +75,7 @@ pub fn row(state: &AppState) -> Row {
                 action: Action::ToggleTextEditing,
                 active: state.text_editing,
             }),
-            None,
+            text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
             None,
             Some(Softkey {
                 id: "projector".to_owned(),
@@ -123,6 +123,17 @@ pub fn row(state: &AppState) -> Row {
             row[7] = back(l);
             row
         }
+        SoftkeyLevel::Files => [
+            // Rendered as a file picker by the softkey row (a browser needs the user's click).
+            text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::ShowFiles),
+            text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
+            text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
+            None,
+            None,
+            None,
+            None,
+            back(l),
+        ],
         SoftkeyLevel::Samples => {
             let mut row: Row = Default::default();
             for (slot, s) in row.iter_mut().zip(SAMPLES) {

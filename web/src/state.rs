@@ -13,6 +13,7 @@ use yew::Reducible;
 use crate::dialog::{Dialog, Function, Key, Outcome};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
+use crate::persist::{self, Saved, Shared};
 use crate::samples;
 
 /// Which softkey row is shown when no dialog is open.
@@ -29,6 +30,8 @@ pub enum SoftkeyLevel {
     Machines,
     /// Sample programs to open.
     Samples,
+    /// Import, download, share link.
+    Files,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -96,6 +99,14 @@ pub enum Action {
     SelectMachine(String),
     ShowSamples,
     LoadSample(String),
+    ShowFiles,
+    /// A file was read (Latin-1 or UTF-8 already decoded).
+    Import(String),
+    /// Side effects, carried out by the app shell (browser.rs), not by the reducer.
+    Download,
+    Share,
+    /// The app shell reports the outcome of a side effect in the dialog line.
+    Notice(Text),
     ToggleLang,
     ToggleProjector,
 }
@@ -149,6 +160,15 @@ impl AppState {
                 }
                 None => next.message = Some(Text::new("Beispiel unbekannt", "Unknown sample")),
             },
+            Action::ShowFiles => next.level = SoftkeyLevel::Files,
+            Action::Import(text) => {
+                next.doc = Rc::new(Document::new(text));
+                next.cursor = 0;
+                next.level = SoftkeyLevel::Main;
+                next.message = Some(Text::new("Datei importiert", "File imported"));
+            }
+            Action::Download | Action::Share => {}
+            Action::Notice(text) => next.message = Some(text),
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
         }
@@ -212,7 +232,73 @@ impl AppState {
             ),
             SoftkeyLevel::Machines => Text::new("Maschine wählen", "Select the machine"),
             SoftkeyLevel::Samples => Text::new("Beispielprogramm öffnen", "Open a sample program"),
+            SoftkeyLevel::Files => Text::new(
+                "Datei: importieren, herunterladen, Link teilen",
+                "File: import, download, share a link",
+            ),
         }
+    }
+}
+
+impl AppState {
+    /// What survives a reload.
+    #[must_use]
+    pub fn saved(&self) -> Saved {
+        Saved {
+            version: persist::VERSION,
+            program: self.doc.text.clone(),
+            cursor: self.cursor,
+            machine: self.machine.as_ref().map_or_else(|| DEFAULT_MACHINE.to_owned(), |m| m.id.clone()),
+            lang: self.lang,
+            projector: self.projector,
+        }
+    }
+
+    /// The state at start-up: a share link wins over the saved state; a saved state that cannot
+    /// be used is reported in the dialog line and replaced by the default.
+    #[must_use]
+    pub fn start(saved: Option<&str>, fragment: Option<&str>) -> AppState {
+        let mut state = AppState::default();
+        match saved.map(persist::restore) {
+            None => {}
+            Some(Ok(s)) => {
+                state.lang = s.lang;
+                state.projector = s.projector;
+                state.doc = Rc::new(Document::new(s.program));
+                state.cursor = s.cursor.min(state.doc.last_index());
+                state.select_machine(&s.machine);
+            }
+            Some(Err(e)) => state.message = Some(e.message()),
+        }
+        if let Some(shared) = fragment.and_then(persist::parse_fragment) {
+            state.doc = Rc::new(Document::new(shared.program));
+            state.cursor = shared.block.min(state.doc.last_index());
+            if let Some(m) = shared.machine {
+                state.select_machine(&m);
+            }
+            state.message = Some(Text::new("Programm aus dem Link geöffnet", "Program opened from the link"));
+        }
+        state
+    }
+
+    /// The share link's fragment for the current program, block and machine.
+    #[must_use]
+    pub fn share_fragment(&self) -> String {
+        persist::share_fragment(&Shared {
+            program: self.doc.text.clone(),
+            block: self.cursor,
+            machine: self.machine.as_ref().map(|m| m.id.clone()),
+        })
+    }
+
+    /// File name for the download: the program's name from `BEGIN PGM`.
+    #[must_use]
+    pub fn file_name(&self) -> String {
+        let name = self.doc.program.blocks.iter().find_map(|b| match &b.body {
+            BlockBody::BeginPgm { name, .. } => Some(name.as_str()),
+            _ => None,
+        });
+        format!("{}.h", name.unwrap_or("PGM"))
     }
 }
 
@@ -281,6 +367,35 @@ mod tests {
         let t = s.apply(Action::SelectMachine("no-such".into()));
         assert_eq!(t.machine, s.machine);
         assert!(t.message.is_some());
+    }
+
+    #[test]
+    fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
+        let s = AppState::default()
+            .apply(Action::LoadSample("stay_q120".into()))
+            .apply(Action::CursorTo(7))
+            .apply(Action::ToggleLang);
+        let json = persist::to_json(&s.saved());
+        let back = AppState::start(Some(&json), None);
+        assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
+        assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+        assert_eq!(back.message, None);
+
+        let broken = AppState::start(Some("{\"version\":1,\"program\":"), None);
+        assert_eq!(broken.doc, AppState::default().doc);
+        assert_eq!(broken.message.map(|m| m.en), Some("The saved state was corrupt: defaults loaded"));
+    }
+
+    #[test]
+    fn share_link_opens_the_same_program_at_the_same_block_and_machine() {
+        let s = AppState::default()
+            .apply(Action::LoadSample("winkel_nicht_erlaubt".into()))
+            .apply(Action::CursorTo(8));
+        let opened = AppState::start(None, Some(&format!("#{}", s.share_fragment())));
+        assert_eq!(opened.doc.text, s.doc.text);
+        assert_eq!(opened.cursor, 8);
+        assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+        assert_eq!(s.file_name(), "WINKEL.h");
     }
 
     #[test]

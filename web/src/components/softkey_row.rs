@@ -1,5 +1,7 @@
 //! The row of eight softkeys at the bottom of the screen; F1–F8 press them too (keymap.rs).
+//! The IMPORT softkey is a file picker: a browser opens one only on the user's own click.
 
+use web_sys::{File, HtmlInputElement};
 use yew::prelude::*;
 
 use crate::softkeys::Row;
@@ -9,11 +11,28 @@ use crate::state::Action;
 pub struct SoftkeyRowProps {
     pub row: Row,
     pub on_action: Callback<Action>,
+    pub on_import: Callback<File>,
 }
 
 #[function_component(SoftkeyRow)]
 pub fn softkey_row(props: &SoftkeyRowProps) -> Html {
     let keys = props.row.iter().enumerate().map(|(i, slot)| match slot {
+        Some(key) if key.id == "import" => {
+            let on_import = props.on_import.clone();
+            let onchange = Callback::from(move |e: Event| {
+                let file =
+                    e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
+                if let Some(file) = file {
+                    on_import.emit(file);
+                }
+            });
+            html! {
+                <label class="softkey" data-key="import" title={format!("F{}", i + 1)}>
+                    { for key.label.split('\n').map(|part| html! { <span>{ part.to_owned() }</span> }) }
+                    <input type="file" accept=".h,.H,.nc,text/plain" class="file-input" {onchange} />
+                </label>
+            }
+        }
         Some(key) => {
             let action = key.action.clone();
             let onclick = props.on_action.reform(move |_: MouseEvent| action.clone());
