@@ -21,6 +21,7 @@ pub fn clear_storage() {
 pub fn set_saved(json: &str) {
     let s = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
     s.set_item("schwenkbar.state", json).expect("set item");
+    s.set_item("schwenkbar.program", "0 BEGIN PGM X MM\n1 END PGM X MM\n").expect("set item");
 }
 
 /// Mounts a fresh app into its own element and lets yew render. Earlier apps stay in the page;
@@ -80,4 +81,46 @@ pub async fn type_ent(root: &Element, value: &str) {
 pub fn program_lines(root: &Element) -> Vec<String> {
     let list = root.query_selector_all(".program-pane .line").expect("selector");
     (0..list.length()).filter_map(|i| list.item(i)).filter_map(|n| n.text_content()).collect()
+}
+
+/// Replaces the program through the text editor, as a paste would.
+pub async fn paste_program(root: &Element, program: &str) {
+    click(root, "[data-key=text-edit]").await;
+    let area: web_sys::HtmlTextAreaElement =
+        query(root, ".program-text").expect("text area").dyn_into().expect("a text area");
+    area.set_value(program);
+    let init = web_sys::InputEventInit::new();
+    init.set_bubbles(true);
+    let event = web_sys::InputEvent::new_with_event_init_dict("input", &init).expect("input event");
+    area.dispatch_event(&event).expect("dispatch");
+    settle().await;
+    click(root, "[data-key=text-edit]").await;
+}
+
+/// Milliseconds since page load.
+#[must_use]
+pub fn now() -> f64 {
+    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
+}
+
+/// Presses `key` and waits for the screen to update; the time from the key to the updated DOM
+/// in milliseconds (yew renders before the 0 ms timer fires, so this bounds it from above).
+pub async fn timed_key(root: &Element, key_name: &str) -> f64 {
+    let init = KeyboardEventInit::new();
+    init.set_key(key_name);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
+    let target = query(root, ".tnc").expect("the app");
+    let t0 = now();
+    target.dispatch_event(&event).expect("dispatch");
+    yew::platform::time::sleep(std::time::Duration::from_millis(0)).await;
+    now() - t0
+}
+
+/// The median of `samples`.
+#[must_use]
+pub fn median(mut samples: Vec<f64>) -> f64 {
+    samples.sort_by(f64::total_cmp);
+    samples.get(samples.len() / 2).copied().unwrap_or(f64::NAN)
 }

@@ -122,7 +122,7 @@ async fn state_survives_a_reload_and_a_corrupt_saved_state_falls_back() {
         query(&again, ".program-pane .line.cursor").and_then(|l| l.text_content()).unwrap_or_default();
     assert!(cursor.starts_with("7 PLANE SPATIAL SPA+0 SPB+45 SPC+0 STAY"), "{cursor}");
 
-    set_saved("{\"version\":1,\"program\":");
+    set_saved("{\"version\":1,\"cursor\":");
     let broken = mount().await;
     assert_eq!(text(&broken, ".dialog-line"), "Gespeicherter Zustand war beschädigt: Vorgabe geladen");
     assert!(program_lines(&broken).first().is_some_and(|l| l.contains("Musterprogramm1")));

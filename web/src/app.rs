@@ -21,20 +21,25 @@ use crate::state::{Action, AppState};
 
 #[function_component(App)]
 pub fn app() -> Html {
-    let state =
-        use_reducer(|| AppState::start(browser::load_saved().as_deref(), browser::fragment().as_deref()));
-    // Keep the trainee's work: save whenever something that survives a reload changed.
+    let state = use_reducer(|| {
+        let (saved, program) = browser::load_saved();
+        AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
+    });
+    // Keep the trainee's work: the program when its text changed, the small state when the
+    // cursor, machine, language or projector mode changed.
     {
-        let deps = (
-            Rc::as_ptr(&state.doc) as usize,
-            state.cursor,
-            state.machine.as_ref().map(|m| m.id.clone()),
-            state.lang,
-            state.projector,
-        );
+        let state = state.clone();
+        use_effect_with(Rc::as_ptr(&state.doc) as usize, move |_| {
+            if let Err(message) = browser::save_program(&state.doc.text) {
+                state.dispatch(Action::Notice(message));
+            }
+        });
+    }
+    {
+        let deps = (state.cursor, state.machine.as_ref().map(|m| m.id.clone()), state.lang, state.projector);
         let state = state.clone();
         use_effect_with(deps, move |_| {
-            if let Err(message) = browser::save(&persist::to_json(&state.saved())) {
+            if let Err(message) = browser::save_state(&persist::to_json(&state.saved())) {
                 state.dispatch(Action::Notice(message));
             }
         });

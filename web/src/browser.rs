@@ -7,25 +7,32 @@ use wasm_bindgen_futures::JsFuture;
 use web_sys::{Blob, BlobPropertyBag, File, HtmlAnchorElement, Url};
 
 use crate::i18n::Text;
-use crate::persist::STORAGE_KEY;
+use crate::persist::{PROGRAM_KEY, STATE_KEY};
 
 fn storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok()?
 }
 
-/// The saved state's JSON, if there is one.
+/// The saved state's JSON and program text, if there are.
 #[must_use]
-pub fn load_saved() -> Option<String> {
-    storage()?.get_item(STORAGE_KEY).ok()?
+pub fn load_saved() -> (Option<String>, Option<String>) {
+    let Some(s) = storage() else { return (None, None) };
+    (s.get_item(STATE_KEY).ok().flatten(), s.get_item(PROGRAM_KEY).ok().flatten())
 }
 
-/// Saves the state; a full or blocked storage is reported.
-pub fn save(json: &str) -> Result<(), Text> {
-    let refused = Text::new(
-        "Programm kann im Browser nicht gespeichert werden (Speicher voll oder gesperrt)",
-        "The program cannot be kept in the browser (storage full or blocked)",
-    );
-    storage().ok_or(refused)?.set_item(STORAGE_KEY, json).map_err(|_| refused)
+const REFUSED: Text = Text::new(
+    "Programm kann im Browser nicht gespeichert werden (Speicher voll oder gesperrt)",
+    "The program cannot be kept in the browser (storage full or blocked)",
+);
+
+/// Saves the small state (cursor, machine, language); a blocked storage is reported.
+pub fn save_state(json: &str) -> Result<(), Text> {
+    storage().ok_or(REFUSED)?.set_item(STATE_KEY, json).map_err(|_| REFUSED)
+}
+
+/// Saves the program text; a full storage (programs of several MB) is reported.
+pub fn save_program(text: &str) -> Result<(), Text> {
+    storage().ok_or(REFUSED)?.set_item(PROGRAM_KEY, text).map_err(|_| REFUSED)
 }
 
 /// The URL fragment (`#…`), if any.

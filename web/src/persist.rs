@@ -1,20 +1,21 @@
-//! Keeping the trainee's work: the program, cursor, machine, language and projector mode as
-//! versioned JSON (localStorage in the browser), and the share link's fragment. Pure; the
-//! browser side is in `browser.rs`. A corrupt or old saved state is reported and replaced by the
-//! default, never a dead page.
+//! Keeping the trainee's work: the cursor, machine, language and projector mode as versioned
+//! JSON, the program text under a key of its own (so moving the cursor in a 100,000-block
+//! program does not rewrite megabytes), and the share link's fragment. Pure; the browser side
+//! is in `browser.rs`. A corrupt or old saved state is reported and replaced by the default,
+//! never a dead page.
 
 use serde::{Deserialize, Serialize};
 
 use crate::i18n::{Lang, Text};
 
-/// The localStorage key; the version is inside, so an old layout is recognised.
-pub const STORAGE_KEY: &str = "schwenkbar.state";
+/// The localStorage keys; the version is inside the state, so an old layout is recognised.
+pub const STATE_KEY: &str = "schwenkbar.state";
+pub const PROGRAM_KEY: &str = "schwenkbar.program";
 pub const VERSION: u32 = 1;
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Saved {
     pub version: u32,
-    pub program: String,
     pub cursor: usize,
     pub machine: String,
     pub lang: Lang,
@@ -145,14 +146,7 @@ mod tests {
     use super::*;
 
     fn saved() -> Saved {
-        Saved {
-            version: VERSION,
-            program: "0 BEGIN PGM Ä MM\n1 END PGM Ä MM\n".into(),
-            cursor: 1,
-            machine: "ba-table".into(),
-            lang: Lang::En,
-            projector: true,
-        }
+        Saved { version: VERSION, cursor: 1, machine: "ba-table".into(), lang: Lang::En, projector: true }
     }
 
     #[test]
@@ -162,9 +156,9 @@ mod tests {
 
     #[test]
     fn corrupt_and_old_states_are_recognised() {
-        assert_eq!(restore("{\"version\":1,\"program\":"), Err(RestoreError::Corrupt));
+        assert_eq!(restore("{\"version\":1,\"cursor\":"), Err(RestoreError::Corrupt));
         assert_eq!(restore("not json at all"), Err(RestoreError::Corrupt));
-        assert_eq!(restore("{\"version\":1,\"program\":5}"), Err(RestoreError::Corrupt));
+        assert_eq!(restore("{\"version\":1,\"cursor\":\"x\"}"), Err(RestoreError::Corrupt));
         assert_eq!(restore("{\"version\":0,\"text\":\"x\"}"), Err(RestoreError::OldVersion));
     }
 

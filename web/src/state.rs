@@ -246,7 +246,6 @@ impl AppState {
     pub fn saved(&self) -> Saved {
         Saved {
             version: persist::VERSION,
-            program: self.doc.text.clone(),
             cursor: self.cursor,
             machine: self.machine.as_ref().map_or_else(|| DEFAULT_MACHINE.to_owned(), |m| m.id.clone()),
             lang: self.lang,
@@ -254,17 +253,20 @@ impl AppState {
         }
     }
 
-    /// The state at start-up: a share link wins over the saved state; a saved state that cannot
-    /// be used is reported in the dialog line and replaced by the default.
+    /// The state at start-up from the saved state JSON and program text: a share link wins over
+    /// them; a saved state that cannot be used is reported in the dialog line and replaced by
+    /// the default.
     #[must_use]
-    pub fn start(saved: Option<&str>, fragment: Option<&str>) -> AppState {
+    pub fn start(saved: Option<&str>, program: Option<String>, fragment: Option<&str>) -> AppState {
         let mut state = AppState::default();
         match saved.map(persist::restore) {
             None => {}
             Some(Ok(s)) => {
                 state.lang = s.lang;
                 state.projector = s.projector;
-                state.doc = Rc::new(Document::new(s.program));
+                if let Some(text) = program {
+                    state.doc = Rc::new(Document::new(text));
+                }
                 state.cursor = s.cursor.min(state.doc.last_index());
                 state.select_machine(&s.machine);
             }
@@ -376,12 +378,12 @@ mod tests {
             .apply(Action::CursorTo(7))
             .apply(Action::ToggleLang);
         let json = persist::to_json(&s.saved());
-        let back = AppState::start(Some(&json), None);
+        let back = AppState::start(Some(&json), Some(s.doc.text.clone()), None);
         assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
         assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
         assert_eq!(back.message, None);
 
-        let broken = AppState::start(Some("{\"version\":1,\"program\":"), None);
+        let broken = AppState::start(Some("{\"version\":1,\"cursor\":"), Some("0 L X+1".into()), None);
         assert_eq!(broken.doc, AppState::default().doc);
         assert_eq!(broken.message.map(|m| m.en), Some("The saved state was corrupt: defaults loaded"));
     }
@@ -391,7 +393,7 @@ mod tests {
         let s = AppState::default()
             .apply(Action::LoadSample("winkel_nicht_erlaubt".into()))
             .apply(Action::CursorTo(8));
-        let opened = AppState::start(None, Some(&format!("#{}", s.share_fragment())));
+        let opened = AppState::start(None, None, Some(&format!("#{}", s.share_fragment())));
         assert_eq!(opened.doc.text, s.doc.text);
         assert_eq!(opened.cursor, 8);
         assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
