@@ -38,3 +38,18 @@ async fn key_press_latency_musterprogramm_1_and_100000_blocks() {
     );
     clear_storage();
 }
+
+#[wasm_bindgen_test]
+fn parser_throughput_in_wasm() {
+    let program = schwenkbar_core::sample::cam_program(200_000);
+    let mb = program.len() as f64 / 1e6;
+    let mut best = f64::INFINITY;
+    for _ in 0..3 {
+        let t0 = now();
+        let (parsed, diagnostics) = schwenkbar_core::parse(&program);
+        best = best.min(now() - t0);
+        assert_eq!(parsed.blocks.len(), 200_000);
+        assert!(diagnostics.is_empty());
+    }
+    console_log!("BENCH parser in wasm32 (Chromium): {mb:.1} MB in {best:.0} ms = {:.0} MB/s", mb / (best / 1000.0));
+}
