@@ -4,13 +4,19 @@
 mod check;
 mod fmt;
 mod input;
+mod machines;
+mod solve;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
 #[derive(Parser)]
-#[command(name = "schwenkbar", version, about = "HEIDENHAIN Klartext tools: check and format NC programs")]
+#[command(
+    name = "schwenkbar",
+    version,
+    about = "HEIDENHAIN Klartext tools: check and format NC programs, solve PLANE blocks"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -38,6 +44,10 @@ enum Command {
     Check(check::Args),
     /// Print the program in canonical form (`--check`: exit 1 if it is not).
     Fmt(fmt::Args),
+    /// Solve one PLANE block for a machine: candidates, the control's choice and why, as JSON.
+    Solve(solve::Args),
+    /// List the shipped machine ids (`--json`: full descriptions).
+    Machines(machines::Args),
 }
 
 fn main() -> ExitCode {
@@ -45,5 +55,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(a) => check::run(&a),
         Command::Fmt(a) => fmt::run(&a),
+        Command::Solve(a) => solve::run(&a),
+        Command::Machines(a) => machines::run(&a),
     }
 }

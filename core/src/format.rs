@@ -6,11 +6,12 @@
 use std::fmt::Write as _;
 
 use crate::ast::{
-    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData, OldCycleWord,
-    PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
+    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
+    OldCycleWord, PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
 };
 use crate::plane::{
-    Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode, Value,
+    Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
+    Value,
 };
 
 /// The canonical text of a program, one block per line, ending with a line break.
@@ -20,6 +21,15 @@ pub fn format_program(p: &Program) -> String {
     for (n, b) in p.blocks.iter().enumerate() {
         block(&mut out, n, b);
     }
+    out
+}
+
+/// The text of a PLANE block body (`PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX`), without
+/// block number: what the softkey dialog inserts.
+#[must_use]
+pub fn plane_text(p: &PlaneBlock) -> String {
+    let mut out = String::with_capacity(64);
+    plane(&mut out, p);
     out
 }
 
@@ -296,9 +306,13 @@ fn tool_call(out: &mut String, t: &ToolCall) {
         out.push(' ');
         out.push_str(a.as_str());
     }
-    for (key, v, signed_word) in
-        [("S", t.speed, false), ("F", t.feed, false), ("DL", t.dl, true), ("DR", t.dr, true), ("DR2", t.dr2, true)]
-    {
+    for (key, v, signed_word) in [
+        ("S", t.speed, false),
+        ("F", t.feed, false),
+        ("DL", t.dl, true),
+        ("DR", t.dr, true),
+        ("DR2", t.dr2, true),
+    ] {
         if let Some(v) = v {
             out.push(' ');
             out.push_str(key);

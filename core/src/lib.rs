@@ -8,6 +8,7 @@ pub mod angle;
 pub mod ast;
 pub mod axes;
 pub mod diag;
+pub mod edit;
 pub mod format;
 pub mod kinematics;
 pub mod machine;
@@ -16,6 +17,7 @@ pub mod parse;
 pub mod plane;
 pub mod sample;
 pub mod solve;
+pub mod text;
 pub mod unconfirmed;
 
 pub use ast::{Block, BlockBody, Program};

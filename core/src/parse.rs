@@ -19,6 +19,7 @@ use std::borrow::Cow;
 
 use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Severity};
+use crate::plane::Value;
 
 pub(crate) use words::PErr;
 
@@ -190,7 +191,10 @@ pub fn parse(src: &str) -> (Program, Vec<Diagnostic>) {
         let mut last = first;
         while src[last.start..last.end].trim_end().ends_with('~') {
             match lines.peek() {
-                Some(next) if !src[next.start..next.end].trim().is_empty() && !starts_new_block(&src[next.start..next.end]) => {
+                Some(next)
+                    if !src[next.start..next.end].trim().is_empty()
+                        && !starts_new_block(&src[next.start..next.end]) =>
+                {
                     last = *next;
                     p.block_lines.push(last);
                     lines.next();
@@ -271,7 +275,8 @@ impl Parser<'_> {
 
     fn diag_at(&mut self, sev: Severity, code: DiagCode, start: usize, end: usize, expected: Option<&str>) {
         let (line, column) = self.locate(start);
-        self.diags.push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
+        self.diags
+            .push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
     }
 
     /// Reads the block made of `self.block_lines`.
@@ -297,14 +302,15 @@ impl Parser<'_> {
             let at = first.start + (line_text.len() - rest.len());
             match rest[..digits].parse::<u32>() {
                 Ok(n) => number = Some(n),
-                Err(_) => self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer")),
+                Err(_) => {
+                    self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer"))
+                }
             }
             rest = &rest[digits..];
             if !rest.is_empty() && !rest.starts_with([' ', '\t']) {
                 // `12X` is neither a block number nor a word.
                 let at = first.start + (line_text.len() - rest.len());
                 self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some("Leerzeichen"));
-                return Block { number, skip, body: invalid(rest), comment: None, span, line, column };
             }
             rest = rest.trim_start();
             if let Some(r) = rest.strip_prefix('/') {
@@ -320,12 +326,12 @@ impl Parser<'_> {
         let mut comment = comment.map(|c| c.trim().to_owned());
         let continued = self.block_lines.len() > 1;
         let dangling_tilde = line_text.trim_end().ends_with('~');
-        if let Some(t) = body_text.strip_suffix('~') {
-            body_text = t.trim_end();
+        if body_text.ends_with('~') {
+            body_text = strip_tilde(body_text);
         } else if let Some(c) = comment.as_mut()
-            && let Some(t) = c.strip_suffix('~')
+            && c.ends_with('~')
         {
-            *c = t.trim_end().to_owned();
+            *c = strip_tilde(c).to_owned();
         }
         let body_start = first.start + (body_text.as_ptr() as usize - line_text.as_ptr() as usize);
 
@@ -338,11 +344,9 @@ impl Parser<'_> {
             segments.push((0, body_start));
             for l in &self.block_lines[1..] {
                 let (b, c) = split_comment(&src[l.start..l.end]);
-                let b = b.trim();
-                let b = b.strip_suffix('~').map_or(b, str::trim_end);
+                let b = strip_tilde(b.trim());
                 if let Some(c) = c {
-                    let c = c.trim();
-                    let c = c.strip_suffix('~').map_or(c, str::trim_end);
+                    let c = strip_tilde(c.trim());
                     if !c.is_empty() {
                         let all = comment.get_or_insert_with(String::new);
                         if !all.is_empty() {
@@ -351,10 +355,14 @@ impl Parser<'_> {
                         all.push_str(c);
                     }
                 }
-                joined.push(' ');
-                let src_start = b.as_ptr() as usize - src.as_ptr() as usize;
-                segments.push((joined.len(), src_start));
-                joined.push_str(b);
+                if !b.is_empty() {
+                    if !joined.is_empty() {
+                        joined.push(' ');
+                    }
+                    let src_start = b.as_ptr() as usize - src.as_ptr() as usize;
+                    segments.push((joined.len(), src_start));
+                    joined.push_str(b);
+                }
             }
             Cow::Owned(joined)
         } else {
@@ -396,6 +404,11 @@ impl Parser<'_> {
         self.cx.issues.clear();
         Block { number, skip, body, comment, span, line, column }
     }
+}
+
+/// Drops the continuation mark(s) at the end of a line part.
+pub(crate) fn strip_tilde(s: &str) -> &str {
+    s.trim_end_matches(|c: char| c == '~' || c.is_whitespace())
 }
 
 fn invalid(text: &str) -> BlockBody {
@@ -450,5 +463,15 @@ pub(crate) fn unknown(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         Some(BlockBody::Unknown { text: body.to_owned() })
     } else {
         cx.invalid(body, None)
+    }
+}
+
+/// A whole string as one value (`15`, `-7.5`, `.5`, `+Q27`), as typed into a dialog field;
+/// `None` if it is anything else. Uses the parser's own number rules.
+#[must_use]
+pub fn parse_value(text: &str) -> Option<Value> {
+    match words::value(text) {
+        Ok(("", v)) => Some(v),
+        _ => None,
     }
 }

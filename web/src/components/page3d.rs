@@ -63,7 +63,7 @@ pub fn page3d(props: &Page3dProps) -> Html {
         Lang::En => t.en.clone(),
     };
     let caption = match &e.error_message {
-        Some(m) => pick(m),
+        Some(m) => lang.t(m.de(), m.en()).to_string(),
         None => axes.join(" "),
     };
     html! {
