@@ -13,6 +13,9 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::orientation::spatial;
 use schwenkbar_core::plane::RotaryAxis;
 use schwenkbar_core::solve::{SolveOptions, solve};
+use schwenkbar_web::components::right_hand_demo::{RightHandDemo, RightHandDemoProps};
+use schwenkbar_web::components::view3d::{View3d, View3dProps};
+use schwenkbar_web::i18n::Lang;
 use schwenkbar_web::render::camera::{Camera, Preset};
 use schwenkbar_web::render::context::ContextWatch;
 use schwenkbar_web::render::gpu::RenderError;
@@ -217,20 +220,7 @@ async fn every_shipped_machine_renders_and_the_ghost_shows_the_other_candidate()
 
 #[wasm_bindgen_test]
 async fn the_3d_view_component_paints_labels_and_the_right_hand_demo_writes_the_block() {
-    let root = document().create_element("div").expect("div");
-    root.set_attribute("style", "width:800px;height:500px;position:relative").expect("style");
-    document().body().expect("body").append_child(&root).expect("append");
-    yew::Renderer::<schwenkbar_web::components::view3d::View3d>::with_root_and_props(
-        root.clone(),
-        schwenkbar_web::components::view3d::View3dProps {
-            lang: schwenkbar_web::i18n::Lang::De,
-            machine: None,
-            state: Rc::new(SceneState::default()),
-            toolpath: Default::default(),
-        },
-    )
-    .render();
-    sleep(300).await;
+    let root = mount_view(800, 500, Lang::De).await;
     let canvas = query(&root, "canvas.view3d");
     assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("ready"));
     let labels: Vec<String> = (0..root.query_selector_all(".gl-labels .lbl").expect("selector").length())
@@ -241,16 +231,7 @@ async fn the_3d_view_component_paints_labels_and_the_right_hand_demo_writes_the_
     }
     root.remove();
 
-    let demo = document().create_element("div").expect("div");
-    document().body().expect("body").append_child(&demo).expect("append");
-    yew::Renderer::<schwenkbar_web::components::right_hand_demo::RightHandDemo>::with_root_and_props(
-        demo.clone(),
-        schwenkbar_web::components::right_hand_demo::RightHandDemoProps {
-            lang: schwenkbar_web::i18n::Lang::De,
-        },
-    )
-    .render();
-    sleep(100).await;
+    let demo = mount_demo().await;
     assert_eq!(
         query(&demo, ".rh-block").text_content().as_deref(),
         Some("PLANE SPATIAL SPA+0 SPB+15 SPC+0"),
@@ -262,20 +243,7 @@ async fn the_3d_view_component_paints_labels_and_the_right_hand_demo_writes_the_
 
 #[wasm_bindgen_test]
 async fn the_3d_view_component_survives_a_context_loss() {
-    let root = document().create_element("div").expect("div");
-    root.set_attribute("style", "width:400px;height:300px;position:relative").expect("style");
-    document().body().expect("body").append_child(&root).expect("append");
-    yew::Renderer::<schwenkbar_web::components::view3d::View3d>::with_root_and_props(
-        root.clone(),
-        schwenkbar_web::components::view3d::View3dProps {
-            lang: schwenkbar_web::i18n::Lang::En,
-            machine: None,
-            state: Rc::new(SceneState::default()),
-            toolpath: Default::default(),
-        },
-    )
-    .render();
-    sleep(200).await;
+    let root = mount_view(400, 300, Lang::En).await;
     let canvas: HtmlCanvasElement = query(&root, "canvas.view3d").dyn_into().expect("canvas");
     assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("ready"));
     let gl: Gl = canvas.get_context("webgl2").expect("context").expect("the view's context").unchecked_into();
@@ -293,16 +261,7 @@ async fn the_3d_view_component_survives_a_context_loss() {
 
 #[wasm_bindgen_test]
 async fn try_it_asks_for_a_signed_turn_and_tells_a_wrong_sign() {
-    let demo = document().create_element("div").expect("div");
-    document().body().expect("body").append_child(&demo).expect("append");
-    yew::Renderer::<schwenkbar_web::components::right_hand_demo::RightHandDemo>::with_root_and_props(
-        demo.clone(),
-        schwenkbar_web::components::right_hand_demo::RightHandDemoProps {
-            lang: schwenkbar_web::i18n::Lang::De,
-        },
-    )
-    .render();
-    sleep(100).await;
+    let demo = mount_demo().await;
     click(&demo, ".rh-start").await;
     assert_eq!(query(&demo, ".rh-task").text_content().as_deref(), Some("Drehen Sie die Ebene um +30° um Y"));
     set_slider(&demo, "-30").await;
@@ -329,6 +288,37 @@ async fn set_slider(root: &Element, value: &str) {
     let ev = web_sys::Event::new_with_event_init_dict("input", &init).expect("input event");
     input.dispatch_event(&ev).expect("dispatch");
     sleep(50).await;
+}
+
+/// A fresh element of `style` in the page.
+fn host(style: &str) -> Element {
+    let root = document().create_element("div").expect("div");
+    root.set_attribute("style", style).expect("style");
+    document().body().expect("body").append_child(&root).expect("append");
+    root
+}
+
+/// Mounts the 3D view with the default state into a new `w × h` element.
+async fn mount_view(w: u32, h: u32, lang: Lang) -> Element {
+    let root = host(&format!("width:{w}px;height:{h}px;position:relative"));
+    let props = View3dProps {
+        lang,
+        machine: None,
+        state: Rc::new(SceneState::default()),
+        toolpath: Default::default(),
+    };
+    yew::Renderer::<View3d>::with_root_and_props(root.clone(), props).render();
+    sleep(250).await;
+    root
+}
+
+/// Mounts the right-hand demo (German) into a new element.
+async fn mount_demo() -> Element {
+    let root = host("width:900px;height:500px");
+    yew::Renderer::<RightHandDemo>::with_root_and_props(root.clone(), RightHandDemoProps { lang: Lang::De })
+        .render();
+    sleep(100).await;
+    root
 }
 
 fn query(root: &Element, selector: &str) -> Element {

@@ -111,7 +111,9 @@ fn wheel_listener(canvas: &HtmlCanvasElement, viewer: Rc<RefCell<Viewer>>) -> im
         // deltaMode 1 = lines (Firefox); a line is about 16 px.
         let dy = if e.delta_mode() == 1 { e.delta_y() * 16.0 } else { e.delta_y() };
         let mut v = viewer.borrow_mut();
-        v.camera.zoom((dy * 0.0015).exp() as f32);
+        // 0.15 % per pixel of scroll, the same in and out (no exp(): keeps libm out of the bundle).
+        let step = (1.0 + dy.abs() * 0.0015).min(2.0) as f32;
+        v.camera.zoom(if dy > 0.0 { step } else { 1.0 / step });
         v.dirty = true;
     });
     let opts = web_sys::AddEventListenerOptions::new();

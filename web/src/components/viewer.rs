@@ -149,8 +149,10 @@ impl Viewer {
                 Some(l) => {
                     el.set_text_content(Some(l.text));
                     el.set_class_name(&format!("lbl lbl-{}", l.kind));
-                    let _ =
-                        style.set_property("transform", &format!("translate({:.1}px, {:.1}px)", l.x, l.y));
+                    let _ = style.set_property(
+                        "transform",
+                        &format!("translate({:.1}px, {:.1}px)", f64::from(l.x), f64::from(l.y)),
+                    );
                     let _ = style.set_property("display", "block");
                 }
                 None => {

@@ -75,8 +75,10 @@ impl Camera {
     /// The eye position.
     #[must_use]
     pub fn eye(&self) -> Vec3 {
-        let (az, el) = (self.azimuth.to_radians(), self.elevation.to_radians());
-        self.target + self.distance * Vec3::new(el.cos() * az.cos(), el.cos() * az.sin(), el.sin())
+        // f64 trigonometry: shares the wasm code of the kinematics' sine and cosine.
+        let (az, el) = (f64::from(self.azimuth).to_radians(), f64::from(self.elevation).to_radians());
+        let dir = glam::DVec3::new(el.cos() * az.cos(), el.cos() * az.sin(), el.sin()).as_vec3();
+        self.target + self.distance * dir
     }
 
     #[must_use]
@@ -107,10 +109,8 @@ impl Camera {
     /// moves left), up drag shows it from higher.
     pub fn orbit(&mut self, dx: f32, dy: f32) {
         const DEG_PER_PX: f32 = 0.4;
-        self.azimuth = (self.azimuth - dx * DEG_PER_PX).rem_euclid(360.0);
-        if self.azimuth > 180.0 {
-            self.azimuth -= 360.0;
-        }
+        // Wrapped into −180…180 in f64 (one remainder routine in the bundle, the kinematics' one).
+        self.azimuth = schwenkbar_core::angle::wrap180(f64::from(self.azimuth - dx * DEG_PER_PX)) as f32;
         self.elevation = (self.elevation + dy * DEG_PER_PX).clamp(-MAX_ELEVATION, MAX_ELEVATION);
     }
 
@@ -128,9 +128,15 @@ impl Camera {
         let right = Vec3::new(view.x_axis.x, view.y_axis.x, view.z_axis.x);
         let up = Vec3::new(view.x_axis.y, view.y_axis.y, view.z_axis.y);
         // World size of one pixel at the target's depth.
-        let mm_per_px = 2.0 * self.distance * (self.fov_y.to_radians() / 2.0).tan() / height_px.max(1.0);
+        let mm_per_px = 2.0 * self.distance * half_tan(self.fov_y.to_radians()) / height_px.max(1.0);
         self.target += (-dx * right + dy * up) * mm_per_px;
     }
+}
+
+/// tan(angle / 2), in f64 (see [`Camera::eye`]).
+fn half_tan(angle: f32) -> f32 {
+    let (s, c) = (f64::from(angle) / 2.0).sin_cos();
+    (s / c) as f32
 }
 
 /// Right-handed view matrix (the matrix of `gluLookAt`, OpenGL 2.1 reference pages): rows are
@@ -152,7 +158,7 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
 /// `gluPerspective`, OpenGL 2.1 reference pages).
 #[must_use]
 pub fn perspective(fov_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let f = 1.0 / (fov_y / 2.0).tan();
+    let f = 1.0 / half_tan(fov_y);
     let nf = 1.0 / (near - far);
     Mat4::from_cols(
         Vec4::new(f / aspect, 0.0, 0.0, 0.0),

@@ -118,6 +118,15 @@ pub fn cone(radius: f32, height: f32, segments: u32) -> Mesh {
     cone_frustum(radius, 0.0, height, segments)
 }
 
+const TAU: f64 = std::f64::consts::TAU;
+
+/// `(sin, cos)` of the angle `i / n · sweep`. Computed in f64 on purpose: the wasm bundle then
+/// needs only the f64 sine and cosine the kinematics already use, not a second f32 set.
+fn turn(i: u32, n: u32, sweep: f64) -> (f32, f32) {
+    let (s, c) = (f64::from(i) / f64::from(n) * sweep).sin_cos();
+    (s as f32, c as f32)
+}
+
 /// Frustum along +Z from radius `r0` at z = 0 to `r1` at `height`, with caps.
 #[must_use]
 pub fn cone_frustum(r0: f32, r1: f32, height: f32, segments: u32) -> Mesh {
@@ -126,8 +135,7 @@ pub fn cone_frustum(r0: f32, r1: f32, height: f32, segments: u32) -> Mesh {
     // Side normal tilts by the slope of the mantle.
     let slope = (r0 - r1) / height.max(f32::EPSILON);
     for i in 0..=segments {
-        let a = i as f32 / segments as f32 * std::f32::consts::TAU;
-        let (s, c) = a.sin_cos();
+        let (s, c) = turn(i, segments, TAU);
         let n = Vec3::new(c, s, slope).normalize();
         m.push(Vec3::new(r0 * c, r0 * s, 0.0), n);
         m.push(Vec3::new(r1 * c, r1 * s, height), n);
@@ -143,8 +151,8 @@ pub fn cone_frustum(r0: f32, r1: f32, height: f32, segments: u32) -> Mesh {
         let centre = m.push(Vec3::new(0.0, 0.0, z), n);
         let first = m.vertex_count() as u32;
         for i in 0..=segments {
-            let a = i as f32 / segments as f32 * std::f32::consts::TAU;
-            m.push(Vec3::new(r * a.cos(), r * a.sin(), z), n);
+            let (s, c) = turn(i, segments, TAU);
+            m.push(Vec3::new(r * c, r * s, z), n);
         }
         for i in 0..segments {
             let (a, b) = (first + i, first + i + 1);
@@ -166,12 +174,11 @@ pub fn torus_arc(major: f32, minor: f32, sweep: f32, segments: u32, sides: u32) 
     let (segments, sides) = (segments.max(2), sides.max(3));
     let mut m = Mesh::default();
     for i in 0..=segments {
-        let a = i as f32 / segments as f32 * sweep;
-        let (sa, ca) = a.sin_cos();
+        let (sa, ca) = turn(i, segments, f64::from(sweep));
         let ring = Vec3::new(ca, sa, 0.0);
         for j in 0..=sides {
-            let b = j as f32 / sides as f32 * std::f32::consts::TAU;
-            let n = ring * b.cos() + Vec3::Z * b.sin();
+            let (sb, cb) = turn(j, sides, TAU);
+            let n = ring * cb + Vec3::Z * sb;
             m.push(ring * major + n * minor, n);
         }
     }
