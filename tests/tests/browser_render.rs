@@ -113,6 +113,16 @@ async fn the_renderer_draws_the_blank_where_the_camera_looks() {
 }
 
 #[wasm_bindgen_test]
+fn a_canvas_without_webgl2_gives_an_error_not_a_panic() {
+    // A canvas that already has a 2D context cannot give WebGL2: the same answer as a browser
+    // without WebGL2.
+    let c = canvas(50, 50);
+    assert!(c.get_context("2d").expect("getContext").is_some());
+    assert_eq!(Renderer::new(&c).err(), Some(RenderError::NoWebGl2));
+    c.remove();
+}
+
+#[wasm_bindgen_test]
 async fn plane_spatial_spb45_on_the_ac_table_turns_the_workpiece_x_axis_towards_the_operator() {
     let m = ac_table();
     // Solve with core, as the control does (DOMAIN.md §10 oracle 13).
