@@ -9,7 +9,7 @@ use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::{Carrier, Machine, RotaryJoint};
 
 use super::draw_list::{DrawList, Pass, Shape, beam, cuboid, rod};
-use super::pose::{Poses, poses};
+use super::pose::{Poses, head_pivot, poses};
 use super::scene::{Blank, Frame, SceneState, Tool};
 
 pub const BED: [f32; 3] = [0.36, 0.39, 0.44];
@@ -50,10 +50,10 @@ impl Style {
 
 /// The whole machine in its current state, the blank included.
 pub fn machine(list: &mut DrawList, m: &Machine, s: &SceneState) -> Poses {
-    let p = poses(m, &s.axes.rotary, s.axes.linear);
+    let p = poses(m, &s.axes.rotary, s.axes.linear, s.tool.length);
     let style = Style { pass: Pass::Opaque, tint: None };
     let layout = Layout::new(m, s);
-    fixed_parts(list, m, &layout, &p, style);
+    fixed_parts(list, m, &layout, &p, style, s.tool.length.max(1.0));
     moving_parts(list, m, s, &layout, &p, style, Sides { table: true, head: true });
     p
 }
@@ -65,15 +65,28 @@ struct Sides {
     head: bool,
 }
 
-/// The moving parts at the other candidate's rotary values, translucent.
+/// The moving parts at the other candidate's rotary values, translucent, with the tool tip on the
+/// same point of the workpiece as in the real state (so the two postures compare like for like;
+/// with the real X/Y/Z a head ghost would swing the tool away from the part).
 pub fn ghost(list: &mut DrawList, m: &Machine, s: &SceneState, rotary: &AxisValues) {
-    let p = poses(m, rotary, s.axes.linear);
+    let p = poses(m, rotary, ghost_linear(m, s, rotary), s.tool.length);
     let layout = Layout::new(m, s);
     // Only the side that rotary axes move: a ghost over parts that stand still would only veil
     // them.
     let has = |c: Carrier| m.joints().iter().any(|j| j.carrier == c);
     let sides = Sides { table: has(Carrier::Table), head: has(Carrier::Head) };
     moving_parts(list, m, s, &layout, &p, Style { pass: Pass::Translucent, tint: Some(GHOST) }, sides);
+}
+
+/// Linear axes that put the tool tip, with the rotary axes at `rotary`, on the workpiece point
+/// where it is in the state `s`: L = W'(W⁻¹(tip)) − H'(0) (the inverse of tip = L + H(0) for
+/// fixed rotary axes, as `plane_scene::linear_for_tip`).
+#[must_use]
+pub fn ghost_linear(m: &Machine, s: &SceneState, rotary: &AxisValues) -> DVec3 {
+    let now = poses(m, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let on_part = now.workpiece.inverse().transform_point3(now.tool.translation);
+    let other = poses(m, rotary, DVec3::ZERO, s.tool.length);
+    other.workpiece.transform_point3(on_part) - other.tool.translation
 }
 
 /// Sizes derived once per state from the machine and the blank (all in home coordinates).
@@ -147,7 +160,7 @@ fn trunnions(layout: &Layout, slave: &RotaryJoint, master: &RotaryJoint) -> (DVe
     (under, q0 - d * half, q0 + d * half)
 }
 
-fn fixed_parts(list: &mut DrawList, m: &Machine, layout: &Layout, p: &Poses, style: Style) {
+fn fixed_parts(list: &mut DrawList, m: &Machine, layout: &Layout, p: &Poses, style: Style, tool_length: f64) {
     let bed_top = layout.bed_top;
     let pass = style.pass;
     list.push(
@@ -209,7 +222,7 @@ fn fixed_parts(list: &mut DrawList, m: &Machine, layout: &Layout, p: &Poses, sty
         }
     }
     // Column and the Y ram to the head carriage (moved by the linear axes only).
-    let ram_end = p.carriage.transform_point3(DVec3::new(0.0, 0.0, carriage_top(m)));
+    let ram_end = p.carriage.transform_point3(DVec3::new(0.0, 0.0, carriage_top(m, tool_length)));
     let column_top = (bed_top + 900.0).max(ram_end.z + 90.0);
     list.push(
         Shape::Cube,
@@ -227,16 +240,12 @@ fn fixed_parts(list: &mut DrawList, m: &Machine, layout: &Layout, p: &Poses, sty
     }
 }
 
-/// Height (home coordinates, linear axes at 0) where the carriage's vertical ram ends.
-fn carriage_top(m: &Machine) -> f64 {
-    let spindle_top = spindle_top_z_default();
+/// Height (home coordinates, linear axes at 0, tool tip at the origin) where the carriage's
+/// vertical ram ends. The head hangs from the gauge point, one tool length above the tip, so
+/// everything above the tool moves up with a longer tool.
+fn carriage_top(m: &Machine, tool_length: f64) -> f64 {
     let pivots = m.joints().iter().filter(|j| j.carrier == Carrier::Head).map(|j| j.pivot.z);
-    pivots.fold(spindle_top, f64::max) + 220.0
-}
-
-/// The ram height must not depend on the tool (the carriage is the same for every tool).
-fn spindle_top_z_default() -> f64 {
-    Tool::default().length + HOLDER_LEN + SPINDLE_LEN
+    tool_length + pivots.fold(SPINDLE_LEN, f64::max) + 220.0
 }
 
 fn moving_parts(
@@ -333,31 +342,30 @@ fn table_side(
 fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) {
     let pass = style.pass;
     let (len, r) = (tool.length.max(1.0), tool.radius.max(0.5));
-    // Tool, holder and spindle ride on the tool link (tool tip at the origin at home).
+    // Tool and holder ride on the tool link (tip at the origin at home) up to the gauge point at
+    // the spindle nose, one tool length above the tip (the tool length includes the holder).
     let t = p.tool;
-    list.push(Shape::Cylinder, t * rod(DVec3::ZERO, DVec3::Z * (len * 0.5), r), style.colour(FLUTE), pass);
+    let holder = (len * 0.35).min(HOLDER_LEN);
+    let cut = len - holder;
+    list.push(Shape::Cylinder, t * rod(DVec3::ZERO, DVec3::Z * (cut * 0.55), r), style.colour(FLUTE), pass);
     list.push(
         Shape::Cylinder,
-        t * rod(DVec3::Z * (len * 0.5), DVec3::Z * len, r * 0.85),
+        t * rod(DVec3::Z * (cut * 0.55), DVec3::Z * cut, r * 0.85),
         style.colour(TOOL),
         pass,
     );
+    let holder_r = r.max(12.0) + 14.0;
     list.push(
         Shape::Cone,
         t * DAffine3::from_mat3_translation(
-            glam::DMat3::from_diagonal(DVec3::new(r.max(12.0) + 14.0, r.max(12.0) + 14.0, -HOLDER_LEN)),
-            DVec3::Z * (len + HOLDER_LEN),
+            glam::DMat3::from_diagonal(DVec3::new(holder_r, holder_r, -holder)),
+            DVec3::Z * len,
         ),
         style.colour(SPINDLE),
         pass,
     );
-    let spindle_top = DVec3::Z * (len + HOLDER_LEN + SPINDLE_LEN);
-    list.push(
-        Shape::Cylinder,
-        t * rod(DVec3::Z * (len + HOLDER_LEN), spindle_top, SPINDLE_R),
-        style.colour(SPINDLE),
-        pass,
-    );
+    let spindle_top = DVec3::Z * (len + SPINDLE_LEN);
+    list.push(Shape::Cylinder, t * rod(DVec3::Z * len, spindle_top, SPINDLE_R), style.colour(SPINDLE), pass);
 
     // Head axes, from the tool outwards: each housing joins the part below to its own pivot.
     let heads: Vec<(usize, &RotaryJoint)> =
@@ -365,24 +373,25 @@ fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) 
     let mut below = spindle_top;
     for &(i, j) in heads.iter().rev() {
         let pose = p.joints[i];
-        if (j.pivot - below).length() > 1.0 {
+        let pivot = head_pivot(j, len);
+        if (pivot - below).length() > 1.0 {
             list.push(
                 Shape::Cube,
-                pose * beam(below, j.pivot, 100.0, 100.0, j.direction),
+                pose * beam(below, pivot, 100.0, 100.0, j.direction),
                 style.colour(HEAD),
                 pass,
             );
         }
         list.push(
             Shape::Cylinder,
-            pose * rod(j.pivot - j.direction * 75.0, j.pivot + j.direction * 75.0, 62.0),
+            pose * rod(pivot - j.direction * 75.0, pivot + j.direction * 75.0, 62.0),
             style.colour(CRADLE),
             pass,
         );
-        below = j.pivot;
+        below = pivot;
     }
     // The vertical ram of the carriage down to the first head axis (or the spindle).
-    let top = DVec3::Z * carriage_top(m);
+    let top = DVec3::Z * carriage_top(m, len);
     if (top - below).length() > 1.0 {
         list.push(
             Shape::Cube,
@@ -456,6 +465,21 @@ mod tests {
         let tool_like = list.instances.iter().filter(|i| i.shape == Shape::Cone).count();
         assert_eq!(tool_like, 0, "no tool holder (cone) in a table-table ghost");
         assert!(list.instances.iter().any(|i| i.shape == Shape::Cylinder), "but the rotary table");
+    }
+
+    #[test]
+    fn the_ghosts_tool_tip_touches_the_same_point_of_the_workpiece() {
+        for id in Machine::builtin_ids() {
+            let m = Machine::builtin(id).expect("machine");
+            let mut s = SceneState::default();
+            s.axes.rotary = AxisValues::default().with(m.slave().axis, 90.0).with(m.master().axis, 45.0);
+            s.axes.linear = DVec3::new(12.0, -7.0, 60.0);
+            let other = AxisValues::default().with(m.slave().axis, -90.0).with(m.master().axis, -45.0);
+            let now = poses(&m, &s.axes.rotary, s.axes.linear, s.tool.length);
+            let ghost = poses(&m, &other, ghost_linear(&m, &s, &other), s.tool.length);
+            let on_part = |p: &Poses| p.workpiece.inverse().transform_point3(p.tool.translation);
+            assert!((on_part(&now) - on_part(&ghost)).length() < 1e-9, "{id}");
+        }
     }
 
     #[test]

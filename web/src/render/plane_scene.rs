@@ -29,22 +29,22 @@ pub fn state_for(machine: &Machine, r: DMat3, start: AxisValues) -> (SceneState,
     };
     // Like `L Z+50` in the tilted plane after positioning: tool tip 50 mm above the WPL-CS origin.
     let tip = workpiece_point(machine, &s, s.wpl.origin + r.col(2) * 50.0);
-    s.axes.linear = linear_for_tip(machine, &s.axes.rotary, tip);
+    s.axes.linear = linear_for_tip(machine, &s.axes.rotary, s.tool.length, tip);
     (s, e)
 }
 
 /// A W-CS point in M-CS for the state's rotary axes.
 #[must_use]
 pub fn workpiece_point(machine: &Machine, s: &SceneState, p_w: DVec3) -> DVec3 {
-    let p = poses(machine, &s.axes.rotary, DVec3::ZERO);
+    let p = poses(machine, &s.axes.rotary, DVec3::ZERO, s.tool.length);
     (p.workpiece * DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin)).transform_point3(p_w)
 }
 
 /// The linear axes that put the tool tip at `tip` (M-CS) with these rotary axes: the carriage
 /// only translates, so it is the tip's position minus where the tip is with X/Y/Z at 0.
 #[must_use]
-pub fn linear_for_tip(machine: &Machine, rotary: &AxisValues, tip: DVec3) -> DVec3 {
-    tip - poses(machine, rotary, DVec3::ZERO).tool.translation
+pub fn linear_for_tip(machine: &Machine, rotary: &AxisValues, tool_length: f64, tip: DVec3) -> DVec3 {
+    tip - poses(machine, rotary, DVec3::ZERO, tool_length).tool.translation
 }
 
 /// A face-milling path over the blank's top in the working plane (WPL-CS lines 15 mm apart,
@@ -132,7 +132,7 @@ mod tests {
             let m = Machine::builtin(id).expect("machine");
             let r = spatial(0.0, 30.0, 0.0);
             let (s, _) = state_for(&m, r, AxisValues::default());
-            let p = poses(&m, &s.axes.rotary, s.axes.linear);
+            let p = poses(&m, &s.axes.rotary, s.axes.linear, s.tool.length);
             let tip = p.tool.translation;
             let want = workpiece_point(&m, &s, r.col(2) * 50.0);
             assert!((tip - want).length() < 1e-9, "{id}: tip {tip} vs {want}");

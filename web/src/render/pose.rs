@@ -8,6 +8,10 @@
 //! workpiece turns by +θ about the axis direction"; a head axis turns the tool by +θ, a table
 //! axis physically turns the workpiece by −θ. The test below checks that the relative
 //! orientation of tool and workpiece is exactly `Machine::forward`.
+//! Pivots (core/src/machine.rs): a table axis' pivot is in M-CS with every axis at home; a head
+//! axis' pivot is relative to the spindle gauge point, one tool length above the tool tip. The
+//! linear axes X/Y/Z are where the tool tip is with the head at home (the simulator's `Kin`
+//! uses the same model: tip = L + H(0)).
 
 use glam::{DAffine3, DMat3, DVec3};
 use schwenkbar_core::axes::AxisValues;
@@ -20,6 +24,13 @@ pub fn joint_motion(joint: &RotaryJoint, angle_deg: f64) -> DAffine3 {
     DAffine3::from_translation(joint.pivot)
         * DAffine3::from_axis_angle(joint.direction, angle_deg.to_radians())
         * DAffine3::from_translation(-joint.pivot)
+}
+
+/// A head axis' pivot in home coordinates with the linear axes at 0 (tool tip at the origin):
+/// the gauge point `(0, 0, tool_length)` plus the machine's pivot.
+#[must_use]
+pub fn head_pivot(j: &RotaryJoint, tool_length: f64) -> DVec3 {
+    DVec3::new(0.0, 0.0, tool_length) + j.pivot
 }
 
 /// Poses (link → M-CS) of everything that moves.
@@ -35,9 +46,10 @@ pub struct Poses {
     pub tool: DAffine3,
 }
 
-/// Forward kinematics for axis values (missing rotary axes at 0°) and the linear axes.
+/// Forward kinematics for axis values (missing rotary axes at 0°), the linear axes and the
+/// active tool length (it places the head axes, which hang from the gauge point).
 #[must_use]
-pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3) -> Poses {
+pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3, tool_length: f64) -> Poses {
     let chain = machine.joints();
     let value = |j: &RotaryJoint| rotary.get(j.axis).unwrap_or(0.0);
     let mut joints = [DAffine3::IDENTITY; 2];
@@ -55,7 +67,8 @@ pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3) -> Poses {
     let mut head = carriage;
     for (i, j) in chain.iter().enumerate() {
         if j.carrier == Carrier::Head {
-            head *= joint_motion(j, value(j));
+            let at_home = RotaryJoint { pivot: head_pivot(j, tool_length), ..j.clone() };
+            head *= joint_motion(&at_home, value(j));
             joints[i] = head;
         }
     }
@@ -85,7 +98,7 @@ mod tests {
             let m = Machine::builtin(id).expect("shipped machine");
             for (s, t) in angles {
                 let v = AxisValues::default().with(m.slave().axis, s).with(m.master().axis, t);
-                let p = poses(&m, &v, DVec3::new(10.0, -20.0, 30.0));
+                let p = poses(&m, &v, DVec3::new(10.0, -20.0, 30.0), 80.0);
                 assert!(close(relative_orientation(&p), m.forward_deg(s, t)), "{id} at {s}/{t}");
             }
         }
@@ -96,7 +109,7 @@ mod tests {
         // DOMAIN.md §10 oracle 13: PLANE SPATIAL SPB+45 from A0 C0 → A+45 C+90.
         let m = Machine::builtin("ac-table").expect("ac-table");
         let v = AxisValues::default().with(RotaryAxis::A, 45.0).with(RotaryAxis::C, 90.0);
-        let p = poses(&m, &v, DVec3::ZERO);
+        let p = poses(&m, &v, DVec3::ZERO, 100.0);
         let t = DVec3::new(45f64.to_radians().sin(), 0.0, 45f64.to_radians().cos());
         let up = p.workpiece.transform_vector3(t);
         assert!((up - DVec3::Z).length() < 1e-9, "the workpiece's tilted tool axis points up: {up}");
@@ -110,11 +123,12 @@ mod tests {
     fn head_axes_turn_about_their_pivot_and_carry_the_tool_tip() {
         let m = Machine::builtin("bc-head-table").expect("bc-head-table");
         let v = AxisValues::default().with(RotaryAxis::B, 90.0);
-        let p = poses(&m, &v, DVec3::new(0.0, 0.0, 0.0));
-        // The tip hangs 300 below the B pivot at home; +90° about +Y turns (0, 0, −300) into
-        // Ry(90)·(0, 0, −300) = (−300, 0, 0), so the tip ends at the pivot plus that.
+        let p = poses(&m, &v, DVec3::new(0.0, 0.0, 0.0), 100.0);
+        // The B pivot is 300 above the gauge point, which is 100 (the tool length) above the
+        // tip: the tip hangs 400 below the pivot at home; +90° about +Y turns (0, 0, −400) into
+        // Ry(90)·(0, 0, −400) = (−400, 0, 0), so the tip ends at the pivot plus that.
         let tip = p.tool.transform_point3(DVec3::ZERO);
-        assert!((tip - DVec3::new(-300.0, 0.0, 300.0)).length() < 1e-9, "{tip}");
+        assert!((tip - DVec3::new(-400.0, 0.0, 400.0)).length() < 1e-9, "{tip}");
         // And the tool axis (tip → spindle) is Ry(90)·ez = +X.
         assert!((p.tool.transform_vector3(DVec3::Z) - DVec3::X).length() < 1e-9);
     }
@@ -123,7 +137,7 @@ mod tests {
     fn the_nutating_head_at_b180_lays_the_tool_horizontal_along_plus_y() {
         let m = Machine::builtin("b45-nutating").expect("b45-nutating");
         let v = AxisValues::default().with(RotaryAxis::B, 180.0);
-        let p = poses(&m, &v, DVec3::ZERO);
+        let p = poses(&m, &v, DVec3::ZERO, 100.0);
         let axis = p.tool.transform_vector3(DVec3::Z);
         assert!(
             (axis - DVec3::Y).length() < 1e-9,
@@ -134,7 +148,7 @@ mod tests {
     #[test]
     fn linear_axes_move_the_carriage_only() {
         let m = Machine::builtin("ac-table").expect("ac-table");
-        let p = poses(&m, &AxisValues::default(), DVec3::new(1.0, 2.0, 3.0));
+        let p = poses(&m, &AxisValues::default(), DVec3::new(1.0, 2.0, 3.0), 100.0);
         assert_eq!(p.tool.translation, DVec3::new(1.0, 2.0, 3.0));
         assert_eq!(p.workpiece, DAffine3::IDENTITY);
     }

@@ -157,7 +157,8 @@ impl Renderer {
     /// Draws a machine scene; returns its labels on screen.
     pub fn paint(&mut self, scene: &Scene<'_>, camera: &Camera) -> Result<Vec<ScreenLabel>, RenderError> {
         let list = triads::scene(scene);
-        let p = super::pose::poses(scene.machine, &scene.state.axes.rotary, scene.state.axes.linear);
+        let s = scene.state;
+        let p = super::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
         let wcs = DAffine3::from_mat3_translation(scene.state.wcs.rot, scene.state.wcs.origin);
         let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
         self.paint_list(&list, camera, Some(path))
