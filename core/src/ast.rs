@@ -56,13 +56,21 @@ impl PartialEq for Block {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum BlockBody {
     /// `BEGIN PGM name MM|INCH`.
-    BeginPgm { name: String, unit: Unit },
+    BeginPgm {
+        name: String,
+        unit: Unit,
+    },
     /// `END PGM name MM|INCH`.
-    EndPgm { name: String, unit: Unit },
+    EndPgm {
+        name: String,
+        unit: Unit,
+    },
     /// Nothing but (maybe) a comment: `1 ;`, `4 ; text`.
     Empty,
     /// Structure item `* - text`; `text` is everything after the `*`, trimmed.
-    Structure { text: String },
+    Structure {
+        text: String,
+    },
     /// `BLK FORM 0.1 Z X… Y… Z…` / `BLK FORM 0.2 [I]X… …`.
     BlkForm(Box<BlkForm>),
     /// `TOOL CALL n|"name" Z S… F… DL… DR…`.
@@ -82,9 +90,15 @@ pub enum BlockBody {
     /// `CP`: polar circle.
     Cp(Box<Motion>),
     /// `RND R…`: rounding.
-    Rnd { radius: Value, feed: Option<Feed> },
+    Rnd {
+        radius: Value,
+        feed: Option<Feed>,
+    },
     /// `CHF …`: chamfer.
-    Chf { length: Value, feed: Option<Feed> },
+    Chf {
+        length: Value,
+        feed: Option<Feed>,
+    },
     /// A block of only M functions (`M30`, `M99`).
     MFunctions(Box<[u32]>),
     /// New-style `CYCL DEF 200 BOHREN ~` with its `Q…=` continuation lines.
@@ -92,29 +106,51 @@ pub enum BlockBody {
     /// Old-style cycle with sub-numbers: `CYCL DEF 7.0 NULLPUNKT`, `CYCL DEF 7.1 X+10`.
     CycleDefOld(Box<CycleDefOld>),
     /// `CYCL CALL [M…]`.
-    CyclCall { m: Box<[u32]> },
+    CyclCall {
+        m: Box<[u32]>,
+    },
     Plane(Box<PlaneBlock>),
     /// `TRANS DATUM AXIS X… Y… Z…`.
-    TransDatum { axes: Box<[AxisWord]> },
+    TransDatum {
+        axes: Box<[AxisWord]>,
+    },
     TransDatumReset,
     /// `TRANS MIRROR AXIS X Y`.
-    TransMirror { axes: Box<[Axis]> },
+    TransMirror {
+        axes: Box<[Axis]>,
+    },
     TransMirrorReset,
     /// `TRANS ROTATION ROT…` (`IROT` incremental).
-    TransRotation { rot: Value, incremental: bool },
+    TransRotation {
+        rot: Value,
+        incremental: bool,
+    },
     TransRotationReset,
     /// `LBL n|"name"`; `LBL 0` ends a subprogram.
     Lbl(Label),
     /// `CALL LBL n [REP m]`.
-    CallLbl { label: Label, rep: Option<u32> },
+    CallLbl {
+        label: Label,
+        rep: Option<u32>,
+    },
     /// `CALL PGM path`.
-    CallPgm { path: String },
+    CallPgm {
+        path: String,
+    },
     /// `Q1 = expr` or `FN 0: Q1 = value`.
-    QAssign { target: u32, expr: Expr, fn0: bool },
+    QAssign {
+        target: u32,
+        expr: Expr,
+        fn0: bool,
+    },
     /// A well-formed block of a kind this trainer does not model (kept verbatim, with a warning).
-    Unknown { text: String },
+    Unknown {
+        text: String,
+    },
     /// A block that could not be read (kept verbatim, with an error).
-    Invalid { text: String },
+    Invalid {
+        text: String,
+    },
 }
 
 /// `MM` or `INCH`.
@@ -140,7 +176,8 @@ pub enum Axis {
 
 impl Axis {
     /// All axes in the order the control writes them.
-    pub const ALL: [Axis; 9] = [Axis::X, Axis::Y, Axis::Z, Axis::A, Axis::B, Axis::C, Axis::U, Axis::V, Axis::W];
+    pub const ALL: [Axis; 9] =
+        [Axis::X, Axis::Y, Axis::Z, Axis::A, Axis::B, Axis::C, Axis::U, Axis::V, Axis::W];
 
     #[must_use]
     pub fn from_byte(b: u8) -> Option<Axis> {
@@ -297,7 +334,10 @@ pub enum OldCycleWord {
     Axis(AxisWord),
     /// A bare axis letter (cycle 8 mirror).
     MirrorAxis(Axis),
-    Rot { value: Value, incremental: bool },
+    Rot {
+        value: Value,
+        incremental: bool,
+    },
     Scl(Value),
     Feed(Value),
 }

@@ -42,27 +42,53 @@ pub enum DiagCode {
     /// A word that cannot be read here.
     InvalidInput,
     /// A mandatory word is missing (`PLANE SPATIAL` without `SPC`).
-    MissingWord { word: &'static str },
+    MissingWord {
+        word: &'static str,
+    },
     /// An angle outside its input range (DOMAIN.md §5).
-    AngleNotPermitted { word: &'static str, value: f64, min: f64, max: f64 },
+    AngleNotPermitted {
+        word: &'static str,
+        value: f64,
+        min: f64,
+        max: f64,
+    },
     /// Any other value outside its input range (DOMAIN.md §5).
-    ValueOutOfRange { word: &'static str, value: f64, min: f64, max: f64 },
+    ValueOutOfRange {
+        word: &'static str,
+        value: f64,
+        min: f64,
+        max: f64,
+    },
     /// The same word twice in one block.
-    Duplicate { word: String },
+    Duplicate {
+        word: String,
+    },
     /// A word that this kind of block does not take.
-    NotAllowed { word: String },
+    NotAllowed {
+        word: String,
+    },
     /// `SEQ` and `SYM` in the same PLANE block.
     SeqWithSym,
     /// `PLANE VECTOR` with a zero normal or base vector.
-    ZeroVector { word: &'static str },
-    BlockNumberNotAscending { previous: u32, number: u32 },
+    ZeroVector {
+        word: &'static str,
+    },
+    BlockNumberNotAscending {
+        previous: u32,
+        number: u32,
+    },
     MissingBlockNumber,
-    PgmNameMismatch { begin: String, end: String },
+    PgmNameMismatch {
+        begin: String,
+        end: String,
+    },
     MissingEndPgm,
     /// A well-formed block of a kind the trainer does not model.
     UnknownBlock,
     /// `CYCL DEF … ~` not followed by its parameter lines (the manual prints it that way).
-    CycleParamsElided { cycle: u32 },
+    CycleParamsElided {
+        cycle: u32,
+    },
     /// A block ends in `~` but no continuation line follows.
     ContinuationMissing,
     /// `PLANE …` without `MOVE`, `TURN` or `STAY`.
@@ -123,7 +149,9 @@ fn n(v: f64) -> String {
 fn messages(code: &DiagCode) -> (String, String) {
     match code {
         DiagCode::InvalidInput => ("Eingabewert falsch".into(), "Invalid input".into()),
-        DiagCode::MissingWord { word } => (format!("Eingabe fehlt: {word}"), format!("Missing input: {word}")),
+        DiagCode::MissingWord { word } => {
+            (format!("Eingabe fehlt: {word}"), format!("Missing input: {word}"))
+        }
         DiagCode::AngleNotPermitted { word, value, min, max } => (
             format!("Winkel nicht erlaubt: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
             format!("Entered angle not permitted: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
@@ -132,16 +160,19 @@ fn messages(code: &DiagCode) -> (String, String) {
             format!("Eingabebereich überschritten: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
             format!("Value out of range: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
         ),
-        DiagCode::Duplicate { word } => (format!("Doppelt programmiert: {word}"), format!("Programmed twice: {word}")),
+        DiagCode::Duplicate { word } => {
+            (format!("Doppelt programmiert: {word}"), format!("Programmed twice: {word}"))
+        }
         DiagCode::NotAllowed { word } => {
             (format!("{word} hier nicht erlaubt"), format!("{word} not permitted in this block"))
         }
         DiagCode::SeqWithSym => {
             ("SEQ und SYM nicht gleichzeitig erlaubt".into(), "SEQ and SYM cannot be combined".into())
         }
-        DiagCode::ZeroVector { word } => {
-            (format!("Eingabewert falsch: {word} ist Nullvektor"), format!("Invalid input: {word} is a zero vector"))
-        }
+        DiagCode::ZeroVector { word } => (
+            format!("Eingabewert falsch: {word} ist Nullvektor"),
+            format!("Invalid input: {word} is a zero vector"),
+        ),
         DiagCode::BlockNumberNotAscending { previous, number } => (
             format!("Satznummer nicht aufsteigend: {number} nach {previous}"),
             format!("Block number not ascending: {number} after {previous}"),
@@ -157,7 +188,9 @@ fn messages(code: &DiagCode) -> (String, String) {
             format!("Zyklusparameter ausgelassen: CYCL DEF {cycle}"),
             format!("Cycle parameters left out: CYCL DEF {cycle}"),
         ),
-        DiagCode::ContinuationMissing => ("Fortsetzungszeile fehlt".into(), "Continuation line missing".into()),
+        DiagCode::ContinuationMissing => {
+            ("Fortsetzungszeile fehlt".into(), "Continuation line missing".into())
+        }
         DiagCode::MissingPositioning => (
             "Positionierverhalten fehlt (MOVE/TURN/STAY)".into(),
             "Positioning missing (MOVE/TURN/STAY)".into(),

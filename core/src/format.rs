@@ -6,11 +6,12 @@
 use std::fmt::Write as _;
 
 use crate::ast::{
-    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData, OldCycleWord,
-    PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
+    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
+    OldCycleWord, PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
 };
 use crate::plane::{
-    Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode, Value,
+    Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
+    Value,
 };
 
 /// The canonical text of a program, one block per line, ending with a line break.
@@ -296,9 +297,13 @@ fn tool_call(out: &mut String, t: &ToolCall) {
         out.push(' ');
         out.push_str(a.as_str());
     }
-    for (key, v, signed_word) in
-        [("S", t.speed, false), ("F", t.feed, false), ("DL", t.dl, true), ("DR", t.dr, true), ("DR2", t.dr2, true)]
-    {
+    for (key, v, signed_word) in [
+        ("S", t.speed, false),
+        ("F", t.feed, false),
+        ("DL", t.dl, true),
+        ("DR", t.dr, true),
+        ("DR2", t.dr2, true),
+    ] {
         if let Some(v) = v {
             out.push(' ');
             out.push_str(key);

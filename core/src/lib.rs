@@ -15,6 +15,7 @@ pub mod orientation;
 pub mod parse;
 pub mod plane;
 pub mod sample;
+pub mod sim;
 pub mod solve;
 pub mod unconfirmed;
 

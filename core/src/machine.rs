@@ -75,6 +75,52 @@ pub struct Machine {
     /// Chain order workpiece → tool: `[slave, master]` (DOMAIN.md §3.1: the master is the first
     /// rotary axis seen from the tool, i.e. the last seen from the workpiece).
     chain: [RotaryJoint; 2],
+    /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
+    /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
+    pub geometry: MachineGeometry,
+}
+
+/// The machine geometry the simulator needs beyond the rotary chain (JSON key `geometry`, every
+/// field optional). The model behind it is documented in [`crate::sim`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MachineGeometry {
+    /// The active preset: origin of the W-CS in M-CS with every rotary axis at 0°, mm. No basic
+    /// rotation (W-CS axes parallel to M-CS at rotary zero).
+    pub preset: DVec3,
+    /// Software limit switches of the linear axes X, Y, Z in M-CS, mm (`MB MAX`, limit checks).
+    pub linear_limits: [Limits; 3],
+    /// Rapid traverse (FMAX) of the linear axes, mm/min.
+    pub rapid_linear: f64,
+    /// Rapid traverse (FMAX) of the rotary axes, °/min.
+    pub rapid_rotary: f64,
+    /// Linear axis position at program start, M-CS, mm.
+    pub start: DVec3,
+}
+
+impl MachineGeometry {
+    /// Linear travel when the JSON gives none: ±1000 mm in X and Y, Z from −1000 to 0 (so that
+    /// `L Z+0 M91` is the top of the travel, as in seed S0). Derived, illustrative.
+    pub const DEFAULT_LIMITS: [Limits; 3] = [
+        Limits { min: -1000.0, max: 1000.0 },
+        Limits { min: -1000.0, max: 1000.0 },
+        Limits { min: -1000.0, max: 0.0 },
+    ];
+    /// FMAX of the linear axes when the JSON gives none, mm/min (illustrative).
+    pub const DEFAULT_RAPID_LINEAR: f64 = 10_000.0;
+    /// FMAX of the rotary axes when the JSON gives none, °/min (illustrative).
+    pub const DEFAULT_RAPID_ROTARY: f64 = 5_400.0;
+}
+
+impl Default for MachineGeometry {
+    fn default() -> Self {
+        MachineGeometry {
+            preset: DVec3::ZERO,
+            linear_limits: Self::DEFAULT_LIMITS,
+            rapid_linear: Self::DEFAULT_RAPID_LINEAR,
+            rapid_rotary: Self::DEFAULT_RAPID_ROTARY,
+            start: DVec3::ZERO,
+        }
+    }
 }
 
 /// A machine description that cannot be used. Every variant carries the numbers.
@@ -99,6 +145,8 @@ pub enum MachineError {
     LimitsInverted { axis: RotaryAxis, min: f64, max: f64 },
     /// An endless (modulo) axis cannot have limit switches.
     EndlessWithLimits { axis: RotaryAxis, min: f64, max: f64 },
+    /// A bad value in `geometry` (not finite, inverted limits, rapid ≤ 0).
+    Geometry { field: &'static str, value: f64 },
     /// A table axis listed after a head axis (the chain runs workpiece → table → bed → head → tool).
     TableAfterHead { axis: RotaryAxis },
     /// The two axes are parallel: they cannot tilt the tool in two directions.
@@ -127,6 +175,7 @@ impl std::fmt::Display for MachineError {
             MachineError::EndlessWithLimits { axis, min, max } => {
                 write!(f, "axis {axis}: endless but limited to {min} … {max}")
             }
+            MachineError::Geometry { field, value } => write!(f, "geometry: {field} = {value}"),
             MachineError::TableAfterHead { axis } => write!(f, "table axis {axis} listed after a head axis"),
             MachineError::ParallelAxes { slave, master, sine } => {
                 write!(f, "axes {slave} and {master} are parallel (sine {sine})")
@@ -147,6 +196,35 @@ struct RawMachine {
     name: Texts,
     description: Texts,
     chain: Vec<RawJoint>,
+    #[serde(default)]
+    geometry: Option<RawGeometry>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGeometry {
+    #[serde(default)]
+    preset: Option<[f64; 3]>,
+    /// `{"X": {"min", "max"}, "Y": …, "Z": …}`; a missing axis keeps its default.
+    #[serde(default)]
+    linear_limits: Option<RawLinearLimits>,
+    #[serde(default)]
+    rapid_linear: Option<f64>,
+    #[serde(default)]
+    rapid_rotary: Option<f64>,
+    #[serde(default)]
+    start: Option<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawLinearLimits {
+    #[serde(rename = "X", default)]
+    x: Option<Limits>,
+    #[serde(rename = "Y", default)]
+    y: Option<Limits>,
+    #[serde(rename = "Z", default)]
+    z: Option<Limits>,
 }
 
 #[derive(Deserialize)]
@@ -221,7 +299,8 @@ impl Machine {
         if sine < PARALLEL_TOL {
             return Err(MachineError::MasterAlongTool { axis: master.axis, sine });
         }
-        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain })
+        let geometry = validate_geometry(raw.geometry)?;
+        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, geometry })
     }
 
     /// The rotary axes in chain order workpiece → tool.
@@ -270,6 +349,47 @@ impl Machine {
     pub fn limits_of(&self, axis: RotaryAxis, overrides: &[(RotaryAxis, Limits)]) -> Option<Limits> {
         overrides.iter().rev().find(|(a, _)| *a == axis).map(|(_, l)| *l).or_else(|| self.joint(axis)?.limits)
     }
+}
+
+fn validate_geometry(raw: Option<RawGeometry>) -> Result<MachineGeometry, MachineError> {
+    let mut g = MachineGeometry::default();
+    let Some(raw) = raw else { return Ok(g) };
+    let finite3 = |field: &'static str, v: [f64; 3]| match v.iter().find(|x| !x.is_finite()) {
+        Some(&value) => Err(MachineError::Geometry { field, value }),
+        None => Ok(DVec3::from_array(v)),
+    };
+    if let Some(p) = raw.preset {
+        g.preset = finite3("preset", p)?;
+    }
+    if let Some(p) = raw.start {
+        g.start = finite3("start", p)?;
+    }
+    if let Some(l) = raw.linear_limits {
+        for (i, (lim, field)) in
+            [(l.x, "linear_limits.X"), (l.y, "linear_limits.Y"), (l.z, "linear_limits.Z")]
+                .into_iter()
+                .enumerate()
+        {
+            if let Some(lim) = lim {
+                if !(lim.min.is_finite() && lim.max.is_finite()) || lim.min >= lim.max {
+                    return Err(MachineError::Geometry { field, value: lim.min });
+                }
+                g.linear_limits[i] = lim;
+            }
+        }
+    }
+    for (v, field, slot) in [
+        (raw.rapid_linear, "rapid_linear", &mut g.rapid_linear),
+        (raw.rapid_rotary, "rapid_rotary", &mut g.rapid_rotary),
+    ] {
+        if let Some(v) = v {
+            if !v.is_finite() || v <= 0.0 {
+                return Err(MachineError::Geometry { field, value: v });
+            }
+            *slot = v;
+        }
+    }
+    Ok(g)
 }
 
 fn validate_joint(j: RawJoint) -> Result<RotaryJoint, MachineError> {

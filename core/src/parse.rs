@@ -190,7 +190,10 @@ pub fn parse(src: &str) -> (Program, Vec<Diagnostic>) {
         let mut last = first;
         while src[last.start..last.end].trim_end().ends_with('~') {
             match lines.peek() {
-                Some(next) if !src[next.start..next.end].trim().is_empty() && !starts_new_block(&src[next.start..next.end]) => {
+                Some(next)
+                    if !src[next.start..next.end].trim().is_empty()
+                        && !starts_new_block(&src[next.start..next.end]) =>
+                {
                     last = *next;
                     p.block_lines.push(last);
                     lines.next();
@@ -271,7 +274,8 @@ impl Parser<'_> {
 
     fn diag_at(&mut self, sev: Severity, code: DiagCode, start: usize, end: usize, expected: Option<&str>) {
         let (line, column) = self.locate(start);
-        self.diags.push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
+        self.diags
+            .push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
     }
 
     /// Reads the block made of `self.block_lines`.
@@ -297,7 +301,9 @@ impl Parser<'_> {
             let at = first.start + (line_text.len() - rest.len());
             match rest[..digits].parse::<u32>() {
                 Ok(n) => number = Some(n),
-                Err(_) => self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer")),
+                Err(_) => {
+                    self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer"))
+                }
             }
             rest = &rest[digits..];
             if !rest.is_empty() && !rest.starts_with([' ', '\t']) {

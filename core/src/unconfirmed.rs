@@ -296,3 +296,85 @@ pub const RELATIV_LIMIT: f64 = 359.9999;
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.
 pub const AXIAL_LIMIT: f64 = 99_999.999_9;
+
+// ---------------------------------------------------------------------------------------------
+// Simulator (issue 5): conventions of the block-by-block run that no source confirms.
+// ---------------------------------------------------------------------------------------------
+
+/// The simulator's error wordings other than "Winkel nicht erlaubt"/"Entered angle not permitted"
+/// [S2] are **UNCONFIRMED** (our wording in the control's style): "Q-Parameter nicht definiert",
+/// "Zyklus nicht definiert", "Zyklusparameter fehlt", "Endschalter X+", "Achse nicht vorhanden",
+/// "Label-Nummer nicht vorhanden", "Verschachtelung zu tief", "Rechenfehler", "Satz fehlerhaft",
+/// "Vorzeichen Tiefe falsch" and their English versions.
+pub const SIM_MESSAGES_UNCONFIRMED: bool = true;
+
+/// Datum shift and mirror act in the W-CS when programmed with no tilt active (they move and
+/// mirror the tilt origin, DOMAIN.md §6 [S3]) and in the WPL-CS when a tilt is active; TRANS
+/// ROTATION / cycle 10 always acts in the WPL-CS. Within a level the order is fixed: shift,
+/// then mirror, then rotation, all about the shifted datum. TRANS DATUM RESET and TRANS MIRROR
+/// RESET clear both levels; a WPL-CS shift survives PLANE RESET with its numbers. DOMAIN.md §6
+/// calls the composition in detail **UNCONFIRMED**. `false` would put every transformation in
+/// the WPL-CS list.
+pub const TRANSFORM_LEVELS: bool = true;
+
+/// The control applies the kinematic transformation (linear axes computed from the rotary axis
+/// positions so that programmed points land on the workpiece) only while a tilt (PLANE or
+/// cycle 19) is active; without it, the rotary axes are ignored (3-axis behaviour, `L Z…` moves
+/// the Z axis) even after `PLANE RESET STAY` left them tilted. **UNCONFIRMED**.
+pub const COMPENSATION_ONLY_WHEN_TILTED: bool = true;
+
+/// `PLANE … MOVE` without `DIST`: the centre of rotation is the tool tip itself (DIST = 0), so
+/// the tool tip keeps its place on the workpiece. **UNCONFIRMED** default.
+pub const MOVE_DEFAULT_DIST: f64 = 0.0;
+
+/// `MB`/`MB MAX` retract at rapid traverse (FMAX), before the swivel at the block's feed.
+/// **UNCONFIRMED** (DOMAIN.md §4 gives no feed for the retract).
+pub const MB_RETRACT_AT_RAPID: bool = true;
+
+/// `PLANE … MOVE|TURN` and `L` blocks that move rotary axes: a programmed F counts as °/min for
+/// the rotary share of the motion (the duration is the longer of the linear and rotary shares);
+/// `F AUTO` is the feed of the last `TOOL CALL`. Only the animation speed depends on it.
+/// **UNCONFIRMED**.
+pub const ROTARY_FEED_DEG_PER_MIN: bool = true;
+
+/// Cycle 19 inputs are spatial angles (the OEM parameter `planeOrientation` (201202) decides on
+/// a real control [S3]); `false` would treat them as axis angles (forward kinematics, no mirror
+/// effect). **UNCONFIRMED** which one a given machine uses.
+pub const CYCLE19_INPUT_SPATIAL: bool = true;
+
+/// Cycle 19 does not move the rotary axes itself (like STAY: "compensation for an axis starts
+/// when that axis moves" [M:320cyc-p258]); the program positions them, e.g.
+/// `L A+Q120 C+Q122 R0 FMAX`. All angles 0 (or none) in `19.1` resets the tilt.
+/// **UNCONFIRMED** for machines whose OEM lets cycle 19 position the axes automatically.
+pub const CYCLE19_MOVES_AXES: bool = false;
+
+/// Maximum nesting of subprogram calls (`CALL LBL` without `REP`). **UNCONFIRMED** number.
+pub const MAX_CALL_DEPTH: usize = 19;
+
+/// `CALL LBL n REP m` is a program-section repeat: jump back to `LBL n` m times, so the section
+/// runs m+1 times; `CALL LBL n` without REP is a subprogram call that returns at `LBL 0`.
+/// A `REP` to a label after the call is treated the same way (jump, no return).
+/// **UNCONFIRMED** for the forward case.
+pub const REP_IS_SECTION_REPEAT: bool = true;
+
+/// After `M30`/`M2` the blocks up to `END PGM` are listed as "not executed" (a state with the
+/// axes unchanged and a message), so every block of a program has a row; subprograms after
+/// M30 are therefore never executed by running on. **UNCONFIRMED** presentation choice (the
+/// control simply stops).
+pub const LIST_BLOCKS_AFTER_END: bool = true;
+
+/// Cycle 200 with a positive depth Q201: the control's machine parameter `displayDepthErr`
+/// decides; we report an error (its usual setting, **UNCONFIRMED**).
+pub const CYCLE_POSITIVE_DEPTH_IS_ERROR: bool = true;
+
+/// Cycle 232: maximum stepover from Q370. Cycles 251/252 define "Q370 × tool radius = stepover
+/// factor k"; cycle 232 calls Q370 "max. overlap factor" without a formula here.
+/// **UNCONFIRMED**: stepover = Q370 × tool radius; the rows are then spread evenly over Q219.
+#[must_use]
+pub fn cycle232_stepover(q370: f64, tool_radius: f64) -> f64 {
+    q370 * tool_radius
+}
+
+/// Cycle 232 strategies Q389 = 1 (one direction) and 2 (spiral) are simulated as the meander of
+/// Q389 = 0, with a message. **UNCONFIRMED** simplification.
+pub const CYCLE232_STRATEGY: bool = true;

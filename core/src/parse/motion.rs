@@ -209,7 +209,11 @@ fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
     if !rest.is_empty() {
         return cx.invalid(rest, None);
     }
-    Some(if kw == "RND" { BlockBody::Rnd { radius: v, feed: f } } else { BlockBody::Chf { length: v, feed: f } })
+    Some(if kw == "RND" {
+        BlockBody::Rnd { radius: v, feed: f }
+    } else {
+        BlockBody::Chf { length: v, feed: f }
+    })
 }
 
 /// A block of only M functions (`M30`, `M99`).

@@ -7,7 +7,8 @@ use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
 use crate::ast::{Axis, BlockBody};
 use crate::diag::DiagCode;
 use crate::plane::{
-    AxialAngle, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, TransformMode, Value,
+    AxialAngle, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, TransformMode,
+    Value,
 };
 
 /// Input range of a word and whether it is an angle ("Winkel nicht erlaubt") or another value.
@@ -30,7 +31,12 @@ const VECTOR: Range = Range { min: -99.9999999, max: 99.9999999, angle: false };
 const EPS: f64 = 1e-9;
 
 /// `KEY value` that must be there; checks the range of a written number.
-fn mandatory<'a>(cx: &mut Cx, i: &'a str, key: &'static str, range: Option<Range>) -> Option<(&'a str, Value)> {
+fn mandatory<'a>(
+    cx: &mut Cx,
+    i: &'a str,
+    key: &'static str,
+    range: Option<Range>,
+) -> Option<(&'a str, Value)> {
     let i = sp(i);
     let Some(after) = i.strip_prefix(key) else {
         let len = i.find([' ', '\t']).unwrap_or(i.len());
@@ -55,7 +61,12 @@ fn mandatory<'a>(cx: &mut Cx, i: &'a str, key: &'static str, range: Option<Range
     Some((rest, v))
 }
 
-fn triple<'a>(cx: &mut Cx, i: &'a str, keys: [&'static str; 3], r: Option<Range>) -> Option<(&'a str, [Value; 3])> {
+fn triple<'a>(
+    cx: &mut Cx,
+    i: &'a str,
+    keys: [&'static str; 3],
+    r: Option<Range>,
+) -> Option<(&'a str, [Value; 3])> {
     let (i, a) = mandatory(cx, i, keys[0], r)?;
     let (i, b) = mandatory(cx, i, keys[1], r)?;
     let (i, c) = mandatory(cx, i, keys[2], r)?;
@@ -215,7 +226,8 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
         }
         let seq = i.strip_prefix("SEQ").map(|r| (r, true));
         if let Some((r, is_seq)) = seq.or_else(|| i.strip_prefix("SYM").map(|r| (r, false))) {
-            let Ok((r, s)) = sign(r).map_err(|_| ()).and_then(|(r, s)| if at_boundary(r) { Ok((r, s)) } else { Err(()) })
+            let Ok((r, s)) =
+                sign(r).map_err(|_| ()).and_then(|(r, s)| if at_boundary(r) { Ok((r, s)) } else { Err(()) })
             else {
                 return cx.invalid(at, Some("SEQ+|SEQ-|SYM+|SYM-"));
             };
@@ -223,7 +235,10 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             match block.selection {
                 None => block.selection = Some(sel),
                 Some(prev) => {
-                    let code = if matches!((prev, sel), (Selection::Seq(_), Selection::Sym(_)) | (Selection::Sym(_), Selection::Seq(_))) {
+                    let code = if matches!(
+                        (prev, sel),
+                        (Selection::Seq(_), Selection::Sym(_)) | (Selection::Sym(_), Selection::Seq(_))
+                    ) {
                         DiagCode::SeqWithSym
                     } else {
                         DiagCode::Duplicate { word: at[..4].to_owned() }

@@ -20,7 +20,11 @@ pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             match axis_word(r) {
                 Ok((rest, w)) => {
                     if cx.axes.iter().any(|a| a.axis == w.axis) {
-                        cx.error(r, r.len() - rest.len(), DiagCode::Duplicate { word: w.axis.as_str().to_owned() });
+                        cx.error(
+                            r,
+                            r.len() - rest.len(),
+                            DiagCode::Duplicate { word: w.axis.as_str().to_owned() },
+                        );
                         return None;
                     }
                     cx.axes.push(w);
@@ -42,7 +46,8 @@ pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         let Some(mut r) = keyword(r, "AXIS").map(sp) else { return cx.invalid(r, Some("AXIS|RESET")) };
         let mut axes: Vec<Axis> = Vec::new();
         while !r.is_empty() {
-            let Some((rest, a)) = Axis::ALL.iter().find_map(|&a| keyword(r, a.as_str()).map(|x| (x, a))) else {
+            let Some((rest, a)) = Axis::ALL.iter().find_map(|&a| keyword(r, a.as_str()).map(|x| (x, a)))
+            else {
                 return cx.invalid(r, Some("X|Y|Z"));
             };
             if axes.contains(&a) {

@@ -143,7 +143,9 @@ pub(crate) fn feed(i: &str) -> PResult<'_, Feed> {
     }
     match word_value(after_f) {
         Ok((rest, v)) => Ok((rest, Feed::Value(v))),
-        Err(nom::Err::Error(e)) => Err(nom::Err::Failure(PErr { input: e.input, expected: Some("F…|FMAX|F AUTO") })),
+        Err(nom::Err::Error(e)) => {
+            Err(nom::Err::Failure(PErr { input: e.input, expected: Some("F…|FMAX|F AUTO") }))
+        }
         Err(e) => Err(e),
     }
 }
