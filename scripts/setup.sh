@@ -33,9 +33,12 @@ HOST_CARGO=$(command -v cargo || true)
 step "1/5: wasm32 standard library"
 rustup_sysroot=""
 if command -v rustc >/dev/null; then rustup_sysroot=$(rustc --print sysroot 2>/dev/null || true); fi
-if [ -n "$rustup_sysroot" ] && [ -d "$rustup_sysroot/lib/rustlib/wasm32-unknown-unknown" ]; then
+# SCHWENKBAR_BUILD_STD=1 forces the Debian route (to test it where rustup works).
+if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && [ -n "$rustup_sysroot" ] \
+   && [ -d "$rustup_sysroot/lib/rustlib/wasm32-unknown-unknown" ]; then
   ok "prebuilt wasm32 std in $rustup_sysroot"
-elif command -v rustup >/dev/null && timeout 30 rustup target add wasm32-unknown-unknown >/dev/null 2>&1; then
+elif [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && command -v rustup >/dev/null \
+   && timeout 30 rustup target add wasm32-unknown-unknown >/dev/null 2>&1; then
   ok "rustup target add wasm32-unknown-unknown"
 elif [ -x /usr/bin/rustc ] && [ -d /usr/lib/rustlib/src/rust/library ] && command -v wasm-ld >/dev/null; then
   ok "Debian rustc-web $(/usr/bin/rustc --version | cut -d' ' -f2) with std source (-Zbuild-std)"

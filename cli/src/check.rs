@@ -49,7 +49,12 @@ pub(crate) fn run(args: &Args) -> ExitCode {
             blocks: program.blocks.len(),
             diagnostics: diags
                 .iter()
-                .map(|d| JsonDiag { line: d.line, column: d.column, severity: d.severity.as_str(), message: d.message(lang) })
+                .map(|d| JsonDiag {
+                    line: d.line,
+                    column: d.column,
+                    severity: d.severity.as_str(),
+                    message: d.message(lang),
+                })
                 .collect(),
         };
         match serde_json::to_string(&report) {
@@ -65,5 +70,9 @@ pub(crate) fn run(args: &Args) -> ExitCode {
             println!("{name}:{}:{}: {}: {}", d.line, d.column, d.severity.as_str(), d.message(lang));
         }
     }
-    if diags.iter().any(schwenkbar_core::Diagnostic::is_error) { ExitCode::from(1) } else { ExitCode::SUCCESS }
+    if diags.iter().any(schwenkbar_core::Diagnostic::is_error) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
 }

@@ -56,7 +56,9 @@ fn check_err_fixtures_print_expected_line_and_message() {
             let mut p = want.splitn(3, ' ');
             let (line, sev, msg) = (p.next().unwrap_or(""), p.next().unwrap_or(""), p.next().unwrap_or(""));
             let hit = out.lines().any(|l| {
-                l.starts_with(&format!("{name}:{line}:")) && l.contains(&format!(": {sev}: ")) && l.contains(msg)
+                l.starts_with(&format!("{name}:{line}:"))
+                    && l.contains(&format!(": {sev}: "))
+                    && l.contains(msg)
             });
             assert!(hit, "{name}: `{want}` not in\n{out}");
         }
@@ -84,8 +86,11 @@ fn check_reads_latin1_files() {
     let dir = std::env::temp_dir().join(format!("schwenkbar-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let f = dir.join("latin1.h");
-    std::fs::write(&f, b"0 BEGIN PGM L1 MM\n1 PLANE RESET TURN FMAX ; Schwenken r\xfccksetzen\n2 END PGM L1 MM\n")
-        .expect("write");
+    std::fs::write(
+        &f,
+        b"0 BEGIN PGM L1 MM\n1 PLANE RESET TURN FMAX ; Schwenken r\xfccksetzen\n2 END PGM L1 MM\n",
+    )
+    .expect("write");
     let o = run(&["check", f.to_str().expect("utf-8 path")]);
     assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
     let o = run(&["fmt", f.to_str().expect("utf-8 path")]);
@@ -99,7 +104,10 @@ fn fmt_prints_canonical_form_and_check_detects_differences() {
     let o = run(&["fmt", f.to_str().expect("utf-8 path")]);
     assert_eq!(o.status.code(), Some(0));
     let out = stdout(&o);
-    assert!(out.contains("7 PLANE EULER EULPR+90 EULNU+45 EULROT+0 TURN MB MAX FMAX SYM- TABLE ROT\n"), "{out}");
+    assert!(
+        out.contains("7 PLANE EULER EULPR+90 EULNU+45 EULROT+0 TURN MB MAX FMAX SYM- TABLE ROT\n"),
+        "{out}"
+    );
     // The fixture writes `EULNU45` without sign: not canonical.
     let o = run(&["fmt", "--check", f.to_str().expect("utf-8 path")]);
     assert_eq!(o.status.code(), Some(1));

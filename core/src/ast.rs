@@ -432,3 +432,16 @@ impl Func {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Block, BlockBody, Line};
+
+    /// CAM programs are millions of blocks: the memory budget (≤ 6× the file) depends on these.
+    #[test]
+    fn blocks_stay_small() {
+        assert!(std::mem::size_of::<Line>() <= 56, "Line is {}", std::mem::size_of::<Line>());
+        assert!(std::mem::size_of::<BlockBody>() <= 56, "BlockBody is {}", std::mem::size_of::<BlockBody>());
+        assert!(std::mem::size_of::<Block>() <= 120, "Block is {}", std::mem::size_of::<Block>());
+    }
+}

@@ -310,7 +310,6 @@ impl Parser<'_> {
                 // `12X` is neither a block number nor a word.
                 let at = first.start + (line_text.len() - rest.len());
                 self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some("Leerzeichen"));
-                return Block { number, skip, body: invalid(rest), comment: None, span, line, column };
             }
             rest = rest.trim_start();
             if let Some(r) = rest.strip_prefix('/') {
@@ -326,12 +325,12 @@ impl Parser<'_> {
         let mut comment = comment.map(|c| c.trim().to_owned());
         let continued = self.block_lines.len() > 1;
         let dangling_tilde = line_text.trim_end().ends_with('~');
-        if let Some(t) = body_text.strip_suffix('~') {
-            body_text = t.trim_end();
+        if body_text.ends_with('~') {
+            body_text = strip_tilde(body_text);
         } else if let Some(c) = comment.as_mut()
-            && let Some(t) = c.strip_suffix('~')
+            && c.ends_with('~')
         {
-            *c = t.trim_end().to_owned();
+            *c = strip_tilde(c).to_owned();
         }
         let body_start = first.start + (body_text.as_ptr() as usize - line_text.as_ptr() as usize);
 
@@ -344,11 +343,9 @@ impl Parser<'_> {
             segments.push((0, body_start));
             for l in &self.block_lines[1..] {
                 let (b, c) = split_comment(&src[l.start..l.end]);
-                let b = b.trim();
-                let b = b.strip_suffix('~').map_or(b, str::trim_end);
+                let b = strip_tilde(b.trim());
                 if let Some(c) = c {
-                    let c = c.trim();
-                    let c = c.strip_suffix('~').map_or(c, str::trim_end);
+                    let c = strip_tilde(c.trim());
                     if !c.is_empty() {
                         let all = comment.get_or_insert_with(String::new);
                         if !all.is_empty() {
@@ -357,10 +354,14 @@ impl Parser<'_> {
                         all.push_str(c);
                     }
                 }
-                joined.push(' ');
-                let src_start = b.as_ptr() as usize - src.as_ptr() as usize;
-                segments.push((joined.len(), src_start));
-                joined.push_str(b);
+                if !b.is_empty() {
+                    if !joined.is_empty() {
+                        joined.push(' ');
+                    }
+                    let src_start = b.as_ptr() as usize - src.as_ptr() as usize;
+                    segments.push((joined.len(), src_start));
+                    joined.push_str(b);
+                }
             }
             Cow::Owned(joined)
         } else {
@@ -402,6 +403,11 @@ impl Parser<'_> {
         self.cx.issues.clear();
         Block { number, skip, body, comment, span, line, column }
     }
+}
+
+/// Drops the continuation mark(s) at the end of a line part.
+pub(crate) fn strip_tilde(s: &str) -> &str {
+    s.trim_end_matches(|c: char| c == '~' || c.is_whitespace())
 }
 
 fn invalid(text: &str) -> BlockBody {

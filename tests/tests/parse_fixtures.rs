@@ -34,7 +34,15 @@ fn snapshot_text(src: &str) -> String {
     }
     s.push_str("--- diagnostics\n");
     for d in &diags {
-        let _ = writeln!(s, "{}:{} {}: {} | {}", d.line, d.column, d.severity.as_str(), d.message_de, d.message_en);
+        let _ = writeln!(
+            s,
+            "{}:{} {}: {} | {}",
+            d.line,
+            d.column,
+            d.severity.as_str(),
+            d.message_de,
+            d.message_en
+        );
     }
     s.push_str("--- fmt\n");
     s.push_str(&format_program(&program));
@@ -51,9 +59,10 @@ fn check_snapshot(path: &Path, src: &str) -> Option<String> {
     }
     match fs::read_to_string(&snap) {
         Err(_) => Some(format!("{}: snapshot missing (run with UPDATE_SNAPSHOTS=1)", snap.display())),
-        Ok(expected) if expected != actual => {
-            Some(format!("{}: snapshot differs\n--- expected\n{expected}\n--- actual\n{actual}", snap.display()))
-        }
+        Ok(expected) if expected != actual => Some(format!(
+            "{}: snapshot differs\n--- expected\n{expected}\n--- actual\n{actual}",
+            snap.display()
+        )),
         Ok(_) => None,
     }
 }
@@ -83,7 +92,10 @@ fn as_printed_musterprogramm_warns_exactly_about_both_elided_cycles() {
     let lines: Vec<(u32, &DiagCode)> = diags.iter().map(|d| (d.line, &d.code)).collect();
     assert_eq!(
         lines,
-        vec![(13, &DiagCode::CycleParamsElided { cycle: 232 }), (28, &DiagCode::CycleParamsElided { cycle: 200 })]
+        vec![
+            (13, &DiagCode::CycleParamsElided { cycle: 232 }),
+            (28, &DiagCode::CycleParamsElided { cycle: 200 })
+        ]
     );
     assert_eq!(p.blocks.len(), 38);
     assert_eq!(p.blocks.last().and_then(|b| b.number), Some(37));
@@ -144,7 +156,11 @@ fn formatting_is_stable_for_every_fixture() {
                 let strip = |p: schwenkbar_core::Program| {
                     p.blocks.into_iter().map(|b| (b.skip, b.body, b.comment)).collect::<Vec<_>>()
                 };
-                assert!(strip(again) == strip(parse(&src).0), "{}: reformatted program differs", path.display());
+                assert!(
+                    strip(again) == strip(parse(&src).0),
+                    "{}: reformatted program differs",
+                    path.display()
+                );
             }
         }
     }

@@ -20,12 +20,8 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<Bl
     let mut out = Vec::with_capacity(params.len());
     for (k, line) in params.iter().enumerate() {
         let (body, label) = super::split_comment(line);
-        let body = body.trim();
-        let body = body.strip_suffix('~').map_or(body, str::trim_end);
-        let label = label.map(|l| {
-            let l = l.trim();
-            l.strip_suffix('~').map_or(l, str::trim_end)
-        });
+        let body = super::strip_tilde(body.trim());
+        let label = label.map(|l| super::strip_tilde(l.trim()));
         let Some(q) = body.strip_prefix('Q') else {
             return cx.invalid(body, Some("Q…="));
         };

@@ -1,0 +1,5 @@
+#!/usr/bin/env bash
+# Benchmarks (release build). Parser: MB/s, peak memory / file size, 10x scaling ratio (issue 3).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cargo run --release -p schwenkbar-core --example bench_parse
