@@ -96,6 +96,8 @@ impl Default for SimOptions {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Record {
     pub block: u32,
+    /// `false` for a block only listed (after M30/M2, or skipped with `/`).
+    pub executed: bool,
     pub axes: MachineAxes,
 }
 
@@ -217,6 +219,8 @@ pub struct State {
     pub segments: Vec<Segment>,
     /// M30/M2 or END PGM reached.
     pub ended: bool,
+    /// `false` if the block was only listed (after M30/M2, or skipped with `/`).
+    pub executed: bool,
 }
 
 /// Key of the label table.
@@ -275,13 +279,17 @@ pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> S
             break;
         }
         match it.step(&cx, None) {
-            Ok(()) => {
+            Ok(executed) => {
                 if let Some(slot) = first_step.get_mut(block)
                     && slot.is_none()
                 {
                     *slot = u32::try_from(step).ok();
                 }
-                records.push(Record { block: u32::try_from(block).unwrap_or(u32::MAX), axes: it.axes });
+                records.push(Record {
+                    block: u32::try_from(block).unwrap_or(u32::MAX),
+                    executed,
+                    axes: it.axes,
+                });
             }
             Err(code) => {
                 error = Some(make_error(program, step, block, code));
@@ -345,8 +353,8 @@ impl Simulation {
             it.step(&cx, None).ok()?;
         }
         let mut rec = Rec::default();
-        it.step(&cx, Some(&mut rec)).ok()?;
-        Some(it.state(program, &self.machine, step, rec))
+        let executed = it.step(&cx, Some(&mut rec)).ok()?;
+        Some(it.state(program, &self.machine, step, executed, rec))
     }
 
     /// Every state in order, re-simulated once from the start (for listings of a whole run).
@@ -362,8 +370,8 @@ impl Simulation {
             let cx =
                 interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
             let mut rec = Rec::default();
-            interp.step(&cx, Some(&mut rec)).ok()?;
-            let s = interp.state(program, &self.machine, step, rec);
+            let executed = interp.step(&cx, Some(&mut rec)).ok()?;
+            let s = interp.state(program, &self.machine, step, executed, rec);
             step += 1;
             Some(s)
         })

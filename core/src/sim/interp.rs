@@ -309,7 +309,8 @@ impl Interp {
         rate: Rate,
         path: impl FnOnce() -> SegmentPath,
     ) {
-        if let Some(r) = rec.as_deref_mut() {
+        let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
+        if let Some(r) = rec.as_deref_mut().filter(|_| moves) {
             let g = &cx.machine.geometry;
             let (lin_rate, rot_rate) = match rate {
                 Rate::Feed(f) if f > 0.0 => (f, f),
@@ -358,13 +359,13 @@ impl Interp {
         })
     }
 
-    /// Executes the next block.
-    pub fn step(&mut self, cx: &Cx<'_>, rec: Option<&mut Rec>) -> R<()> {
+    /// Executes the next block; `Ok(false)` if it was only listed (after M30, or skipped).
+    pub fn step(&mut self, cx: &Cx<'_>, rec: Option<&mut Rec>) -> R<bool> {
         let mut rec = rec;
         let idx = self.pc;
         let Some(block) = cx.program.blocks.get(idx) else {
             self.pc = cx.program.blocks.len();
-            return Ok(());
+            return Ok(false);
         };
         self.pc += 1;
         self.step_count += 1;
@@ -379,11 +380,11 @@ impl Interp {
                     "After program end (M30/M2): not executed".into(),
                 )
             });
-            return Ok(());
+            return Ok(false);
         }
         if block.skip && cx.options.block_skip {
             note(&mut rec, || ("Satz ausgeblendet (/)".into(), "Block skipped (/)".into()));
-            return Ok(());
+            return Ok(false);
         }
         match &block.body {
             BlockBody::BeginPgm { .. } | BlockBody::Empty | BlockBody::Structure { .. } => {}
@@ -495,7 +496,7 @@ impl Interp {
             }
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
         }
-        Ok(())
+        Ok(true)
     }
 
     fn spindle_m(&mut self, m: &[u32]) {
@@ -1085,7 +1086,14 @@ impl Interp {
     }
 
     /// The full state after the step just executed.
-    pub fn state(&self, program: &Program, machine: &Machine, step: usize, rec: Rec) -> State {
+    pub fn state(
+        &self,
+        program: &Program,
+        machine: &Machine,
+        step: usize,
+        executed: bool,
+        rec: Rec,
+    ) -> State {
         let block = self.last;
         let line = program.blocks.get(block).map_or(0, |b| b.line);
         let rot = self.axes.rotary;
@@ -1119,6 +1127,7 @@ impl Interp {
             message: rec.message,
             segments: rec.segments,
             ended: self.ended,
+            executed,
         }
     }
 
