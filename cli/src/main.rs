@@ -4,13 +4,18 @@
 mod check;
 mod fmt;
 mod input;
+mod run;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
 #[derive(Parser)]
-#[command(name = "schwenkbar", version, about = "HEIDENHAIN Klartext tools: check and format NC programs")]
+#[command(
+    name = "schwenkbar",
+    version,
+    about = "HEIDENHAIN Klartext tools: check, format and run NC programs"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -38,6 +43,8 @@ enum Command {
     Check(check::Args),
     /// Print the program in canonical form (`--check`: exit 1 if it is not).
     Fmt(fmt::Args),
+    /// Run a program on a machine block by block: axes, tool tip, active plane, messages.
+    Run(run::Args),
 }
 
 fn main() -> ExitCode {
@@ -45,5 +52,6 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(a) => check::run(&a),
         Command::Fmt(a) => fmt::run(&a),
+        Command::Run(a) => run::run(&a),
     }
 }

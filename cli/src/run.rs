@@ -1,0 +1,182 @@
+//! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en]`: one row per executed block.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use schwenkbar_core::machine::{Machine, Texts};
+use schwenkbar_core::sim::{SimOptions, State, simulate};
+use schwenkbar_core::{Program, parse};
+use serde::Serialize;
+
+use crate::LangArg;
+
+#[derive(clap::Args)]
+pub(crate) struct Args {
+    /// The NC program (`.h`, UTF-8 or Latin-1).
+    file: PathBuf,
+    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating).
+    #[arg(long)]
+    machine: String,
+    /// Print `{"machine", "states": […], "error": null | {"line", "message"}}`.
+    #[arg(long)]
+    json: bool,
+    /// Language of the messages.
+    #[arg(long, value_enum, default_value = "de")]
+    lang: LangArg,
+    /// Stop after this many executed blocks (endless loops); default: the simulator's budget.
+    #[arg(long)]
+    max_blocks: Option<usize>,
+}
+
+/// Rounds away float noise (1e-9) and `-0` for printing.
+fn num(x: f64) -> f64 {
+    let r = (x * 1e9).round() / 1e9;
+    if r == 0.0 { 0.0 } else { r }
+}
+
+fn pick(t: &Texts, lang: LangArg) -> &str {
+    match lang {
+        LangArg::De => &t.de,
+        LangArg::En => &t.en,
+    }
+}
+
+/// The first line of a block's source text.
+fn block_text<'a>(src: &'a str, program: &Program, block: usize) -> &'a str {
+    program
+        .blocks
+        .get(block)
+        .and_then(|b| src.get(b.span.start..b.span.end))
+        .and_then(|t| t.lines().next())
+        .unwrap_or("")
+        .trim()
+}
+
+#[derive(Serialize)]
+struct JsonPlane {
+    spatial: [f64; 3],
+    tool_axis: [f64; 3],
+}
+
+#[derive(Serialize)]
+struct JsonState<'a> {
+    line: u32,
+    number: Option<u32>,
+    block: &'a str,
+    axes: BTreeMap<String, f64>,
+    tool_tip_wcs: [f64; 3],
+    plane: Option<JsonPlane>,
+    q: BTreeMap<String, f64>,
+    message: Option<&'a str>,
+}
+
+#[derive(Serialize)]
+struct JsonError<'a> {
+    line: u32,
+    message: &'a str,
+    detail: &'a str,
+}
+
+#[derive(Serialize)]
+struct JsonRun<'a> {
+    machine: &'a str,
+    states: Vec<JsonState<'a>>,
+    error: Option<JsonError<'a>>,
+}
+
+fn axes_map(s: &State) -> BTreeMap<String, f64> {
+    s.axes.named().into_iter().map(|(c, v)| (c.to_string(), num(v))).collect()
+}
+
+pub(crate) fn run(args: &Args) -> ExitCode {
+    let src = match crate::input::read(&args.file) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let machine = match Machine::builtin(&args.machine) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e} (known: {})", Machine::builtin_ids().join(", "));
+            return ExitCode::from(2);
+        }
+    };
+    let (program, _) = parse(&src);
+    let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
+    let sim = simulate(&program, &machine, &opts);
+    let lang = args.lang;
+
+    if args.json {
+        let states: Vec<State> = sim.states(&program).collect();
+        let rows = states
+            .iter()
+            .map(|s| JsonState {
+                line: s.line,
+                number: program.blocks.get(s.block).and_then(|b| b.number),
+                block: block_text(&src, &program, s.block),
+                axes: axes_map(s),
+                tool_tip_wcs: s.tip_wcs.to_array().map(num),
+                plane: s
+                    .plane
+                    .as_ref()
+                    .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
+                q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
+                message: s.message.as_ref().map(|m| pick(m, lang)),
+            })
+            .collect();
+        let report = JsonRun {
+            machine: &machine.id,
+            states: rows,
+            error: sim.error.as_ref().map(|e| JsonError {
+                line: e.line,
+                message: pick(&e.message, lang),
+                detail: pick(&e.detail, lang),
+            }),
+        };
+        match serde_json::to_string(&report) {
+            Ok(s) => println!("{s}"),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
+        let mut head = format!("{:>5}  {:<44}", "line", "block");
+        for (c, _) in &letters {
+            head.push_str(&format!(" {c:>10}"));
+        }
+        head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
+        println!("{head}");
+        for s in sim.states(&program) {
+            let text: String = block_text(&src, &program, s.block).chars().take(44).collect();
+            let mut row = format!("{:>5}  {text:<44}", s.line);
+            for (_, v) in s.axes.named() {
+                row.push_str(&format!(" {:>10.4}", num(v)));
+            }
+            let plane = s.plane.as_ref().map_or_else(
+                || "-".to_string(),
+                |p| format!("{:+.4} {:+.4} {:+.4}", num(p.spatial[0]), num(p.spatial[1]), num(p.spatial[2])),
+            );
+            row.push_str(&format!("  {plane:<26}"));
+            if let Some(m) = &s.message {
+                row.push_str("  ");
+                row.push_str(pick(m, lang));
+            }
+            println!("{}", row.trim_end());
+        }
+        if let Some(e) = &sim.error {
+            println!(
+                "{}:{}: {}: {}",
+                args.file.display(),
+                e.line,
+                pick(&e.message, lang),
+                pick(&e.detail, lang)
+            );
+        }
+    }
+    if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
