@@ -4,7 +4,9 @@
 mod check;
 mod fmt;
 mod input;
+mod machines;
 mod run;
+mod solve;
 
 use std::process::ExitCode;
 
@@ -14,7 +16,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 #[command(
     name = "schwenkbar",
     version,
-    about = "HEIDENHAIN Klartext tools: check, format and run NC programs"
+    about = "HEIDENHAIN Klartext tools: check and format NC programs, solve PLANE blocks"
 )]
 struct Cli {
     #[command(subcommand)]
@@ -45,6 +47,10 @@ enum Command {
     Fmt(fmt::Args),
     /// Run a program on a machine block by block: axes, tool tip, active plane, messages.
     Run(run::Args),
+    /// Solve one PLANE block for a machine: candidates, the control's choice and why, as JSON.
+    Solve(solve::Args),
+    /// List the shipped machine ids (`--json`: full descriptions).
+    Machines(machines::Args),
 }
 
 fn main() -> ExitCode {
@@ -53,5 +59,7 @@ fn main() -> ExitCode {
         Command::Check(a) => check::run(&a),
         Command::Fmt(a) => fmt::run(&a),
         Command::Run(a) => run::run(&a),
+        Command::Solve(a) => solve::run(&a),
+        Command::Machines(a) => machines::run(&a),
     }
 }

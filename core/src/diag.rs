@@ -27,12 +27,38 @@ impl Severity {
     }
 }
 
-/// Language of a message.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize)]
+/// Language of a message and of the UI. German is the default: the trainees are mostly
+/// German-speaking machinists.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, serde::Deserialize)]
 pub enum Lang {
     #[default]
     De,
     En,
+}
+
+impl Lang {
+    /// Picks the text for this language.
+    #[must_use]
+    pub fn t<'a>(self, de: &'a str, en: &'a str) -> &'a str {
+        match self {
+            Lang::De => de,
+            Lang::En => en,
+        }
+    }
+
+    #[must_use]
+    pub fn other(self) -> Lang {
+        match self {
+            Lang::De => Lang::En,
+            Lang::En => Lang::De,
+        }
+    }
+
+    /// The HTML `lang` code.
+    #[must_use]
+    pub fn code(self) -> &'static str {
+        self.t("de", "en")
+    }
 }
 
 /// What was found, with the numbers that matter (machine-readable; the messages are built

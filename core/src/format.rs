@@ -24,6 +24,15 @@ pub fn format_program(p: &Program) -> String {
     out
 }
 
+/// The text of a PLANE block body (`PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX`), without
+/// block number: what the softkey dialog inserts.
+#[must_use]
+pub fn plane_text(p: &PlaneBlock) -> String {
+    let mut out = String::with_capacity(64);
+    plane(&mut out, p);
+    out
+}
+
 fn block(out: &mut String, n: usize, b: &Block) {
     if b.skip {
         out.push('/');

@@ -113,16 +113,27 @@ pub fn solve_tool_axis(machine: &Machine, t: DVec3) -> ToolAxisSolution {
 }
 
 /// The two symmetry positions of the master axis, 180° apart (DOMAIN.md §3.3, [S2]), with "the"
-/// symmetry point first ([`unconfirmed::SYMMETRY_POINT_CODIRECTIONAL`]).
+/// symmetry point first ([`unconfirmed::SYMMETRY_POINT_CODIRECTIONAL`]). Computed once per
+/// machine by [`Machine::from_json`]; see [`symmetry_positions_of`].
+#[must_use]
+pub fn symmetry_positions(machine: &Machine) -> [f64; 2] {
+    machine.symmetry_positions()
+}
+
+/// "The" symmetry point of the master axis (first of [`symmetry_positions`]).
+#[must_use]
+pub fn symmetry_point(machine: &Machine) -> f64 {
+    machine.symmetry_positions()[0]
+}
+
+/// The symmetry positions for slave direction `us` and master direction `um` (unit vectors).
 ///
 /// Derived: the two solutions differ only in the sign of the component of c along n = u_s × u_m,
 /// so they mirror about the master positions where c(θ) = Rot(u_m, θ)·ez lies in the plane of
 /// u_s and u_m: n·c(θ) = cos θ (n·ez) + sin θ (n·(u_m × ez)) = 0. Where the slave axis can be
 /// parallel to the tool axis (every common machine), that position is one of these two.
 #[must_use]
-pub fn symmetry_positions(machine: &Machine) -> [f64; 2] {
-    let us = machine.slave().direction;
-    let um = machine.master().direction;
+pub fn symmetry_positions_of(us: DVec3, um: DVec3) -> [f64; 2] {
     let n = us.cross(um);
     let a = n.dot(DVec3::Z);
     let b = n.dot(um.cross(DVec3::Z));
@@ -135,12 +146,6 @@ pub fn symmetry_positions(machine: &Machine) -> [f64; 2] {
         p.abs() <= q.abs()
     };
     if p_first { [p, q] } else { [q, p] }
-}
-
-/// "The" symmetry point of the master axis (first of [`symmetry_positions`]).
-#[must_use]
-pub fn symmetry_point(machine: &Machine) -> f64 {
-    symmetry_positions(machine)[0]
 }
 
 /// Residual rotation γ (degrees) about the tool axis: Rz(γ) = R_machineᵀ·R (DOMAIN.md §3.2),

@@ -8,6 +8,7 @@ pub mod angle;
 pub mod ast;
 pub mod axes;
 pub mod diag;
+pub mod edit;
 pub mod format;
 pub mod kinematics;
 pub mod machine;

@@ -75,6 +75,9 @@ pub struct Machine {
     /// Chain order workpiece → tool: `[slave, master]` (DOMAIN.md §3.1: the master is the first
     /// rotary axis seen from the tool, i.e. the last seen from the workpiece).
     chain: [RotaryJoint; 2],
+    /// The master's two symmetry positions, "the" symmetry point first (derived once from the
+    /// axis directions, [`crate::kinematics::symmetry_positions_of`]).
+    symmetry: [f64; 2],
     /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
     /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
     pub geometry: MachineGeometry,
@@ -299,8 +302,9 @@ impl Machine {
         if sine < PARALLEL_TOL {
             return Err(MachineError::MasterAlongTool { axis: master.axis, sine });
         }
+        let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
         let geometry = validate_geometry(raw.geometry)?;
-        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, geometry })
+        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, symmetry, geometry })
     }
 
     /// The rotary axes in chain order workpiece → tool.
@@ -319,6 +323,12 @@ impl Machine {
     #[must_use]
     pub fn slave(&self) -> &RotaryJoint {
         &self.chain[0]
+    }
+
+    /// The master's two symmetry positions in degrees, "the" symmetry point first.
+    #[must_use]
+    pub fn symmetry_positions(&self) -> [f64; 2] {
+        self.symmetry
     }
 
     /// The joint with this letter, if the machine has it.

@@ -10,24 +10,12 @@ use serde::Serialize;
 use crate::angle::{acosd, atan2d, clean, wrap180, wrap360};
 use crate::axes::AxisValues;
 use crate::machine::Machine;
-use crate::plane::{PlaneDef, RelAxis, RotaryAxis};
+use crate::plane::{PROJECTED_LIMIT, PlaneDef, RelAxis, RotaryAxis, input_range};
 use crate::unconfirmed;
 
 /// Below this (relative) length a vector counts as zero, and below this sine two directions
 /// count as parallel. Numerical choice (derived): NC input has at most 7 decimals.
 pub const PARALLEL_EPS: f64 = 1e-9;
-
-/// Input range of a spatial angle SPA/SPB/SPC on the iTNC 530 (DOMAIN.md §5, [M:iTNC-p494]).
-pub const SPATIAL_LIMIT: f64 = 359.9999;
-/// Input range of PROPR/PROMIN (DOMAIN.md §5, [M:iTNC-p496]).
-pub const PROJECTED_LIMIT: f64 = 89.9999;
-/// Input range of EULNU (DOMAIN.md §5, [S1][M:iTNC-p498]).
-pub const EULNU_RANGE: (f64, f64) = (0.0, 180.0);
-/// Input range of EULROT and ROT (DOMAIN.md §5).
-pub const ROT_RANGE: (f64, f64) = (0.0, 360.0);
-
-/// Tolerance of a range check, so `89.9999` written in the block passes after f64 parsing.
-const RANGE_EPS: f64 = 1e-9;
 
 /// Which vector of a PLANE block is meant in an error.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -80,54 +68,65 @@ pub enum PlaneError {
 }
 
 impl PlaneError {
+    /// `(German, English)` message with the numbers. A range error on an angle says what the
+    /// control says, "Winkel nicht erlaubt" / "Entered angle not permitted" [S2]; on other values
+    /// "Eingabewert falsch" / "Invalid input" (the parser's wording for the same check).
+    #[must_use]
+    pub fn messages(&self) -> (String, String) {
+        match self {
+            PlaneError::NotFinite { word, value } => (
+                format!("Ungültiger Zahlenwert: {word} = {value}"),
+                format!("Invalid number: {word} = {value}"),
+            ),
+            PlaneError::OutOfRange { word, value, min, max } => {
+                let angle =
+                    !matches!(word.as_bytes().first(), Some(b'B' | b'N' | b'P')) || word.starts_with("PRO");
+                let (de, en) = if angle {
+                    ("Winkel nicht erlaubt", "Entered angle not permitted")
+                } else {
+                    ("Eingabewert falsch", "Invalid input")
+                };
+                (
+                    format!("{de}: {word} = {value} (erlaubt {min} … {max})"),
+                    format!("{en}: {word} = {value} (allowed {min} … {max})"),
+                )
+            }
+            PlaneError::ZeroVector { vector, length } => (
+                format!("{} hat die Länge null ({length})", vector.de()),
+                format!("The {} has zero length ({length})", vector.en()),
+            ),
+            PlaneError::BaseParallelToNormal { angle, .. } => (
+                format!("Basisvektor parallel zum Normalenvektor (Winkel {angle}°)"),
+                format!("Base vector parallel to the normal vector (angle {angle}°)"),
+            ),
+            PlaneError::CollinearPoints { sine, .. } => (
+                format!("Die drei Punkte liegen auf einer Geraden (sin Winkel bei P1 = {sine})"),
+                format!("The three points lie on one line (sine of the angle at P1 = {sine})"),
+            ),
+            PlaneError::MachineRequired => (
+                "PLANE AXIAL: keine Maschinenkinematik gewählt".into(),
+                "PLANE AXIAL: no machine kinematics selected".into(),
+            ),
+            PlaneError::AxisNotOnMachine { axis, machine } => (
+                format!("Achse {axis} nicht vorhanden (Maschine {machine})"),
+                format!("Axis {axis} does not exist (machine {machine})"),
+            ),
+            PlaneError::DuplicateAxis { axis } => {
+                (format!("Achse {axis} mehrfach programmiert"), format!("Axis {axis} programmed twice"))
+            }
+        }
+    }
+
     /// The message in German, with the numbers.
     #[must_use]
     pub fn message_de(&self) -> String {
-        match self {
-            PlaneError::NotFinite { word, value } => format!("Ungültiger Zahlenwert: {word} = {value}"),
-            PlaneError::OutOfRange { word, value, min, max } => {
-                format!("Eingabewert außerhalb des Bereichs: {word} = {value} (erlaubt {min} … {max})")
-            }
-            PlaneError::ZeroVector { vector, length } => {
-                format!("{} hat die Länge null ({length})", vector.de())
-            }
-            PlaneError::BaseParallelToNormal { angle, .. } => {
-                format!("Basisvektor parallel zum Normalenvektor (Winkel {angle}°)")
-            }
-            PlaneError::CollinearPoints { sine, .. } => {
-                format!("Die drei Punkte liegen auf einer Geraden (sin Winkel bei P1 = {sine})")
-            }
-            PlaneError::MachineRequired => "PLANE AXIAL: keine Maschinenkinematik gewählt".to_string(),
-            PlaneError::AxisNotOnMachine { axis, machine } => {
-                format!("Achse {axis} nicht vorhanden (Maschine {machine})")
-            }
-            PlaneError::DuplicateAxis { axis } => format!("Achse {axis} mehrfach programmiert"),
-        }
+        self.messages().0
     }
 
     /// The message in English, with the numbers.
     #[must_use]
     pub fn message_en(&self) -> String {
-        match self {
-            PlaneError::NotFinite { word, value } => format!("Invalid number: {word} = {value}"),
-            PlaneError::OutOfRange { word, value, min, max } => {
-                format!("Input value out of range: {word} = {value} (allowed {min} … {max})")
-            }
-            PlaneError::ZeroVector { vector, length } => {
-                format!("The {} has zero length ({length})", vector.en())
-            }
-            PlaneError::BaseParallelToNormal { angle, .. } => {
-                format!("Base vector parallel to the normal vector (angle {angle}°)")
-            }
-            PlaneError::CollinearPoints { sine, .. } => {
-                format!("The three points lie on one line (sine of the angle at P1 = {sine})")
-            }
-            PlaneError::MachineRequired => "PLANE AXIAL: no machine kinematics selected".to_string(),
-            PlaneError::AxisNotOnMachine { axis, machine } => {
-                format!("Axis {axis} does not exist (machine {machine})")
-            }
-            PlaneError::DuplicateAxis { axis } => format!("Axis {axis} programmed twice"),
-        }
+        self.messages().1
     }
 }
 
@@ -305,75 +304,18 @@ pub fn orientation(def: &PlaneDef<f64>, ctx: &Context<'_>) -> Result<DMat3, Plan
     })
 }
 
-/// Checks every word of a PLANE definition: finite, and inside the input range of DOMAIN.md §5.
+/// Checks every word of a PLANE definition: finite, and inside its input range
+/// ([`crate::plane::input_range`], the one table the parser and the dialog use too).
 pub fn validate(def: &PlaneDef<f64>) -> Result<(), PlaneError> {
-    fn check(word: &'static str, value: f64, min: f64, max: f64) -> Result<(), PlaneError> {
+    for (word, &value) in def.words() {
         if !value.is_finite() {
             return Err(PlaneError::NotFinite { word, value });
         }
-        if value < min - RANGE_EPS || value > max + RANGE_EPS {
-            return Err(PlaneError::OutOfRange { word, value, min, max });
+        if let Some(r) = input_range(word)
+            && !r.contains(value)
+        {
+            return Err(PlaneError::OutOfRange { word, value, min: r.min, max: r.max });
         }
-        Ok(())
-    }
-    fn check3(words: [&'static str; 3], v: &[f64; 3], limit: f64) -> Result<(), PlaneError> {
-        for (w, x) in words.iter().zip(v) {
-            check(w, *x, -limit, limit)?;
-        }
-        Ok(())
-    }
-    let sym = |l: f64| (-l, l);
-    let checks: &[(&'static str, f64, (f64, f64))] = match def {
-        PlaneDef::Spatial { spa, spb, spc } => &[
-            ("SPA", *spa, sym(SPATIAL_LIMIT)),
-            ("SPB", *spb, sym(SPATIAL_LIMIT)),
-            ("SPC", *spc, sym(SPATIAL_LIMIT)),
-        ],
-        PlaneDef::Projected { propr, promin, rot } => &[
-            ("PROPR", *propr, sym(PROJECTED_LIMIT)),
-            ("PROMIN", *promin, sym(PROJECTED_LIMIT)),
-            ("ROT", *rot, ROT_RANGE),
-        ],
-        PlaneDef::Euler { eulpr, eulnu, eulrot } => &[
-            ("EULPR", *eulpr, sym(unconfirmed::EULPR_LIMIT)),
-            ("EULNU", *eulnu, EULNU_RANGE),
-            ("EULROT", *eulrot, ROT_RANGE),
-        ],
-        PlaneDef::Vector { base, normal } => {
-            check3(["BX", "BY", "BZ"], base, unconfirmed::VECTOR_COMPONENT_LIMIT)?;
-            check3(["NX", "NY", "NZ"], normal, unconfirmed::VECTOR_COMPONENT_LIMIT)?;
-            &[]
-        }
-        PlaneDef::Points { p1, p2, p3 } => {
-            check3(["P1X", "P1Y", "P1Z"], p1, unconfirmed::POINTS_COORD_LIMIT)?;
-            check3(["P2X", "P2Y", "P2Z"], p2, unconfirmed::POINTS_COORD_LIMIT)?;
-            check3(["P3X", "P3Y", "P3Z"], p3, unconfirmed::POINTS_COORD_LIMIT)?;
-            &[]
-        }
-        PlaneDef::Relativ { axis, angle } => {
-            let word = match axis {
-                RelAxis::Spa => "SPA",
-                RelAxis::Spb => "SPB",
-                RelAxis::Spc => "SPC",
-            };
-            check(word, *angle, -unconfirmed::RELATIV_LIMIT, unconfirmed::RELATIV_LIMIT)?;
-            &[]
-        }
-        PlaneDef::Axial { axes } => {
-            for a in axes {
-                let word = match a.axis {
-                    RotaryAxis::A => "A",
-                    RotaryAxis::B => "B",
-                    RotaryAxis::C => "C",
-                };
-                check(word, a.value, -unconfirmed::AXIAL_LIMIT, unconfirmed::AXIAL_LIMIT)?;
-            }
-            &[]
-        }
-        PlaneDef::Reset => &[],
-    };
-    for (word, value, (min, max)) in checks {
-        check(word, *value, *min, *max)?;
     }
     Ok(())
 }

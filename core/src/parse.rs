@@ -19,6 +19,7 @@ use std::borrow::Cow;
 
 use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Severity};
+use crate::plane::Value;
 
 pub(crate) use words::PErr;
 
@@ -462,5 +463,15 @@ pub(crate) fn unknown(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         Some(BlockBody::Unknown { text: body.to_owned() })
     } else {
         cx.invalid(body, None)
+    }
+}
+
+/// A whole string as one value (`15`, `-7.5`, `.5`, `+Q27`), as typed into a dialog field;
+/// `None` if it is anything else. Uses the parser's own number rules.
+#[must_use]
+pub fn parse_value(text: &str) -> Option<Value> {
+    match words::value(text) {
+        Ok(("", v)) => Some(v),
+        _ => None,
     }
 }

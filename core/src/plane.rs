@@ -194,3 +194,108 @@ impl<V> PlaneDef<V> {
         })
     }
 }
+
+/// Input range of a PLANE word and whether it is an angle (out of range: "Winkel nicht
+/// erlaubt") or another value. One table for the parser and the softkey dialog.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InputRange {
+    pub min: f64,
+    pub max: f64,
+    pub angle: bool,
+}
+
+impl InputRange {
+    /// Values are checked as written; a tolerance keeps `359.9999` itself inside.
+    const EPS: f64 = 1e-9;
+
+    #[must_use]
+    pub fn contains(&self, x: f64) -> bool {
+        x >= self.min - Self::EPS && x <= self.max + Self::EPS
+    }
+}
+
+/// Input range of a spatial angle SPA/SPB/SPC on the iTNC 530 (DOMAIN.md §5, [M:iTNC-p494]);
+/// PLANE RELATIV uses it too (UNCONFIRMED, DOMAIN.md §5 "probably ±359.9999").
+pub const SPATIAL_LIMIT: f64 = 359.9999;
+/// Input range of PROPR/PROMIN (DOMAIN.md §5, [M:iTNC-p496]).
+pub const PROJECTED_LIMIT: f64 = 89.9999;
+
+/// The input range of `word` (DOMAIN.md §5, iTNC 530 manual figures; the UNCONFIRMED ones are
+/// named in [`crate::unconfirmed`]). `None` for a word without a range.
+#[must_use]
+pub fn input_range(word: &str) -> Option<InputRange> {
+    use crate::unconfirmed::{AXIAL_LIMIT, EULPR_LIMIT, POINTS_COORD_LIMIT, VECTOR_COMPONENT_LIMIT};
+    let r = |min, max, angle| Some(InputRange { min, max, angle });
+    match word {
+        "SPA" | "SPB" | "SPC" => r(-SPATIAL_LIMIT, SPATIAL_LIMIT, true),
+        "PROPR" | "PROMIN" => r(-PROJECTED_LIMIT, PROJECTED_LIMIT, true),
+        "ROT" | "EULROT" => r(0.0, 360.0, true),
+        "EULPR" => r(-EULPR_LIMIT, EULPR_LIMIT, true),
+        "EULNU" => r(0.0, 180.0, true),
+        "BX" | "BY" | "BZ" | "NX" | "NY" | "NZ" => r(-VECTOR_COMPONENT_LIMIT, VECTOR_COMPONENT_LIMIT, false),
+        "P1X" | "P1Y" | "P1Z" | "P2X" | "P2Y" | "P2Z" | "P3X" | "P3Y" | "P3Z" => {
+            r(-POINTS_COORD_LIMIT, POINTS_COORD_LIMIT, false)
+        }
+        "A" | "B" | "C" => r(-AXIAL_LIMIT, AXIAL_LIMIT, true),
+        _ => None,
+    }
+}
+
+impl<V> PlaneDef<V> {
+    /// Every value with its NC word, in the order written (`SPA`, `SPB`, `SPC`; `A` for AXIAL).
+    #[must_use]
+    pub fn words(&self) -> Vec<(&'static str, &V)> {
+        const VEC: [[&str; 3]; 2] = [["BX", "BY", "BZ"], ["NX", "NY", "NZ"]];
+        const PTS: [[&str; 3]; 3] = [["P1X", "P1Y", "P1Z"], ["P2X", "P2Y", "P2Z"], ["P3X", "P3Y", "P3Z"]];
+        fn zip3<'a, V>(names: [&'static str; 3], v: &'a [V; 3]) -> Vec<(&'static str, &'a V)> {
+            names.into_iter().zip(v.iter()).collect()
+        }
+        match self {
+            PlaneDef::Spatial { spa, spb, spc } => vec![("SPA", spa), ("SPB", spb), ("SPC", spc)],
+            PlaneDef::Projected { propr, promin, rot } => {
+                vec![("PROPR", propr), ("PROMIN", promin), ("ROT", rot)]
+            }
+            PlaneDef::Euler { eulpr, eulnu, eulrot } => {
+                vec![("EULPR", eulpr), ("EULNU", eulnu), ("EULROT", eulrot)]
+            }
+            PlaneDef::Vector { base, normal } => {
+                let mut w = zip3(VEC[0], base);
+                w.extend(zip3(VEC[1], normal));
+                w
+            }
+            PlaneDef::Points { p1, p2, p3 } => {
+                let mut w = zip3(PTS[0], p1);
+                w.extend(zip3(PTS[1], p2));
+                w.extend(zip3(PTS[2], p3));
+                w
+            }
+            PlaneDef::Relativ { axis, angle } => vec![(axis.word(), angle)],
+            PlaneDef::Axial { axes } => axes.iter().map(|a| (a.axis.word(), &a.value)).collect(),
+            PlaneDef::Reset => Vec::new(),
+        }
+    }
+}
+
+impl RelAxis {
+    /// `SPA`, `SPB` or `SPC`.
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            RelAxis::Spa => "SPA",
+            RelAxis::Spb => "SPB",
+            RelAxis::Spc => "SPC",
+        }
+    }
+}
+
+impl RotaryAxis {
+    /// `A`, `B` or `C`.
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            RotaryAxis::A => "A",
+            RotaryAxis::B => "B",
+            RotaryAxis::C => "C",
+        }
+    }
+}

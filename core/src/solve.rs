@@ -17,7 +17,7 @@ use serde::Serialize;
 use crate::angle::{clean, short_delta, wrap180};
 use crate::axes::AxisValues;
 use crate::kinematics::{self, AxisPair, ToolAxisSolution};
-use crate::machine::{Carrier, Limits, Machine, RotaryJoint, Texts};
+use crate::machine::{Carrier, Limits, Machine, RotaryJoint};
 use crate::orientation::{self, Context, PlaneError};
 use crate::plane::{PlaneBlock, PlaneDef, RotaryAxis, Selection, Sign, TransformMode};
 use crate::unconfirmed::{self, Decision};
@@ -132,76 +132,89 @@ fn sign_char(s: Sign) -> char {
 }
 
 impl Rule {
+    /// `(German, English)` text for the trainee.
+    #[must_use]
+    pub fn texts(&self) -> (String, String) {
+        let pm = |sign: Sign, de: [&'static str; 2], en: [&'static str; 2]| match sign {
+            Sign::Plus => (de[0], en[0]),
+            Sign::Minus => (de[1], en[1]),
+        };
+        match *self {
+            Rule::Axial => (
+                "PLANE AXIAL: Achswinkel direkt programmiert, keine Auswahl nötig".into(),
+                "PLANE AXIAL: axis angles programmed directly, nothing to choose".into(),
+            ),
+            Rule::Reset => (
+                "PLANE RESET: Drehachsen zurück in die Grundstellung".into(),
+                "PLANE RESET: rotary axes back to the home position".into(),
+            ),
+            Rule::Unique { free: None } => {
+                ("Nur eine Lösung möglich".into(), "Only one solution exists".into())
+            }
+            Rule::Unique { free: Some(a) } => (
+                format!("Nur eine Lösung: Werkzeugachse parallel zur Achse {a}, {a} ist frei"),
+                format!("Only one solution: tool axis parallel to axis {a}, {a} is free"),
+            ),
+            Rule::Seq { sign, master } => {
+                let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
+                let s = sign_char(sign);
+                (
+                    format!(
+                        "SEQ{s}: Master-Achse {master} muss {de} sein (bezogen auf die Grundstellung 0°)"
+                    ),
+                    format!("SEQ{s}: master axis {master} must be {en} (relative to its home position 0°)"),
+                )
+            }
+            Rule::SeqNearer { sign, master } => {
+                let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
+                let s = sign_char(sign);
+                (
+                    format!("SEQ{s}: beide Lösungen haben {master} {de}, die Steuerung nimmt die nähere"),
+                    format!("SEQ{s}: both solutions have {master} {en}, the control takes the nearer one"),
+                )
+            }
+            Rule::Sym { sign, master, symmetry_point } => {
+                let (de, en) = pm(sign, ["positiven", "negativen"], ["positive", "negative"]);
+                let (s, p) = (sign_char(sign), axis_word(master, symmetry_point));
+                (
+                    format!("SYM{s}: Master-Achse {master} im {de} Halbraum ab dem Symmetriepunkt {p}"),
+                    format!(
+                        "SYM{s}: master axis {master} in the {en} half-space from the symmetry point {p}"
+                    ),
+                )
+            }
+            Rule::OnlyInLimits => (
+                "Nur eine Lösung liegt im Verfahrbereich".into(),
+                "Only one solution lies inside the traverse range".into(),
+            ),
+            Rule::ShortestPath => (
+                "Kürzester Weg von der aktuellen Position der Drehachsen".into(),
+                "Shortest path from the current rotary axis positions".into(),
+            ),
+            Rule::Tie { master } => (
+                format!("Beide Wege gleich lang: Lösung mit {master} positiver (Annahme, nicht bestätigt)"),
+                format!("Equal paths: the solution with the larger {master} (assumption, unconfirmed)"),
+            ),
+            Rule::NoneInLimits => {
+                ("Keine Lösung im Verfahrbereich".into(), "No solution inside the traverse range".into())
+            }
+            Rule::Unreachable => (
+                "Diese Werkzeugachse ist mit der Kinematik nicht erreichbar".into(),
+                "This tool axis cannot be reached with this kinematics".into(),
+            ),
+        }
+    }
+
     /// German text for the trainee.
     #[must_use]
     pub fn text_de(&self) -> String {
-        match *self {
-            Rule::Axial => "PLANE AXIAL: Achswinkel direkt programmiert, keine Auswahl nötig".into(),
-            Rule::Reset => "PLANE RESET: Drehachsen zurück in die Grundstellung".into(),
-            Rule::Unique { free: None } => "Nur eine Lösung möglich".into(),
-            Rule::Unique { free: Some(a) } => {
-                format!("Nur eine Lösung: Werkzeugachse parallel zur Achse {a}, {a} ist frei")
-            }
-            Rule::Seq { sign, master } => format!(
-                "SEQ{}: Master-Achse {master} muss {} sein (bezogen auf die Grundstellung 0°)",
-                sign_char(sign),
-                if sign == Sign::Plus { "positiv" } else { "negativ" }
-            ),
-            Rule::SeqNearer { sign, master } => format!(
-                "SEQ{}: beide Lösungen haben {master} {}, die Steuerung nimmt die nähere",
-                sign_char(sign),
-                if sign == Sign::Plus { "positiv" } else { "negativ" }
-            ),
-            Rule::Sym { sign, master, symmetry_point } => format!(
-                "SYM{}: Master-Achse {master} im {} Halbraum ab dem Symmetriepunkt {}",
-                sign_char(sign),
-                if sign == Sign::Plus { "positiven" } else { "negativen" },
-                axis_word(master, symmetry_point)
-            ),
-            Rule::OnlyInLimits => "Nur eine Lösung liegt im Verfahrbereich".into(),
-            Rule::ShortestPath => "Kürzester Weg von der aktuellen Position der Drehachsen".into(),
-            Rule::Tie { master } => {
-                format!("Beide Wege gleich lang: Lösung mit {master} positiver (Annahme, nicht bestätigt)")
-            }
-            Rule::NoneInLimits => "Keine Lösung im Verfahrbereich".into(),
-            Rule::Unreachable => "Diese Werkzeugachse ist mit der Kinematik nicht erreichbar".into(),
-        }
+        self.texts().0
     }
 
     /// English text for the trainee.
     #[must_use]
     pub fn text_en(&self) -> String {
-        match *self {
-            Rule::Axial => "PLANE AXIAL: axis angles programmed directly, nothing to choose".into(),
-            Rule::Reset => "PLANE RESET: rotary axes back to the home position".into(),
-            Rule::Unique { free: None } => "Only one solution exists".into(),
-            Rule::Unique { free: Some(a) } => {
-                format!("Only one solution: tool axis parallel to axis {a}, {a} is free")
-            }
-            Rule::Seq { sign, master } => format!(
-                "SEQ{}: master axis {master} must be {} (relative to its home position 0°)",
-                sign_char(sign),
-                if sign == Sign::Plus { "positive" } else { "negative" }
-            ),
-            Rule::SeqNearer { sign, master } => format!(
-                "SEQ{}: both solutions have {master} {}, the control takes the nearer one",
-                sign_char(sign),
-                if sign == Sign::Plus { "positive" } else { "negative" }
-            ),
-            Rule::Sym { sign, master, symmetry_point } => format!(
-                "SYM{}: master axis {master} in the {} half-space from the symmetry point {}",
-                sign_char(sign),
-                if sign == Sign::Plus { "positive" } else { "negative" },
-                axis_word(master, symmetry_point)
-            ),
-            Rule::OnlyInLimits => "Only one solution lies inside the traverse range".into(),
-            Rule::ShortestPath => "Shortest path from the current rotary axis positions".into(),
-            Rule::Tie { master } => {
-                format!("Equal paths: the solution with the larger {master} (assumption, unconfirmed)")
-            }
-            Rule::NoneInLimits => "No solution inside the traverse range".into(),
-            Rule::Unreachable => "This tool axis cannot be reached with this kinematics".into(),
-        }
+        self.texts().1
     }
 }
 
@@ -222,84 +235,129 @@ pub enum SolveError {
 }
 
 impl SolveError {
-    /// The control's message, German ("Winkel nicht erlaubt" [S2]).
+    /// The control's message, `(German, English)`: "Winkel nicht erlaubt" [S2] /
+    /// "Entered angle not permitted" [M:TNC7basic-SYM].
     #[must_use]
-    pub fn message_de(&self) -> &'static str {
+    pub fn messages(&self) -> (&'static str, &'static str) {
         match self {
             SolveError::Unreachable { .. } if unconfirmed::UNREACHABLE_IS_SEPARATE_ERROR => {
-                "Winkel nicht berechenbar"
+                ("Winkel nicht berechenbar", "Angle cannot be calculated")
             }
-            SolveError::NotFinite { .. } => "Ungültiger Zahlenwert",
-            _ => "Winkel nicht erlaubt",
+            SolveError::NotFinite { .. } => ("Ungültiger Zahlenwert", "Invalid number"),
+            _ => ("Winkel nicht erlaubt", "Entered angle not permitted"),
         }
     }
 
-    /// The control's message, English ("Entered angle not permitted" [M:TNC7basic-SYM]).
+    /// The control's message, German.
+    #[must_use]
+    pub fn message_de(&self) -> &'static str {
+        self.messages().0
+    }
+
+    /// The control's message, English.
     #[must_use]
     pub fn message_en(&self) -> &'static str {
-        match self {
-            SolveError::Unreachable { .. } if unconfirmed::UNREACHABLE_IS_SEPARATE_ERROR => {
-                "Angle cannot be calculated"
+        self.messages().1
+    }
+
+    /// The detail with the numbers, `(German, English)`.
+    #[must_use]
+    pub fn details(&self) -> (String, String) {
+        match *self {
+            SolveError::AxisOutOfLimit { axis, value, min, max } => {
+                let (v, lo, hi) = (axis_word(axis, value), fmt_deg(min), fmt_deg(max));
+                (
+                    format!("{v} außerhalb des Verfahrbereichs {lo} … {hi}"),
+                    format!("{v} outside the traverse range {lo} … {hi}"),
+                )
             }
-            SolveError::NotFinite { .. } => "Invalid number",
-            _ => "Entered angle not permitted",
+            SolveError::NoSolutionOnSide { selection, master, values } => {
+                let (sel, v0, v1) =
+                    (selection_word(selection), axis_word(master, values[0]), axis_word(master, values[1]));
+                (
+                    format!("{sel}: keine Lösung auf dieser Seite ({v0}, {v1})"),
+                    format!("{sel}: no solution on that side ({v0}, {v1})"),
+                )
+            }
+            SolveError::NoSolutionInLimits { candidates } => (
+                format!("Keine der {candidates} Lösungen liegt im Verfahrbereich"),
+                format!("None of the {candidates} solutions lies inside the traverse range"),
+            ),
+            SolveError::Unreachable { tool_axis: [x, y, z] } => (
+                format!("Werkzeugachse ({x:.4}, {y:.4}, {z:.4}) mit dieser Kinematik nicht erreichbar"),
+                format!("Tool axis ({x:.4}, {y:.4}, {z:.4}) cannot be reached with this kinematics"),
+            ),
+            SolveError::NotFinite { what, value } => {
+                (format!("{what} = {value}"), format!("{what} = {value}"))
+            }
         }
     }
 
     /// The detail with the numbers, German.
     #[must_use]
     pub fn detail_de(&self) -> String {
-        match *self {
-            SolveError::AxisOutOfLimit { axis, value, min, max } => {
-                format!(
-                    "{} außerhalb des Verfahrbereichs {} … {}",
-                    axis_word(axis, value),
-                    fmt_deg(min),
-                    fmt_deg(max)
-                )
-            }
-            SolveError::NoSolutionOnSide { selection, master, values } => format!(
-                "{}: keine Lösung auf dieser Seite ({}, {})",
-                selection_word(selection),
-                axis_word(master, values[0]),
-                axis_word(master, values[1])
-            ),
-            SolveError::NoSolutionInLimits { candidates } => {
-                format!("Keine der {candidates} Lösungen liegt im Verfahrbereich")
-            }
-            SolveError::Unreachable { tool_axis: [x, y, z] } => {
-                format!("Werkzeugachse ({x:.4}, {y:.4}, {z:.4}) mit dieser Kinematik nicht erreichbar")
-            }
-            SolveError::NotFinite { what, value } => format!("{what} = {value}"),
-        }
+        self.details().0
     }
 
     /// The detail with the numbers, English.
     #[must_use]
     pub fn detail_en(&self) -> String {
-        match *self {
-            SolveError::AxisOutOfLimit { axis, value, min, max } => {
-                format!(
-                    "{} outside the traverse range {} … {}",
-                    axis_word(axis, value),
-                    fmt_deg(min),
-                    fmt_deg(max)
-                )
-            }
-            SolveError::NoSolutionOnSide { selection, master, values } => format!(
-                "{}: no solution on that side ({}, {})",
-                selection_word(selection),
-                axis_word(master, values[0]),
-                axis_word(master, values[1])
-            ),
-            SolveError::NoSolutionInLimits { candidates } => {
-                format!("None of the {candidates} solutions lies inside the traverse range")
-            }
-            SolveError::Unreachable { tool_axis: [x, y, z] } => {
-                format!("Tool axis ({x:.4}, {y:.4}, {z:.4}) cannot be reached with this kinematics")
-            }
-            SolveError::NotFinite { what, value } => format!("{what} = {value}"),
-        }
+        self.details().1
+    }
+}
+
+/// A [`Rule`] that serialises as its texts, `{"de": …, "en": …}`. The texts are only formatted
+/// when asked for, which keeps [`solve`] free of string formatting (benchmark budget).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reason(pub Rule);
+
+impl Reason {
+    /// German text.
+    #[must_use]
+    pub fn de(&self) -> String {
+        self.0.text_de()
+    }
+    /// English text.
+    #[must_use]
+    pub fn en(&self) -> String {
+        self.0.text_en()
+    }
+}
+
+impl Serialize for Reason {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Reason", 2)?;
+        st.serialize_field("de", &self.de())?;
+        st.serialize_field("en", &self.en())?;
+        st.end()
+    }
+}
+
+/// The control's message for a [`SolveError`], serialised as `{"de": …, "en": …}`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorMessage(pub SolveError);
+
+impl ErrorMessage {
+    /// German, as the control says it ("Winkel nicht erlaubt").
+    #[must_use]
+    pub fn de(&self) -> &'static str {
+        self.0.message_de()
+    }
+    /// English ("Entered angle not permitted").
+    #[must_use]
+    pub fn en(&self) -> &'static str {
+        self.0.message_en()
+    }
+}
+
+impl Serialize for ErrorMessage {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("ErrorMessage", 2)?;
+        st.serialize_field("de", self.de())?;
+        st.serialize_field("en", self.en())?;
+        st.end()
     }
 }
 
@@ -357,11 +415,11 @@ pub struct Explanation {
     /// Index into `candidates`.
     pub chosen: Option<usize>,
     pub rule: Rule,
-    /// `rule` as text.
-    pub reason: Texts,
+    /// `rule` as German and English text (computed when serialised).
+    pub reason: Reason,
     pub error: Option<SolveError>,
-    /// The control's message for `error`.
-    pub error_message: Option<Texts>,
+    /// The control's message for `error`, German and English.
+    pub error_message: Option<ErrorMessage>,
     pub residual: Option<Residual>,
     pub q: QValues,
     /// The UNCONFIRMED decisions that influenced this result.
@@ -502,7 +560,7 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
         candidates: Vec::new(),
         chosen: None,
         rule: Rule::Unreachable,
-        reason: Texts { de: String::new(), en: String::new() },
+        reason: Reason(Rule::Unreachable),
         error: None,
         error_message: None,
         residual: None,
@@ -513,9 +571,9 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
 
 /// Fills rule, texts, error, chosen and Q values.
 fn finish(mut e: Explanation, rule: Rule, chosen: Option<usize>, error: Option<SolveError>) -> Explanation {
-    e.reason = Texts { de: rule.text_de(), en: rule.text_en() };
+    e.reason = Reason(rule);
     e.rule = rule;
-    e.error_message = error.map(|x| Texts { de: x.message_de().into(), en: x.message_en().into() });
+    e.error_message = error.map(ErrorMessage);
     e.error = error;
     e.chosen = if error.is_none() { chosen } else { None };
     if let Some(axes) = e.chosen_axes() {
@@ -625,6 +683,10 @@ fn solve_inner(
         }
         ToolAxisSolution::Two { solutions } => {
             e.candidates = solutions.iter().map(|p| with_residual(*p)).collect();
+            // Candidate 1 is the one on the SYM+ side of the symmetry point (stable order for the UI).
+            if wrap180(e.candidates[0].master - e.symmetry_point) < 0.0 {
+                e.candidates.swap(0, 1);
+            }
             match selection {
                 Some(sel) => choose_selected(e, sel),
                 None => choose_free(e),

@@ -47,7 +47,8 @@ pub enum Decision {
     ResetTarget,
     /// [`UNREACHABLE_IS_SEPARATE_ERROR`]: German text of "Angle cannot be calculated".
     UnreachableMessage,
-    /// [`EULPR_LIMIT`] and the ranges of POINTS/RELATIV/AXIAL, [`VECTOR_COMPONENT_LIMIT`].
+    /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`]; RELATIV uses
+    /// the spatial range.
     InputRanges,
 }
 
@@ -73,102 +74,91 @@ impl Decision {
         Decision::InputRanges,
     ];
 
+    /// `(German, English)` text for the trainee.
+    #[must_use]
+    pub fn texts(self) -> (&'static str, &'static str) {
+        match self {
+            Decision::ProjectedSign => (
+                "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA).",
+                "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA).",
+            ),
+            Decision::VectorGramSchmidt => (
+                "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert.",
+                "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it.",
+            ),
+            Decision::RelativUntilted => (
+                "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS.",
+                "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
+            ),
+            Decision::PathMetric => (
+                "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg).",
+                "Path length = sum of the travel of all rotary axes (endless axes the short way round).",
+            ),
+            Decision::TieRule => (
+                "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
+                "Equal paths: the solution with the larger master axis value.",
+            ),
+            Decision::CoordRotFreeAxis => (
+                "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position.",
+                "COORD ROT: the free rotary axis stays at its current position.",
+            ),
+            Decision::TableRotSign => (
+                "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
+                "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
+            ),
+            Decision::TableRotHeadAxis => (
+                "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen.",
+                "TABLE ROT acts on a free table axis only; a free head axis stays where it is.",
+            ),
+            Decision::DefaultTransform => (
+                "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
+                "Without COORD ROT/TABLE ROT the control computes as with COORD ROT.",
+            ),
+            Decision::ZeroIsPlus => (
+                "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv.",
+                "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive.",
+            ),
+            Decision::SeqSameSide => (
+                "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung.",
+                "SEQ with both solutions on the requested side: the nearer one first, then the limit check.",
+            ),
+            Decision::SymmetryPoint => (
+                "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt.",
+                "Symmetry point: the master position where the tool axis points along +slave axis direction.",
+            ),
+            Decision::AxisRepresentation => (
+                "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter.",
+                "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches.",
+            ),
+            Decision::AxialMissingAxis => (
+                "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position.",
+                "PLANE AXIAL: rotary axes not programmed stay at their current position.",
+            ),
+            Decision::ResetTarget => (
+                "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
+                "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
+            ),
+            Decision::UnreachableMessage => (
+                "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“.",
+                "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
+            ),
+            Decision::InputRanges => (
+                "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999.",
+                "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999.",
+            ),
+        }
+    }
+
     /// German text for the trainee.
     #[must_use]
     pub fn text_de(self) -> &'static str {
-        match self {
-            Decision::ProjectedSign => {
-                "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA)."
-            }
-            Decision::VectorGramSchmidt => {
-                "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert."
-            }
-            Decision::RelativUntilted => {
-                "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS."
-            }
-            Decision::PathMetric => {
-                "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg)."
-            }
-            Decision::TieRule => "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
-            Decision::CoordRotFreeAxis => {
-                "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position."
-            }
-            Decision::TableRotSign => "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
-            Decision::TableRotHeadAxis => {
-                "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen."
-            }
-            Decision::DefaultTransform => "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
-            Decision::ZeroIsPlus => {
-                "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv."
-            }
-            Decision::SeqSameSide => {
-                "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung."
-            }
-            Decision::SymmetryPoint => {
-                "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt."
-            }
-            Decision::AxisRepresentation => {
-                "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter."
-            }
-            Decision::AxialMissingAxis => {
-                "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position."
-            }
-            Decision::ResetTarget => "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
-            Decision::UnreachableMessage => {
-                "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“."
-            }
-            Decision::InputRanges => {
-                "Eingabebereiche für EULPR (±359,9999 wegen EULPR+270 im Seed), POINTS, RELATIV, AXIAL, VECTOR (±99,9999999)."
-            }
-        }
+        self.texts().0
     }
 
     /// English text for the trainee.
     #[must_use]
     pub fn text_en(self) -> &'static str {
-        match self {
-            Decision::ProjectedSign => {
-                "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA)."
-            }
-            Decision::VectorGramSchmidt => {
-                "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it."
-            }
-            Decision::RelativUntilted => "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
-            Decision::PathMetric => {
-                "Path length = sum of the travel of all rotary axes (endless axes the short way round)."
-            }
-            Decision::TieRule => "Equal paths: the solution with the larger master axis value.",
-            Decision::CoordRotFreeAxis => "COORD ROT: the free rotary axis stays at its current position.",
-            Decision::TableRotSign => "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
-            Decision::TableRotHeadAxis => {
-                "TABLE ROT acts on a free table axis only; a free head axis stays where it is."
-            }
-            Decision::DefaultTransform => {
-                "Without COORD ROT/TABLE ROT the control computes as with COORD ROT."
-            }
-            Decision::ZeroIsPlus => {
-                "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive."
-            }
-            Decision::SeqSameSide => {
-                "SEQ with both solutions on the requested side: the nearer one first, then the limit check."
-            }
-            Decision::SymmetryPoint => {
-                "Symmetry point: the master position where the tool axis points along +slave axis direction."
-            }
-            Decision::AxisRepresentation => {
-                "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches."
-            }
-            Decision::AxialMissingAxis => {
-                "PLANE AXIAL: rotary axes not programmed stay at their current position."
-            }
-            Decision::ResetTarget => "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
-            Decision::UnreachableMessage => {
-                "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\"."
-            }
-            Decision::InputRanges => {
-                "Input ranges for EULPR (±359.9999 because the seed uses EULPR+270), POINTS, RELATIV, AXIAL, VECTOR (±99.9999999)."
-            }
-        }
+        self.texts().1
     }
 }
 
@@ -278,9 +268,11 @@ pub const RESET_TARGET_DEG: f64 = 0.0;
 /// translation). `false` would report it as "Winkel nicht erlaubt" instead.
 pub const UNREACHABLE_IS_SEPARATE_ERROR: bool = true;
 
-/// EULPR range: the manual says −180…+180 [M:iTNC-p498], but seed S1 programs `EULPR+270`.
-/// **UNCONFIRMED**: accepted up to ±359.9999 like a spatial angle.
-pub const EULPR_LIMIT: f64 = 359.9999;
+/// EULPR range: seed S1's syntax table and the manual say −180…+180 [S1][M:iTNC-p498], but
+/// S1's chamfer tip programs `EULPR+270`. **UNCONFIRMED** how the control treats 270: we follow
+/// the stated input range, so `EULPR+270` is refused ("Winkel nicht erlaubt") and the shipped
+/// chamfer sample writes the same orientation as `EULPR-90`.
+pub const EULPR_LIMIT: f64 = 180.0;
 
 /// PLANE VECTOR component limit: ±9.9999999 (TNC 320/620/640) or ±99.9999999 (later iTNC 530)
 /// [M:320-p352][M:iTNC-p500]. **UNCONFIRMED** which control we mimic: the larger one.
@@ -289,9 +281,6 @@ pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
 /// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
 /// coordinate range ±99999.9999.
 pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
-
-/// PLANE RELATIV angle limit. **UNCONFIRMED** ("probably ±359.9999", DOMAIN.md §5).
-pub const RELATIV_LIMIT: f64 = 359.9999;
 
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.

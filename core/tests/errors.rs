@@ -32,14 +32,24 @@ fn range_errors_carry_word_value_and_range() {
     assert!(orientation::orientation(&spatial(359.9999, -359.9999, 0.0), &Context::default()).is_ok());
     assert!(
         orientation::orientation(
-            &PlaneDef::Euler { eulpr: 270.0, eulnu: 180.0, eulrot: 360.0 },
+            &PlaneDef::Euler { eulpr: -180.0, eulnu: 180.0, eulrot: 360.0 },
             &Context::default()
         )
         .is_ok()
     );
+    // Seed S1's tip writes EULPR+270, outside the stated input range −180…+180
+    // (unconfirmed::EULPR_LIMIT): refused with the numbers; EULPR-90 is the same plane.
+    assert_eq!(
+        err(PlaneDef::Euler { eulpr: 270.0, eulnu: 45.0, eulrot: 0.0 }),
+        PlaneError::OutOfRange { word: "EULPR", value: 270.0, min: -180.0, max: 180.0 }
+    );
     let msg = PlaneError::OutOfRange { word: "EULNU", value: -5.0, min: 0.0, max: 180.0 };
-    assert_eq!(msg.message_de(), "Eingabewert außerhalb des Bereichs: EULNU = -5 (erlaubt 0 … 180)");
-    assert_eq!(msg.message_en(), "Input value out of range: EULNU = -5 (allowed 0 … 180)");
+    assert_eq!(msg.message_de(), "Winkel nicht erlaubt: EULNU = -5 (erlaubt 0 … 180)");
+    assert_eq!(msg.message_en(), "Entered angle not permitted: EULNU = -5 (allowed 0 … 180)");
+    let msg = PlaneError::OutOfRange { word: "NX", value: 120.0, min: -99.9999999, max: 99.9999999 };
+    assert_eq!(msg.message_de(), "Eingabewert falsch: NX = 120 (erlaubt -99.9999999 … 99.9999999)");
+    let msg = PlaneError::OutOfRange { word: "PROPR", value: 90.0, min: -89.9999, max: 89.9999 };
+    assert!(msg.message_de().starts_with("Winkel nicht erlaubt"));
 }
 
 #[test]

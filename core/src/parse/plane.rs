@@ -8,35 +8,11 @@ use crate::ast::{Axis, BlockBody};
 use crate::diag::DiagCode;
 use crate::plane::{
     AxialAngle, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, TransformMode,
-    Value,
+    Value, input_range,
 };
 
-/// Input range of a word and whether it is an angle ("Winkel nicht erlaubt") or another value.
-#[derive(Clone, Copy)]
-struct Range {
-    min: f64,
-    max: f64,
-    angle: bool,
-}
-
-// DOMAIN.md §5 (iTNC 530 manual figures).
-const SPATIAL: Range = Range { min: -359.9999, max: 359.9999, angle: true };
-const PROJ: Range = Range { min: -89.9999, max: 89.9999, angle: true };
-const ROT360: Range = Range { min: 0.0, max: 360.0, angle: true };
-const EULPR: Range = Range { min: -180.0, max: 180.0, angle: true };
-const EULNU: Range = Range { min: 0.0, max: 180.0, angle: true };
-// Later iTNC 530 range; the TNC 320/620/640 allow only ±9.9999999 (DOMAIN.md §5).
-const VECTOR: Range = Range { min: -99.9999999, max: 99.9999999, angle: false };
-/// Values read exactly as written; a tolerance keeps `359.9999` itself inside.
-const EPS: f64 = 1e-9;
-
-/// `KEY value` that must be there; checks the range of a written number.
-fn mandatory<'a>(
-    cx: &mut Cx,
-    i: &'a str,
-    key: &'static str,
-    range: Option<Range>,
-) -> Option<(&'a str, Value)> {
+/// `KEY value` that must be there; checks a written number against [`input_range`].
+fn mandatory<'a>(cx: &mut Cx, i: &'a str, key: &'static str) -> Option<(&'a str, Value)> {
     let i = sp(i);
     let Some(after) = i.strip_prefix(key) else {
         let len = i.find([' ', '\t']).unwrap_or(i.len());
@@ -47,8 +23,8 @@ fn mandatory<'a>(
         Ok(ok) => ok,
         Err(e) => return cx.fail(e),
     };
-    if let (Some(r), Value::Number(x)) = (range, v)
-        && (x < r.min - EPS || x > r.max + EPS)
+    if let (Some(r), Value::Number(x)) = (input_range(key), v)
+        && !r.contains(x)
     {
         let (word, value, min, max) = (key, x, r.min, r.max);
         let code = if r.angle {
@@ -61,15 +37,10 @@ fn mandatory<'a>(
     Some((rest, v))
 }
 
-fn triple<'a>(
-    cx: &mut Cx,
-    i: &'a str,
-    keys: [&'static str; 3],
-    r: Option<Range>,
-) -> Option<(&'a str, [Value; 3])> {
-    let (i, a) = mandatory(cx, i, keys[0], r)?;
-    let (i, b) = mandatory(cx, i, keys[1], r)?;
-    let (i, c) = mandatory(cx, i, keys[2], r)?;
+fn triple<'a>(cx: &mut Cx, i: &'a str, keys: [&'static str; 3]) -> Option<(&'a str, [Value; 3])> {
+    let (i, a) = mandatory(cx, i, keys[0])?;
+    let (i, b) = mandatory(cx, i, keys[1])?;
+    let (i, c) = mandatory(cx, i, keys[2])?;
     Some((i, [a, b, c]))
 }
 
@@ -78,23 +49,23 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
     let i = sp(rest);
     const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
     let (i, def) = if let Some(r) = keyword(i, "SPATIAL") {
-        let (r, [spa, spb, spc]) = triple(cx, r, ["SPA", "SPB", "SPC"], Some(SPATIAL))?;
+        let (r, [spa, spb, spc]) = triple(cx, r, ["SPA", "SPB", "SPC"])?;
         (r, PlaneDef::Spatial { spa, spb, spc })
     } else if let Some(r) = keyword(i, "PROJECTED") {
-        let (r, propr) = mandatory(cx, r, "PROPR", Some(PROJ))?;
-        let (r, promin) = mandatory(cx, r, "PROMIN", Some(PROJ))?;
-        let (r, rot) = mandatory(cx, r, "ROT", Some(ROT360))?;
+        let (r, propr) = mandatory(cx, r, "PROPR")?;
+        let (r, promin) = mandatory(cx, r, "PROMIN")?;
+        let (r, rot) = mandatory(cx, r, "ROT")?;
         (r, PlaneDef::Projected { propr, promin, rot })
     } else if let Some(r) = keyword(i, "EULER") {
-        let (r, eulpr) = mandatory(cx, r, "EULPR", Some(EULPR))?;
-        let (r, eulnu) = mandatory(cx, r, "EULNU", Some(EULNU))?;
-        let (r, eulrot) = mandatory(cx, r, "EULROT", Some(ROT360))?;
+        let (r, eulpr) = mandatory(cx, r, "EULPR")?;
+        let (r, eulnu) = mandatory(cx, r, "EULNU")?;
+        let (r, eulrot) = mandatory(cx, r, "EULROT")?;
         (r, PlaneDef::Euler { eulpr, eulnu, eulrot })
     } else if let Some(r) = keyword(i, "VECTOR") {
         let at = sp(r);
-        let (r, base) = triple(cx, r, ["BX", "BY", "BZ"], Some(VECTOR))?;
+        let (r, base) = triple(cx, r, ["BX", "BY", "BZ"])?;
         let at_n = sp(r);
-        let (r, normal) = triple(cx, r, ["NX", "NY", "NZ"], Some(VECTOR))?;
+        let (r, normal) = triple(cx, r, ["NX", "NY", "NZ"])?;
         for (word, v, at) in [("B", base, at), ("N", normal, at_n)] {
             if v.iter().all(|x| matches!(x, Value::Number(n) if *n == 0.0)) {
                 cx.error(at, 2, DiagCode::ZeroVector { word });
@@ -102,14 +73,12 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
         }
         (r, PlaneDef::Vector { base, normal })
     } else if let Some(r) = keyword(i, "POINTS") {
-        // Range UNCONFIRMED (DOMAIN.md §5): not checked.
-        let (r, p1) = triple(cx, r, ["P1X", "P1Y", "P1Z"], None)?;
-        let (r, p2) = triple(cx, r, ["P2X", "P2Y", "P2Z"], None)?;
-        let (r, p3) = triple(cx, r, ["P3X", "P3Y", "P3Z"], None)?;
+        let (r, p1) = triple(cx, r, ["P1X", "P1Y", "P1Z"])?;
+        let (r, p2) = triple(cx, r, ["P2X", "P2Y", "P2Z"])?;
+        let (r, p3) = triple(cx, r, ["P3X", "P3Y", "P3Z"])?;
         (r, PlaneDef::Points { p1, p2, p3 })
     } else if let Some(r) = keyword(i, "RELATIV") {
         let r = sp(r);
-        // Range UNCONFIRMED, assumed like SPATIAL (DOMAIN.md §5).
         let (key, axis) = match r.get(..3) {
             Some("SPA") => ("SPA", RelAxis::Spa),
             Some("SPB") => ("SPB", RelAxis::Spb),
@@ -119,7 +88,7 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
                 return None;
             }
         };
-        let (r, angle) = mandatory(cx, r, key, Some(SPATIAL))?;
+        let (r, angle) = mandatory(cx, r, key)?;
         (r, PlaneDef::Relativ { axis, angle })
     } else if let Some(r) = keyword(i, "AXIAL") {
         axial(cx, r)?

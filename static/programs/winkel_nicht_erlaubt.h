@@ -1,0 +1,12 @@
+0 BEGIN PGM WINKEL MM
+1 ; Maschine ba-table: B-Rundtisch auf A-Schwenktisch, A -100...+180 (Handbuch Schwenkloesungen)
+2 BLK FORM 0.1 Z X+0 Y+0 Z-40
+3 BLK FORM 0.2 X+100 Y+100 Z+0
+4 TOOL CALL 8 Z S4000 F800
+5 L Z+0 R0 FMAX M91 M3 ; Sichere Position in Z
+6 PLANE SPATIAL SPA-45 SPB+0 SPC+0 TURN FMAX SYM+ ; A-45 B+0: erlaubt
+7 PLANE RESET TURN FMAX
+8 PLANE SPATIAL SPA-45 SPB+0 SPC+0 TURN FMAX SYM- ; A-135 liegt hinter dem Endschalter -100
+9 L X+50 Y+50 Z+50 R0 FMAX
+10 M30
+11 END PGM WINKEL MM
