@@ -64,7 +64,7 @@ struct JsonState<'a> {
     line: u32,
     number: Option<u32>,
     block: &'a str,
-    axes: BTreeMap<String, f64>,
+    axes: Axes,
     tool_tip_wcs: [f64; 3],
     plane: Option<JsonPlane>,
     q: BTreeMap<String, f64>,
@@ -85,8 +85,22 @@ struct JsonRun<'a> {
     error: Option<JsonError<'a>>,
 }
 
-fn axes_map(s: &State) -> BTreeMap<String, f64> {
-    s.axes.named().into_iter().map(|(c, v)| (c.to_string(), num(v))).collect()
+/// `{"X": …, "Y": …, "Z": …, "A": …, "C": …}` in the control's display order.
+struct Axes(Vec<(char, f64)>);
+
+impl Serialize for Axes {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = ser.serialize_map(Some(self.0.len()))?;
+        for (c, v) in &self.0 {
+            m.serialize_entry(&c.to_string(), v)?;
+        }
+        m.end()
+    }
+}
+
+fn axes_map(s: &State) -> Axes {
+    Axes(s.axes.named().into_iter().map(|(c, v)| (c, num(v))).collect())
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {

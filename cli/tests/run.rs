@@ -87,3 +87,13 @@ fn run_rejects_an_unknown_machine() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("ac-table"));
 }
+
+#[test]
+fn run_json_lists_axes_in_display_order() {
+    let f = repo("tests/fixtures/sim/swivel_stay.h");
+    let o = run(&["run", &f, "--machine", "ac-table", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let i = |k: &str| text.find(&format!("\"{k}\":")).expect("axis key");
+    assert!(i("X") < i("Y") && i("Y") < i("Z") && i("Z") < i("A") && i("A") < i("C"), "{text}");
+}

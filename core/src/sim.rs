@@ -52,6 +52,7 @@ mod cycles;
 mod error;
 pub mod geometry;
 mod interp;
+mod jumps;
 pub mod segment;
 pub mod tools;
 pub mod transform;

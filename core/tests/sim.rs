@@ -394,3 +394,20 @@ fn state_at_from_checkpoints_equals_the_records() {
     let s = sim.state_at(&p, 6).expect("state");
     assert!(s.axes.rotary.iter().any(|v| v.abs() > 1.0), "{:?}", s.axes);
 }
+
+#[test]
+fn fn_jumps_make_loops_and_an_endless_one_meets_the_default_budget() {
+    let (p, _, sim) = run("tests/fixtures/sim/fn_jump_loop.h", "ac-table");
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    assert_eq!(executions(&p, &sim, 5), 6, "FN 12 jumps back while Q1 < 6");
+    let last = sim.state_at(&p, sim.len() - 1).expect("state");
+    assert_close!(last.tip_ics.x, 30.0, EXACT);
+
+    let (p, _, sim) = run("tests/fixtures/sim/endless_fn9.h", "ac-table");
+    let err = sim.error.as_ref().expect("cut off");
+    let budget = 1_000_000 + 20 * p.blocks.len();
+    assert_eq!(err.code, SimErrorCode::BlockBudget { steps: budget });
+    assert_eq!(err.message.de, "Programmlauf abgebrochen: Satzbudget erschöpft");
+    assert_eq!(sim.len(), budget, "every step before the cut keeps its state");
+    assert!(sim.state_at(&p, budget - 1).is_some());
+}

@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDefOld, Expr, Func, Label, Line, OldCycleData,
-    OldCycleWord, Program, ToolCall, ToolRef,
+    OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::machine::{Carrier, Machine, Texts};
@@ -20,6 +20,7 @@ use crate::unconfirmed;
 use super::cycles::{self, CycleMove};
 use super::error::SimErrorCode;
 use super::geometry::{Affine, Kin};
+use super::jumps;
 use super::segment::{MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
 use super::tools;
 use super::transform::{Level, Transforms};
@@ -490,10 +491,20 @@ impl Interp {
                 }
                 self.q.insert(*target, v);
             }
-            BlockBody::Unknown { text } => {
-                let t = text.clone();
-                note(&mut rec, || (format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}")))
-            }
+            BlockBody::Unknown { text } => match jumps::parse_jump(text) {
+                Some(j) => {
+                    let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
+                    if j.holds(a, b) {
+                        self.pc = self.label_index(cx, &j.label)?;
+                    }
+                }
+                None => {
+                    let t = text.clone();
+                    note(&mut rec, || {
+                        (format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
+                    })
+                }
+            },
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
         }
         Ok(true)
@@ -609,6 +620,14 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
+        if matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
+            note(rec, || {
+                (
+                    "Radiuskorrektur RL/RR nicht simuliert: Werkzeugmittelpunkt auf der Kontur".into(),
+                    "Radius compensation RL/RR not simulated: tool centre on the contour".into(),
+                )
+            });
+        }
         if line.m.contains(&92) {
             note(rec, || ("M92 nicht simuliert".into(), "M92 not simulated".into()));
         }
@@ -675,14 +694,17 @@ impl Interp {
         self.sync_pos();
     }
 
-    fn call_lbl(&mut self, cx: &Cx<'_>, idx: usize, label: &Label, rep: Option<u32>) -> R<()> {
-        let Some(&target) = cx.labels.get(&LabelKey::from(label)) else {
-            let label = match label {
+    fn label_index(&self, cx: &Cx<'_>, label: &Label) -> R<usize> {
+        cx.labels.get(&LabelKey::from(label)).copied().ok_or_else(|| SimErrorCode::UndefinedLabel {
+            label: match label {
                 Label::Number(n) => n.to_string(),
                 Label::Name(s) => format!("\"{s}\""),
-            };
-            return Err(SimErrorCode::UndefinedLabel { label });
-        };
+            },
+        })
+    }
+
+    fn call_lbl(&mut self, cx: &Cx<'_>, idx: usize, label: &Label, rep: Option<u32>) -> R<()> {
+        let target = self.label_index(cx, label)?;
         match rep {
             Some(m) if unconfirmed::REP_IS_SECTION_REPEAT => {
                 if let Some(k) = self.reps.iter().position(|(b, _)| *b == idx) {
