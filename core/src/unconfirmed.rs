@@ -367,3 +367,14 @@ pub fn cycle232_stepover(q370: f64, tool_radius: f64) -> f64 {
 /// Cycle 232 strategies Q389 = 1 (one direction) and 2 (spiral) are simulated as the meander of
 /// Q389 = 0, with a message. **UNCONFIRMED** simplification.
 pub const CYCLE232_STRATEGY: bool = true;
+
+/// A datum shift (TRANS DATUM AXIS, or one cycle 7 definition over its sub-blocks) with an
+/// absolute coordinate replaces the whole shift of its level: axes not written are 0. With only
+/// incremental coordinates the axes not written keep the active shift. **UNCONFIRMED**.
+pub const DATUM_ABSOLUTE_REPLACES: bool = true;
+
+/// Q120–Q122 ("tilting the working plane with mathematical angles: rotary axis coordinates
+/// calculated by the TNC", the preassigned Q parameters of the iTNC 530/TNC 640 manuals) are
+/// written by tilts with spatial angles (every PLANE function except AXIAL and RESET, cycle 19)
+/// and left unchanged by PLANE AXIAL and PLANE RESET. **UNCONFIRMED** for AXIAL and RESET.
+pub const Q120_ONLY_FOR_SPATIAL_TILTS: bool = true;

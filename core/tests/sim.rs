@@ -411,3 +411,20 @@ fn fn_jumps_make_loops_and_an_endless_one_meets_the_default_budget() {
     assert_eq!(sim.len(), budget, "every step before the cut keeps its state");
     assert!(sim.state_at(&p, budget - 1).is_some());
 }
+
+#[test]
+fn old_style_cycles_7_8_10_and_trans_datum() {
+    let (p, _, sim) = run("tests/fixtures/sim/old_cycles_7_8_10.h", "ac-table");
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let tip = |n: u32| after(&p, &sim, n).tip_wcs;
+    assert_close!(tip(6), DVec3::new(25.0, 15.0, 10.0), EXACT, "7.1 X+20 / 7.2 Y+10 are one shift");
+    assert_close!(tip(9), DVec3::new(25.0, 10.0, 10.0), EXACT, "IX+5 adds to the active shift");
+    assert_close!(tip(13), DVec3::new(1.0 - 5.0, 0.0, 10.0), EXACT, "TRANS DATUM X+1 replaces it; mirror X");
+    assert_close!(
+        tip(16),
+        DVec3::new(1.0, 5.0, 10.0),
+        EXACT,
+        "mirror X after ROT+90 about the shifted datum"
+    );
+    assert_close!(tip(21), DVec3::new(5.0, 0.0, 10.0), EXACT, "all reset");
+}

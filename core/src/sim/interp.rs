@@ -90,6 +90,16 @@ pub(crate) struct Interp {
     /// I-CS → linear axes as the control computes it, for the current rotary axes.
     map: Affine,
     m126: bool,
+    /// The cycle 7 definition being read: the shift before its `7.0` header, the words so far.
+    c7: Option<Cycle7>,
+}
+
+/// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Cycle7 {
+    base: DVec3,
+    written: [Option<f64>; 3],
+    any_absolute: bool,
 }
 
 type R<T> = Result<T, SimErrorCode>;
@@ -163,6 +173,7 @@ impl Interp {
             kin,
             map: Affine::IDENTITY,
             m126: false,
+            c7: None,
         };
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
@@ -386,6 +397,9 @@ impl Interp {
         if block.skip && cx.options.block_skip {
             note(&mut rec, || ("Satz ausgeblendet (/)".into(), "Block skipped (/)".into()));
             return Ok(false);
+        }
+        if !matches!(&block.body, BlockBody::CycleDefOld(d) if d.number == 7) {
+            self.c7 = None;
         }
         match &block.body {
             BlockBody::BeginPgm { .. } | BlockBody::Empty | BlockBody::Structure { .. } => {}
@@ -661,23 +675,30 @@ impl Interp {
         Ok(())
     }
 
+    /// The new datum shift from the written components ([`unconfirmed::DATUM_ABSOLUTE_REPLACES`]):
+    /// with an absolute word the axes not written are 0, with only incremental words they keep
+    /// the base.
+    fn datum_of(base: DVec3, written: [Option<f64>; 3], any_absolute: bool) -> DVec3 {
+        let keep = !(any_absolute && unconfirmed::DATUM_ABSOLUTE_REPLACES);
+        DVec3::from_array(std::array::from_fn(|i| written[i].unwrap_or(if keep { base[i] } else { 0.0 })))
+    }
+
     fn datum(&mut self, axes: &[AxisWord]) -> R<()> {
         let level = self.tf.level_now();
-        let cur = match level {
+        let base = match level {
             Level::Wcs => self.tf.datum_w,
             Level::Wpl => self.tf.datum_i,
         };
-        let mut d = DVec3::ZERO;
-        let any_abs = axes.iter().any(|w| !w.incremental);
-        if !any_abs {
-            d = cur;
-        }
+        let mut written = [None; 3];
+        let mut any_absolute = false;
         for w in axes {
             if let Some(i) = linear_index(w.axis) {
                 let v = self.value(&w.value)?;
-                d[i] = if w.incremental { cur[i] + v } else { v };
+                written[i] = Some(if w.incremental { base[i] + v } else { v });
+                any_absolute |= !w.incremental;
             }
         }
+        let d = Self::datum_of(base, written, any_absolute);
         match level {
             Level::Wcs => self.tf.datum_w = d,
             Level::Wpl => self.tf.datum_i = d,
@@ -798,7 +819,11 @@ impl Interp {
         };
         let expl = Arc::new(Self::solved(expl)?);
         let target = expl.chosen_axes().map(|a| self.target_rotary(&a)).unwrap_or(self.axes.rotary);
-        self.set_q_from(&expl);
+        if unconfirmed::Q120_ONLY_FOR_SPATIAL_TILTS
+            && !matches!(pb.def, PlaneDef::Reset | PlaneDef::Axial { .. })
+        {
+            self.set_q_from(&expl);
+        }
         self.tf.tilt = tilt;
         self.plane = tilt.map(|r| {
             Arc::new(ActivePlane {
@@ -900,27 +925,35 @@ impl Interp {
             _ => &[],
         };
         match (d.number, d.sub) {
-            (7, 0) => {}
-            (7, _) => {
-                let axes: Vec<AxisWord> = words
-                    .iter()
-                    .filter_map(|w| if let OldCycleWord::Axis(a) = w { Some(*a) } else { None })
-                    .collect();
-                // Cycle 7: each sub-block sets its axes; the others keep the cycle's values.
-                let level = self.tf.level_now();
-                let mut cur = match level {
+            (7, 0) => {
+                let base = match self.tf.level_now() {
                     Level::Wcs => self.tf.datum_w,
                     Level::Wpl => self.tf.datum_i,
                 };
-                for w in &axes {
-                    if let Some(i) = linear_index(w.axis) {
-                        let v = self.value(&w.value)?;
-                        cur[i] = if w.incremental { cur[i] + v } else { v };
+                self.c7 = Some(Cycle7 { base, written: [None; 3], any_absolute: false });
+            }
+            (7, _) => {
+                let level = self.tf.level_now();
+                let cur = match level {
+                    Level::Wcs => self.tf.datum_w,
+                    Level::Wpl => self.tf.datum_i,
+                };
+                // A sub-block without its header continues from the active shift.
+                let mut c7 = self.c7.unwrap_or(Cycle7 { base: cur, written: [None; 3], any_absolute: false });
+                for w in words {
+                    if let OldCycleWord::Axis(a) = w
+                        && let Some(i) = linear_index(a.axis)
+                    {
+                        let v = self.value(&a.value)?;
+                        c7.written[i] = Some(if a.incremental { c7.base[i] + v } else { v });
+                        c7.any_absolute |= !a.incremental;
                     }
                 }
+                self.c7 = Some(c7);
+                let d = Self::datum_of(c7.base, c7.written, c7.any_absolute);
                 match level {
-                    Level::Wcs => self.tf.datum_w = cur,
-                    Level::Wpl => self.tf.datum_i = cur,
+                    Level::Wcs => self.tf.datum_w = d,
+                    Level::Wpl => self.tf.datum_i = d,
                 }
                 self.sync_pos();
             }
