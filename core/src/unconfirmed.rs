@@ -50,11 +50,43 @@ pub enum Decision {
     /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`]; RELATIV uses
     /// the spatial range.
     InputRanges,
+    /// Simulator: [`SIM_MESSAGES_UNCONFIRMED`].
+    SimMessages,
+    /// Simulator: [`TRANSFORM_LEVELS`].
+    TransformLevels,
+    /// Simulator: [`COMPENSATION_ONLY_WHEN_TILTED`].
+    CompensationOnlyWhenTilted,
+    /// Simulator: [`MOVE_DEFAULT_DIST`].
+    MoveDefaultDist,
+    /// Simulator: [`MB_RETRACT_AT_RAPID`].
+    MbRetractRapid,
+    /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
+    RotaryFeed,
+    /// Simulator: [`CYCLE19_INPUT_SPATIAL`].
+    Cycle19Spatial,
+    /// Simulator: [`CYCLE19_MOVES_AXES`].
+    Cycle19NoMotion,
+    /// Simulator: [`MAX_CALL_DEPTH`].
+    CallDepth,
+    /// Simulator: [`REP_IS_SECTION_REPEAT`].
+    RepSectionRepeat,
+    /// Simulator: [`LIST_BLOCKS_AFTER_END`].
+    ListAfterEnd,
+    /// Simulator: [`CYCLE_POSITIVE_DEPTH_IS_ERROR`].
+    PositiveDepthError,
+    /// Simulator: [`cycle232_stepover`].
+    Cycle232Stepover,
+    /// Simulator: [`CYCLE232_STRATEGY`].
+    Cycle232Strategy,
+    /// Simulator: [`DATUM_ABSOLUTE_REPLACES`].
+    DatumAbsoluteReplaces,
+    /// Simulator: [`Q120_ONLY_FOR_SPATIAL_TILTS`].
+    Q120OnlySpatial,
 }
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 17] = [
+    pub const ALL: [Decision; 33] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -72,6 +104,22 @@ impl Decision {
         Decision::ResetTarget,
         Decision::UnreachableMessage,
         Decision::InputRanges,
+        Decision::SimMessages,
+        Decision::TransformLevels,
+        Decision::CompensationOnlyWhenTilted,
+        Decision::MoveDefaultDist,
+        Decision::MbRetractRapid,
+        Decision::RotaryFeed,
+        Decision::Cycle19Spatial,
+        Decision::Cycle19NoMotion,
+        Decision::CallDepth,
+        Decision::RepSectionRepeat,
+        Decision::ListAfterEnd,
+        Decision::PositiveDepthError,
+        Decision::Cycle232Stepover,
+        Decision::Cycle232Strategy,
+        Decision::DatumAbsoluteReplaces,
+        Decision::Q120OnlySpatial,
     ];
 
     /// `(German, English)` text for the trainee.
@@ -145,6 +193,69 @@ impl Decision {
             Decision::InputRanges => (
                 "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999.",
                 "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999.",
+            ),
+            Decision::SimMessages => (
+                "Meldungstexte des Simulators außer „Winkel nicht erlaubt“ (z. B. „Q-Parameter nicht definiert“, „Endschalter X+“) sind im Stil der Steuerung formuliert, nicht belegt.",
+                "The simulator's messages other than \"Entered angle not permitted\" (e.g. \"Q parameter not defined\", \"Limit switch X+\") are worded in the control's style, not confirmed.",
+            ),
+            Decision::TransformLevels => (
+                "Nullpunkt und Spiegelung vor dem Schwenken wirken im W-CS, danach im WPL-CS; Drehung immer im WPL-CS; Reihenfolge Verschiebung, Spiegelung, Drehung; RESET löscht beide Ebenen.",
+                "Datum shift and mirror before the tilt act in the W-CS, after it in the WPL-CS; rotation always in the WPL-CS; order shift, mirror, rotation; RESET clears both levels.",
+            ),
+            Decision::CompensationOnlyWhenTilted => (
+                "Ohne aktive Schwenkung ignoriert die Steuerung die Stellung der Drehachsen (3-Achs-Verhalten), auch nach PLANE RESET STAY.",
+                "Without an active tilt the control ignores the rotary axis positions (3-axis behaviour), also after PLANE RESET STAY.",
+            ),
+            Decision::MoveDefaultDist => (
+                "MOVE ohne DIST: Drehpunkt = Werkzeugspitze (DIST 0), die Spitze bleibt auf dem Werkstück stehen.",
+                "MOVE without DIST: centre of rotation = tool tip (DIST 0), the tip stays on the workpiece.",
+            ),
+            Decision::MbRetractRapid => (
+                "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken.",
+                "MB/MB MAX: retract at rapid traverse before the swivel.",
+            ),
+            Decision::RotaryFeed => (
+                "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",
+                "Feed F of swivels and rotary moves in °/min; F AUTO = feed of the TOOL CALL (animation duration only).",
+            ),
+            Decision::Cycle19Spatial => (
+                "Zyklus 19: Eingaben als Raumwinkel (OEM-Parameter planeOrientation).",
+                "Cycle 19: inputs are spatial angles (OEM parameter planeOrientation).",
+            ),
+            Decision::Cycle19NoMotion => (
+                "Zyklus 19 fährt die Drehachsen nicht selbst; das Programm positioniert sie (L A+Q120 …). Alle Winkel 0 setzt zurück.",
+                "Cycle 19 does not move the rotary axes itself; the program positions them (L A+Q120 …). All angles 0 resets.",
+            ),
+            Decision::CallDepth => {
+                ("Unterprogramme höchstens 19-fach verschachtelt.", "Subprograms nested at most 19 deep.")
+            }
+            Decision::RepSectionRepeat => (
+                "CALL LBL n REP m wiederholt den Abschnitt ab LBL n m-mal (m+1 Durchläufe); ohne REP Unterprogramm bis LBL 0.",
+                "CALL LBL n REP m repeats the section from LBL n m times (m+1 passes); without REP a subprogram up to LBL 0.",
+            ),
+            Decision::ListAfterEnd => (
+                "Sätze nach M30/M2 werden als „nicht ausgeführt“ aufgelistet.",
+                "Blocks after M30/M2 are listed as \"not executed\".",
+            ),
+            Decision::PositiveDepthError => (
+                "Zyklus 200 mit positiver Tiefe Q201: Fehlermeldung (Maschinenparameter displayDepthErr).",
+                "Cycle 200 with a positive depth Q201: error message (machine parameter displayDepthErr).",
+            ),
+            Decision::Cycle232Stepover => (
+                "Zyklus 232: maximale seitliche Zustellung = Q370 × Werkzeugradius.",
+                "Cycle 232: maximum stepover = Q370 × tool radius.",
+            ),
+            Decision::Cycle232Strategy => (
+                "Zyklus 232: Strategien Q389=1 und 2 werden als Mäander simuliert.",
+                "Cycle 232: strategies Q389=1 and 2 are simulated as a meander.",
+            ),
+            Decision::DatumAbsoluteReplaces => (
+                "Nullpunktverschiebung mit absoluten Werten ersetzt die ganze Verschiebung (nicht programmierte Achsen 0); nur inkrementale Werte addieren.",
+                "A datum shift with absolute values replaces the whole shift (axes not written 0); only incremental values add.",
+            ),
+            Decision::Q120OnlySpatial => (
+                "Q120–Q122 werden von Schwenkungen mit Raumwinkeln geschrieben, nicht von PLANE AXIAL und PLANE RESET.",
+                "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
             ),
         }
     }
