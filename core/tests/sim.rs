@@ -428,3 +428,31 @@ fn old_style_cycles_7_8_10_and_trans_datum() {
     );
     assert_close!(tip(21), DVec3::new(5.0, 0.0, 10.0), EXACT, "all reset");
 }
+
+#[test]
+fn plane_axial_ignores_a_preceding_mirror_and_leaves_q120_alone() {
+    let (p, m, sim) = run("tests/fixtures/sim/axial_mirror.h", "ac-table");
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let s4 = after(&p, &sim, 4);
+    assert_close!(s4.axes.rotary_values().a.expect("A"), 30.0, EXACT);
+    assert_close!(s4.axes.rotary_values().c.expect("C"), 0.0, EXACT, "C not written: stays");
+    let fwd = m.forward(&AxisValues::default().with(RotaryAxis::A, 30.0).with(RotaryAxis::C, 0.0));
+    assert_close!(s4.plane.as_ref().expect("tilted").orientation, fwd, EXACT);
+    assert!(!s4.q.contains_key(&120), "axis angles do not write Q120");
+    let s7 = after(&p, &sim, 7);
+    assert_close!(s7.axes.rotary, [90.0, 30.0], EXACT, "[C, A] in chain order");
+}
+
+#[test]
+fn axes_outside_their_limit_switches_stop_the_run() {
+    let (p, _, sim) = run("tests/fixtures/sim/rotary_limit.h", "ca-head");
+    let err = sim.error.as_ref().expect("A+200 beyond +110");
+    assert_eq!(p.blocks[err.block].number, Some(3));
+    assert_eq!(err.code, SimErrorCode::RotaryLimit { axis: 'A', value: 200.0, min: -110.0, max: 110.0 });
+    assert_eq!(err.message.de, "Endschalter A+");
+    let (p, _, sim) = run("tests/fixtures/sim/linear_limit.h", "ac-table");
+    let err = sim.error.as_ref().expect("X+2000 beyond +700");
+    assert_eq!(p.blocks[err.block].number, Some(3));
+    assert_eq!(err.message.en, "Limit switch X+");
+    assert_eq!(sim.len(), 3);
+}
