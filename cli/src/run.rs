@@ -1,11 +1,12 @@
 //! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en]`: one row per executed block.
 
 use std::collections::BTreeMap;
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use schwenkbar_core::machine::{Machine, Texts};
-use schwenkbar_core::sim::{SimOptions, State, simulate};
+use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{Program, parse};
 use serde::Serialize;
 
@@ -78,13 +79,6 @@ struct JsonError<'a> {
     detail: &'a str,
 }
 
-#[derive(Serialize)]
-struct JsonRun<'a> {
-    machine: &'a str,
-    states: Vec<JsonState<'a>>,
-    error: Option<JsonError<'a>>,
-}
-
 /// `{"X": …, "Y": …, "Z": …, "A": …, "C": …}` in the control's display order.
 struct Axes(Vec<(char, f64)>);
 
@@ -123,74 +117,102 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     let sim = simulate(&program, &machine, &opts);
     let lang = args.lang;
 
-    if args.json {
-        let states: Vec<State> = sim.states(&program).collect();
-        let rows = states
-            .iter()
-            .map(|s| JsonState {
-                line: s.line,
-                number: program.blocks.get(s.block).and_then(|b| b.number),
-                block: block_text(&src, &program, s.block),
-                axes: axes_map(s),
-                tool_tip_wcs: s.tip_wcs.to_array().map(num),
-                plane: s
-                    .plane
-                    .as_ref()
-                    .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
-                q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
-                message: s.message.as_ref().map(|m| pick(m, lang)),
-            })
-            .collect();
-        let report = JsonRun {
-            machine: &machine.id,
-            states: rows,
-            error: sim.error.as_ref().map(|e| JsonError {
-                line: e.line,
-                message: pick(&e.message, lang),
-                detail: pick(&e.detail, lang),
-            }),
-        };
-        match serde_json::to_string(&report) {
-            Ok(s) => println!("{s}"),
-            Err(e) => {
-                eprintln!("error: {e}");
-                return ExitCode::from(2);
-            }
-        }
+    let out = std::io::stdout();
+    let mut out = std::io::BufWriter::new(out.lock());
+    let written = if args.json {
+        write_json(&mut out, &src, &program, &machine, &sim, lang)
     } else {
-        let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
-        let mut head = format!("{:>5}  {:<44}", "line", "block");
-        for (c, _) in &letters {
-            head.push_str(&format!(" {c:>10}"));
-        }
-        head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
-        println!("{head}");
-        for s in sim.states(&program) {
-            let text: String = block_text(&src, &program, s.block).chars().take(44).collect();
-            let mut row = format!("{:>5}  {text:<44}", s.line);
-            for (_, v) in s.axes.named() {
-                row.push_str(&format!(" {:>10.4}", num(v)));
-            }
-            let plane = s.plane.as_ref().map_or_else(
-                || "-".to_string(),
-                |p| format!("{:+.4} {:+.4} {:+.4}", num(p.spatial[0]), num(p.spatial[1]), num(p.spatial[2])),
-            );
-            row.push_str(&format!("  {plane:<26}"));
-            if let Some(m) = &s.message {
-                row.push_str("  ");
-                row.push_str(pick(m, lang));
-            }
-            println!("{}", row.trim_end());
-        }
-        if let Some(e) = &sim.error {
-            println!(
-                "{}:{}: {}: {}",
-                args.file.display(),
-                e.line,
-                pick(&e.message, lang),
-                pick(&e.detail, lang)
-            );
-        }
+        write_table(&mut out, &src, &program, &sim, lang, &args.file)
+    };
+    if let Err(e) = written.and_then(|()| out.flush()) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
     }
     if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
+
+fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: LangArg) -> JsonState<'a> {
+    JsonState {
+        line: s.line,
+        number: program.blocks.get(s.block).and_then(|b| b.number),
+        block: block_text(src, program, s.block),
+        axes: axes_map(s),
+        tool_tip_wcs: s.tip_wcs.to_array().map(num),
+        plane: s
+            .plane
+            .as_ref()
+            .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
+        q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
+        message: s.message.as_ref().map(|m| pick(m, lang)),
+    }
+}
+
+/// The JSON report, streamed state by state (a million-block run never sits in memory twice).
+fn write_json(
+    out: &mut impl Write,
+    src: &str,
+    program: &Program,
+    machine: &Machine,
+    sim: &Simulation,
+    lang: LangArg,
+) -> std::io::Result<()> {
+    write!(out, "{{\"machine\":{},\"states\":[", serde_json::to_string(&machine.id)?)?;
+    for (i, s) in sim.states(program).enumerate() {
+        if i > 0 {
+            out.write_all(b",")?;
+        }
+        serde_json::to_writer(&mut *out, &json_state(src, program, &s, lang))?;
+    }
+    let error = sim.error.as_ref().map(|e| JsonError {
+        line: e.line,
+        message: pick(&e.message, lang),
+        detail: pick(&e.detail, lang),
+    });
+    writeln!(out, "],\"error\":{}}}", serde_json::to_string(&error)?)
+}
+
+/// One row per executed block.
+fn write_table(
+    out: &mut impl Write,
+    src: &str,
+    program: &Program,
+    sim: &Simulation,
+    lang: LangArg,
+    file: &std::path::Path,
+) -> std::io::Result<()> {
+    let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
+    let mut head = format!("{:>5}  {:<44}", "line", "block");
+    for (c, _) in &letters {
+        head.push_str(&format!(" {c:>10}"));
+    }
+    head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
+    writeln!(out, "{head}")?;
+    for s in sim.states(program) {
+        let text: String = block_text(src, program, s.block).chars().take(44).collect();
+        let mut row = format!("{:>5}  {text:<44}", s.line);
+        for (_, v) in s.axes.named() {
+            row.push_str(&format!(" {:>10.4}", num(v)));
+        }
+        let plane = s.plane.as_ref().map_or_else(
+            || "-".to_string(),
+            |p| format!("{:+.4} {:+.4} {:+.4}", num(p.spatial[0]), num(p.spatial[1]), num(p.spatial[2])),
+        );
+        row.push_str(&format!("  {plane:<26}"));
+        if let Some(m) = &s.message {
+            row.push_str("  ");
+            row.push_str(pick(m, lang));
+        }
+        writeln!(out, "{}", row.trim_end())?;
+    }
+    if let Some(e) = &sim.error {
+        writeln!(
+            out,
+            "{}:{}: {}: {}",
+            file.display(),
+            e.line,
+            pick(&e.message, lang),
+            pick(&e.detail, lang)
+        )?;
+    }
+    Ok(())
 }

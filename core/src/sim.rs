@@ -224,6 +224,14 @@ pub struct State {
     pub executed: bool,
 }
 
+impl State {
+    /// How long the block's motion takes, seconds (sum of its segments).
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        self.segments.iter().map(|s| s.duration).sum()
+    }
+}
+
 /// Key of the label table.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub(crate) enum LabelKey {

@@ -136,14 +136,14 @@ fn letter(axis: Axis) -> char {
 impl Interp {
     pub fn new(machine: &Machine) -> Interp {
         let j = machine.joints();
-        let (entry, known) = tools::lookup(&ToolRef::Number(0));
+        let (entry, _) = tools::lookup(&ToolRef::Number(0));
         let tool = ToolState {
             number: 0,
             name: String::new(),
             axis: 'Z',
             length: entry.length,
             radius: entry.radius,
-            known: known && entry.number == 0,
+            known: false,
             feed: 0.0,
         };
         let kin = Kin::new(machine, tool.length);
