@@ -18,6 +18,7 @@ pub mod plane;
 pub mod sample;
 pub mod sim;
 pub mod solve;
+pub mod text;
 pub mod unconfirmed;
 
 pub use ast::{Block, BlockBody, Program};

@@ -1,4 +1,8 @@
-//! Shared helpers for the cross-crate tests: where the fixture programs live.
+//! Shared helpers for the cross-crate tests: where the fixture programs live, and (in the
+//! browser) mounting the app and pressing its keys.
+
+#[cfg(target_arch = "wasm32")]
+pub mod browser;
 
 use std::path::PathBuf;
 

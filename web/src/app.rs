@@ -1,32 +1,126 @@
-//! The root component: one reducer, the TNC screen layout.
+//! The root component: one reducer, the TNC screen layout, the keyboard.
 
+use std::rc::Rc;
+
+use wasm_bindgen::JsCast;
+use web_sys::HtmlElement;
 use yew::prelude::*;
 
-use crate::components::dialog_line::DialogLine;
+use crate::browser;
+use crate::components::dialog_area::DialogArea;
 use crate::components::header::Header;
 use crate::components::program_pane::ProgramPane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::view3d::View3d;
+use crate::components::why_panel::WhyPanel;
+use crate::i18n::Text;
+use crate::keymap::{self, KeyPress};
+use crate::persist;
 use crate::softkeys;
 use crate::state::{Action, AppState};
 
 #[function_component(App)]
 pub fn app() -> Html {
-    let state = use_reducer(AppState::default);
+    let state = use_reducer(|| {
+        let (saved, program) = browser::load_saved();
+        AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
+    });
+    // Keep the trainee's work: the program when its text changed, the small state when the
+    // cursor, machine, language or projector mode changed.
+    {
+        let state = state.clone();
+        use_effect_with(Rc::as_ptr(&state.doc) as usize, move |_| {
+            if let Err(message) = browser::save_program(&state.doc.text) {
+                state.dispatch(Action::Notice(message));
+            }
+        });
+    }
+    {
+        let deps = (state.cursor, state.machine.as_ref().map(|m| m.id.clone()), state.lang, state.projector);
+        let state = state.clone();
+        use_effect_with(deps, move |_| {
+            if let Err(message) = browser::save_state(&persist::to_json(&state.saved())) {
+                state.dispatch(Action::Notice(message));
+            }
+        });
+    }
     let on_action = {
         let state = state.clone();
-        Callback::from(move |a: Action| state.dispatch(a))
+        Callback::from(move |a: Action| match a {
+            Action::Download => {
+                let bytes = schwenkbar_core::text::encode_latin1(&state.doc.text);
+                if let Err(message) = browser::download(&state.file_name(), &bytes) {
+                    state.dispatch(Action::Notice(message));
+                }
+            }
+            Action::Share => {
+                let notice = match browser::set_fragment(&state.share_fragment()) {
+                    Ok(()) => Text::new(
+                        "Link steht in der Adresszeile: kopieren und weitergeben",
+                        "The link is in the address bar: copy and pass it on",
+                    ),
+                    Err(message) => message,
+                };
+                state.dispatch(Action::Notice(notice));
+            }
+            other => state.dispatch(other),
+        })
     };
+    let on_import = {
+        let state = state.clone();
+        Callback::from(move |file: web_sys::File| {
+            let state = state.clone();
+            yew::platform::spawn_local(async move {
+                match browser::read_file(file).await {
+                    Ok(bytes) => state.dispatch(Action::Import(schwenkbar_core::text::decode(bytes))),
+                    Err(message) => state.dispatch(Action::Notice(message)),
+                }
+            });
+        })
+    };
+    let onkeydown = {
+        let state = state.clone();
+        Callback::from(move |e: KeyboardEvent| {
+            // Typing in the program text belongs to the text area, except the function keys.
+            let in_text = e
+                .target()
+                .and_then(|t| t.dyn_into::<HtmlElement>().ok())
+                .is_some_and(|el| matches!(el.tag_name().as_str(), "TEXTAREA" | "INPUT"));
+            let key = e.key();
+            if in_text && !key.starts_with('F') {
+                return;
+            }
+            let press = KeyPress {
+                key: &key,
+                shift: e.shift_key(),
+                ctrl_or_alt: e.ctrl_key() || e.alt_key() || e.meta_key(),
+            };
+            if let Some(action) = keymap::action(&state, &press) {
+                e.prevent_default();
+                state.dispatch(action);
+            }
+        })
+    };
+    let on_select = on_action.reform(Action::CursorTo);
+    let on_text = on_action.reform(Action::SetText);
     let l = state.lang;
+    let machine_name = state.machine.as_ref().map_or_else(
+        || l.t("keine Maschine", "no machine").to_owned(),
+        |m| l.t(&m.name.de, &m.name.en).to_owned(),
+    );
+    let dialog = state.dialog.as_ref().map(|(d, _)| d.clone());
+    let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
-        <div class="tnc" lang={l.code()}>
-            <Header lang={l} />
+        <div {class} lang={l.code()} tabindex="0" {onkeydown}>
+            <Header lang={l} machine={machine_name} />
             <main class="panes">
-                <ProgramPane program={state.program.clone()} title={l.t("NC-Programm", "NC program")} />
+                <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
+                    text_editing={state.text_editing} {on_select} {on_text} />
                 <View3d lang={l} />
+                <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()} lang={l} />
             </main>
-            <DialogLine text={state.dialog_text()} />
-            <SoftkeyRow row={softkeys::row(state.level)} lang={l} {on_action} />
+            <DialogArea {dialog} text={state.dialog_text()} lang={l} on_action={on_action.clone()} />
+            <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
         </div>
     }
 }

@@ -1,39 +1,23 @@
-//! UI language. German is the default (the trainees are mostly German-speaking machinists);
-//! every text exists in German and English, German first.
+//! UI language: the core's [`Lang`] (German first), and [`Text`], a German/English pair for
+//! every string the UI shows.
 
-use serde::{Deserialize, Serialize};
+pub use schwenkbar_core::Lang;
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-pub enum Lang {
-    #[default]
-    De,
-    En,
+/// A text in German and English.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Text {
+    pub de: &'static str,
+    pub en: &'static str,
 }
 
-impl Lang {
-    /// Picks the text for this language.
+impl Text {
     #[must_use]
-    pub fn t(self, de: &'static str, en: &'static str) -> &'static str {
-        match self {
-            Lang::De => de,
-            Lang::En => en,
-        }
+    pub const fn new(de: &'static str, en: &'static str) -> Text {
+        Text { de, en }
     }
 
     #[must_use]
-    pub fn other(self) -> Lang {
-        match self {
-            Lang::De => Lang::En,
-            Lang::En => Lang::De,
-        }
-    }
-
-    /// The `lang` attribute value.
-    #[must_use]
-    pub fn code(self) -> &'static str {
-        match self {
-            Lang::De => "de",
-            Lang::En => "en",
-        }
+    pub fn get(self, lang: Lang) -> &'static str {
+        lang.t(self.de, self.en)
     }
 }

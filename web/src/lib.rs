@@ -2,10 +2,19 @@
 //! State lives in one reducer ([`state::AppState`]); components only render.
 
 pub mod app;
+pub mod browser;
 pub mod components;
+pub mod dialog;
+pub mod document;
 pub mod i18n;
+pub mod keymap;
+pub mod persist;
+pub mod preview;
+pub mod samples;
 pub mod softkeys;
 pub mod state;
+pub mod syntax;
+pub mod why;
 
 pub use app::App;
 

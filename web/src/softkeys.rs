@@ -1,51 +1,146 @@
-//! The eight softkeys of each level, as data (tested natively). A slot without an action is a
-//! blank softkey, as the control shows where a level has fewer than eight functions.
+//! The eight softkeys for the current state, as data (tested natively). A slot without a key is
+//! a blank softkey, as the control shows where a level has fewer than eight functions.
 
-use crate::state::{Action, SoftkeyLevel};
+use schwenkbar_core::machine::Machine;
+
+use crate::dialog::{Function, Key};
+use crate::i18n::{Lang, Text};
+use crate::samples::SAMPLES;
+use crate::state::{Action, AppState, SoftkeyLevel};
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Softkey {
-    /// Stable id for tests and keyboard shortcuts.
-    pub id: &'static str,
-    /// Label as on the control; `\n` breaks lines on the key like the control's multi-line labels.
-    pub de: &'static str,
-    pub en: &'static str,
+    /// Stable id for tests.
+    pub id: String,
+    /// Label as on the control; `\n` breaks lines like the control's multi-line labels.
+    pub label: String,
     pub action: Action,
+    /// Shown pressed (the chosen SEQ/SYM, the selected machine, projector on).
+    pub active: bool,
 }
 
 /// Exactly eight slots, left to right.
 pub type Row = [Option<Softkey>; 8];
 
-const fn key(id: &'static str, de: &'static str, en: &'static str, action: Action) -> Option<Softkey> {
-    Some(Softkey { id, de, en, action })
+fn key(id: &str, label: &str, action: Action) -> Option<Softkey> {
+    Some(Softkey { id: id.to_owned(), label: label.to_owned(), action, active: false })
 }
 
-/// The row the control shows at `level`.
+fn text_key(id: &str, text: Text, lang: Lang, action: Action) -> Option<Softkey> {
+    key(id, text.get(lang), action)
+}
+
+fn back(lang: Lang) -> Option<Softkey> {
+    text_key("back", Text::new("ENDE", "END"), lang, Action::Back)
+}
+
+/// The label of a PLANE function softkey (DOMAIN.md §7; labels other than SPATIAL/RESET
+/// UNCONFIRMED).
 #[must_use]
-pub fn row(level: SoftkeyLevel) -> Row {
-    match level {
+pub fn function_label(f: Function) -> &'static str {
+    match f {
+        Function::Spatial => "SPATIAL",
+        Function::Projected => "PROJECTED",
+        Function::Euler => "EULER",
+        Function::Vector => "VECTOR",
+        Function::Points => "POINTS",
+        Function::Relativ => "REL. SPA.",
+        Function::Axial => "AXIAL",
+        Function::Reset => "RESET",
+    }
+}
+
+/// The row the control shows in `state`.
+#[must_use]
+pub fn row(state: &AppState) -> Row {
+    let l = state.lang;
+    if let Some((dialog, _)) = &state.dialog {
+        let mut row: Row = Default::default();
+        for (slot, (k, label)) in row.iter_mut().zip(dialog.softkeys()) {
+            let active = matches!((&k, dialog.selection), (Key::Selection(s), Some(sel)) if *s == sel);
+            let id = format!("dlg-{}", label.to_ascii_lowercase().replace([' ', '.'], "-"));
+            *slot =
+                Some(Softkey { id, label: label.replace(' ', "\n"), action: Action::DialogKey(k), active });
+        }
+        return row;
+    }
+    match state.level {
         SoftkeyLevel::Main => [
-            key("spec-fct", "SPEC\nFCT", "SPEC\nFCT", Action::SpecFct),
+            key("spec-fct", "SPEC\nFCT", Action::SpecFct),
+            text_key("machines", Text::new("MASCHINE\nWÄHLEN", "SELECT\nMACHINE"), l, Action::ShowMachines),
+            text_key("samples", Text::new("BEISPIEL\nÖFFNEN", "OPEN\nSAMPLE"), l, Action::ShowSamples),
+            Some(Softkey {
+                id: "text-edit".to_owned(),
+                label: Text::new("TEXT\nEDITIEREN", "EDIT\nAS TEXT").get(l).to_owned(),
+                action: Action::ToggleTextEditing,
+                active: state.text_editing,
+            }),
+            text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
             None,
-            None,
-            None,
-            None,
-            None,
-            None,
-            key("lang", "SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH", Action::ToggleLang),
+            Some(Softkey {
+                id: "projector".to_owned(),
+                label: Text::new("PROJEKTOR", "PROJECTOR").get(l).to_owned(),
+                action: Action::ToggleProjector,
+                active: state.projector,
+            }),
+            text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
         ],
         SoftkeyLevel::SpecFct => [
             None,
             None,
-            key("tilt-plane", "BEARB.-\nEBENE\nSCHWENKEN", "TILT\nMACHINING\nPLANE", Action::TiltPlane),
+            text_key(
+                "tilt-plane",
+                Text::new("BEARB.-\nEBENE\nSCHWENKEN", "TILT\nMACHINING\nPLANE"),
+                l,
+                Action::TiltPlane,
+            ),
             None,
             None,
             None,
             None,
-            key("back", "ENDE", "END", Action::Back),
+            back(l),
         ],
-        SoftkeyLevel::TiltPlane => {
-            [None, None, None, None, None, None, None, key("back", "ENDE", "END", Action::Back)]
+        SoftkeyLevel::TiltPlane => Function::ALL.map(|f| {
+            let label = function_label(f);
+            key(
+                &format!("fn-{}", label.to_ascii_lowercase().replace([' ', '.'], "")),
+                label,
+                Action::Function(f),
+            )
+        }),
+        SoftkeyLevel::Machines => {
+            let mut row: Row = Default::default();
+            for (slot, id) in row.iter_mut().zip(Machine::builtin_ids()) {
+                let active = state.machine.as_ref().is_some_and(|m| m.id == id);
+                let label = id.to_ascii_uppercase().replace('-', "\n");
+                *slot = Some(Softkey {
+                    id: format!("machine-{id}"),
+                    label,
+                    action: Action::SelectMachine(id.to_owned()),
+                    active,
+                });
+            }
+            row[7] = back(l);
+            row
+        }
+        SoftkeyLevel::Files => [
+            // Rendered as a file picker by the softkey row (a browser needs the user's click).
+            text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::ShowFiles),
+            text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
+            text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
+            None,
+            None,
+            None,
+            None,
+            back(l),
+        ],
+        SoftkeyLevel::Samples => {
+            let mut row: Row = Default::default();
+            for (slot, s) in row.iter_mut().zip(SAMPLES) {
+                *slot = key(&format!("sample-{}", s.id), s.title.get(l), Action::LoadSample(s.id.to_owned()));
+            }
+            row[7] = back(l);
+            row
         }
     }
 }
@@ -54,11 +149,38 @@ pub fn row(level: SoftkeyLevel) -> Row {
 mod tests {
     use super::*;
 
+    fn ids(state: &AppState) -> Vec<String> {
+        row(state).iter().flatten().map(|k| k.id.clone()).collect()
+    }
+
     #[test]
     fn every_level_has_a_way_out_and_spec_fct_is_on_the_main_row() {
-        assert!(row(SoftkeyLevel::Main).iter().flatten().any(|k| k.id == "spec-fct"));
-        for level in [SoftkeyLevel::SpecFct, SoftkeyLevel::TiltPlane] {
-            assert!(row(level).iter().flatten().any(|k| k.action == Action::Back), "{level:?}");
-        }
+        let s = AppState::default();
+        assert!(ids(&s).contains(&"spec-fct".to_owned()));
+        let s = s.apply(Action::SpecFct);
+        assert!(ids(&s).contains(&"back".to_owned()));
+        let s = s.apply(Action::TiltPlane);
+        assert_eq!(
+            ids(&s),
+            [
+                "fn-spatial",
+                "fn-projected",
+                "fn-euler",
+                "fn-vector",
+                "fn-points",
+                "fn-relspa",
+                "fn-axial",
+                "fn-reset"
+            ]
+        );
+    }
+
+    #[test]
+    fn machine_row_lists_every_shipped_machine_and_marks_the_selected_one() {
+        let s = AppState::default().apply(Action::ShowMachines);
+        let r = row(&s);
+        let machines: Vec<_> = r.iter().flatten().filter(|k| k.id.starts_with("machine-")).collect();
+        assert_eq!(machines.len(), Machine::builtin_ids().len());
+        assert!(machines.iter().any(|k| k.active && k.id == "machine-ac-table"));
     }
 }

@@ -1,15 +1,22 @@
 //! All UI state in one reducer (yew `Reducible`), pure and tested natively.
 //!
 //! The softkey row works like the control's: a key such as `SPEC FCT` replaces the row with the
-//! softkeys of that area, `END`/the back softkey returns one level.
+//! softkeys of that area, `END`/the back softkey returns one level; a PLANE function opens the
+//! dialog ([`crate::dialog`]), whose finished block is inserted after the cursor.
 
 use std::rc::Rc;
 
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::{BlockBody, edit};
 use yew::Reducible;
 
-use crate::i18n::Lang;
+use crate::dialog::{Dialog, Function, Key, Outcome};
+use crate::document::Document;
+use crate::i18n::{Lang, Text};
+use crate::persist::{self, Saved, Shared};
+use crate::samples;
 
-/// Which softkey row is shown.
+/// Which softkey row is shown when no dialog is open.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum SoftkeyLevel {
     /// Programming mode, top level.
@@ -19,24 +26,51 @@ pub enum SoftkeyLevel {
     SpecFct,
     /// After `BEARB.-EBENE SCHWENKEN`: the PLANE functions.
     TiltPlane,
+    /// Choice of the machine (kinematics).
+    Machines,
+    /// Sample programs to open.
+    Samples,
+    /// Import, download, share link.
+    Files,
 }
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct AppState {
     pub lang: Lang,
+    /// Classroom projector: large type and softkeys, secondary panels hidden.
+    pub projector: bool,
     pub level: SoftkeyLevel,
-    /// The NC program as text.
-    pub program: String,
+    /// The open PLANE dialog and, when it edits an existing block, that block's index.
+    pub dialog: Option<(Dialog, Option<usize>)>,
+    pub doc: Rc<Document>,
+    /// Index of the cursor block in `doc.program.blocks`.
+    pub cursor: usize,
+    /// The selected machine; `None` only if a machine definition failed to load (reported).
+    pub machine: Option<Rc<Machine>>,
+    /// A message in the dialog line outside a dialog (e.g. why a key did nothing).
+    pub message: Option<Text>,
+    /// Free text editing of the whole program.
+    pub text_editing: bool,
 }
 
 impl Default for AppState {
     fn default() -> Self {
-        AppState { lang: Lang::default(), level: SoftkeyLevel::Main, program: DEFAULT_PROGRAM.to_owned() }
+        AppState {
+            lang: Lang::default(),
+            projector: false,
+            level: SoftkeyLevel::Main,
+            dialog: None,
+            doc: Rc::new(Document::new(samples::DEFAULT.text.to_owned())),
+            cursor: 0,
+            machine: Machine::builtin(DEFAULT_MACHINE).ok().map(Rc::new),
+            message: None,
+            text_editing: false,
+        }
     }
 }
 
-/// What the empty program looks like when a new one is started on the control.
-pub const DEFAULT_PROGRAM: &str = "0 BEGIN PGM NEU MM\n1 END PGM NEU MM\n";
+/// The seed's first example machine.
+pub const DEFAULT_MACHINE: &str = "ac-table";
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Action {
@@ -44,9 +78,37 @@ pub enum Action {
     SpecFct,
     /// Softkey `BEARB.-EBENE SCHWENKEN`.
     TiltPlane,
-    /// The `END` key or the back softkey: one softkey level up.
+    /// A PLANE function softkey: opens its dialog.
+    Function(Function),
+    /// A key while the dialog is open (ENT, NO ENT, END, digits, dialog softkeys).
+    DialogKey(Key),
+    /// `DEL`/Esc: aborts the dialog without inserting anything.
+    Abort,
+    /// The `END` key or the back softkey outside a dialog: one softkey level up.
     Back,
+    /// ENT outside a dialog: reopens the PLANE block under the cursor.
+    Open,
+    CursorUp,
+    CursorDown,
+    /// A click on a block.
+    CursorTo(usize),
+    /// The program text changed (typed or pasted in the editor).
+    SetText(String),
+    ToggleTextEditing,
+    ShowMachines,
+    SelectMachine(String),
+    ShowSamples,
+    LoadSample(String),
+    ShowFiles,
+    /// A file was read (Latin-1 or UTF-8 already decoded).
+    Import(String),
+    /// Side effects, carried out by the app shell (browser.rs), not by the reducer.
+    Download,
+    Share,
+    /// The app shell reports the outcome of a side effect in the dialog line.
+    Notice(Text),
     ToggleLang,
+    ToggleProjector,
 }
 
 impl AppState {
@@ -54,38 +116,191 @@ impl AppState {
     #[must_use]
     pub fn apply(&self, action: Action) -> AppState {
         let mut next = self.clone();
+        next.message = None;
         match action {
-            Action::SpecFct => next.level = SoftkeyLevel::SpecFct,
-            Action::TiltPlane => {
-                if self.level == SoftkeyLevel::SpecFct {
-                    next.level = SoftkeyLevel::TiltPlane;
-                }
+            Action::SpecFct => {
+                next.dialog = None;
+                next.level = SoftkeyLevel::SpecFct;
+            }
+            Action::TiltPlane if self.level == SoftkeyLevel::SpecFct => next.level = SoftkeyLevel::TiltPlane,
+            Action::TiltPlane => {}
+            Action::Function(f) => next.dialog = Some((Dialog::new(f), None)),
+            Action::DialogKey(key) => next.dialog_key(key),
+            Action::Abort => {
+                next.dialog = None;
+                next.message = Some(Text::new("Dialog abgebrochen", "Dialog aborted"));
             }
             Action::Back => {
-                next.level = match self.level {
-                    SoftkeyLevel::Main | SoftkeyLevel::SpecFct => SoftkeyLevel::Main,
-                    SoftkeyLevel::TiltPlane => SoftkeyLevel::SpecFct,
+                if next.dialog.take().is_none() {
+                    next.level = match self.level {
+                        SoftkeyLevel::TiltPlane => SoftkeyLevel::SpecFct,
+                        _ => SoftkeyLevel::Main,
+                    };
                 }
             }
+            Action::Open => next.open_cursor_block(),
+            // The dialog is modal, as on the control: the cursor stays where the block goes.
+            Action::CursorUp | Action::CursorDown | Action::CursorTo(_) if self.dialog.is_some() => {}
+            Action::CursorUp => next.cursor = self.cursor.saturating_sub(1),
+            Action::CursorDown => next.cursor = (self.cursor + 1).min(self.doc.last_index()),
+            Action::CursorTo(i) => next.cursor = i.min(self.doc.last_index()),
+            Action::SetText(text) => {
+                next.doc = Rc::new(Document::new(text));
+                next.cursor = self.cursor.min(next.doc.last_index());
+            }
+            Action::ToggleTextEditing => next.text_editing = !self.text_editing,
+            Action::ShowMachines => next.level = SoftkeyLevel::Machines,
+            Action::SelectMachine(id) => next.select_machine(&id),
+            Action::ShowSamples => next.level = SoftkeyLevel::Samples,
+            Action::LoadSample(id) => match samples::by_id(&id) {
+                Some(sample) => {
+                    next.doc = Rc::new(Document::new(sample.text.to_owned()));
+                    next.cursor = 0;
+                    next.select_machine(sample.machine);
+                }
+                None => next.message = Some(Text::new("Beispiel unbekannt", "Unknown sample")),
+            },
+            Action::ShowFiles => next.level = SoftkeyLevel::Files,
+            Action::Import(text) => {
+                next.doc = Rc::new(Document::new(text));
+                next.cursor = 0;
+                next.level = SoftkeyLevel::Main;
+                next.message = Some(Text::new("Datei importiert", "File imported"));
+            }
+            Action::Download | Action::Share => {}
+            Action::Notice(text) => next.message = Some(text),
             Action::ToggleLang => next.lang = self.lang.other(),
+            Action::ToggleProjector => next.projector = !self.projector,
         }
         next
     }
 
-    /// The dialog line shows what the control expects next.
-    #[must_use]
-    pub fn dialog_text(&self) -> &'static str {
-        let l = self.lang;
-        match self.level {
-            SoftkeyLevel::Main => l.t("Programm-Einspeichern/Editieren", "Programming"),
-            SoftkeyLevel::SpecFct => {
-                l.t("Sonderfunktionen: Bereich wählen", "Special functions: select an area")
+    fn select_machine(&mut self, id: &str) {
+        match Machine::builtin(id) {
+            Ok(m) => {
+                self.machine = Some(Rc::new(m));
+                self.level = SoftkeyLevel::Main;
             }
-            SoftkeyLevel::TiltPlane => l.t(
+            Err(_) => self.message = Some(Text::new("Maschine unbekannt", "Unknown machine")),
+        }
+    }
+
+    fn dialog_key(&mut self, key: Key) {
+        let Some((dialog, editing)) = self.dialog.as_mut() else { return };
+        if let Outcome::Finished(text) = dialog.key(key) {
+            let editing = *editing;
+            self.dialog = None;
+            let (source, cursor) = match editing {
+                Some(index) => (edit::replace_block(&self.doc.text, &self.doc.program, index, &text), index),
+                None => edit::insert_after(&self.doc.text, &self.doc.program, self.cursor, &text),
+            };
+            self.doc = Rc::new(Document::new(source));
+            self.cursor = cursor.min(self.doc.last_index());
+            self.level = SoftkeyLevel::TiltPlane;
+        }
+    }
+
+    fn open_cursor_block(&mut self) {
+        match self.doc.program.blocks.get(self.cursor).map(|b| &b.body) {
+            Some(BlockBody::Plane(plane)) => self.dialog = Some((Dialog::reopen(plane), Some(self.cursor))),
+            _ => {
+                self.message = Some(Text::new(
+                    "Nur PLANE-Sätze lassen sich im Dialog öffnen",
+                    "Only PLANE blocks open in the dialog",
+                ))
+            }
+        }
+    }
+
+    /// The dialog line: the open dialog's prompt or message, else what the control expects.
+    #[must_use]
+    pub fn dialog_text(&self) -> Text {
+        if let Some((d, _)) = &self.dialog {
+            return d.message.unwrap_or_else(|| d.prompt());
+        }
+        if let Some(m) = self.message {
+            return m;
+        }
+        match self.level {
+            SoftkeyLevel::Main => Text::new("Programm-Einspeichern/Editieren", "Programming"),
+            SoftkeyLevel::SpecFct => {
+                Text::new("Sonderfunktionen: Bereich wählen", "Special functions: select an area")
+            }
+            SoftkeyLevel::TiltPlane => Text::new(
                 "Bearbeitungsebene schwenken: Funktion wählen",
                 "Tilt the working plane: select a function",
             ),
+            SoftkeyLevel::Machines => Text::new("Maschine wählen", "Select the machine"),
+            SoftkeyLevel::Samples => Text::new("Beispielprogramm öffnen", "Open a sample program"),
+            SoftkeyLevel::Files => Text::new(
+                "Datei: importieren, herunterladen, Link teilen",
+                "File: import, download, share a link",
+            ),
         }
+    }
+}
+
+impl AppState {
+    /// What survives a reload.
+    #[must_use]
+    pub fn saved(&self) -> Saved {
+        Saved {
+            version: persist::VERSION,
+            cursor: self.cursor,
+            machine: self.machine.as_ref().map_or_else(|| DEFAULT_MACHINE.to_owned(), |m| m.id.clone()),
+            lang: self.lang,
+            projector: self.projector,
+        }
+    }
+
+    /// The state at start-up from the saved state JSON and program text: a share link wins over
+    /// them; a saved state that cannot be used is reported in the dialog line and replaced by
+    /// the default.
+    #[must_use]
+    pub fn start(saved: Option<&str>, program: Option<String>, fragment: Option<&str>) -> AppState {
+        let mut state = AppState::default();
+        match saved.map(persist::restore) {
+            None => {}
+            Some(Ok(s)) => {
+                state.lang = s.lang;
+                state.projector = s.projector;
+                if let Some(text) = program {
+                    state.doc = Rc::new(Document::new(text));
+                }
+                state.cursor = s.cursor.min(state.doc.last_index());
+                state.select_machine(&s.machine);
+            }
+            Some(Err(e)) => state.message = Some(e.message()),
+        }
+        if let Some(shared) = fragment.and_then(persist::parse_fragment) {
+            state.doc = Rc::new(Document::new(shared.program));
+            state.cursor = shared.block.min(state.doc.last_index());
+            if let Some(m) = shared.machine {
+                state.select_machine(&m);
+            }
+            state.message = Some(Text::new("Programm aus dem Link geöffnet", "Program opened from the link"));
+        }
+        state
+    }
+
+    /// The share link's fragment for the current program, block and machine.
+    #[must_use]
+    pub fn share_fragment(&self) -> String {
+        persist::share_fragment(&Shared {
+            program: self.doc.text.clone(),
+            block: self.cursor,
+            machine: self.machine.as_ref().map(|m| m.id.clone()),
+        })
+    }
+
+    /// File name for the download: the program's name from `BEGIN PGM`.
+    #[must_use]
+    pub fn file_name(&self) -> String {
+        let name = self.doc.program.blocks.iter().find_map(|b| match &b.body {
+            BlockBody::BeginPgm { name, .. } => Some(name.as_str()),
+            _ => None,
+        });
+        format!("{}.h", name.unwrap_or("PGM"))
     }
 }
 
@@ -100,33 +315,97 @@ impl Reducible for AppState {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::dialog::PosKind;
 
-    #[test]
-    fn spec_fct_then_tilt_then_back_walks_the_softkey_levels() {
-        let s = AppState::default();
-        assert_eq!(s.level, SoftkeyLevel::Main);
-        let s = s.apply(Action::SpecFct);
-        assert_eq!(s.level, SoftkeyLevel::SpecFct);
-        let s = s.apply(Action::TiltPlane);
-        assert_eq!(s.level, SoftkeyLevel::TiltPlane);
-        let s = s.apply(Action::Back);
-        assert_eq!(s.level, SoftkeyLevel::SpecFct);
-        let s = s.apply(Action::Back);
-        assert_eq!(s.level, SoftkeyLevel::Main);
+    fn keys(mut s: AppState, text: &str) -> AppState {
+        for c in text.chars() {
+            s = s.apply(Action::DialogKey(Key::Char(c)));
+        }
+        s.apply(Action::DialogKey(Key::Ent))
     }
 
     #[test]
-    fn tilt_softkey_only_exists_in_the_special_functions_row() {
-        let s = AppState::default().apply(Action::TiltPlane);
-        assert_eq!(s.level, SoftkeyLevel::Main);
+    fn spatial_dialog_inserts_the_block_after_the_cursor_with_the_next_number() {
+        let mut s = AppState::default()
+            .apply(Action::SetText("0 BEGIN PGM T MM\n1 L Z+0 R0 FMAX M91\n2 END PGM T MM\n".into()));
+        s = s.apply(Action::CursorTo(1));
+        s = s.apply(Action::SpecFct).apply(Action::TiltPlane).apply(Action::Function(Function::Spatial));
+        s = keys(keys(keys(s, "0"), "15"), "0");
+        s = s.apply(Action::DialogKey(Key::Positioning(PosKind::Turn)));
+        s = s.apply(Action::DialogKey(Key::NoEnt)).apply(Action::DialogKey(Key::FMax));
+        s = s.apply(Action::DialogKey(Key::NoEnt)).apply(Action::DialogKey(Key::NoEnt));
+        assert!(s.dialog.is_none());
+        assert_eq!(
+            s.doc.text,
+            "0 BEGIN PGM T MM\n1 L Z+0 R0 FMAX M91\n2 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX\n3 END PGM T MM\n"
+        );
+        assert_eq!(s.cursor, 2);
+        assert!(s.doc.diagnostics.is_empty());
+    }
+
+    #[test]
+    fn abort_keeps_the_program_and_ent_reopens_a_plane_block() {
+        let s = AppState::default();
+        let before = s.doc.text.clone();
+        let s = s.apply(Action::Function(Function::Euler));
+        let s = keys(s, "45").apply(Action::Abort);
+        assert!(s.dialog.is_none());
+        assert_eq!(s.doc.text, before);
+        // Musterprogramm 1, block 10 is the PLANE SPATIAL block.
+        let s = s.apply(Action::CursorTo(10)).apply(Action::Open);
+        let (d, editing) = s.dialog.as_ref().expect("dialog reopened");
+        assert_eq!((d.function, *editing), (Function::Spatial, Some(10)));
+        let s = s.apply(Action::CursorTo(9));
+        assert_eq!(s.cursor, 10, "the cursor stays while the dialog is open");
+        let s = s.apply(Action::Abort).apply(Action::CursorTo(9)).apply(Action::Open);
+        assert!(s.dialog.is_none());
+        assert!(s.message.is_some(), "ENT on a non-PLANE block says why nothing opens");
+    }
+
+    #[test]
+    fn samples_select_their_machine_and_unknown_ids_are_reported() {
+        let s = AppState::default().apply(Action::LoadSample("winkel_nicht_erlaubt".into()));
+        assert_eq!(s.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+        let t = s.apply(Action::SelectMachine("no-such".into()));
+        assert_eq!(t.machine, s.machine);
+        assert!(t.message.is_some());
+    }
+
+    #[test]
+    fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
+        let s = AppState::default()
+            .apply(Action::LoadSample("stay_q120".into()))
+            .apply(Action::CursorTo(7))
+            .apply(Action::ToggleLang);
+        let json = persist::to_json(&s.saved());
+        let back = AppState::start(Some(&json), Some(s.doc.text.clone()), None);
+        assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
+        assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+        assert_eq!(back.message, None);
+
+        let broken = AppState::start(Some("{\"version\":1,\"cursor\":"), Some("0 L X+1".into()), None);
+        assert_eq!(broken.doc, AppState::default().doc);
+        assert_eq!(broken.message.map(|m| m.en), Some("The saved state was corrupt: defaults loaded"));
+    }
+
+    #[test]
+    fn share_link_opens_the_same_program_at_the_same_block_and_machine() {
+        let s = AppState::default()
+            .apply(Action::LoadSample("winkel_nicht_erlaubt".into()))
+            .apply(Action::CursorTo(8));
+        let opened = AppState::start(None, None, Some(&format!("#{}", s.share_fragment())));
+        assert_eq!(opened.doc.text, s.doc.text);
+        assert_eq!(opened.cursor, 8);
+        assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+        assert_eq!(s.file_name(), "WINKEL.h");
     }
 
     #[test]
     fn language_switch_changes_the_dialog_line_and_keeps_the_program() {
         let s = AppState::default().apply(Action::SpecFct);
-        assert_eq!(s.dialog_text(), "Sonderfunktionen: Bereich wählen");
+        assert_eq!(s.dialog_text().get(s.lang), "Sonderfunktionen: Bereich wählen");
         let en = s.apply(Action::ToggleLang);
-        assert_eq!(en.dialog_text(), "Special functions: select an area");
-        assert_eq!(en.program, s.program);
+        assert_eq!(en.dialog_text().get(en.lang), "Special functions: select an area");
+        assert_eq!(en.doc, s.doc);
     }
 }

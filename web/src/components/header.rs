@@ -7,6 +7,8 @@ use crate::i18n::Lang;
 #[derive(Properties, PartialEq)]
 pub struct HeaderProps {
     pub lang: Lang,
+    /// The selected machine's name.
+    pub machine: AttrValue,
 }
 
 #[function_component(Header)]
@@ -17,6 +19,7 @@ pub fn header(props: &HeaderProps) -> Html {
             <span class="mode">{ l.t("Programmieren", "Programming") }</span>
             <span class="title">{ "Schwenkbar" }</span>
             <span class="subtitle">{ l.t("Bearbeitungsebene schwenken", "Tilting the working plane") }</span>
+            <span class="machine" data-testid="machine-name">{ props.machine.clone() }</span>
         </header>
     }
 }

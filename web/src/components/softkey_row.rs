@@ -1,32 +1,52 @@
-//! The row of eight softkeys at the bottom of the screen.
+//! The row of eight softkeys at the bottom of the screen; F1–F8 press them too (keymap.rs).
+//! The IMPORT softkey is a file picker: a browser opens one only on the user's own click.
 
+use web_sys::{File, HtmlInputElement};
 use yew::prelude::*;
 
-use crate::i18n::Lang;
 use crate::softkeys::Row;
 use crate::state::Action;
 
 #[derive(Properties, PartialEq)]
 pub struct SoftkeyRowProps {
     pub row: Row,
-    pub lang: Lang,
     pub on_action: Callback<Action>,
+    pub on_import: Callback<File>,
 }
 
 #[function_component(SoftkeyRow)]
 pub fn softkey_row(props: &SoftkeyRowProps) -> Html {
-    let keys = props.row.iter().map(|slot| match slot {
+    let keys = props.row.iter().enumerate().map(|(i, slot)| match slot {
+        Some(key) if key.id == "import" => {
+            let on_import = props.on_import.clone();
+            let onchange = Callback::from(move |e: Event| {
+                let file =
+                    e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
+                if let Some(file) = file {
+                    on_import.emit(file);
+                }
+            });
+            html! {
+                <label class="softkey" data-key="import" title={format!("F{}", i + 1)}>
+                    { for key.label.split('\n').map(|part| html! { <span>{ part.to_owned() }</span> }) }
+                    <input type="file" accept=".h,.H,.nc,text/plain" class="file-input" {onchange} />
+                </label>
+            }
+        }
         Some(key) => {
             let action = key.action.clone();
             let onclick = props.on_action.reform(move |_: MouseEvent| action.clone());
-            let label = props.lang.t(key.de, key.en);
+            let class = classes!("softkey", key.active.then_some("active"));
             html! {
-                <button class="softkey" data-key={key.id} {onclick}>
-                    { for label.split('\n').map(|part| html! { <span>{ part }</span> }) }
+                <button {class} data-key={key.id.clone()} {onclick} title={format!("F{}", i + 1)}
+                    aria-pressed={key.active.then_some("true")}>
+                    { for key.label.split('\n').map(|part| html! { <span>{ part.to_owned() }</span> }) }
                 </button>
             }
         }
-        None => html! { <button class="softkey blank" disabled=true aria-hidden="true"></button> },
+        None => {
+            html! { <button class="softkey blank" disabled=true aria-hidden="true" tabindex="-1"></button> }
+        }
     });
     html! { <nav class="softkeys" aria-label="Softkeys">{ for keys }</nav> }
 }

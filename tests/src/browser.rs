@@ -1,0 +1,126 @@
+//! Driving the real app in headless Chromium: mount, click, type, read. Panics here are test
+//! failures (this code never ships).
+
+use std::time::Duration;
+
+use wasm_bindgen::JsCast;
+use web_sys::{Element, HtmlElement, KeyboardEvent, KeyboardEventInit};
+
+fn document() -> web_sys::Document {
+    web_sys::window().and_then(|w| w.document()).expect("a browser document")
+}
+
+/// Clears what an earlier test saved, so every test starts like a first visit.
+pub fn clear_storage() {
+    if let Some(s) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
+        s.clear().expect("clear localStorage");
+    }
+}
+
+/// Sets the saved state a "reload" will find.
+pub fn set_saved(json: &str) {
+    let s = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
+    s.set_item("schwenkbar.state", json).expect("set item");
+    s.set_item("schwenkbar.program", "0 BEGIN PGM X MM\n1 END PGM X MM\n").expect("set item");
+}
+
+/// Mounts a fresh app into its own element and lets yew render. Earlier apps stay in the page;
+/// every query goes through the returned root.
+pub async fn mount() -> Element {
+    let root = document().create_element("div").expect("create div");
+    document().body().expect("body").append_child(&root).expect("append root");
+    yew::Renderer::<schwenkbar_web::App>::with_root(root.clone()).render();
+    settle().await;
+    root
+}
+
+/// Gives yew's scheduler and the effects a moment to run.
+pub async fn settle() {
+    yew::platform::time::sleep(Duration::from_millis(20)).await;
+}
+
+#[must_use]
+pub fn query(root: &Element, selector: &str) -> Option<Element> {
+    root.query_selector(selector).expect("valid selector")
+}
+
+#[must_use]
+pub fn text(root: &Element, selector: &str) -> String {
+    query(root, selector).and_then(|e| e.text_content()).unwrap_or_default()
+}
+
+pub async fn click(root: &Element, selector: &str) {
+    let el = query(root, selector).unwrap_or_else(|| panic!("no element {selector}"));
+    el.dyn_into::<HtmlElement>().expect("an HTML element").click();
+    settle().await;
+}
+
+/// A key pressed with the app focused (`KeyboardEvent.key` names: "Enter", "F3", "5").
+pub async fn key(root: &Element, key: &str, shift: bool) {
+    let init = KeyboardEventInit::new();
+    init.set_key(key);
+    init.set_shift_key(shift);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
+    let target = query(root, ".tnc").expect("the app");
+    target.dispatch_event(&event).expect("dispatch");
+    settle().await;
+}
+
+/// Types a value and presses Enter (ENT).
+pub async fn type_ent(root: &Element, value: &str) {
+    for c in value.chars() {
+        key(root, &c.to_string(), false).await;
+    }
+    key(root, "Enter", false).await;
+}
+
+/// The program pane's lines as text.
+#[must_use]
+pub fn program_lines(root: &Element) -> Vec<String> {
+    let list = root.query_selector_all(".program-pane .line").expect("selector");
+    (0..list.length()).filter_map(|i| list.item(i)).filter_map(|n| n.text_content()).collect()
+}
+
+/// Replaces the program through the text editor, as a paste would.
+pub async fn paste_program(root: &Element, program: &str) {
+    click(root, "[data-key=text-edit]").await;
+    let area: web_sys::HtmlTextAreaElement =
+        query(root, ".program-text").expect("text area").dyn_into().expect("a text area");
+    area.set_value(program);
+    let init = web_sys::InputEventInit::new();
+    init.set_bubbles(true);
+    let event = web_sys::InputEvent::new_with_event_init_dict("input", &init).expect("input event");
+    area.dispatch_event(&event).expect("dispatch");
+    settle().await;
+    click(root, "[data-key=text-edit]").await;
+}
+
+/// Milliseconds since page load.
+#[must_use]
+pub fn now() -> f64 {
+    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
+}
+
+/// Presses `key` and waits for the screen to update; the time from the key to the updated DOM
+/// in milliseconds (yew renders before the 0 ms timer fires, so this bounds it from above).
+pub async fn timed_key(root: &Element, key_name: &str) -> f64 {
+    let init = KeyboardEventInit::new();
+    init.set_key(key_name);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
+    let target = query(root, ".tnc").expect("the app");
+    let t0 = now();
+    target.dispatch_event(&event).expect("dispatch");
+    yew::platform::time::sleep(std::time::Duration::from_millis(0)).await;
+    now() - t0
+}
+
+/// The median of `samples`.
+#[must_use]
+pub fn median(mut samples: Vec<f64>) -> f64 {
+    samples.sort_by(f64::total_cmp);
+    samples.get(samples.len() / 2).copied().unwrap_or(f64::NAN)
+}

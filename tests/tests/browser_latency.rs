@@ -1,0 +1,55 @@
+//! Issue 6 budget, measured in the browser (a benchmark: it prints the figures and checks only
+//! that the screen really followed the key): a key press to the updated screen for
+//! Musterprogramm 1 and with a 100,000-block program loaded.
+#![cfg(target_arch = "wasm32")]
+
+use schwenkbar_tests::browser::{clear_storage, median, mount, now, paste_program, query, timed_key};
+use wasm_bindgen_test::{console_log, wasm_bindgen_test, wasm_bindgen_test_configure};
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+async fn cursor_line(root: &web_sys::Element) -> String {
+    query(root, ".program-pane .line.cursor").and_then(|l| l.get_attribute("data-line")).unwrap_or_default()
+}
+
+async fn measure(root: &web_sys::Element, presses: usize) -> f64 {
+    let mut samples = Vec::with_capacity(presses);
+    for _ in 0..presses {
+        let before = cursor_line(root).await;
+        samples.push(timed_key(root, "ArrowDown").await);
+        assert_ne!(cursor_line(root).await, before, "the cursor moved on screen");
+    }
+    median(samples)
+}
+
+#[wasm_bindgen_test]
+async fn key_press_latency_musterprogramm_1_and_100000_blocks() {
+    clear_storage();
+    let root = mount().await;
+    let small = measure(&root, 20).await;
+
+    let big = schwenkbar_core::sample::cam_program(100_000);
+    let t0 = now();
+    paste_program(&root, &big).await;
+    let load = now() - t0;
+    let large = measure(&root, 20).await;
+    console_log!(
+        "BENCH key press → screen: Musterprogramm 1 median {small:.2} ms (budget 16); 100,000 blocks median {large:.2} ms (budget 100); pasting the 100,000-block program {load:.0} ms"
+    );
+    clear_storage();
+}
+
+#[wasm_bindgen_test]
+fn parser_throughput_in_wasm() {
+    let program = schwenkbar_core::sample::cam_program(200_000);
+    let mb = program.len() as f64 / 1e6;
+    let mut best = f64::INFINITY;
+    for _ in 0..3 {
+        let t0 = now();
+        let (parsed, diagnostics) = schwenkbar_core::parse(&program);
+        best = best.min(now() - t0);
+        assert_eq!(parsed.blocks.len(), 200_000);
+        assert!(diagnostics.is_empty());
+    }
+    console_log!("BENCH parser in wasm32 (Chromium): {mb:.1} MB in {best:.0} ms = {:.0} MB/s", mb / (best / 1000.0));
+}

@@ -1,0 +1,90 @@
+//! "Warum?" — what the cursor block does and, for a PLANE block, why the machine positions its
+//! axes the way it does.
+
+use std::rc::Rc;
+
+use glam::DMat3;
+use schwenkbar_core::BlockBody;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::solve::SolveOptions;
+use yew::prelude::*;
+
+use crate::document::Document;
+use crate::i18n::Lang;
+use crate::why::{describe, explain_plane};
+
+#[derive(Properties, PartialEq)]
+pub struct WhyPanelProps {
+    pub doc: Rc<Document>,
+    pub cursor: usize,
+    pub machine: Option<Rc<Machine>>,
+    pub lang: Lang,
+}
+
+#[function_component(WhyPanel)]
+pub fn why_panel(props: &WhyPanelProps) -> Html {
+    let l = props.lang;
+    let Some(block) = props.doc.program.blocks.get(props.cursor) else {
+        return html! { <aside class="why-panel"></aside> };
+    };
+    let plane = match (&block.body, &props.machine) {
+        (BlockBody::Plane(p), Some(m)) => {
+            Some(explain_plane(p, m, DMat3::IDENTITY, &SolveOptions::default(), l))
+        }
+        _ => None,
+    };
+    let machine = props.machine.as_ref().map(|m| {
+        let axes: Vec<String> = m
+            .joints()
+            .iter()
+            .rev()
+            .map(|j| {
+                let limits = match (j.endless, j.limits) {
+                    (true, _) => l.t("endlos", "endless").to_owned(),
+                    (false, Some(lim)) => format!("{}…{}", lim.min, lim.max),
+                    (false, None) => l.t("ohne Endschalter", "no limits").to_owned(),
+                };
+                format!("{} ({limits})", j.axis.letter())
+            })
+            .collect();
+        format!(
+            "{} · {}: {}",
+            l.t(&m.name.de, &m.name.en),
+            l.t("Master zuerst", "master first"),
+            axes.join(", ")
+        )
+    });
+    html! {
+        <aside class="why-panel" aria-label={l.t("Warum?", "Why?")}>
+            <h2>{ l.t("Warum?", "Why?") }</h2>
+            <p class="why-block">{ describe(&block.body, l) }</p>
+            if let Some(w) = plane {
+                <div class="why-plane">
+                    if let Some(e) = &w.error {
+                        <p class="why-error" data-testid="why-error">{ e }</p>
+                    }
+                    if !w.candidates.is_empty() {
+                        <ul class="candidates">
+                            { for w.candidates.iter().map(|(text, chosen)| html! {
+                                <li class={classes!("candidate", chosen.then_some("chosen"))}>{ text }</li>
+                            }) }
+                        </ul>
+                        <p class="why-rule">{ &w.rule }</p>
+                        <p>{ &w.symmetry }</p>
+                        <p>{ l.t("Werkzeugachse", "Tool axis") }{ " " }{ &w.tool_axis }</p>
+                        <p class="equiv"><code>{ &w.spatial }</code><br/><code>{ &w.euler }</code></p>
+                    }
+                    if !w.assumptions.is_empty() {
+                        <details class="assumptions">
+                            <summary>{ l.t("Annahmen (nicht bestätigt)", "Assumptions (unconfirmed)") }</summary>
+                            <ul>{ for w.assumptions.iter().map(|a| html! { <li>{ a }</li> }) }</ul>
+                        </details>
+                    }
+                </div>
+            }
+            if let Some(m) = machine {
+                <p class="why-machine">{ m }</p>
+            }
+        </aside>
+    }
+}

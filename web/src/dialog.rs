@@ -1,0 +1,1086 @@
+//! The PLANE softkey dialog, as on the control (DOMAIN.md §7, seed S0 §2.3): after
+//! SPEC FCT → BEARB.-EBENE SCHWENKEN → function, the dialog line asks for each value in the
+//! control's order, then the positioning behaviour and its values, then the optional SEQ/SYM and
+//! COORD ROT/TABLE ROT. Pure: the reducer owns a `Dialog` and feeds it keys.
+//!
+//! Values are checked with the core's own rules (`plane::input_range`, `parse::parse_value`), so
+//! the dialog and the parser can never disagree about what is allowed.
+
+use schwenkbar_core::format::plane_text;
+use schwenkbar_core::parse::parse_value;
+use schwenkbar_core::plane::{
+    AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign,
+    TransformMode, Value, input_range,
+};
+
+use crate::i18n::Text;
+
+/// The eight PLANE functions of the softkey row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Function {
+    Spatial,
+    Projected,
+    Euler,
+    Vector,
+    Points,
+    Relativ,
+    Axial,
+    Reset,
+}
+
+/// One value the dialog asks for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Field {
+    /// The NC word (`SPA`), also the key for the input range.
+    pub word: &'static str,
+    pub prompt: Text,
+    pub help: Text,
+    pub required: bool,
+}
+
+const fn field(word: &'static str, prompt: Text, help: Text) -> Field {
+    Field { word, prompt, help, required: true }
+}
+
+const fn t(de: &'static str, en: &'static str) -> Text {
+    Text { de, en }
+}
+
+const SPATIAL: [Field; 3] = [
+    field(
+        "SPA",
+        t("Raumwinkel A?", "Spatial angle A?"),
+        t(
+            "Drehung um die maschinenfeste X-Achse, −359,9999…+359,9999°. Positiv: Daumen der rechten Hand in +X, die Finger zeigen die Drehrichtung.",
+            "Rotation about the machine-fixed X axis, −359.9999…+359.9999°. Positive: right thumb along +X, the fingers show the direction.",
+        ),
+    ),
+    field(
+        "SPB",
+        t("Raumwinkel B?", "Spatial angle B?"),
+        t(
+            "Drehung um die maschinenfeste Y-Achse, −359,9999…+359,9999°. Positiv kippt die Werkzeugachse von +Z nach +X.",
+            "Rotation about the machine-fixed Y axis, −359.9999…+359.9999°. Positive tips the tool axis from +Z towards +X.",
+        ),
+    ),
+    field(
+        "SPC",
+        t("Raumwinkel C?", "Spatial angle C?"),
+        t(
+            "Drehung um die maschinenfeste Z-Achse, −359,9999…+359,9999°. Alle drei Raumwinkel sind Pflicht, auch wenn sie 0 sind.",
+            "Rotation about the machine-fixed Z axis, −359.9999…+359.9999°. All three spatial angles are required, even when 0.",
+        ),
+    ),
+];
+
+const PROJECTED: [Field; 3] = [
+    field(
+        "PROPR",
+        t("Proj.-Winkel 1. Koordinatenebene?", "Proj. angle 1st coordinate plane?"),
+        t(
+            "Winkel der Ebene in der Z/X-Ebene (0°-Achse = X), −89,9999…+89,9999°.",
+            "Angle of the plane's trace in the Z/X plane (0° axis = X), −89.9999…+89.9999°.",
+        ),
+    ),
+    field(
+        "PROMIN",
+        t("Proj.-Winkel 2. Koordinatenebene?", "Proj. angle 2nd coordinate plane?"),
+        t(
+            "Winkel der Ebene in der Y/Z-Ebene (0°-Achse = Y), −89,9999…+89,9999°.",
+            "Angle of the plane's trace in the Y/Z plane (0° axis = Y), −89.9999…+89.9999°.",
+        ),
+    ),
+    field(
+        "ROT",
+        t("ROT-Winkel der geschwenkten Ebene?", "ROT angle of the tilted plane?"),
+        t(
+            "Drehung um die geschwenkte Werkzeugachse, 0…360°.",
+            "Rotation about the tilted tool axis, 0…360°.",
+        ),
+    ),
+];
+
+const EULER: [Field; 3] = [
+    field(
+        "EULPR",
+        t("Drehwinkel Hauptkoordinatenebene?", "Rot. angle main coordinate plane?"),
+        t(
+            "Präzession: Drehung um die ungeschwenkte Z-Achse, −180…+180°.",
+            "Precession: rotation about the untilted Z axis, −180…+180°.",
+        ),
+    ),
+    field(
+        "EULNU",
+        t("Schwenkwinkel Werkzeugachse?", "Tilting angle tool axis?"),
+        t(
+            "Nutation: Drehung um die gedrehte X-Achse, 0…180°.",
+            "Nutation: rotation about the rotated X axis, 0…180°.",
+        ),
+    ),
+    field(
+        "EULROT",
+        t("Drehwinkel der geschwenkten Ebene?", "Rotation angle of the tilted plane?"),
+        t(
+            "Rotation: Drehung um die geschwenkte Z-Achse, richtet die geschwenkte X-Achse aus, 0…360°.",
+            "Rotation about the tilted Z axis, aligns the tilted X axis, 0…360°.",
+        ),
+    ),
+];
+
+const fn vec_field(word: &'static str, prompt: Text) -> Field {
+    field(
+        word,
+        prompt,
+        t(
+            "Komponente, muss nicht normiert sein: die Steuerung normiert selbst.",
+            "Component; need not be of unit length: the control normalises.",
+        ),
+    )
+}
+
+const VECTOR: [Field; 6] = [
+    vec_field("BX", t("X-Komponente Basisvektor?", "X component of base vector?")),
+    vec_field("BY", t("Y-Komponente Basisvektor?", "Y component of base vector?")),
+    vec_field("BZ", t("Z-Komponente Basisvektor?", "Z component of base vector?")),
+    vec_field("NX", t("X-Komponente Normalenvektor?", "X component of normal vector?")),
+    vec_field("NY", t("Y-Komponente Normalenvektor?", "Y component of normal vector?")),
+    vec_field("NZ", t("Z-Komponente Normalenvektor?", "Z component of normal vector?")),
+];
+
+const fn point_field(word: &'static str, prompt: Text) -> Field {
+    field(
+        word,
+        prompt,
+        t(
+            "P1→P2 gibt die geschwenkte X-Achse, P3 die Seite der Y-Achse. Der Nullpunkt wird nicht verschoben.",
+            "P1→P2 gives the tilted X axis, P3 the side of Y. The datum is not moved.",
+        ),
+    )
+}
+
+const POINTS: [Field; 9] = [
+    point_field("P1X", t("X-Koordinate 1. Ebenenpunkt?", "X coordinate 1st plane point?")),
+    point_field("P1Y", t("Y-Koordinate 1. Ebenenpunkt?", "Y coordinate 1st plane point?")),
+    point_field("P1Z", t("Z-Koordinate 1. Ebenenpunkt?", "Z coordinate 1st plane point?")),
+    point_field("P2X", t("X-Koordinate 2. Ebenenpunkt?", "X coordinate 2nd plane point?")),
+    point_field("P2Y", t("Y-Koordinate 2. Ebenenpunkt?", "Y coordinate 2nd plane point?")),
+    point_field("P2Z", t("Z-Koordinate 2. Ebenenpunkt?", "Z coordinate 2nd plane point?")),
+    point_field("P3X", t("X-Koordinate 3. Ebenenpunkt?", "X coordinate 3rd plane point?")),
+    point_field("P3Y", t("Y-Koordinate 3. Ebenenpunkt?", "Y coordinate 3rd plane point?")),
+    point_field("P3Z", t("Z-Koordinate 3. Ebenenpunkt?", "Z coordinate 3rd plane point?")),
+];
+
+const RELATIV: [Field; 1] = [field(
+    "SPA",
+    t("Inkrementaler Raumwinkel?", "Incremental spatial angle?"),
+    t(
+        "Dreht um die Achse der aktiven geschwenkten Ebene; mehrere RELATIV-Sätze bauen aufeinander auf.",
+        "Rotates about the axis of the active tilted plane; several RELATIV blocks build on each other.",
+    ),
+)];
+
+const fn axial_field(word: &'static str, prompt: Text) -> Field {
+    Field {
+        word,
+        prompt,
+        help: t(
+            "Achswinkel der Maschine direkt; nur vorhandene Achsen. NO ENT überspringt die Achse.",
+            "Machine axis angle directly; existing axes only. NO ENT skips the axis.",
+        ),
+        required: false,
+    }
+}
+
+const AXIAL: [Field; 3] = [
+    axial_field("A", t("Achswinkel A?", "Axis angle A?")),
+    axial_field("B", t("Achswinkel B?", "Axis angle B?")),
+    axial_field("C", t("Achswinkel C?", "Axis angle C?")),
+];
+
+impl Function {
+    pub const ALL: [Function; 8] = [
+        Function::Spatial,
+        Function::Projected,
+        Function::Euler,
+        Function::Vector,
+        Function::Points,
+        Function::Relativ,
+        Function::Axial,
+        Function::Reset,
+    ];
+
+    /// The values asked before the positioning behaviour, in the control's order.
+    #[must_use]
+    pub fn fields(self) -> &'static [Field] {
+        match self {
+            Function::Spatial => &SPATIAL,
+            Function::Projected => &PROJECTED,
+            Function::Euler => &EULER,
+            Function::Vector => &VECTOR,
+            Function::Points => &POINTS,
+            Function::Relativ => &RELATIV,
+            Function::Axial => &AXIAL,
+            Function::Reset => &[],
+        }
+    }
+
+    /// SEQ/SYM and COORD ROT/TABLE ROT: not for AXIAL (unambiguous, DOMAIN.md §2.7) nor RESET.
+    #[must_use]
+    pub fn has_solution_options(self) -> bool {
+        !matches!(self, Function::Axial | Function::Reset)
+    }
+}
+
+/// Where the dialog stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Step {
+    /// RELATIV: which spatial angle (softkeys SPA/SPB/SPC).
+    RelAxis,
+    /// The function's value `i`.
+    Value(usize),
+    /// Softkeys MOVE / TURN / STAY.
+    Positioning,
+    /// MOVE: `DIST`.
+    Dist,
+    /// TURN: `MB` (softkey MB MAX).
+    MoveBack,
+    /// MOVE/TURN: `F` (softkeys F AUTO, FMAX).
+    Feed,
+    /// Softkeys SEQ+ SEQ− SYM+ SYM−, NO ENT skips.
+    Selection,
+    /// Softkeys COORD ROT / TABLE ROT, NO ENT skips.
+    Transform,
+}
+
+/// The positioning behaviour chosen by softkey, before its values are known.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PosKind {
+    Move,
+    Turn,
+    Stay,
+}
+
+/// A key of the control's keyboard (or the physical keyboard mapped onto it).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Key {
+    /// A character typed into the value: digits, `.`, `-`, `+`, `Q`, letters (refused at ENT).
+    Char(char),
+    Backspace,
+    /// `-/+`: toggles the sign of the value being typed.
+    ToggleSign,
+    Ent,
+    NoEnt,
+    End,
+    RelAxis(RelAxis),
+    Positioning(PosKind),
+    /// `MB MAX` at the MB prompt.
+    MbMax,
+    FAuto,
+    FMax,
+    Selection(Selection),
+    Transform(TransformMode),
+}
+
+/// What a key press did.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// The dialog goes on (maybe with a message).
+    Continue,
+    /// The block is complete: its text (without block number).
+    Finished(String),
+}
+
+/// A message in the dialog line; the value stays for correction.
+pub type Message = Text;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dialog {
+    pub function: Function,
+    pub step: Step,
+    /// What is being typed at the current prompt.
+    pub input: String,
+    pub rel_axis: RelAxis,
+    /// Entered values of `function.fields()`, `None` = skipped with NO ENT (optional ones only).
+    pub values: Vec<Option<Value>>,
+    pub positioning: Option<PosKind>,
+    pub dist: Option<Value>,
+    pub move_back: Option<MoveBack>,
+    pub feed: Option<Feed>,
+    pub selection: Option<Selection>,
+    pub transform: Option<TransformMode>,
+    pub message: Option<Message>,
+}
+
+const MSG_INVALID: Text =
+    t("Eingabewert falsch: Zahl oder Q-Parameter erwartet", "Invalid input: a number or Q parameter");
+const MSG_REQUIRED: Text = t("Eingabe erforderlich", "Entry required");
+const MSG_CHOOSE_POS: Text =
+    t("Positionierverhalten wählen: MOVE, TURN oder STAY", "Select positioning: MOVE, TURN or STAY");
+const MSG_AXIAL_EMPTY: Text = t("Mindestens einen Achswinkel eingeben", "Enter at least one axis angle");
+const MSG_SEQ_SYM: Text = t("SEQ und SYM schließen sich aus", "SEQ and SYM exclude each other");
+
+impl Dialog {
+    /// Opens the dialog for `function` (the function softkey).
+    #[must_use]
+    pub fn new(function: Function) -> Dialog {
+        let step = match function {
+            Function::Relativ => Step::RelAxis,
+            Function::Reset => Step::Positioning,
+            _ => Step::Value(0),
+        };
+        Dialog {
+            function,
+            step,
+            input: String::new(),
+            rel_axis: RelAxis::Spa,
+            values: Vec::new(),
+            positioning: None,
+            dist: None,
+            move_back: None,
+            feed: None,
+            selection: None,
+            transform: None,
+            message: None,
+        }
+    }
+
+    /// Reopens an existing block (ENT on a PLANE block): every value filled in, positioned at the
+    /// first prompt so the trainee can walk through with ENT.
+    #[must_use]
+    pub fn reopen(block: &PlaneBlock) -> Dialog {
+        let function = function_of(&block.def);
+        let mut d = Dialog::new(function);
+        d.values = match &block.def {
+            PlaneDef::Spatial { spa, spb, spc } => vec![Some(*spa), Some(*spb), Some(*spc)],
+            PlaneDef::Projected { propr, promin, rot } => vec![Some(*propr), Some(*promin), Some(*rot)],
+            PlaneDef::Euler { eulpr, eulnu, eulrot } => vec![Some(*eulpr), Some(*eulnu), Some(*eulrot)],
+            PlaneDef::Vector { base, normal } => base.iter().chain(normal).map(|v| Some(*v)).collect(),
+            PlaneDef::Points { p1, p2, p3 } => p1.iter().chain(p2).chain(p3).map(|v| Some(*v)).collect(),
+            PlaneDef::Relativ { axis, angle } => {
+                d.rel_axis = *axis;
+                vec![Some(*angle)]
+            }
+            PlaneDef::Axial { axes } => [RotaryAxis::A, RotaryAxis::B, RotaryAxis::C]
+                .iter()
+                .map(|letter| axes.iter().find(|a| a.axis == *letter && !a.incremental).map(|a| a.value))
+                .collect(),
+            PlaneDef::Reset => Vec::new(),
+        };
+        match block.positioning {
+            Some(Positioning::Move { dist, feed }) => {
+                d.positioning = Some(PosKind::Move);
+                d.dist = dist;
+                d.feed = feed;
+            }
+            Some(Positioning::Turn { move_back, feed }) => {
+                d.positioning = Some(PosKind::Turn);
+                d.move_back = move_back;
+                d.feed = feed;
+            }
+            Some(Positioning::Stay) => d.positioning = Some(PosKind::Stay),
+            None => {}
+        }
+        d.selection = block.selection;
+        d.transform = block.transform;
+        d.input = d.prefill();
+        d
+    }
+
+    /// The field asked at the current step, if it is a value prompt.
+    #[must_use]
+    pub fn field(&self) -> Option<&'static Field> {
+        match self.step {
+            Step::Value(i) => self.function.fields().get(i),
+            _ => None,
+        }
+    }
+
+    /// The NC word of the current prompt (`SPB`, `DIST`, `MB`, `F`), for the dialog line.
+    #[must_use]
+    pub fn word(&self) -> &'static str {
+        match self.step {
+            Step::Value(_) if self.function == Function::Relativ => rel_word(self.rel_axis),
+            Step::Value(_) => self.field().map_or("", |f| f.word),
+            Step::Dist => "DIST",
+            Step::MoveBack => "MB",
+            Step::Feed => "F",
+            Step::RelAxis | Step::Positioning | Step::Selection | Step::Transform => "",
+        }
+    }
+
+    /// The prompt of the dialog line.
+    #[must_use]
+    pub fn prompt(&self) -> Text {
+        match self.step {
+            Step::RelAxis => {
+                t("Raumwinkel wählen: SPA, SPB oder SPC", "Select the spatial angle: SPA, SPB or SPC")
+            }
+            Step::Value(_) => self.field().map_or(t("", ""), |f| f.prompt),
+            Step::Positioning => t("Positionierverhalten?", "Positioning behaviour?"),
+            Step::Dist => t("Abst. Drehpunkt von WZ-Spitze?", "Dist. tool tip – center of rot.?"),
+            Step::MoveBack => t("Rückzuglänge in der Werkzeugachse?", "Retraction length in the tool axis?"),
+            Step::Feed => t("Vorschub? F=", "Feed rate? F="),
+            Step::Selection => {
+                t("Schwenklösung wählen? (optional)", "Select the tilting solution? (optional)")
+            }
+            Step::Transform => t("Transformationsart? (optional)", "Type of transformation? (optional)"),
+        }
+    }
+
+    /// The one-line help under the prompt.
+    #[must_use]
+    pub fn help(&self) -> Text {
+        match self.step {
+            Step::RelAxis => t(
+                "SPA dreht um die aktive X-Achse, SPB um Y, SPC um Z.",
+                "SPA turns about the active X axis, SPB about Y, SPC about Z.",
+            ),
+            Step::Value(_) => self.field().map_or(t("", ""), |f| f.help),
+            Step::Positioning => t(
+                "MOVE: Linearachsen gleichen aus, die WZ-Spitze bleibt. TURN: nur Drehachsen. STAY: nur das Koordinatensystem.",
+                "MOVE: linear axes compensate, the tool tip stays. TURN: rotary axes only. STAY: coordinate system only.",
+            ),
+            Step::Dist => t(
+                "Abstand Drehpunkt – Werkzeugspitze, inkremental. NO ENT: ohne DIST.",
+                "Distance centre of rotation – tool tip, incremental. NO ENT: without DIST.",
+            ),
+            Step::MoveBack => t(
+                "Rückzug in der Werkzeugachse vor dem Schwenken, inkremental; Softkey MB MAX: bis zum Endschalter. NO ENT: kein Rückzug.",
+                "Retract along the tool axis before tilting, incremental; softkey MB MAX: to the limit switch. NO ENT: no retract.",
+            ),
+            Step::Feed => t(
+                "Bahnvorschub beim Einschwenken in mm/min; Softkeys F AUTO, FMAX. NO ENT: ohne F.",
+                "Path feed while tilting, mm/min; softkeys F AUTO, FMAX. NO ENT: without F.",
+            ),
+            Step::Selection => t(
+                "SEQ: Master-Achse bezogen auf ihre Grundstellung 0°; SYM: bezogen auf ihren Symmetriepunkt. NO ENT: die Steuerung wählt den kürzesten Weg.",
+                "SEQ: master axis relative to its home 0°; SYM: relative to its symmetry point. NO ENT: the control takes the shortest path.",
+            ),
+            Step::Transform => t(
+                "Wirkt nur, wenn allein SPC ≠ 0 ist: COORD ROT dreht nur rechnerisch, TABLE ROT dreht den Rundtisch.",
+                "Only matters when SPC alone is non-zero: COORD ROT rotates mathematically, TABLE ROT turns the rotary table.",
+            ),
+        }
+    }
+
+    /// Handles one key. Errors leave everything entered in place and set `message`.
+    pub fn key(&mut self, key: Key) -> Outcome {
+        self.message = None;
+        match key {
+            Key::Char(c) => {
+                if self.takes_value() {
+                    self.input.push(c);
+                }
+                Outcome::Continue
+            }
+            Key::Backspace => {
+                self.input.pop();
+                Outcome::Continue
+            }
+            Key::ToggleSign => {
+                if self.takes_value() {
+                    self.input = toggle_sign(&self.input);
+                }
+                Outcome::Continue
+            }
+            Key::Ent => self.ent(),
+            Key::NoEnt => self.no_ent(),
+            Key::End => self.end(),
+            Key::RelAxis(axis) if self.step == Step::RelAxis => {
+                self.rel_axis = axis;
+                self.goto(Step::Value(0));
+                Outcome::Continue
+            }
+            Key::Positioning(kind) if self.step == Step::Positioning => {
+                if self.positioning != Some(kind) {
+                    self.dist = None;
+                    self.move_back = None;
+                    self.feed = None;
+                }
+                self.positioning = Some(kind);
+                self.goto(match kind {
+                    PosKind::Move => Step::Dist,
+                    PosKind::Turn => Step::MoveBack,
+                    PosKind::Stay => self.after_positioning(),
+                });
+                self.finish_if_done()
+            }
+            Key::MbMax if self.step == Step::MoveBack => {
+                self.move_back = Some(MoveBack::Max);
+                self.goto(Step::Feed);
+                Outcome::Continue
+            }
+            Key::FAuto | Key::FMax if self.step == Step::Feed => {
+                self.feed = Some(if key == Key::FAuto { Feed::Auto } else { Feed::Max });
+                self.goto(self.after_positioning());
+                self.finish_if_done()
+            }
+            // SEQ/SYM softkeys select without advancing (ENT confirms), so that choosing SYM after
+            // SEQ can be answered like the control answers a conflicting entry.
+            Key::Selection(s) if self.step == Step::Selection => {
+                let conflict = matches!(
+                    (self.selection, s),
+                    (Some(Selection::Seq(_)), Selection::Sym(_))
+                        | (Some(Selection::Sym(_)), Selection::Seq(_))
+                );
+                if conflict {
+                    return self.fail(MSG_SEQ_SYM);
+                }
+                self.selection = Some(s);
+                Outcome::Continue
+            }
+            Key::Transform(m) if self.step == Step::Transform => {
+                self.transform = Some(m);
+                self.finish()
+            }
+            // A softkey of another step (e.g. clicked twice quickly): ignored like on the control.
+            _ => Outcome::Continue,
+        }
+    }
+
+    /// Whether the current step takes typed input.
+    #[must_use]
+    pub fn takes_value(&self) -> bool {
+        matches!(self.step, Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed)
+    }
+
+    fn ent(&mut self) -> Outcome {
+        match self.step {
+            Step::RelAxis => {
+                self.goto(Step::Value(0));
+                Outcome::Continue
+            }
+            Step::Positioning => match self.positioning {
+                Some(kind) => self.key(Key::Positioning(kind)),
+                None => self.fail(MSG_CHOOSE_POS),
+            },
+            Step::Selection => {
+                self.goto(Step::Transform);
+                Outcome::Continue
+            }
+            Step::Transform => self.no_ent(),
+            Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed => {
+                if self.input.trim().is_empty() {
+                    return if self.required() { self.fail(MSG_REQUIRED) } else { self.no_ent() };
+                }
+                let value = match self.checked_value() {
+                    Ok(v) => v,
+                    Err(m) => return self.fail(m),
+                };
+                self.store(Some(value));
+                self.advance()
+            }
+        }
+    }
+
+    fn no_ent(&mut self) -> Outcome {
+        match self.step {
+            Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed if self.required() => {
+                self.fail(MSG_REQUIRED)
+            }
+            Step::Positioning => self.fail(MSG_CHOOSE_POS),
+            Step::RelAxis => self.ent(),
+            Step::Selection => {
+                self.selection = None;
+                self.goto(Step::Transform);
+                Outcome::Continue
+            }
+            Step::Transform => {
+                self.transform = None;
+                self.finish()
+            }
+            Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed => {
+                self.store(None);
+                self.advance()
+            }
+        }
+    }
+
+    /// END: confirm what is typed, skip the optional rest, insert the block.
+    fn end(&mut self) -> Outcome {
+        loop {
+            let before = self.step;
+            let outcome = match self.step {
+                Step::Selection | Step::Transform => return self.finish(),
+                Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed
+                    if !self.input.trim().is_empty() =>
+                {
+                    self.ent()
+                }
+                // A chosen (reopened) positioning is confirmed; none chosen → its message.
+                Step::Positioning => self.ent(),
+                _ => self.no_ent(),
+            };
+            if self.message.is_some() || matches!(outcome, Outcome::Finished(_)) {
+                return outcome;
+            }
+            if self.step == before {
+                return outcome;
+            }
+        }
+    }
+
+    fn required(&self) -> bool {
+        match self.step {
+            Step::Value(_) => self.field().is_some_and(|f| f.required),
+            _ => false,
+        }
+    }
+
+    /// Reads the typed value and checks it against the word's input range.
+    fn checked_value(&self) -> Result<Value, Message> {
+        let value = parse_value(self.input.trim()).ok_or(MSG_INVALID)?;
+        if let (Value::Number(x), Some(range)) = (value, input_range(self.word())) {
+            if !range.contains(x) {
+                return Err(if range.angle {
+                    t("Winkel nicht erlaubt", "Entered angle not permitted")
+                } else {
+                    t("Eingabewert außerhalb des Bereichs", "Input value out of range")
+                });
+            }
+        }
+        if matches!(self.step, Step::Dist | Step::MoveBack | Step::Feed)
+            && matches!(value, Value::Number(x) if x < 0.0)
+        {
+            return Err(t("Eingabewert falsch: nicht negativ", "Invalid input: must not be negative"));
+        }
+        Ok(value)
+    }
+
+    fn store(&mut self, value: Option<Value>) {
+        match self.step {
+            Step::Value(i) => {
+                if self.values.len() <= i {
+                    self.values.resize(i + 1, None);
+                }
+                self.values[i] = value;
+            }
+            Step::Dist => self.dist = value,
+            Step::MoveBack => self.move_back = value.map(MoveBack::Dist),
+            Step::Feed => self.feed = value.map(Feed::Value),
+            _ => {}
+        }
+    }
+
+    fn advance(&mut self) -> Outcome {
+        let next = match self.step {
+            Step::Value(i) if i + 1 < self.function.fields().len() => Step::Value(i + 1),
+            Step::Value(_) => {
+                if self.function == Function::Axial && self.values.iter().all(Option::is_none) {
+                    self.goto(Step::Value(0));
+                    return self.fail(MSG_AXIAL_EMPTY);
+                }
+                Step::Positioning
+            }
+            Step::Dist | Step::MoveBack => Step::Feed,
+            Step::Feed => self.after_positioning(),
+            other => other,
+        };
+        self.goto(next);
+        self.finish_if_done()
+    }
+
+    /// After the positioning values: SEQ/SYM if the function has them, else the block is done.
+    fn after_positioning(&self) -> Step {
+        if self.function.has_solution_options() { Step::Selection } else { Step::Transform }
+    }
+
+    fn finish_if_done(&mut self) -> Outcome {
+        if self.step == Step::Transform && !self.function.has_solution_options() {
+            return self.finish();
+        }
+        Outcome::Continue
+    }
+
+    fn finish(&mut self) -> Outcome {
+        match self.block() {
+            Ok(block) => Outcome::Finished(plane_text(&block)),
+            Err(m) => self.fail(m),
+        }
+    }
+
+    fn goto(&mut self, step: Step) {
+        self.step = step;
+        self.input = self.prefill();
+    }
+
+    /// A reopened block shows its stored value at each prompt.
+    fn prefill(&self) -> String {
+        let v = match self.step {
+            Step::Value(i) => self.values.get(i).copied().flatten(),
+            Step::Dist => self.dist,
+            Step::MoveBack => match self.move_back {
+                Some(MoveBack::Dist(v)) => Some(v),
+                _ => None,
+            },
+            Step::Feed => match self.feed {
+                Some(Feed::Value(v)) => Some(v),
+                _ => None,
+            },
+            _ => None,
+        };
+        v.map(value_text).unwrap_or_default()
+    }
+
+    fn fail(&mut self, message: Message) -> Outcome {
+        self.message = Some(message);
+        Outcome::Continue
+    }
+
+    /// The block as entered so far, or what is still missing.
+    pub fn block(&self) -> Result<PlaneBlock, Message> {
+        let v = |i: usize| self.values.get(i).copied().flatten().ok_or(MSG_REQUIRED);
+        let def = match self.function {
+            Function::Spatial => PlaneDef::Spatial { spa: v(0)?, spb: v(1)?, spc: v(2)? },
+            Function::Projected => PlaneDef::Projected { propr: v(0)?, promin: v(1)?, rot: v(2)? },
+            Function::Euler => PlaneDef::Euler { eulpr: v(0)?, eulnu: v(1)?, eulrot: v(2)? },
+            Function::Vector => {
+                PlaneDef::Vector { base: [v(0)?, v(1)?, v(2)?], normal: [v(3)?, v(4)?, v(5)?] }
+            }
+            Function::Points => PlaneDef::Points {
+                p1: [v(0)?, v(1)?, v(2)?],
+                p2: [v(3)?, v(4)?, v(5)?],
+                p3: [v(6)?, v(7)?, v(8)?],
+            },
+            Function::Relativ => PlaneDef::Relativ { axis: self.rel_axis, angle: v(0)? },
+            Function::Axial => {
+                let axes: Vec<AxialAngle> = [RotaryAxis::A, RotaryAxis::B, RotaryAxis::C]
+                    .into_iter()
+                    .enumerate()
+                    .filter_map(|(i, axis)| {
+                        self.values.get(i).copied().flatten().map(|value| AxialAngle {
+                            axis,
+                            value,
+                            incremental: false,
+                        })
+                    })
+                    .collect();
+                if axes.is_empty() {
+                    return Err(MSG_AXIAL_EMPTY);
+                }
+                PlaneDef::Axial { axes }
+            }
+            Function::Reset => PlaneDef::Reset,
+        };
+        let positioning = match self.positioning.ok_or(MSG_CHOOSE_POS)? {
+            PosKind::Move => Positioning::Move { dist: self.dist, feed: self.feed },
+            PosKind::Turn => Positioning::Turn { move_back: self.move_back, feed: self.feed },
+            PosKind::Stay => Positioning::Stay,
+        };
+        Ok(PlaneBlock {
+            def,
+            positioning: Some(positioning),
+            selection: self.selection,
+            transform: self.transform,
+        })
+    }
+
+    /// The angles as typed so far (missing ones 0, the current input included if readable):
+    /// the live preview of the plane.
+    #[must_use]
+    pub fn preview(&self) -> Option<PlaneDef<f64>> {
+        let number = |v: Option<Value>| match v {
+            Some(Value::Number(x)) => x,
+            _ => 0.0,
+        };
+        let typed = parse_value(self.input.trim());
+        let get = |i: usize| {
+            if self.step == Step::Value(i) && typed.is_some() {
+                number(typed)
+            } else {
+                number(self.values.get(i).copied().flatten())
+            }
+        };
+        Some(match self.function {
+            Function::Spatial => PlaneDef::Spatial { spa: get(0), spb: get(1), spc: get(2) },
+            Function::Projected => PlaneDef::Projected { propr: get(0), promin: get(1), rot: get(2) },
+            Function::Euler => PlaneDef::Euler { eulpr: get(0), eulnu: get(1), eulrot: get(2) },
+            Function::Relativ => PlaneDef::Relativ { axis: self.rel_axis, angle: get(0) },
+            Function::Vector => {
+                PlaneDef::Vector { base: [get(0), get(1), get(2)], normal: [get(3), get(4), get(5)] }
+            }
+            Function::Points => PlaneDef::Points {
+                p1: [get(0), get(1), get(2)],
+                p2: [get(3), get(4), get(5)],
+                p3: [get(6), get(7), get(8)],
+            },
+            Function::Axial | Function::Reset => return None,
+        })
+    }
+
+    /// The softkeys of the current step (the reducer turns them into the softkey row).
+    #[must_use]
+    pub fn softkeys(&self) -> Vec<(Key, &'static str)> {
+        match self.step {
+            Step::RelAxis => vec![
+                (Key::RelAxis(RelAxis::Spa), "SPA"),
+                (Key::RelAxis(RelAxis::Spb), "SPB"),
+                (Key::RelAxis(RelAxis::Spc), "SPC"),
+            ],
+            Step::Positioning => vec![
+                (Key::Positioning(PosKind::Move), "MOVE"),
+                (Key::Positioning(PosKind::Turn), "TURN"),
+                (Key::Positioning(PosKind::Stay), "STAY"),
+            ],
+            Step::MoveBack => vec![(Key::MbMax, "MB MAX")],
+            Step::Feed => vec![(Key::FAuto, "F AUTO"), (Key::FMax, "FMAX")],
+            Step::Selection => vec![
+                (Key::Selection(Selection::Seq(Sign::Plus)), "SEQ+"),
+                (Key::Selection(Selection::Seq(Sign::Minus)), "SEQ-"),
+                (Key::Selection(Selection::Sym(Sign::Plus)), "SYM+"),
+                (Key::Selection(Selection::Sym(Sign::Minus)), "SYM-"),
+            ],
+            Step::Transform => vec![
+                (Key::Transform(TransformMode::CoordRot), "COORD ROT"),
+                (Key::Transform(TransformMode::TableRot), "TABLE ROT"),
+            ],
+            Step::Value(_) | Step::Dist => Vec::new(),
+        }
+    }
+}
+
+fn function_of(def: &PlaneDef) -> Function {
+    match def {
+        PlaneDef::Spatial { .. } => Function::Spatial,
+        PlaneDef::Projected { .. } => Function::Projected,
+        PlaneDef::Euler { .. } => Function::Euler,
+        PlaneDef::Vector { .. } => Function::Vector,
+        PlaneDef::Points { .. } => Function::Points,
+        PlaneDef::Relativ { .. } => Function::Relativ,
+        PlaneDef::Axial { .. } => Function::Axial,
+        PlaneDef::Reset => Function::Reset,
+    }
+}
+
+fn rel_word(axis: RelAxis) -> &'static str {
+    match axis {
+        RelAxis::Spa => "SPA",
+        RelAxis::Spb => "SPB",
+        RelAxis::Spc => "SPC",
+    }
+}
+
+/// A value as the trainee would type it again (no `+`).
+fn value_text(v: Value) -> String {
+    match v {
+        Value::Number(x) => format!("{x}"),
+        Value::Param { index, negate } => format!("{}Q{index}", if negate { "-" } else { "" }),
+    }
+}
+
+/// The control's `-/+` key: flips the sign of what is typed.
+fn toggle_sign(input: &str) -> String {
+    let s = input.trim();
+    if let Some(rest) = s.strip_prefix('-') {
+        rest.to_owned()
+    } else if let Some(rest) = s.strip_prefix('+') {
+        format!("-{rest}")
+    } else {
+        format!("-{s}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Types `text` and presses ENT.
+    fn enter(d: &mut Dialog, text: &str) -> Outcome {
+        for c in text.chars() {
+            d.key(Key::Char(c));
+        }
+        d.key(Key::Ent)
+    }
+
+    fn finished(o: Outcome) -> String {
+        match o {
+            Outcome::Finished(text) => text,
+            Outcome::Continue => panic!("dialog not finished"),
+        }
+    }
+
+    /// SPATIAL with the given angles up to the positioning softkeys.
+    fn spatial(a: &str, b: &str, c: &str) -> Dialog {
+        let mut d = Dialog::new(Function::Spatial);
+        for v in [a, b, c] {
+            assert_eq!(enter(&mut d, v), Outcome::Continue);
+            assert_eq!(d.message, None, "{v}");
+        }
+        assert_eq!(d.step, Step::Positioning);
+        d
+    }
+
+    #[test]
+    fn spatial_turn_fmax_as_in_musterprogramm_1() {
+        let mut d = spatial("0", "15", "0");
+        d.key(Key::Positioning(PosKind::Turn));
+        assert_eq!(d.step, Step::MoveBack);
+        d.key(Key::NoEnt);
+        assert_eq!(d.step, Step::Feed);
+        d.key(Key::FMax);
+        assert_eq!(d.step, Step::Selection);
+        d.key(Key::NoEnt);
+        assert_eq!(d.step, Step::Transform);
+        assert_eq!(finished(d.key(Key::NoEnt)), "PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX");
+    }
+
+    #[test]
+    fn spatial_variants_move_dist_f_mb_max_seq_table_rot() {
+        let mut d = spatial("0", "15", "0");
+        d.key(Key::Positioning(PosKind::Move));
+        assert_eq!(d.word(), "DIST");
+        enter(&mut d, "50");
+        assert_eq!(d.word(), "F");
+        enter(&mut d, "500");
+        d.key(Key::Selection(Selection::Seq(Sign::Minus)));
+        d.key(Key::Ent);
+        assert_eq!(
+            finished(d.key(Key::Transform(TransformMode::TableRot))),
+            "PLANE SPATIAL SPA+0 SPB+15 SPC+0 MOVE DIST+50 F500 SEQ- TABLE ROT"
+        );
+
+        let mut d = spatial("0", "15", "0");
+        d.key(Key::Positioning(PosKind::Turn));
+        d.key(Key::MbMax);
+        d.key(Key::FMax);
+        assert_eq!(finished(d.key(Key::End)), "PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN MB MAX FMAX");
+    }
+
+    #[test]
+    fn euler_as_in_the_manual_example() {
+        let mut d = Dialog::new(Function::Euler);
+        enter(&mut d, "0");
+        enter(&mut d, "45");
+        enter(&mut d, "0");
+        d.key(Key::Positioning(PosKind::Turn));
+        d.key(Key::MbMax);
+        d.key(Key::FMax);
+        d.key(Key::Selection(Selection::Sym(Sign::Minus)));
+        d.key(Key::Ent);
+        assert_eq!(
+            finished(d.key(Key::Transform(TransformMode::TableRot))),
+            "PLANE EULER EULPR+0 EULNU+45 EULROT+0 TURN MB MAX FMAX SYM- TABLE ROT"
+        );
+    }
+
+    #[test]
+    fn reset_asks_only_for_positioning() {
+        let mut d = Dialog::new(Function::Reset);
+        assert_eq!(d.step, Step::Positioning);
+        assert_eq!(finished(d.key(Key::Positioning(PosKind::Stay))), "PLANE RESET STAY");
+        let mut d = Dialog::new(Function::Reset);
+        d.key(Key::Positioning(PosKind::Turn));
+        d.key(Key::NoEnt);
+        assert_eq!(finished(d.key(Key::FMax)), "PLANE RESET TURN FMAX");
+    }
+
+    #[test]
+    fn wrong_entries_are_answered_and_kept_for_correction() {
+        let mut d = Dialog::new(Function::Spatial);
+        enter(&mut d, "1a5");
+        assert_eq!(d.message, Some(MSG_INVALID));
+        assert_eq!(d.input, "1a5", "nothing typed is lost");
+        assert_eq!(d.step, Step::Value(0));
+        d.key(Key::Backspace);
+        d.key(Key::Backspace);
+        d.key(Key::Char('5'));
+        d.key(Key::Ent);
+        assert_eq!(d.message, None);
+        assert_eq!(d.step, Step::Value(1));
+
+        enter(&mut d, "400");
+        assert_eq!(d.message.map(|m| m.de), Some("Winkel nicht erlaubt"));
+        assert_eq!(d.input, "400");
+        d.input.clear();
+        d.key(Key::Ent);
+        assert_eq!(d.message, Some(MSG_REQUIRED), "SPB is required");
+        d.key(Key::NoEnt);
+        assert_eq!(d.message, Some(MSG_REQUIRED), "NO ENT cannot skip a required angle");
+        assert_eq!(d.values.first().copied().flatten(), Some(Value::Number(15.0)), "SPA kept");
+    }
+
+    #[test]
+    fn seq_together_with_sym_is_refused() {
+        let mut d = spatial("0", "45", "0");
+        d.key(Key::Positioning(PosKind::Stay));
+        d.key(Key::Selection(Selection::Seq(Sign::Plus)));
+        d.key(Key::Selection(Selection::Sym(Sign::Minus)));
+        assert_eq!(d.message, Some(MSG_SEQ_SYM));
+        assert_eq!(d.selection, Some(Selection::Seq(Sign::Plus)), "the first choice stays");
+        d.key(Key::Ent);
+        assert_eq!(finished(d.key(Key::NoEnt)), "PLANE SPATIAL SPA+0 SPB+45 SPC+0 STAY SEQ+");
+    }
+
+    #[test]
+    fn negative_and_q_values_and_sign_key() {
+        let mut d = Dialog::new(Function::Spatial);
+        d.key(Key::Char('4'));
+        d.key(Key::Char('5'));
+        d.key(Key::ToggleSign);
+        assert_eq!(d.input, "-45");
+        d.key(Key::Ent);
+        enter(&mut d, "Q27");
+        enter(&mut d, "0");
+        assert_eq!(
+            finished({
+                d.key(Key::Positioning(PosKind::Stay));
+                d.key(Key::End)
+            }),
+            "PLANE SPATIAL SPA-45 SPB+Q27 SPC+0 STAY"
+        );
+    }
+
+    #[test]
+    fn relativ_and_axial_and_points() {
+        let mut d = Dialog::new(Function::Relativ);
+        d.key(Key::RelAxis(RelAxis::Spb));
+        assert_eq!(d.word(), "SPB");
+        enter(&mut d, "30");
+        d.key(Key::Positioning(PosKind::Stay));
+        assert_eq!(finished(d.key(Key::End)), "PLANE RELATIV SPB+30 STAY");
+
+        let mut d = Dialog::new(Function::Axial);
+        d.key(Key::NoEnt);
+        d.key(Key::NoEnt);
+        d.key(Key::NoEnt);
+        assert_eq!(d.message, Some(MSG_AXIAL_EMPTY));
+        d.key(Key::NoEnt);
+        enter(&mut d, "-45");
+        d.key(Key::NoEnt);
+        assert_eq!(finished(d.key(Key::Positioning(PosKind::Stay))), "PLANE AXIAL B-45 STAY");
+
+        let mut d = Dialog::new(Function::Points);
+        for v in ["0", "0", "0", "100", "0", "0", "0", "100", "100"] {
+            enter(&mut d, v);
+        }
+        d.key(Key::Positioning(PosKind::Stay));
+        assert_eq!(
+            finished(d.key(Key::End)),
+            "PLANE POINTS P1X+0 P1Y+0 P1Z+0 P2X+100 P2Y+0 P2Z+0 P3X+0 P3Y+100 P3Z+100 STAY"
+        );
+    }
+
+    #[test]
+    fn reopened_block_shows_its_values_and_finishes_unchanged() {
+        let text = "PLANE SPATIAL SPA+0 SPB+15 SPC+0 MOVE DIST+50 F500 SEQ- TABLE ROT";
+        let block = match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(|b| b.body) {
+            Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
+            other => panic!("{other:?}"),
+        };
+        let mut d = Dialog::reopen(&block);
+        assert_eq!(d.input, "0");
+        d.key(Key::Ent);
+        assert_eq!(d.input, "15");
+        assert_eq!(finished(d.key(Key::End)), text);
+    }
+
+    #[test]
+    fn preview_follows_the_value_being_typed() {
+        let mut d = Dialog::new(Function::Spatial);
+        d.key(Key::Ent); // required: refused, nothing changes
+        enter(&mut d, "0");
+        d.key(Key::Char('3'));
+        d.key(Key::Char('0'));
+        assert_eq!(d.preview(), Some(PlaneDef::Spatial { spa: 0.0, spb: 30.0, spc: 0.0 }));
+    }
+}

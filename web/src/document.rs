@@ -1,0 +1,90 @@
+//! The program being edited: its text, what the core's parser read from it, and a line index.
+//! Parsed once per change of text; every view reads the same result.
+
+use schwenkbar_core::{Diagnostic, Program, parse};
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Document {
+    pub text: String,
+    pub program: Program,
+    pub diagnostics: Vec<Diagnostic>,
+    /// Byte offset of each line's start.
+    line_starts: Vec<usize>,
+}
+
+impl Document {
+    #[must_use]
+    pub fn new(text: String) -> Document {
+        let (program, diagnostics) = parse(&text);
+        let line_starts = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
+        Document { text, program, diagnostics, line_starts }
+    }
+
+    /// Index of the last block (0 for an empty program).
+    #[must_use]
+    pub fn last_index(&self) -> usize {
+        self.program.blocks.len().saturating_sub(1)
+    }
+
+    /// Number of errors (the control would refuse these blocks).
+    #[must_use]
+    pub fn error_count(&self) -> usize {
+        self.diagnostics.iter().filter(|d| d.is_error()).count()
+    }
+
+    /// Number of text lines (a final line break does not open another line).
+    #[must_use]
+    pub fn line_count(&self) -> usize {
+        let n = self.line_starts.len();
+        if self.text.ends_with('\n') { n - 1 } else { n }
+    }
+
+    /// Text of line `i` (0-based) without its line break.
+    #[must_use]
+    pub fn line(&self, i: usize) -> &str {
+        let Some(&start) = self.line_starts.get(i) else { return "" };
+        let end = self.line_starts.get(i + 1).map_or(self.text.len(), |&e| e - 1);
+        self.text.get(start..end).unwrap_or("").trim_end_matches('\r')
+    }
+
+    /// The block a 0-based line belongs to (continuation lines belong to the block above).
+    #[must_use]
+    pub fn block_at_line(&self, line: usize) -> Option<usize> {
+        let line1 = u32::try_from(line + 1).ok()?;
+        match self.program.blocks.binary_search_by_key(&line1, |b| b.line) {
+            Ok(i) => Some(i),
+            Err(0) => None,
+            Err(i) => Some(i - 1),
+        }
+    }
+
+    /// First and last 0-based line of block `index`.
+    #[must_use]
+    pub fn block_lines(&self, index: usize) -> Option<(usize, usize)> {
+        let b = self.program.blocks.get(index)?;
+        let first = (b.line as usize).saturating_sub(1);
+        let end = b.span.end.saturating_sub(1).max(b.span.start);
+        let last = self.line_starts.partition_point(|&s| s <= end).saturating_sub(1);
+        Some((first, last.max(first)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_and_blocks_map_both_ways_including_cycle_continuations() {
+        let doc = Document::new(
+            "0 BEGIN PGM T MM\n1 CYCL DEF 200 BOHREN ~\n  Q200=+2 ;SICHERHEITS-ABST. ~\n  Q201=-5 ;TIEFE\n2 END PGM T MM\n"
+                .to_owned(),
+        );
+        assert_eq!(doc.line_count(), 5);
+        assert_eq!(doc.line(2), "  Q200=+2 ;SICHERHEITS-ABST. ~");
+        assert_eq!(doc.block_at_line(3), Some(1));
+        assert_eq!(doc.block_at_line(4), Some(2));
+        assert_eq!(doc.block_lines(1), Some((1, 3)));
+        assert_eq!(doc.block_lines(2), Some((4, 4)));
+        assert_eq!(doc.line(99), "");
+    }
+}

@@ -1,0 +1,249 @@
+//! The "why" panel's content for the cursor block: what the block does, in one or two
+//! sentences, and for a PLANE block the solver's explanation — both candidate axis positions,
+//! limits, path lengths, the rule that decided, the symmetry point and the equivalent SPATIAL and
+//! EULER angles. Pure: the component only renders the lines.
+
+use glam::DMat3;
+use schwenkbar_core::BlockBody;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::plane::{PlaneBlock, Value};
+use schwenkbar_core::solve::{Explanation, SolveOptions, axis_word, fmt_deg, solve_block};
+
+use crate::i18n::Lang;
+
+/// One PLANE solve as the panel shows it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneWhy {
+    pub spatial: String,
+    pub euler: String,
+    pub tool_axis: String,
+    /// One line per candidate: axis words, limits, path, chosen or why not.
+    pub candidates: Vec<(String, bool)>,
+    pub rule: String,
+    pub symmetry: String,
+    /// The control's message if it refuses the block.
+    pub error: Option<String>,
+    /// The UNCONFIRMED assumptions that influenced the result.
+    pub assumptions: Vec<String>,
+}
+
+/// A PLANE block whose values are all numbers (Q parameters are known only while running).
+fn numeric(block: &PlaneBlock) -> Option<PlaneBlock<f64>> {
+    block
+        .try_map(|v| match v {
+            Value::Number(x) => Ok(*x),
+            Value::Param { .. } => Err(()),
+        })
+        .ok()
+}
+
+/// Explains a PLANE block on `machine`, with the rotary axes starting at `opts.start` and the
+/// tilt active before it `active` (identity when nothing is tilted).
+#[must_use]
+pub fn explain_plane(
+    block: &PlaneBlock,
+    machine: &Machine,
+    active: DMat3,
+    opts: &SolveOptions,
+    l: Lang,
+) -> PlaneWhy {
+    let Some(block) = numeric(block) else {
+        return PlaneWhy {
+            error: Some(
+                l.t(
+                    "Der Satz enthält Q-Parameter: ihre Werte kennt erst der Programmlauf.",
+                    "The block uses Q parameters: their values are known only when the program runs.",
+                )
+                .to_owned(),
+            ),
+            ..PlaneWhy::empty()
+        };
+    };
+    match solve_block(machine, &block, active, opts) {
+        Ok(e) => from_explanation(&e, l),
+        Err(err) => PlaneWhy {
+            error: Some(l.t(&err.message_de(), &err.message_en()).to_owned()),
+            ..PlaneWhy::empty()
+        },
+    }
+}
+
+impl PlaneWhy {
+    fn empty() -> PlaneWhy {
+        PlaneWhy {
+            spatial: String::new(),
+            euler: String::new(),
+            tool_axis: String::new(),
+            candidates: Vec::new(),
+            rule: String::new(),
+            symmetry: String::new(),
+            error: None,
+            assumptions: Vec::new(),
+        }
+    }
+}
+
+fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
+    let [a, b, c] = e.spatial;
+    let [pr, nu, rot] = e.euler;
+    let [tx, ty, tz] = e.tool_axis;
+    let candidates = e
+        .candidates
+        .iter()
+        .enumerate()
+        .map(|(i, cand)| {
+            let axes: Vec<String> = cand.axes.iter().map(|(ax, v)| axis_word(ax, v)).collect();
+            let limits = if cand.in_limits {
+                l.t("in den Endschaltern", "inside the limits")
+            } else {
+                l.t("außerhalb der Endschalter", "outside the limits")
+            };
+            let chosen = e.chosen == Some(i);
+            let verdict =
+                if chosen { l.t("gewählt", "chosen") } else { l.t("nicht gewählt", "not chosen") };
+            (
+                format!(
+                    "{} · {limits} · {} {:.1}° · {verdict}",
+                    axes.join(" "),
+                    l.t("Weg", "path"),
+                    cand.path
+                ),
+                chosen,
+            )
+        })
+        .collect();
+    let (rule_de, rule_en) = e.rule.texts();
+    PlaneWhy {
+        spatial: format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c)),
+        euler: format!("PLANE EULER EULPR{} EULNU{} EULROT{}", fmt_deg(pr), fmt_deg(nu), fmt_deg(rot)),
+        tool_axis: format!("({tx:.4}, {ty:.4}, {tz:.4})"),
+        candidates,
+        rule: l.t(&rule_de, &rule_en).to_owned(),
+        symmetry: format!(
+            "{} {}: {}",
+            l.t("Symmetriepunkt der Master-Achse", "Symmetry point of the master axis"),
+            e.master.letter(),
+            fmt_deg(e.symmetry_point)
+        ),
+        error: e.error_message.map(|m| l.t(m.de(), m.en()).to_owned()),
+        assumptions: e.decisions.iter().map(|d| l.t(d.text_de(), d.text_en()).to_owned()).collect(),
+    }
+}
+
+/// What a block does, in one or two sentences.
+#[must_use]
+pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
+    match body {
+        BlockBody::BeginPgm { .. } => l.t("Programmanfang: Name und Maßeinheit.", "Program start: name and unit."),
+        BlockBody::EndPgm { .. } => l.t("Programmende.", "End of program."),
+        BlockBody::Empty | BlockBody::Structure { .. } => {
+            l.t("Leersatz oder Gliederung: die Steuerung tut hier nichts.", "Empty block or structure item: nothing happens.")
+        }
+        BlockBody::BlkForm(_) => l.t(
+            "Rohteil-Definition für die Grafik: MIN- und MAX-Punkt im Werkstück-Koordinatensystem.",
+            "Blank form for the graphics: MIN and MAX point in the workpiece coordinate system.",
+        ),
+        BlockBody::ToolCall(_) => l.t(
+            "Werkzeugaufruf: Werkzeug, Werkzeugachse, Drehzahl und Vorschub.",
+            "Tool call: tool, tool axis, spindle speed and feed.",
+        ),
+        BlockBody::L(_) => l.t(
+            "Gerade: fährt auf die programmierten Koordinaten (Eingabe-KS I-CS; mit M91 Maschinen-Koordinaten).",
+            "Straight line to the programmed coordinates (input CS I-CS; with M91 machine coordinates).",
+        ),
+        BlockBody::Plane(p) if matches!(p.def, schwenkbar_core::plane::PlaneDef::Reset) => l.t(
+            "PLANE RESET setzt die Schwenkung zurück; mit MOVE/TURN schwenken auch die Drehachsen zurück, mit STAY bleiben sie stehen.",
+            "PLANE RESET cancels the tilt; with MOVE/TURN the rotary axes return too, with STAY they stay tilted.",
+        ),
+        BlockBody::Plane(_) => l.t(
+            "Schwenkt die Bearbeitungsebene: die Steuerung rechnet die Raumlage in Achswinkel der Maschine um und wählt eine der möglichen Lösungen.",
+            "Tilts the working plane: the control converts the orientation into the machine's axis angles and picks one of the possible solutions.",
+        ),
+        BlockBody::CycleDef(_) | BlockBody::CycleDefOld(_) => l.t(
+            "Zyklusdefinition: wirkt erst beim Aufruf (M99 oder CYCL CALL), außer bei Koordinatentransformationen.",
+            "Cycle definition: acts only when called (M99 or CYCL CALL), except coordinate transformations.",
+        ),
+        BlockBody::CyclCall { .. } => l.t("Ruft den zuletzt definierten Zyklus auf.", "Calls the last defined cycle."),
+        BlockBody::TransDatum { .. } | BlockBody::TransDatumReset => l.t(
+            "Nullpunktverschiebung: vor dem Schwenken verschiebt sie den Ursprung der Bearbeitungsebene (WPL-CS).",
+            "Datum shift: before tilting it moves the origin of the working plane (WPL-CS).",
+        ),
+        BlockBody::TransMirror { .. } | BlockBody::TransMirrorReset => l.t(
+            "Spiegelung: vor dem Schwenken spiegelt sie auch die Raumwinkel.",
+            "Mirroring: before tilting it mirrors the spatial angles too.",
+        ),
+        BlockBody::TransRotation { .. } | BlockBody::TransRotationReset => l.t(
+            "Drehung in der Bearbeitungsebene (um die Werkzeugachse).",
+            "Rotation in the working plane (about the tool axis).",
+        ),
+        BlockBody::Lbl(_) | BlockBody::CallLbl { .. } | BlockBody::CallPgm { .. } => {
+            l.t("Unterprogramm: Marke oder Aufruf.", "Subprogram: label or call.")
+        }
+        BlockBody::QAssign { .. } => l.t("Weist einem Q-Parameter einen Wert zu.", "Assigns a value to a Q parameter."),
+        BlockBody::MFunctions(_) => l.t("Zusatzfunktionen (M).", "Miscellaneous functions (M)."),
+        BlockBody::Unknown { .. } => l.t(
+            "Ein Satz, den dieser Trainer nicht nachbildet: er wird angezeigt, aber nicht ausgeführt.",
+            "A block this trainer does not model: shown, not executed.",
+        ),
+        BlockBody::Invalid { .. } => l.t("Dieser Satz ist fehlerhaft (siehe Meldung).", "This block is invalid (see the message)."),
+        _ => l.t("Bahnfunktion.", "Path function."),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use schwenkbar_core::parse;
+
+    fn plane(text: &str) -> PlaneBlock {
+        match parse(text).0.blocks.into_iter().next().map(|b| b.body) {
+            Some(BlockBody::Plane(p)) => *p,
+            other => panic!("not a PLANE block: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn seed_table_row_shows_both_candidates_and_the_rule() {
+        let m = Machine::builtin("ac-table").expect("shipped");
+        let why = explain_plane(
+            &plane("PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX SEQ-"),
+            &m,
+            DMat3::IDENTITY,
+            &SolveOptions::default(),
+            Lang::De,
+        );
+        assert_eq!(why.error, None);
+        assert_eq!(why.candidates.len(), 2);
+        let chosen: Vec<_> = why.candidates.iter().filter(|c| c.1).collect();
+        assert_eq!(chosen.len(), 1);
+        assert!(chosen[0].0.contains("A-45") && chosen[0].0.contains("C-90"), "{chosen:?}");
+        assert!(why.rule.contains("SEQ"), "{}", why.rule);
+        assert_eq!(why.spatial, "PLANE SPATIAL SPA+0 SPB+45 SPC+0");
+    }
+
+    #[test]
+    fn refused_block_says_winkel_nicht_erlaubt() {
+        let m = Machine::builtin("ba-table").expect("shipped");
+        let why = explain_plane(
+            &plane("PLANE SPATIAL SPA-45 SPB+0 SPC+0 TURN FMAX SYM-"),
+            &m,
+            DMat3::IDENTITY,
+            &SolveOptions::default(),
+            Lang::De,
+        );
+        assert!(why.error.as_deref().is_some_and(|e| e.starts_with("Winkel nicht erlaubt")), "{why:?}");
+    }
+
+    #[test]
+    fn q_parameters_are_explained_not_guessed() {
+        let m = Machine::builtin("ac-table").expect("shipped");
+        let why = explain_plane(
+            &plane("PLANE SPATIAL SPA+0 SPB+Q27 SPC+0 STAY"),
+            &m,
+            DMat3::IDENTITY,
+            &SolveOptions::default(),
+            Lang::En,
+        );
+        assert!(why.error.as_deref().is_some_and(|e| e.contains("Q parameters")));
+    }
+}
