@@ -98,12 +98,9 @@ fn axes_map(s: &State) -> Axes {
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {
-    let src = match crate::input::read(&args.file) {
+    let src = match crate::input::read_or_report(&args.file) {
         Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(code) => return code,
     };
     let machine = match Machine::builtin(&args.machine) {
         Ok(m) => m,
