@@ -14,7 +14,8 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::orientation;
 use schwenkbar_core::plane::{RelAxis, RotaryAxis};
 use schwenkbar_core::sim::{
-    ActiveTransform, Kin, Level, SegmentKind, SimErrorCode, SimOptions, Simulation, State, simulate,
+    ActiveTransform, Kin, Level, SegmentKind, SegmentPath, SimErrorCode, SimOptions, Simulation, State,
+    simulate,
 };
 use schwenkbar_core::solve::{self, SolveOptions};
 use schwenkbar_core::{Program, parse};
@@ -205,8 +206,16 @@ fn stay_moves_nothing_and_q120_to_q122_position_the_axes_later() {
     assert!(sim.error.is_none(), "{:?}", sim.error);
     let s4 = after(&p, &sim, 4);
     let s5 = after(&p, &sim, 5);
-    assert!(s5.segments.is_empty());
     assert_eq!(s5.axes, s4.axes);
+    assert_eq!(s5.segments.len(), 1, "one STAY segment for the view");
+    let stay = &s5.segments[0];
+    assert_eq!(stay.kind, SegmentKind::SwivelStay);
+    for k in 0..=10 {
+        assert_eq!(stay.axes_at(f64::from(k) / 10.0), s4.axes, "STAY: no axis moves");
+    }
+    assert!(
+        matches!(stay.path, SegmentPath::Stay { from, to } if from == DMat3::IDENTITY && to == orientation::spatial(0.0, 15.0, 0.0))
+    );
     let zero = AxisValues::default().with(RotaryAxis::A, 0.0).with(RotaryAxis::C, 0.0);
     let want = solver_axes(&m, 0.0, 15.0, 0.0, zero);
     assert_close!([s5.q[&120], s5.q[&122]], [want.a.expect("A"), want.c.expect("C")], EXACT);
@@ -356,7 +365,10 @@ fn cycle_19_tilts_like_spatial_angles_and_cycle_200_drills_along_the_tilted_axis
     let (p, m, sim) = run("tests/fixtures/sim/cycle19_stay.h", "ac-table");
     assert!(sim.error.is_none(), "{:?}", sim.error);
     let s6 = after(&p, &sim, 6);
-    assert!(s6.segments.is_empty(), "cycle 19 does not move the axes itself");
+    assert!(
+        s6.segments.iter().all(|g| g.kind == SegmentKind::SwivelStay && g.start == g.end),
+        "cycle 19 does not move the axes itself"
+    );
     assert_close!([s6.q[&120], s6.q[&122]], [15.0, 90.0], EXACT);
     let s7 = after(&p, &sim, 7);
     assert_close!(s7.axes.rotary_values().a.expect("A"), 15.0, EXACT);

@@ -104,6 +104,10 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
+/// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
+/// duration; one second lets the view show the coordinate system turning (derived, display only).
+pub const STAY_SECONDS: f64 = 1.0;
+
 fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> (String, String)) {
     if let Some(r) = rec.as_deref_mut() {
         let (de, en) = text();
@@ -788,6 +792,7 @@ impl Interp {
         let opts = SolveOptions { start, ..SolveOptions::default() };
         let mw = self.tf.mirror_w_matrix();
         let mirrored = self.tf.mirror_w.iter().any(|&b| b);
+        let before = self.tf.r();
         let plane_err = |error| SimErrorCode::Plane { error };
         let (expl, tilt) = match &pb.def {
             PlaneDef::Reset => {
@@ -848,6 +853,7 @@ impl Interp {
                         )
                     });
                 }
+                self.stay_segment(rec, idx, before, self.tf.r());
             }
             Some(Positioning::Turn { move_back, feed }) => {
                 if let Some(mb) = move_back {
@@ -895,6 +901,23 @@ impl Interp {
         }
         self.sync_pos();
         Ok(())
+    }
+
+    /// STAY: no axis moves; a segment of [`STAY_SECONDS`] lets the view turn the working plane
+    /// from `from` to `to` (W-CS orientations).
+    fn stay_segment(&self, rec: &mut Option<&mut Rec>, block: usize, from: DMat3, to: DMat3) {
+        if let Some(r) = rec.as_deref_mut() {
+            r.segments.push(Segment {
+                step: self.step_count.saturating_sub(1),
+                block,
+                kind: SegmentKind::SwivelStay,
+                start: self.axes,
+                end: self.axes,
+                rotary_delta: [0.0; 2],
+                duration: STAY_SECONDS,
+                path: SegmentPath::Stay { from, to },
+            });
+        }
     }
 
     fn swivel_rate(&self, feed: Option<Feed<f64>>) -> Rate {
@@ -1021,9 +1044,11 @@ impl Interp {
                 abc[k] = self.value(&a.value)?;
             }
         }
+        let before = self.tf.r();
         if abc.iter().all(|&v| v == 0.0) {
             self.tf.tilt = None;
             self.plane = None;
+            self.stay_segment(rec, idx, before, DMat3::IDENTITY);
             self.sync_pos();
             note(rec, || ("Zyklus 19 zurückgesetzt".into(), "Cycle 19 reset".into()));
             return Ok(());
@@ -1049,6 +1074,7 @@ impl Interp {
         ))?);
         self.set_q_from(&e);
         self.tf.tilt = Some(r);
+        self.stay_segment(rec, idx, before, r);
         self.plane = Some(Arc::new(ActivePlane {
             block: idx,
             source: TiltSource::Cycle19,

@@ -1,7 +1,7 @@
 //! Motion segments: what the axes do during a block, evaluable at any time fraction for the 3D
 //! view's animation.
 
-use glam::DVec3;
+use glam::{DMat3, DVec3};
 use serde::Serialize;
 
 use crate::axes::AxisValues;
@@ -61,6 +61,8 @@ pub enum SegmentKind {
     SwivelMove,
     /// PLANE … TURN: only the rotary axes.
     SwivelTurn,
+    /// PLANE … STAY: no axis moves, only the working plane turns ([`SegmentPath::Stay`]).
+    SwivelStay,
     /// A motion produced by a cycle (rapid parts of a cycle are `Rapid`).
     CycleFeed,
 }
@@ -75,6 +77,9 @@ pub enum SegmentPath {
     /// rotation `centre` (W-CS) stays fixed on the workpiece and the tool tip stands `dist` from
     /// it along the tool axis (DOMAIN.md §4; formula in [`crate::sim`]).
     Move(Box<MovePath>),
+    /// PLANE … STAY (and PLANE RESET STAY): the axes stand still; the working plane turns from
+    /// `from` to `to` (orientations in W-CS, columns = tilted axes) for the view to interpolate.
+    Stay { from: DMat3, to: DMat3 },
 }
 
 /// The data a MOVE swivel needs to place the linear axes at any fraction.
@@ -117,7 +122,7 @@ impl Segment {
             self.start.rotary[1] + f * self.rotary_delta[1],
         ];
         let linear = match &self.path {
-            SegmentPath::Linear => self.start.linear.lerp(self.end.linear, f),
+            SegmentPath::Linear | SegmentPath::Stay { .. } => self.start.linear.lerp(self.end.linear, f),
             SegmentPath::Move(m) => move_linear(m, rotary),
         };
         MachineAxes { linear, rotary, letters: self.start.letters }
