@@ -22,7 +22,7 @@
 //! * **W-CS** = workpiece coordinates shifted by the preset `geometry.preset` (no basic
 //!   rotation). A point `p` (W-CS) is under the tool tip when `L = W(preset + p) − H(0)`
 //!   ([`geometry::Kin::wcs_to_linear`]); the control uses this kinematic transformation while a
-//!   tilt is active ([`unconfirmed::COMPENSATION_ONLY_WHEN_TILTED`]), otherwise `L = preset + p`.
+//!   tilt is active ([`crate::unconfirmed::COMPENSATION_ONLY_WHEN_TILTED`]), otherwise `L = preset + p`.
 //! * **Transformations**: `p_W = d_W + R·M_W·(d_I + M_I·Rz(rot)·p_I)` ([`transform`]).
 //!   Programmed coordinates are I-CS values (DOMAIN.md §1).
 //! * **Frames** in [`State::frames`] are the control's W-CS, WPL-CS and I-CS in M-CS.
@@ -36,11 +36,19 @@
 //!   `c + DIST·t_W(θ)`; the linear axes are `L(θ) = W_θ(preset + c + DIST·t_W(θ)) − H_θ(0)`
 //!   (derived from the seed's "Relativposition bleibt unverändert" and DIST = "Abstand zwischen
 //!   Drehpunkt und Werkzeugspitze"; DIST 0 or left out keeps the tool tip itself fixed).
-//! * `STAY`: nothing moves; Q120–Q122 hold the axis angles for a later `L A+Q120 C+Q122`.
+//! * `STAY`: nothing moves; Q120–Q122 hold the axis angles for a later `L A+Q120 C+Q122`. The
+//!   block still gets a [`SegmentKind::SwivelStay`] segment (axes constant, the plane's turn in
+//!   [`SegmentPath::Stay`]) so the view can show the coordinate system turning.
+//!
+//! # Programs
+//! Labels, `CALL LBL n [REP m]`, `FN 0`, formulas and `FN 9–12` jumps run; `M30`/`M2` end the
+//! run and the rest of the program is listed as not executed
+//! ([`crate::unconfirmed::LIST_BLOCKS_AFTER_END`]); a `CYCL DEF` acts at `M99`/`CYCL CALL`
+//! (cycles 200 and 232 move, every other cycle is reported as not simulated).
 //!
 //! # Durations
 //! Linear share = distance / F (mm/min); `FMAX` = `geometry.rapid_linear`; rotary share =
-//! travel / F (°/min) or `geometry.rapid_rotary` ([`unconfirmed::ROTARY_FEED_DEG_PER_MIN`]);
+//! travel / F (°/min) or `geometry.rapid_rotary` ([`crate::unconfirmed::ROTARY_FEED_DEG_PER_MIN`]);
 //! `F AUTO` = the feed of the last TOOL CALL. A segment lasts the longer of both shares.
 //!
 //! # Budget and stepping
@@ -66,7 +74,6 @@ use serde::Serialize;
 use crate::ast::{BlockBody, Label, Program};
 use crate::machine::{Machine, Texts};
 use crate::solve::Explanation;
-use crate::unconfirmed;
 
 pub use error::{SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
@@ -392,6 +399,3 @@ impl Simulation {
         self.state_at(program, step).map(|s| s.segments).unwrap_or_default()
     }
 }
-
-// Referenced so the listing choice stays next to the code that depends on it.
-const _: bool = unconfirmed::LIST_BLOCKS_AFTER_END;

@@ -5,7 +5,6 @@ use serde::Serialize;
 use crate::machine::Texts;
 use crate::orientation::PlaneError;
 use crate::solve::SolveError;
-use crate::unconfirmed;
 
 /// What went wrong at a block. Every variant carries the numbers.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -65,7 +64,7 @@ fn t(de: impl Into<String>, en: impl Into<String>) -> Texts {
 
 impl SimErrorCode {
     /// The control's message (wordings not found in a source are marked in
-    /// [`unconfirmed::SIM_MESSAGES_UNCONFIRMED`]).
+    /// [`crate::unconfirmed::SIM_MESSAGES_UNCONFIRMED`]).
     #[must_use]
     pub fn message(&self) -> Texts {
         match self {
@@ -150,6 +149,3 @@ impl SimErrorCode {
         }
     }
 }
-
-// Keeps the unconfirmed marker referenced from the code that uses the wordings.
-const _: bool = unconfirmed::SIM_MESSAGES_UNCONFIRMED;
