@@ -149,3 +149,31 @@ fn cam_sample_runs_on_the_table_machines() {
         assert_eq!(sim.len(), p.blocks.len());
     }
 }
+
+/// Every fixture program of the repository on every machine: the run ends or stops with a
+/// message in both languages, and every recorded step can be stepped to.
+#[test]
+fn every_fixture_runs_on_every_machine() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures");
+    let mut files = Vec::new();
+    for dir in ["ok", "err", "sim"] {
+        for e in std::fs::read_dir(root.join(dir)).expect("fixture dir").flatten() {
+            if e.path().extension().is_some_and(|x| x == "h") {
+                files.push(e.path());
+            }
+        }
+    }
+    assert!(files.len() > 20, "{} fixtures", files.len());
+    let opts = SimOptions { max_steps: Some(20_000), ..SimOptions::default() };
+    for f in &files {
+        let (p, _) = parse(&std::fs::read_to_string(f).expect("read"));
+        for m in machines() {
+            let sim = simulate(&p, &m, &opts);
+            if let Some(e) = &sim.error {
+                assert!(!e.message.de.is_empty() && !e.message.en.is_empty(), "{}: {e:?}", f.display());
+                assert_eq!(e.step, sim.len());
+            }
+            assert_eq!(sim.states(&p).count(), sim.len(), "{} on {}", f.display(), m.id);
+        }
+    }
+}
