@@ -104,6 +104,10 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
+/// M functions with a motion meaning the simulator does not model (M92 OEM position, M128/M129
+/// TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 4] = [92, 128, 129, 140];
+
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
 pub const STAY_SECONDS: f64 = 1.0;
@@ -437,6 +441,9 @@ impl Interp {
             }
             BlockBody::MFunctions(m) => {
                 self.spindle_m(m);
+                if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
+                    note(&mut rec, || (format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
+                }
                 if m.contains(&99) {
                     self.call_cycle(cx, &mut rec, idx)?;
                 }
@@ -646,8 +653,8 @@ impl Interp {
                 )
             });
         }
-        if line.m.contains(&92) {
-            note(rec, || ("M92 nicht simuliert".into(), "M92 not simulated".into()));
+        if let Some(&m) = line.m.iter().find(|&&m| NOT_SIMULATED_M.contains(&m)) {
+            note(rec, || (format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
         }
         self.check_rotary(cx, rot)?;
         if lin_prog && !m91 {
