@@ -630,15 +630,17 @@ impl Interp {
         let mut rot = self.axes.rotary;
         let (mut lin_prog, mut rot_prog) = (false, false);
         for w in line.axes.iter() {
-            let v = self.value(&w.value)?;
             if let Some(i) = linear_index(w.axis) {
+                let v = self.value(&w.value)?;
                 lin_prog = true;
                 let slot = if m91 { &mut l[i] } else { &mut p[i] };
                 *slot = if w.incremental { *slot + v } else { v };
             } else if let Some(ra) = rotary_of(w.axis) {
+                // The axis must exist before its value matters ("Achse nicht vorhanden" first).
                 let Some(k) = self.axes.letters.iter().position(|&x| x == ra) else {
                     return Err(SimErrorCode::AxisNotOnMachine { axis: ra.letter() });
                 };
+                let v = self.value(&w.value)?;
                 rot[k] = if w.incremental { rot[k] + v } else { v };
                 rot_prog = true;
             } else {
