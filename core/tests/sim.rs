@@ -468,3 +468,21 @@ fn axes_outside_their_limit_switches_stop_the_run() {
     assert_eq!(err.message.en, "Limit switch X+");
     assert_eq!(sim.len(), 3);
 }
+
+#[test]
+fn rotation_and_mirror_after_the_tilt_act_in_the_tilted_plane() {
+    let (p, _, sim) = run("tests/fixtures/sim/wpl_transforms.h", "ac-table");
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let r = orientation::spatial(0.0, 30.0, 0.0);
+    let s5 = after(&p, &sim, 5);
+    assert_close!(s5.tip_wcs, r * DVec3::new(0.0, 10.0, 20.0), EXACT, "ROT+90 about the tilted tool axis");
+    assert!(s5.transforms.contains(&ActiveTransform::Rotation { deg: 90.0 }));
+    let s8 = after(&p, &sim, 8);
+    assert_close!(s8.tip_wcs, r * DVec3::new(10.0, -5.0, 20.0), EXACT, "mirror Y in the tilted plane");
+    assert_eq!(
+        s8.transforms.last(),
+        Some(&ActiveTransform::Mirror { level: Level::Wpl, axes: [false, true, false] })
+    );
+    // The spatial angles are not mirrored by a mirror after the tilt.
+    assert_close!(s8.plane.as_ref().expect("tilted").spatial, [0.0, 30.0, 0.0], EXACT);
+}
