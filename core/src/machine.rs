@@ -7,11 +7,16 @@
 //! { "id": "ac-table", "name": {"de": "…", "en": "…"}, "description": {"de": "…", "en": "…"},
 //!   "chain": [ {"axis": "C", "carrier": "table", "direction": [0,0,1], "pivot": [0,0,0], "endless": true},
 //!              {"axis": "A", "carrier": "table", "direction": [1,0,0], "pivot": [0,0,0],
-//!               "limits": {"min": -100, "max": 180}} ] }
+//!               "limits": {"min": -100, "max": 180}} ],
+//!   "geometry": { "preset": [-50,-50,-160], "linear_limits": {"X": {"min": -700, "max": 700}, …},
+//!                 "rapid_linear": 12000, "rapid_rotary": 5400, "start": [0,0,0] } }
 //! ```
 //! `direction` is the axis direction at home (all axes at 0°) in machine coordinates, a unit
 //! vector, so tilted axes such as a 45° nutating head are plain data. `pivot` (mm) is a point on
-//! the axis, for MOVE and the 3D view.
+//! the axis, for MOVE and the 3D view: for a **table** axis in M-CS with every axis at home, for a
+//! **head** axis relative to the spindle gauge point (one tool length above the tool tip) with
+//! the head at home. `geometry` (optional, every field defaulted, [`MachineGeometry`]) places the
+//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]).
 
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
