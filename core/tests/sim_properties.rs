@@ -177,3 +177,28 @@ fn every_fixture_runs_on_every_machine() {
         }
     }
 }
+
+#[test]
+fn machine_geometry_is_validated_and_defaulted() {
+    let base = r#"{"id": "t", "name": {"de": "t", "en": "t"}, "description": {"de": "t", "en": "t"},
+        "chain": [{"axis": "C", "carrier": "table", "direction": [0,0,1]},
+                  {"axis": "A", "carrier": "table", "direction": [1,0,0]}]GEO}"#;
+    let m = Machine::from_json(&base.replace("GEO", "")).expect("no geometry: defaults");
+    assert_eq!(m.geometry, schwenkbar_core::machine::MachineGeometry::default());
+    let m = Machine::from_json(&base.replace("GEO", r#", "geometry": {"preset": [1, 2, 3]}"#))
+        .expect("preset only");
+    assert_eq!(m.geometry.preset, DVec3::new(1.0, 2.0, 3.0));
+    for bad in [
+        r#", "geometry": {"linear_limits": {"Z": {"min": 0, "max": -10}}}"#,
+        r#", "geometry": {"rapid_linear": 0}"#,
+        r#", "geometry": {"rapid_rotary": -5}"#,
+        r#", "geometry": {"unknown": 1}"#,
+    ] {
+        assert!(Machine::from_json(&base.replace("GEO", bad)).is_err(), "{bad}");
+    }
+    for m in machines() {
+        let z = m.geometry.linear_limits[2];
+        assert!(z.contains(0.0), "{}: L Z+0 M91 is inside the travel", m.id);
+        assert!(m.geometry.linear_limits[0].contains(-600.0) && m.geometry.linear_limits[1].contains(500.0));
+    }
+}
