@@ -35,12 +35,9 @@ struct JsonReport<'a> {
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {
-    let src = match crate::input::read(&args.file) {
+    let src = match crate::input::read_or_report(&args.file) {
         Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(code) => return code,
     };
     let lang = Lang::from(args.lang);
     let (program, diags) = parse(&src);

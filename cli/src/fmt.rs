@@ -15,12 +15,9 @@ pub(crate) struct Args {
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {
-    let src = match crate::input::read(&args.file) {
+    let src = match crate::input::read_or_report(&args.file) {
         Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(code) => return code,
     };
     let formatted = format_program(&parse(&src).0);
     if args.check {

@@ -5,6 +5,7 @@ mod check;
 mod fmt;
 mod input;
 mod machines;
+mod run;
 mod solve;
 
 use std::process::ExitCode;
@@ -44,6 +45,8 @@ enum Command {
     Check(check::Args),
     /// Print the program in canonical form (`--check`: exit 1 if it is not).
     Fmt(fmt::Args),
+    /// Run a program on a machine block by block: axes, tool tip, active plane, messages.
+    Run(run::Args),
     /// Solve one PLANE block for a machine: candidates, the control's choice and why, as JSON.
     Solve(solve::Args),
     /// List the shipped machine ids (`--json`: full descriptions).
@@ -55,6 +58,7 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check(a) => check::run(&a),
         Command::Fmt(a) => fmt::run(&a),
+        Command::Run(a) => run::run(&a),
         Command::Solve(a) => solve::run(&a),
         Command::Machines(a) => machines::run(&a),
     }

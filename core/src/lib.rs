@@ -16,6 +16,7 @@ pub mod orientation;
 pub mod parse;
 pub mod plane;
 pub mod sample;
+pub mod sim;
 pub mod solve;
 pub mod text;
 pub mod unconfirmed;

@@ -7,11 +7,16 @@
 //! { "id": "ac-table", "name": {"de": "…", "en": "…"}, "description": {"de": "…", "en": "…"},
 //!   "chain": [ {"axis": "C", "carrier": "table", "direction": [0,0,1], "pivot": [0,0,0], "endless": true},
 //!              {"axis": "A", "carrier": "table", "direction": [1,0,0], "pivot": [0,0,0],
-//!               "limits": {"min": -100, "max": 180}} ] }
+//!               "limits": {"min": -100, "max": 180}} ],
+//!   "geometry": { "preset": [-50,-50,-160], "linear_limits": {"X": {"min": -700, "max": 700}, …},
+//!                 "rapid_linear": 12000, "rapid_rotary": 5400, "start": [0,0,0] } }
 //! ```
 //! `direction` is the axis direction at home (all axes at 0°) in machine coordinates, a unit
 //! vector, so tilted axes such as a 45° nutating head are plain data. `pivot` (mm) is a point on
-//! the axis, for MOVE and the 3D view.
+//! the axis, for MOVE and the 3D view: for a **table** axis in M-CS with every axis at home, for a
+//! **head** axis relative to the spindle gauge point (one tool length above the tool tip) with
+//! the head at home. `geometry` (optional, every field defaulted, [`MachineGeometry`]) places the
+//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]).
 
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
@@ -78,6 +83,52 @@ pub struct Machine {
     /// The master's two symmetry positions, "the" symmetry point first (derived once from the
     /// axis directions, [`crate::kinematics::symmetry_positions_of`]).
     symmetry: [f64; 2],
+    /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
+    /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
+    pub geometry: MachineGeometry,
+}
+
+/// The machine geometry the simulator needs beyond the rotary chain (JSON key `geometry`, every
+/// field optional). The model behind it is documented in [`crate::sim`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MachineGeometry {
+    /// The active preset: origin of the W-CS in M-CS with every rotary axis at 0°, mm. No basic
+    /// rotation (W-CS axes parallel to M-CS at rotary zero).
+    pub preset: DVec3,
+    /// Software limit switches of the linear axes X, Y, Z in M-CS, mm (`MB MAX`, limit checks).
+    pub linear_limits: [Limits; 3],
+    /// Rapid traverse (FMAX) of the linear axes, mm/min.
+    pub rapid_linear: f64,
+    /// Rapid traverse (FMAX) of the rotary axes, °/min.
+    pub rapid_rotary: f64,
+    /// Linear axis position at program start, M-CS, mm.
+    pub start: DVec3,
+}
+
+impl MachineGeometry {
+    /// Linear travel when the JSON gives none: ±1000 mm in X and Y, Z from −1000 to 0 (so that
+    /// `L Z+0 M91` is the top of the travel, as in seed S0). Derived, illustrative.
+    pub const DEFAULT_LIMITS: [Limits; 3] = [
+        Limits { min: -1000.0, max: 1000.0 },
+        Limits { min: -1000.0, max: 1000.0 },
+        Limits { min: -1000.0, max: 0.0 },
+    ];
+    /// FMAX of the linear axes when the JSON gives none, mm/min (illustrative).
+    pub const DEFAULT_RAPID_LINEAR: f64 = 10_000.0;
+    /// FMAX of the rotary axes when the JSON gives none, °/min (illustrative).
+    pub const DEFAULT_RAPID_ROTARY: f64 = 5_400.0;
+}
+
+impl Default for MachineGeometry {
+    fn default() -> Self {
+        MachineGeometry {
+            preset: DVec3::ZERO,
+            linear_limits: Self::DEFAULT_LIMITS,
+            rapid_linear: Self::DEFAULT_RAPID_LINEAR,
+            rapid_rotary: Self::DEFAULT_RAPID_ROTARY,
+            start: DVec3::ZERO,
+        }
+    }
 }
 
 /// A machine description that cannot be used. Every variant carries the numbers.
@@ -102,6 +153,8 @@ pub enum MachineError {
     LimitsInverted { axis: RotaryAxis, min: f64, max: f64 },
     /// An endless (modulo) axis cannot have limit switches.
     EndlessWithLimits { axis: RotaryAxis, min: f64, max: f64 },
+    /// A bad value in `geometry` (not finite, inverted limits, rapid ≤ 0).
+    Geometry { field: &'static str, value: f64 },
     /// A table axis listed after a head axis (the chain runs workpiece → table → bed → head → tool).
     TableAfterHead { axis: RotaryAxis },
     /// The two axes are parallel: they cannot tilt the tool in two directions.
@@ -130,6 +183,7 @@ impl std::fmt::Display for MachineError {
             MachineError::EndlessWithLimits { axis, min, max } => {
                 write!(f, "axis {axis}: endless but limited to {min} … {max}")
             }
+            MachineError::Geometry { field, value } => write!(f, "geometry: {field} = {value}"),
             MachineError::TableAfterHead { axis } => write!(f, "table axis {axis} listed after a head axis"),
             MachineError::ParallelAxes { slave, master, sine } => {
                 write!(f, "axes {slave} and {master} are parallel (sine {sine})")
@@ -150,6 +204,35 @@ struct RawMachine {
     name: Texts,
     description: Texts,
     chain: Vec<RawJoint>,
+    #[serde(default)]
+    geometry: Option<RawGeometry>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGeometry {
+    #[serde(default)]
+    preset: Option<[f64; 3]>,
+    /// `{"X": {"min", "max"}, "Y": …, "Z": …}`; a missing axis keeps its default.
+    #[serde(default)]
+    linear_limits: Option<RawLinearLimits>,
+    #[serde(default)]
+    rapid_linear: Option<f64>,
+    #[serde(default)]
+    rapid_rotary: Option<f64>,
+    #[serde(default)]
+    start: Option<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawLinearLimits {
+    #[serde(rename = "X", default)]
+    x: Option<Limits>,
+    #[serde(rename = "Y", default)]
+    y: Option<Limits>,
+    #[serde(rename = "Z", default)]
+    z: Option<Limits>,
 }
 
 #[derive(Deserialize)]
@@ -225,7 +308,8 @@ impl Machine {
             return Err(MachineError::MasterAlongTool { axis: master.axis, sine });
         }
         let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
-        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, symmetry })
+        let geometry = validate_geometry(raw.geometry)?;
+        Ok(Machine { id: raw.id, name: raw.name, description: raw.description, chain, symmetry, geometry })
     }
 
     /// The rotary axes in chain order workpiece → tool.
@@ -280,6 +364,47 @@ impl Machine {
     pub fn limits_of(&self, axis: RotaryAxis, overrides: &[(RotaryAxis, Limits)]) -> Option<Limits> {
         overrides.iter().rev().find(|(a, _)| *a == axis).map(|(_, l)| *l).or_else(|| self.joint(axis)?.limits)
     }
+}
+
+fn validate_geometry(raw: Option<RawGeometry>) -> Result<MachineGeometry, MachineError> {
+    let mut g = MachineGeometry::default();
+    let Some(raw) = raw else { return Ok(g) };
+    let finite3 = |field: &'static str, v: [f64; 3]| match v.iter().find(|x| !x.is_finite()) {
+        Some(&value) => Err(MachineError::Geometry { field, value }),
+        None => Ok(DVec3::from_array(v)),
+    };
+    if let Some(p) = raw.preset {
+        g.preset = finite3("preset", p)?;
+    }
+    if let Some(p) = raw.start {
+        g.start = finite3("start", p)?;
+    }
+    if let Some(l) = raw.linear_limits {
+        for (i, (lim, field)) in
+            [(l.x, "linear_limits.X"), (l.y, "linear_limits.Y"), (l.z, "linear_limits.Z")]
+                .into_iter()
+                .enumerate()
+        {
+            if let Some(lim) = lim {
+                if !(lim.min.is_finite() && lim.max.is_finite()) || lim.min >= lim.max {
+                    return Err(MachineError::Geometry { field, value: lim.min });
+                }
+                g.linear_limits[i] = lim;
+            }
+        }
+    }
+    for (v, field, slot) in [
+        (raw.rapid_linear, "rapid_linear", &mut g.rapid_linear),
+        (raw.rapid_rotary, "rapid_rotary", &mut g.rapid_rotary),
+    ] {
+        if let Some(v) = v {
+            if !v.is_finite() || v <= 0.0 {
+                return Err(MachineError::Geometry { field, value: v });
+            }
+            *slot = v;
+        }
+    }
+    Ok(g)
 }
 
 fn validate_joint(j: RawJoint) -> Result<RotaryJoint, MachineError> {

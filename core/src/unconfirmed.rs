@@ -50,11 +50,43 @@ pub enum Decision {
     /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`]; RELATIV uses
     /// the spatial range.
     InputRanges,
+    /// Simulator: [`SIM_MESSAGES_UNCONFIRMED`].
+    SimMessages,
+    /// Simulator: [`TRANSFORM_LEVELS`].
+    TransformLevels,
+    /// Simulator: [`COMPENSATION_ONLY_WHEN_TILTED`].
+    CompensationOnlyWhenTilted,
+    /// Simulator: [`MOVE_DEFAULT_DIST`].
+    MoveDefaultDist,
+    /// Simulator: [`MB_RETRACT_AT_RAPID`].
+    MbRetractRapid,
+    /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
+    RotaryFeed,
+    /// Simulator: [`CYCLE19_INPUT_SPATIAL`].
+    Cycle19Spatial,
+    /// Simulator: [`CYCLE19_MOVES_AXES`].
+    Cycle19NoMotion,
+    /// Simulator: [`MAX_CALL_DEPTH`].
+    CallDepth,
+    /// Simulator: [`REP_IS_SECTION_REPEAT`].
+    RepSectionRepeat,
+    /// Simulator: [`LIST_BLOCKS_AFTER_END`].
+    ListAfterEnd,
+    /// Simulator: [`CYCLE_POSITIVE_DEPTH_IS_ERROR`].
+    PositiveDepthError,
+    /// Simulator: [`cycle232_stepover`].
+    Cycle232Stepover,
+    /// Simulator: [`CYCLE232_STRATEGY`].
+    Cycle232Strategy,
+    /// Simulator: [`DATUM_ABSOLUTE_REPLACES`].
+    DatumAbsoluteReplaces,
+    /// Simulator: [`Q120_ONLY_FOR_SPATIAL_TILTS`].
+    Q120OnlySpatial,
 }
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 17] = [
+    pub const ALL: [Decision; 33] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -72,6 +104,22 @@ impl Decision {
         Decision::ResetTarget,
         Decision::UnreachableMessage,
         Decision::InputRanges,
+        Decision::SimMessages,
+        Decision::TransformLevels,
+        Decision::CompensationOnlyWhenTilted,
+        Decision::MoveDefaultDist,
+        Decision::MbRetractRapid,
+        Decision::RotaryFeed,
+        Decision::Cycle19Spatial,
+        Decision::Cycle19NoMotion,
+        Decision::CallDepth,
+        Decision::RepSectionRepeat,
+        Decision::ListAfterEnd,
+        Decision::PositiveDepthError,
+        Decision::Cycle232Stepover,
+        Decision::Cycle232Strategy,
+        Decision::DatumAbsoluteReplaces,
+        Decision::Q120OnlySpatial,
     ];
 
     /// `(German, English)` text for the trainee.
@@ -145,6 +193,69 @@ impl Decision {
             Decision::InputRanges => (
                 "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999.",
                 "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999.",
+            ),
+            Decision::SimMessages => (
+                "Meldungstexte des Simulators außer „Winkel nicht erlaubt“ (z. B. „Q-Parameter nicht definiert“, „Endschalter X+“) sind im Stil der Steuerung formuliert, nicht belegt.",
+                "The simulator's messages other than \"Entered angle not permitted\" (e.g. \"Q parameter not defined\", \"Limit switch X+\") are worded in the control's style, not confirmed.",
+            ),
+            Decision::TransformLevels => (
+                "Nullpunkt und Spiegelung vor dem Schwenken wirken im W-CS, danach im WPL-CS; Drehung immer im WPL-CS; Reihenfolge Verschiebung, Spiegelung, Drehung; RESET löscht beide Ebenen.",
+                "Datum shift and mirror before the tilt act in the W-CS, after it in the WPL-CS; rotation always in the WPL-CS; order shift, mirror, rotation; RESET clears both levels.",
+            ),
+            Decision::CompensationOnlyWhenTilted => (
+                "Ohne aktive Schwenkung ignoriert die Steuerung die Stellung der Drehachsen (3-Achs-Verhalten), auch nach PLANE RESET STAY.",
+                "Without an active tilt the control ignores the rotary axis positions (3-axis behaviour), also after PLANE RESET STAY.",
+            ),
+            Decision::MoveDefaultDist => (
+                "MOVE ohne DIST: Drehpunkt = Werkzeugspitze (DIST 0), die Spitze bleibt auf dem Werkstück stehen.",
+                "MOVE without DIST: centre of rotation = tool tip (DIST 0), the tip stays on the workpiece.",
+            ),
+            Decision::MbRetractRapid => (
+                "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken.",
+                "MB/MB MAX: retract at rapid traverse before the swivel.",
+            ),
+            Decision::RotaryFeed => (
+                "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",
+                "Feed F of swivels and rotary moves in °/min; F AUTO = feed of the TOOL CALL (animation duration only).",
+            ),
+            Decision::Cycle19Spatial => (
+                "Zyklus 19: Eingaben als Raumwinkel (OEM-Parameter planeOrientation).",
+                "Cycle 19: inputs are spatial angles (OEM parameter planeOrientation).",
+            ),
+            Decision::Cycle19NoMotion => (
+                "Zyklus 19 fährt die Drehachsen nicht selbst; das Programm positioniert sie (L A+Q120 …). Alle Winkel 0 setzt zurück.",
+                "Cycle 19 does not move the rotary axes itself; the program positions them (L A+Q120 …). All angles 0 resets.",
+            ),
+            Decision::CallDepth => {
+                ("Unterprogramme höchstens 19-fach verschachtelt.", "Subprograms nested at most 19 deep.")
+            }
+            Decision::RepSectionRepeat => (
+                "CALL LBL n REP m wiederholt den Abschnitt ab LBL n m-mal (m+1 Durchläufe); ohne REP Unterprogramm bis LBL 0.",
+                "CALL LBL n REP m repeats the section from LBL n m times (m+1 passes); without REP a subprogram up to LBL 0.",
+            ),
+            Decision::ListAfterEnd => (
+                "Sätze nach M30/M2 werden als „nicht ausgeführt“ aufgelistet.",
+                "Blocks after M30/M2 are listed as \"not executed\".",
+            ),
+            Decision::PositiveDepthError => (
+                "Zyklus 200 mit positiver Tiefe Q201: Fehlermeldung (Maschinenparameter displayDepthErr).",
+                "Cycle 200 with a positive depth Q201: error message (machine parameter displayDepthErr).",
+            ),
+            Decision::Cycle232Stepover => (
+                "Zyklus 232: maximale seitliche Zustellung = Q370 × Werkzeugradius.",
+                "Cycle 232: maximum stepover = Q370 × tool radius.",
+            ),
+            Decision::Cycle232Strategy => (
+                "Zyklus 232: Strategien Q389=1 und 2 werden als Mäander simuliert.",
+                "Cycle 232: strategies Q389=1 and 2 are simulated as a meander.",
+            ),
+            Decision::DatumAbsoluteReplaces => (
+                "Nullpunktverschiebung mit absoluten Werten ersetzt die ganze Verschiebung (nicht programmierte Achsen 0); nur inkrementale Werte addieren.",
+                "A datum shift with absolute values replaces the whole shift (axes not written 0); only incremental values add.",
+            ),
+            Decision::Q120OnlySpatial => (
+                "Q120–Q122 werden von Schwenkungen mit Raumwinkeln geschrieben, nicht von PLANE AXIAL und PLANE RESET.",
+                "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
             ),
         }
     }
@@ -285,3 +396,96 @@ pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.
 pub const AXIAL_LIMIT: f64 = 99_999.999_9;
+
+// ---------------------------------------------------------------------------------------------
+// Simulator (issue 5): conventions of the block-by-block run that no source confirms.
+// ---------------------------------------------------------------------------------------------
+
+/// The simulator's error wordings other than "Winkel nicht erlaubt"/"Entered angle not permitted"
+/// [S2] are **UNCONFIRMED** (our wording in the control's style): "Q-Parameter nicht definiert",
+/// "Zyklus nicht definiert", "Zyklusparameter fehlt", "Endschalter X+", "Achse nicht vorhanden",
+/// "Label-Nummer nicht vorhanden", "Verschachtelung zu tief", "Rechenfehler", "Satz fehlerhaft",
+/// "Vorzeichen Tiefe falsch" and their English versions.
+pub const SIM_MESSAGES_UNCONFIRMED: bool = true;
+
+/// Datum shift and mirror act in the W-CS when programmed with no tilt active (they move and
+/// mirror the tilt origin, DOMAIN.md §6 [S3]) and in the WPL-CS when a tilt is active; TRANS
+/// ROTATION / cycle 10 always acts in the WPL-CS. Within a level the order is fixed: shift,
+/// then mirror, then rotation, all about the shifted datum. TRANS DATUM RESET and TRANS MIRROR
+/// RESET clear both levels; a WPL-CS shift survives PLANE RESET with its numbers. DOMAIN.md §6
+/// calls the composition in detail **UNCONFIRMED**. `false` would put every transformation in
+/// the WPL-CS list.
+pub const TRANSFORM_LEVELS: bool = true;
+
+/// The control applies the kinematic transformation (linear axes computed from the rotary axis
+/// positions so that programmed points land on the workpiece) only while a tilt (PLANE or
+/// cycle 19) is active; without it, the rotary axes are ignored (3-axis behaviour, `L Z…` moves
+/// the Z axis) even after `PLANE RESET STAY` left them tilted. **UNCONFIRMED**.
+pub const COMPENSATION_ONLY_WHEN_TILTED: bool = true;
+
+/// `PLANE … MOVE` without `DIST`: the centre of rotation is the tool tip itself (DIST = 0), so
+/// the tool tip keeps its place on the workpiece. **UNCONFIRMED** default.
+pub const MOVE_DEFAULT_DIST: f64 = 0.0;
+
+/// `MB`/`MB MAX` retract at rapid traverse (FMAX), before the swivel at the block's feed.
+/// **UNCONFIRMED** (DOMAIN.md §4 gives no feed for the retract).
+pub const MB_RETRACT_AT_RAPID: bool = true;
+
+/// `PLANE … MOVE|TURN` and `L` blocks that move rotary axes: a programmed F counts as °/min for
+/// the rotary share of the motion (the duration is the longer of the linear and rotary shares);
+/// `F AUTO` is the feed of the last `TOOL CALL`. Only the animation speed depends on it.
+/// **UNCONFIRMED**.
+pub const ROTARY_FEED_DEG_PER_MIN: bool = true;
+
+/// Cycle 19 inputs are spatial angles (the OEM parameter `planeOrientation` (201202) decides on
+/// a real control [S3]); `false` would treat them as axis angles (forward kinematics, no mirror
+/// effect). **UNCONFIRMED** which one a given machine uses.
+pub const CYCLE19_INPUT_SPATIAL: bool = true;
+
+/// Cycle 19 does not move the rotary axes itself (like STAY: "compensation for an axis starts
+/// when that axis moves" [M:320cyc-p258]); the program positions them, e.g.
+/// `L A+Q120 C+Q122 R0 FMAX`. All angles 0 (or none) in `19.1` resets the tilt.
+/// **UNCONFIRMED** for machines whose OEM lets cycle 19 position the axes automatically.
+pub const CYCLE19_MOVES_AXES: bool = false;
+
+/// Maximum nesting of subprogram calls (`CALL LBL` without `REP`). **UNCONFIRMED** number.
+pub const MAX_CALL_DEPTH: usize = 19;
+
+/// `CALL LBL n REP m` is a program-section repeat: jump back to `LBL n` m times, so the section
+/// runs m+1 times; `CALL LBL n` without REP is a subprogram call that returns at `LBL 0`.
+/// A `REP` to a label after the call is treated the same way (jump, no return).
+/// **UNCONFIRMED** for the forward case.
+pub const REP_IS_SECTION_REPEAT: bool = true;
+
+/// After `M30`/`M2` the blocks up to `END PGM` are listed as "not executed" (a state with the
+/// axes unchanged and a message), so every block of a program has a row; subprograms after
+/// M30 are therefore never executed by running on. **UNCONFIRMED** presentation choice (the
+/// control simply stops).
+pub const LIST_BLOCKS_AFTER_END: bool = true;
+
+/// Cycle 200 with a positive depth Q201: the control's machine parameter `displayDepthErr`
+/// decides; we report an error (its usual setting, **UNCONFIRMED**).
+pub const CYCLE_POSITIVE_DEPTH_IS_ERROR: bool = true;
+
+/// Cycle 232: maximum stepover from Q370. Cycles 251/252 define "Q370 × tool radius = stepover
+/// factor k"; cycle 232 calls Q370 "max. overlap factor" without a formula here.
+/// **UNCONFIRMED**: stepover = Q370 × tool radius; the rows are then spread evenly over Q219.
+#[must_use]
+pub fn cycle232_stepover(q370: f64, tool_radius: f64) -> f64 {
+    q370 * tool_radius
+}
+
+/// Cycle 232 strategies Q389 = 1 (one direction) and 2 (spiral) are simulated as the meander of
+/// Q389 = 0, with a message. **UNCONFIRMED** simplification.
+pub const CYCLE232_STRATEGY: bool = true;
+
+/// A datum shift (TRANS DATUM AXIS, or one cycle 7 definition over its sub-blocks) with an
+/// absolute coordinate replaces the whole shift of its level: axes not written are 0. With only
+/// incremental coordinates the axes not written keep the active shift. **UNCONFIRMED**.
+pub const DATUM_ABSOLUTE_REPLACES: bool = true;
+
+/// Q120–Q122 ("tilting the working plane with mathematical angles: rotary axis coordinates
+/// calculated by the TNC", the preassigned Q parameters of the iTNC 530/TNC 640 manuals) are
+/// written by tilts with spatial angles (every PLANE function except AXIAL and RESET, cycle 19)
+/// and left unchanged by PLANE AXIAL and PLANE RESET. **UNCONFIRMED** for AXIAL and RESET.
+pub const Q120_ONLY_FOR_SPATIAL_TILTS: bool = true;

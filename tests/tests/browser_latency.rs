@@ -51,5 +51,8 @@ fn parser_throughput_in_wasm() {
         assert_eq!(parsed.blocks.len(), 200_000);
         assert!(diagnostics.is_empty());
     }
-    console_log!("BENCH parser in wasm32 (Chromium): {mb:.1} MB in {best:.0} ms = {:.0} MB/s", mb / (best / 1000.0));
+    console_log!(
+        "BENCH parser in wasm32 (Chromium): {mb:.1} MB in {best:.0} ms = {:.0} MB/s",
+        mb / (best / 1000.0)
+    );
 }

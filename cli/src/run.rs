@@ -1,0 +1,215 @@
+//! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en]`: one row per executed block.
+
+use std::collections::BTreeMap;
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use schwenkbar_core::machine::{Machine, Texts};
+use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
+use schwenkbar_core::{Program, parse};
+use serde::Serialize;
+
+use crate::LangArg;
+
+#[derive(clap::Args)]
+pub(crate) struct Args {
+    /// The NC program (`.h`, UTF-8 or Latin-1).
+    file: PathBuf,
+    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating).
+    #[arg(long)]
+    machine: String,
+    /// Print `{"machine", "states": […], "error": null | {"line", "message"}}`.
+    #[arg(long)]
+    json: bool,
+    /// Language of the messages.
+    #[arg(long, value_enum, default_value = "de")]
+    lang: LangArg,
+    /// Stop after this many executed blocks (endless loops); default: the simulator's budget.
+    #[arg(long)]
+    max_blocks: Option<usize>,
+}
+
+/// Rounds away float noise (1e-9) and `-0` for printing.
+fn num(x: f64) -> f64 {
+    let r = (x * 1e9).round() / 1e9;
+    if r == 0.0 { 0.0 } else { r }
+}
+
+fn pick(t: &Texts, lang: LangArg) -> &str {
+    match lang {
+        LangArg::De => &t.de,
+        LangArg::En => &t.en,
+    }
+}
+
+/// The first line of a block's source text.
+fn block_text<'a>(src: &'a str, program: &Program, block: usize) -> &'a str {
+    program
+        .blocks
+        .get(block)
+        .and_then(|b| src.get(b.span.start..b.span.end))
+        .and_then(|t| t.lines().next())
+        .unwrap_or("")
+        .trim()
+}
+
+#[derive(Serialize)]
+struct JsonPlane {
+    spatial: [f64; 3],
+    tool_axis: [f64; 3],
+}
+
+#[derive(Serialize)]
+struct JsonState<'a> {
+    line: u32,
+    number: Option<u32>,
+    block: &'a str,
+    axes: Axes,
+    tool_tip_wcs: [f64; 3],
+    plane: Option<JsonPlane>,
+    q: BTreeMap<String, f64>,
+    message: Option<&'a str>,
+}
+
+#[derive(Serialize)]
+struct JsonError<'a> {
+    line: u32,
+    message: &'a str,
+    detail: &'a str,
+}
+
+/// `{"X": …, "Y": …, "Z": …, "A": …, "C": …}` in the control's display order.
+struct Axes(Vec<(char, f64)>);
+
+impl Serialize for Axes {
+    fn serialize<S: serde::Serializer>(&self, ser: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = ser.serialize_map(Some(self.0.len()))?;
+        for (c, v) in &self.0 {
+            m.serialize_entry(&c.to_string(), v)?;
+        }
+        m.end()
+    }
+}
+
+fn axes_map(s: &State) -> Axes {
+    Axes(s.axes.named().into_iter().map(|(c, v)| (c, num(v))).collect())
+}
+
+pub(crate) fn run(args: &Args) -> ExitCode {
+    let src = match crate::input::read_or_report(&args.file) {
+        Ok(s) => s,
+        Err(code) => return code,
+    };
+    let machine = match Machine::builtin(&args.machine) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e} (known: {})", Machine::builtin_ids().join(", "));
+            return ExitCode::from(2);
+        }
+    };
+    let (program, _) = parse(&src);
+    let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
+    let sim = simulate(&program, &machine, &opts);
+    let lang = args.lang;
+
+    let out = std::io::stdout();
+    let mut out = std::io::BufWriter::new(out.lock());
+    let written = if args.json {
+        write_json(&mut out, &src, &program, &machine, &sim, lang)
+    } else {
+        write_table(&mut out, &src, &program, &sim, lang, &args.file)
+    };
+    if let Err(e) = written.and_then(|()| out.flush()) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
+    if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
+
+fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: LangArg) -> JsonState<'a> {
+    JsonState {
+        line: s.line,
+        number: program.blocks.get(s.block).and_then(|b| b.number),
+        block: block_text(src, program, s.block),
+        axes: axes_map(s),
+        tool_tip_wcs: s.tip_wcs.to_array().map(num),
+        plane: s
+            .plane
+            .as_ref()
+            .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
+        q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
+        message: s.message.as_ref().map(|m| pick(m, lang)),
+    }
+}
+
+/// The JSON report, streamed state by state (a million-block run never sits in memory twice).
+fn write_json(
+    out: &mut impl Write,
+    src: &str,
+    program: &Program,
+    machine: &Machine,
+    sim: &Simulation,
+    lang: LangArg,
+) -> std::io::Result<()> {
+    write!(out, "{{\"machine\":{},\"states\":[", serde_json::to_string(&machine.id)?)?;
+    for (i, s) in sim.states(program).enumerate() {
+        if i > 0 {
+            out.write_all(b",")?;
+        }
+        serde_json::to_writer(&mut *out, &json_state(src, program, &s, lang))?;
+    }
+    let error = sim.error.as_ref().map(|e| JsonError {
+        line: e.line,
+        message: pick(&e.message, lang),
+        detail: pick(&e.detail, lang),
+    });
+    writeln!(out, "],\"error\":{}}}", serde_json::to_string(&error)?)
+}
+
+/// One row per executed block.
+fn write_table(
+    out: &mut impl Write,
+    src: &str,
+    program: &Program,
+    sim: &Simulation,
+    lang: LangArg,
+    file: &std::path::Path,
+) -> std::io::Result<()> {
+    let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
+    let mut head = format!("{:>5}  {:<44}", "line", "block");
+    for (c, _) in &letters {
+        head.push_str(&format!(" {c:>10}"));
+    }
+    head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
+    writeln!(out, "{head}")?;
+    for s in sim.states(program) {
+        let text: String = block_text(src, program, s.block).chars().take(44).collect();
+        let mut row = format!("{:>5}  {text:<44}", s.line);
+        for (_, v) in s.axes.named() {
+            row.push_str(&format!(" {:>10.4}", num(v)));
+        }
+        let plane = s.plane.as_ref().map_or_else(
+            || "-".to_string(),
+            |p| format!("{:+.4} {:+.4} {:+.4}", num(p.spatial[0]), num(p.spatial[1]), num(p.spatial[2])),
+        );
+        row.push_str(&format!("  {plane:<26}"));
+        if let Some(m) = &s.message {
+            row.push_str("  ");
+            row.push_str(pick(m, lang));
+        }
+        writeln!(out, "{}", row.trim_end())?;
+    }
+    if let Some(e) = &sim.error {
+        writeln!(
+            out,
+            "{}:{}: {}: {}",
+            file.display(),
+            e.line,
+            pick(&e.message, lang),
+            pick(&e.detail, lang)
+        )?;
+    }
+    Ok(())
+}

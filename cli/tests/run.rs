@@ -1,0 +1,99 @@
+//! End-to-end tests of `schwenkbar run` on the completed Musterprogramm 1 and the simulator
+//! fixtures.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn repo(rel: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join(rel).to_string_lossy().into_owned()
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_schwenkbar")).args(args).output().expect("binary runs")
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout).expect("json output")
+}
+
+/// Tolerance for numbers printed by the CLI (rounded to 1e-9 there).
+const TOL: f64 = 1e-6;
+
+fn close(v: &serde_json::Value, want: f64) -> bool {
+    v.as_f64().is_some_and(|x| (x - want).abs() <= TOL)
+}
+
+#[test]
+fn run_musterprogramm_prints_a_row_per_block() {
+    let f = repo("static/programs/musterprogramm1.h");
+    let o = run(&["run", &f, "--machine", "ac-table"]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 1 + 38, "header + 38 blocks:\n{out}");
+    assert!(lines[0].contains('X') && lines[0].contains('A') && lines[0].contains('C'));
+    let row10 = lines.iter().find(|l| l.contains("10 PLANE SPATIAL")).expect("block 10");
+    assert!(row10.contains("15.0000") && row10.contains("90.0000") && row10.contains("+15.0000"), "{row10}");
+    assert!(out.contains("Zyklus 232 ausgeführt"), "{out}");
+}
+
+#[test]
+fn run_json_has_the_issue_shape() {
+    let f = repo("static/programs/musterprogramm1.h");
+    let o = run(&["run", &f, "--machine", "ac-table", "--json", "--lang", "en"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v = json(&o);
+    assert_eq!(v["machine"], "ac-table");
+    assert!(v["error"].is_null());
+    let states = v["states"].as_array().expect("states");
+    assert_eq!(states.len(), 38);
+    let s10 = states.iter().find(|s| s["number"] == 10).expect("block 10");
+    assert_eq!(s10["block"], "10 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX ; Einschwenken");
+    assert!(close(&s10["axes"]["A"], 15.0) && close(&s10["axes"]["C"], 90.0), "{s10}");
+    assert!(close(&s10["axes"]["X"], -600.0) && close(&s10["axes"]["Z"], 0.0));
+    assert!(close(&s10["plane"]["spatial"][1], 15.0));
+    assert!(close(&s10["plane"]["tool_axis"][0], 15f64.to_radians().sin()));
+    assert!(close(&s10["q"]["120"], 15.0) && close(&s10["q"]["122"], 90.0));
+    assert_eq!(s10["tool_tip_wcs"].as_array().map(Vec::len), Some(3));
+    let s18 = states.iter().find(|s| s["number"] == 18).expect("block 18");
+    assert!(s18["plane"].is_null());
+    assert!(close(&s18["axes"]["A"], 0.0) && close(&s18["axes"]["C"], 0.0));
+    let s13 = states.iter().find(|s| s["number"] == 13).expect("block 13");
+    assert!(s13["message"].as_str().is_some_and(|m| m.contains("Cycle 232 executed")), "{s13}");
+}
+
+#[test]
+fn run_reports_the_controls_error_at_its_line() {
+    let f = repo("tests/fixtures/sim/unreachable.h");
+    let o = run(&["run", &f, "--machine", "ca-head", "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let v = json(&o);
+    assert_eq!(v["error"]["line"], 6);
+    assert_eq!(v["error"]["message"], "Winkel nicht erlaubt");
+    assert_eq!(v["states"].as_array().map(Vec::len), Some(5));
+    let o = run(&["run", &f, "--machine", "ca-head"]);
+    assert_eq!(o.status.code(), Some(1));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.trim_end().ends_with("Winkel nicht erlaubt: Keine der 2 Lösungen liegt im Verfahrbereich"),
+        "{out}"
+    );
+}
+
+#[test]
+fn run_rejects_an_unknown_machine() {
+    let f = repo("static/programs/musterprogramm1.h");
+    let o = run(&["run", &f, "--machine", "no-such"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("ac-table"));
+}
+
+#[test]
+fn run_json_lists_axes_in_display_order() {
+    let f = repo("tests/fixtures/sim/swivel_stay.h");
+    let o = run(&["run", &f, "--machine", "ac-table", "--json"]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let i = |k: &str| text.find(&format!("\"{k}\":")).expect("axis key");
+    assert!(i("X") < i("Y") && i("Y") < i("Z") && i("Z") < i("A") && i("A") < i("C"), "{text}");
+}

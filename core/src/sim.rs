@@ -1,0 +1,401 @@
+//! Step through a program: the machine state after every executed block, the motion of every
+//! block as segments the 3D view can evaluate at any fraction, the transformation chain, and
+//! the control's errors (issue 5).
+//!
+//! # The machine model (M-CS)
+//!
+//! * **Linear axes** `L = (X, Y, Z)` are the position of the tool tip in M-CS with every *head*
+//!   axis at 0° (tool-length compensated, as the position display shows it). `L Z+0 M91` is
+//!   therefore the tool tip at machine Z 0, the top of the travel in the shipped machines.
+//! * **Table axes** turn the workpiece by −θ about their axis through their pivot (DOMAIN.md
+//!   §3.1). Workpiece coordinates are M-CS coordinates at rotary zero; the workpiece pose is
+//!   `W = T_n ∘ … ∘ T_1` over the table joints in chain order (the joint nearest the workpiece
+//!   acts first because the next one carries it), `T_j(x) = p_j + Rot(u_j, −θ_j)·(x − p_j)`
+//!   with the home direction `u_j` and pivot `p_j` from the machine JSON (M-CS).
+//! * **Head axes** turn the tool by +θ about their axis. The head pose is
+//!   `H = T_h1 ∘ T_h2` (the axis nearest the tool acts first), `T_h(x) = q + Rot(u, θ)·(x − q)`
+//!   with `q = (0, 0, tool length) + pivot`: a head pivot in the JSON is given relative to the
+//!   spindle gauge point, which sits one tool length above the tip. The physical tool tip is
+//!   `L + H(0)`, the tool axis (tip → spindle) `H·ez`.
+//! * Together the tool orientation relative to the workpiece is `Wᵀ·H = R_machine` of
+//!   [`crate::machine::Machine::forward`] (derived; the kinematics' convention).
+//! * **W-CS** = workpiece coordinates shifted by the preset `geometry.preset` (no basic
+//!   rotation). A point `p` (W-CS) is under the tool tip when `L = W(preset + p) − H(0)`
+//!   ([`geometry::Kin::wcs_to_linear`]); the control uses this kinematic transformation while a
+//!   tilt is active ([`crate::unconfirmed::COMPENSATION_ONLY_WHEN_TILTED`]), otherwise `L = preset + p`.
+//! * **Transformations**: `p_W = d_W + R·M_W·(d_I + M_I·Rz(rot)·p_I)` ([`transform`]).
+//!   Programmed coordinates are I-CS values (DOMAIN.md §1).
+//! * **Frames** in [`State::frames`] are the control's W-CS, WPL-CS and I-CS in M-CS.
+//!
+//! # Positioning behaviour (DOMAIN.md §4, seed S0)
+//!
+//! * `TURN`: optional `MB d` / `MB MAX` retract along the tool axis (MB MAX: up to the first
+//!   linear software limit), then only the rotary axes move, linear in time.
+//! * `MOVE`: the rotary axes move linear in time; the centre of rotation
+//!   `c = tip_W − DIST·t_W(θ_start)` stays fixed on the workpiece and the tip follows
+//!   `c + DIST·t_W(θ)`; the linear axes are `L(θ) = W_θ(preset + c + DIST·t_W(θ)) − H_θ(0)`
+//!   (derived from the seed's "Relativposition bleibt unverändert" and DIST = "Abstand zwischen
+//!   Drehpunkt und Werkzeugspitze"; DIST 0 or left out keeps the tool tip itself fixed).
+//! * `STAY`: nothing moves; Q120–Q122 hold the axis angles for a later `L A+Q120 C+Q122`. The
+//!   block still gets a [`SegmentKind::SwivelStay`] segment (axes constant, the plane's turn in
+//!   [`SegmentPath::Stay`]) so the view can show the coordinate system turning.
+//!
+//! # Programs
+//! Labels, `CALL LBL n [REP m]`, `FN 0`, formulas and `FN 9–12` jumps run; `M30`/`M2` end the
+//! run and the rest of the program is listed as not executed
+//! ([`crate::unconfirmed::LIST_BLOCKS_AFTER_END`]); a `CYCL DEF` acts at `M99`/`CYCL CALL`
+//! (cycles 200 and 232 move, every other cycle is reported as not simulated).
+//!
+//! # Durations
+//! Linear share = distance / F (mm/min); `FMAX` = `geometry.rapid_linear`; rotary share =
+//! travel / F (°/min) or `geometry.rapid_rotary` ([`crate::unconfirmed::ROTARY_FEED_DEG_PER_MIN`]);
+//! `F AUTO` = the feed of the last TOOL CALL. A segment lasts the longer of both shares.
+//!
+//! # Budget and stepping
+//! [`simulate`] keeps one compact [`Record`] per executed block and a full checkpoint of the
+//! interpreter every [`SimOptions::checkpoint_interval`] blocks; [`Simulation::state_at`]
+//! re-runs from the nearest checkpoint, so any step is at most one interval away.
+
+mod cycles;
+mod error;
+pub mod geometry;
+mod interp;
+mod jumps;
+pub mod segment;
+pub mod tools;
+pub mod transform;
+
+use std::collections::{BTreeMap, HashMap};
+use std::sync::Arc;
+
+use glam::{DMat3, DVec3};
+use serde::Serialize;
+
+use crate::ast::{BlockBody, Label, Program};
+use crate::machine::{Machine, Texts};
+use crate::solve::Explanation;
+
+pub use error::{SimError, SimErrorCode};
+pub use geometry::{Affine, Kin};
+pub use segment::{MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
+pub use transform::{ActiveTransform, Level, Transforms};
+
+use interp::{Interp, Rec};
+
+/// Options of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimOptions {
+    /// Stop with an error after this many executed blocks (endless loops). `None` = the default
+    /// budget: 1,000,000 + 20 × the number of blocks.
+    pub max_steps: Option<usize>,
+    /// Skip blocks written with a leading `/` (the control's block-skip switch).
+    pub block_skip: bool,
+    /// A full checkpoint every this many executed blocks (at least 1).
+    pub checkpoint_interval: usize,
+}
+
+impl Default for SimOptions {
+    fn default() -> Self {
+        SimOptions { max_steps: None, block_skip: false, checkpoint_interval: 1024 }
+    }
+}
+
+/// Per executed block: which block, and every axis after it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Record {
+    pub block: u32,
+    /// `false` for a block only listed (after M30/M2, or skipped with `/`).
+    pub executed: bool,
+    pub axes: MachineAxes,
+}
+
+/// Origin and axes (columns) of a coordinate system, in M-CS.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Frame {
+    pub origin: DVec3,
+    pub axes: DMat3,
+}
+
+/// The control's coordinate systems in M-CS.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Frames {
+    pub wcs: Frame,
+    pub wpl: Frame,
+    pub ics: Frame,
+}
+
+/// A rotary axis as it stands: a point on it and its direction, both in M-CS (3D view).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Pivot {
+    pub axis: crate::plane::RotaryAxis,
+    pub point: DVec3,
+    pub direction: DVec3,
+}
+
+/// The active tool.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ToolState {
+    /// Number as called (0 for a tool called by name, or before the first TOOL CALL).
+    pub number: u32,
+    pub name: String,
+    /// Tool axis letter of the TOOL CALL.
+    pub axis: char,
+    /// Length incl. DL, mm.
+    pub length: f64,
+    /// Radius incl. DR, mm.
+    pub radius: f64,
+    /// Found in the tool table (else default length and radius).
+    pub known: bool,
+    /// F of the TOOL CALL (used by `F AUTO`), mm/min.
+    pub feed: f64,
+}
+
+/// Direction of the spindle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpindleDir {
+    Off,
+    /// M3.
+    Cw,
+    /// M4.
+    Ccw,
+}
+
+/// Spindle speed and direction.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Spindle {
+    pub speed: f64,
+    pub dir: SpindleDir,
+}
+
+/// The blank from BLK FORM, W-CS.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Blank {
+    pub min: DVec3,
+    pub max: DVec3,
+}
+
+/// Where the active tilt came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TiltSource {
+    Plane,
+    Cycle19,
+}
+
+/// The active tilted working plane.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ActivePlane {
+    /// The block that defined it.
+    pub block: usize,
+    pub source: TiltSource,
+    /// R realised by the machine (columns = tilted axes in W-CS).
+    pub orientation: DMat3,
+    pub spatial: [f64; 3],
+    pub tool_axis: [f64; 3],
+    pub explanation: Arc<Explanation>,
+}
+
+/// Everything about the machine after one executed block.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct State {
+    pub step: usize,
+    pub block: usize,
+    pub line: u32,
+    pub axes: MachineAxes,
+    pub tool: ToolState,
+    pub spindle: Spindle,
+    /// Modal feed, mm/min.
+    pub feed: f64,
+    pub blank: Option<Blank>,
+    pub transforms: Vec<ActiveTransform>,
+    pub frames: Frames,
+    pub pivots: [Pivot; 2],
+    /// Physical tool tip in M-CS.
+    pub tip_mcs: DVec3,
+    /// Physical tool tip relative to the workpiece, W-CS.
+    pub tip_wcs: DVec3,
+    /// The control's position in the I-CS (what unprogrammed coordinates keep).
+    pub tip_ics: DVec3,
+    /// Tool axis (tip → spindle) in M-CS.
+    pub tool_axis_mcs: DVec3,
+    pub q: BTreeMap<u32, f64>,
+    pub plane: Option<Arc<ActivePlane>>,
+    /// The solve explanation of this block (PLANE, cycle 19).
+    pub explanation: Option<Arc<Explanation>>,
+    pub message: Option<Texts>,
+    pub segments: Vec<Segment>,
+    /// M30/M2 or END PGM reached.
+    pub ended: bool,
+    /// `false` if the block was only listed (after M30/M2, or skipped with `/`).
+    pub executed: bool,
+}
+
+impl State {
+    /// How long the block's motion takes, seconds (sum of its segments).
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        self.segments.iter().map(|s| s.duration).sum()
+    }
+}
+
+/// Key of the label table.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub(crate) enum LabelKey {
+    Num(u32),
+    Name(String),
+}
+
+impl From<&Label> for LabelKey {
+    fn from(l: &Label) -> Self {
+        match l {
+            Label::Number(n) => LabelKey::Num(*n),
+            Label::Name(s) => LabelKey::Name(s.clone()),
+        }
+    }
+}
+
+/// The result of a run.
+#[derive(Debug, Clone)]
+pub struct Simulation {
+    pub machine: Machine,
+    pub options: SimOptions,
+    /// One per executed block, in execution order.
+    pub records: Vec<Record>,
+    /// Where the run stopped with the control's message, if it did.
+    pub error: Option<SimError>,
+    /// For each block of the program, the first step that executed it.
+    pub first_step: Vec<Option<u32>>,
+    checkpoints: Vec<Interp>,
+    labels: Arc<HashMap<LabelKey, usize>>,
+    blocks: usize,
+}
+
+/// Runs a program on a machine.
+#[must_use]
+pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> Simulation {
+    let labels = Arc::new(label_table(program));
+    let mut options = options.clone();
+    options.checkpoint_interval = options.checkpoint_interval.max(1);
+    let budget = options.max_steps.unwrap_or(1_000_000 + 20 * program.blocks.len());
+    let mut it = Interp::new(machine);
+    let mut records = Vec::with_capacity(program.blocks.len());
+    let mut checkpoints = Vec::new();
+    let mut first_step = vec![None; program.blocks.len()];
+    let mut error = None;
+    let cx = interp::Cx { program, machine, options: &options, labels: &labels };
+    while !it.done(program) {
+        let step = records.len();
+        if step % options.checkpoint_interval == 0 {
+            checkpoints.push(it.clone());
+        }
+        let block = it.pc;
+        if step >= budget {
+            error = Some(make_error(program, step, block, SimErrorCode::BlockBudget { steps: budget }));
+            break;
+        }
+        match it.step(&cx, None) {
+            Ok(executed) => {
+                if let Some(slot) = first_step.get_mut(block)
+                    && slot.is_none()
+                {
+                    *slot = u32::try_from(step).ok();
+                }
+                records.push(Record {
+                    block: u32::try_from(block).unwrap_or(u32::MAX),
+                    executed,
+                    axes: it.axes,
+                });
+            }
+            Err(code) => {
+                error = Some(make_error(program, step, block, code));
+                break;
+            }
+        }
+    }
+    Simulation {
+        machine: machine.clone(),
+        options,
+        records,
+        error,
+        first_step,
+        checkpoints,
+        labels,
+        blocks: program.blocks.len(),
+    }
+}
+
+fn make_error(program: &Program, step: usize, block: usize, code: SimErrorCode) -> SimError {
+    let line = program.blocks.get(block).map_or(0, |b| b.line);
+    SimError { step, block, line, message: code.message(), detail: code.detail(), code }
+}
+
+fn label_table(program: &Program) -> HashMap<LabelKey, usize> {
+    let mut m = HashMap::new();
+    for (i, b) in program.blocks.iter().enumerate() {
+        if let BlockBody::Lbl(l) = &b.body
+            && *l != Label::Number(0)
+        {
+            m.entry(LabelKey::from(l)).or_insert(i);
+        }
+    }
+    m
+}
+
+impl Simulation {
+    /// Number of executed blocks with a state.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.records.len()
+    }
+
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.records.is_empty()
+    }
+
+    /// The full state after step `step`, re-simulated from the nearest checkpoint. `program`
+    /// must be the program that was simulated (`None` if the block count differs or the step
+    /// does not exist).
+    #[must_use]
+    pub fn state_at(&self, program: &Program, step: usize) -> Option<State> {
+        if program.blocks.len() != self.blocks || step >= self.records.len() {
+            return None;
+        }
+        let n = self.options.checkpoint_interval;
+        let mut it = self.checkpoints.get(step / n)?.clone();
+        let cx = interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
+        while it.step_count < step {
+            it.step(&cx, None).ok()?;
+        }
+        let mut rec = Rec::default();
+        let executed = it.step(&cx, Some(&mut rec)).ok()?;
+        Some(it.state(program, &self.machine, step, executed, rec))
+    }
+
+    /// Every state in order, re-simulated once from the start (for listings of a whole run).
+    pub fn states<'a>(&'a self, program: &'a Program) -> impl Iterator<Item = State> + 'a {
+        let cx_ok = program.blocks.len() == self.blocks;
+        let mut it = self.checkpoints.first().cloned();
+        let mut step = 0usize;
+        std::iter::from_fn(move || {
+            if !cx_ok || step >= self.records.len() {
+                return None;
+            }
+            let interp = it.as_mut()?;
+            let cx =
+                interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
+            let mut rec = Rec::default();
+            let executed = interp.step(&cx, Some(&mut rec)).ok()?;
+            let s = interp.state(program, &self.machine, step, executed, rec);
+            step += 1;
+            Some(s)
+        })
+    }
+
+    /// The segments of one step (empty for blocks that do not move).
+    #[must_use]
+    pub fn segments_at(&self, program: &Program, step: usize) -> Vec<Segment> {
+        self.state_at(program, step).map(|s| s.segments).unwrap_or_default()
+    }
+}
