@@ -308,15 +308,10 @@ fn host(style: &str) -> Element {
     root
 }
 
-/// Mounts the 3D view with the default state into a new `w × h` element.
+/// Mounts the 3D view (the default machine before a program runs) into a new `w × h` element.
 async fn mount_view(w: u32, h: u32, lang: Lang) -> Element {
     let root = host(&format!("width:{w}px;height:{h}px;position:relative"));
-    let props = View3dProps {
-        lang,
-        machine: None,
-        state: Rc::new(SceneState::default()),
-        toolpath: Default::default(),
-    };
+    let props = View3dProps { lang, machine: None, state: None, toolpath: Default::default() };
     yew::Renderer::<View3d>::with_root_and_props(root.clone(), props).render();
     sleep(250).await;
     root

@@ -5,6 +5,7 @@
 
 pub mod camera;
 pub mod draw_list;
+pub mod from_sim;
 pub mod machine_parts;
 pub mod mesh;
 pub mod plane_scene;

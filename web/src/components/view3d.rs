@@ -14,6 +14,7 @@ use super::gl_canvas::{GlCanvas, SharedViewer};
 use super::viewer::{Content, Viewer};
 use crate::i18n::Lang;
 use crate::render::camera::{Camera, Preset};
+use crate::render::pose::poses;
 use crate::render::scene::{SceneState, Triads};
 use crate::render::toolpath::PathPoint;
 
@@ -34,12 +35,21 @@ pub struct View3dProps {
     /// The machine; `None` = the built-in `ac-table`.
     #[prop_or_default]
     pub machine: Option<Rc<Machine>>,
-    /// The state to draw (axes at the current animation fraction, frames, tool, blank, ghost).
+    /// The state to draw (axes at the current animation fraction, frames, tool, blank, ghost);
+    /// `None` = the machine before a program runs ([`SceneState::for_machine`]).
     #[prop_or_default]
-    pub state: Rc<SceneState>,
+    pub state: Option<Rc<SceneState>>,
     /// The tool tip's path of the run, W-CS on the table at home.
     #[prop_or_default]
     pub toolpath: SharedPath,
+}
+
+/// The blank's centre in M-CS as the machine stands.
+#[must_use]
+pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let wcs = glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
+    (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
 }
 
 #[function_component(View3d)]
@@ -54,12 +64,28 @@ pub fn view3d(props: &View3dProps) -> Html {
         let viewer = viewer.clone();
         use_effect_with(((*machine).clone(), props.state.clone(), *triads), move |(m, state, triads)| {
             let mut v = viewer.borrow_mut();
-            v.content = m.clone().map(|machine| Content::Machine {
-                machine,
-                state: Box::new((**state).clone()),
-                triads: *triads,
+            v.content = m.clone().map(|machine| {
+                let state = match state {
+                    Some(s) => (**s).clone(),
+                    None => SceneState::for_machine(&machine),
+                };
+                Content::Machine { machine, state: Box::new(state), triads: *triads }
             });
             v.dirty = true;
+        });
+    }
+    {
+        // Look at the blank whenever the machine changes (not on every state: a trainee's
+        // pan stays while the program runs).
+        let viewer = viewer.clone();
+        let id = (*machine).as_ref().map(|m| m.id.clone());
+        use_effect_with(id, move |_| {
+            let mut v = viewer.borrow_mut();
+            if let Some(Content::Machine { machine, state, .. }) = &v.content {
+                let at = blank_centre(machine, state);
+                v.camera.target = at.as_vec3();
+                v.dirty = true;
+            }
         });
     }
     {

@@ -1,33 +1,21 @@
-//! Where every moving part of the machine is: forward kinematics of the chain in `core`'s
-//! machine model, with pivots, as rigid transforms in M-CS.
+//! Where every moving part of the machine is, as rigid transforms in M-CS, from the
+//! simulator's rigid-body model ([`schwenkbar_core::sim::Kin`]; formulas and sources in the
+//! `core::sim` module doc): the workpiece pose W (table axes turn the workpiece by −θ about their
+//! pivot, DOMAIN.md §3.1), the head pose H (head axes turn the tool by +θ about their pivot,
+//! which hangs from the spindle gauge point one tool length above the tip), and the linear axes
+//! L = the tool tip with the head at home, so the tip is L + H(0).
 //!
-//! Composition (product of exponentials, Lynch & Park, *Modern Robotics* §4.1): with each axis
-//! given by its direction and a pivot **at home**, the pose of a link is the product of the
-//! rotations about those home axes from the fixed base outwards.
-//! Sign (DOMAIN.md §3.1, `Machine::forward`): an axis value θ means "tool relative to the
-//! workpiece turns by +θ about the axis direction"; a head axis turns the tool by +θ, a table
-//! axis physically turns the workpiece by −θ. The test below checks that the relative
-//! orientation of tool and workpiece is exactly `Machine::forward`.
-//! Pivots (core/src/machine.rs): a table axis' pivot is in M-CS with every axis at home; a head
-//! axis' pivot is relative to the spindle gauge point, one tool length above the tool tip. The
-//! linear axes X/Y/Z are where the tool tip is with the head at home (the simulator's `Kin`
-//! uses the same model: tip = L + H(0)).
+//! The view also needs each link on its own (the cradle turns with the master only, the rotary
+//! table with both): a link's pose is `Kin`'s pose with the joints it does not ride on held at
+//! 0°. The test below checks that W and H together give exactly `Machine::forward`.
 
 use glam::{DAffine3, DMat3, DVec3};
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::{Carrier, Machine, RotaryJoint};
-
-/// The rigid motion of one joint's moving side: a turn by `angle_deg` about the joint's home
-/// axis through its pivot.
-#[must_use]
-pub fn joint_motion(joint: &RotaryJoint, angle_deg: f64) -> DAffine3 {
-    DAffine3::from_translation(joint.pivot)
-        * DAffine3::from_axis_angle(joint.direction, angle_deg.to_radians())
-        * DAffine3::from_translation(-joint.pivot)
-}
+use schwenkbar_core::sim::{Affine, Kin};
 
 /// A head axis' pivot in home coordinates with the linear axes at 0 (tool tip at the origin):
-/// the gauge point `(0, 0, tool_length)` plus the machine's pivot.
+/// the gauge point `(0, 0, tool_length)` plus the machine's pivot (as in `Kin::head_pose`).
 #[must_use]
 pub fn head_pivot(j: &RotaryJoint, tool_length: f64) -> DVec3 {
     DVec3::new(0.0, 0.0, tool_length) + j.pivot
@@ -46,33 +34,34 @@ pub struct Poses {
     pub tool: DAffine3,
 }
 
+fn affine(a: Affine) -> DAffine3 {
+    DAffine3::from_mat3_translation(a.m, a.v)
+}
+
 /// Forward kinematics for axis values (missing rotary axes at 0°), the linear axes and the
 /// active tool length (it places the head axes, which hang from the gauge point).
 #[must_use]
 pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3, tool_length: f64) -> Poses {
+    let kin = Kin::new(machine, tool_length);
     let chain = machine.joints();
-    let value = |j: &RotaryJoint| rotary.get(j.axis).unwrap_or(0.0);
-    let mut joints = [DAffine3::IDENTITY; 2];
-
-    // Table side: from the bed inwards (reverse chain order), each table axis turns by −θ.
-    let mut table = DAffine3::IDENTITY;
-    for (i, j) in chain.iter().enumerate().rev() {
-        if j.carrier == Carrier::Table {
-            table *= joint_motion(j, -value(j));
-            joints[i] = table;
-        }
-    }
-    // Head side: from the carriage outwards (chain order), each head axis turns by +θ.
+    let values: [f64; 2] = std::array::from_fn(|i| rotary.get(chain[i].axis).unwrap_or(0.0));
     let carriage = DAffine3::from_translation(linear);
-    let mut head = carriage;
-    for (i, j) in chain.iter().enumerate() {
-        if j.carrier == Carrier::Head {
-            let at_home = RotaryJoint { pivot: head_pivot(j, tool_length), ..j.clone() };
-            head *= joint_motion(&at_home, value(j));
-            joints[i] = head;
+    // Joint i's link rides on the table joints from the bed down to i (indices ≥ i) or on the
+    // head joints from the carriage out to i (indices ≤ i); the others are held at 0°.
+    let joints = std::array::from_fn(|i| match chain[i].carrier {
+        Carrier::Table => {
+            affine(kin.workpiece_pose(std::array::from_fn(|k| if k >= i { values[k] } else { 0.0 })))
         }
+        Carrier::Head => {
+            carriage * affine(kin.head_pose(std::array::from_fn(|k| if k <= i { values[k] } else { 0.0 })))
+        }
+    });
+    Poses {
+        joints,
+        workpiece: affine(kin.workpiece_pose(values)),
+        carriage,
+        tool: carriage * affine(kin.head_pose(values)),
     }
-    Poses { joints, workpiece: table, carriage, tool: head }
 }
 
 /// The tool's orientation relative to the workpiece (its third column is the tool axis in the

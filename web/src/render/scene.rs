@@ -138,6 +138,18 @@ impl Default for SceneState {
 }
 
 impl SceneState {
+    /// The state before a program runs on `machine`: its preset (the simulator's W-CS), the
+    /// linear axes at the program start, the default blank and tool, rotary axes at 0°.
+    #[must_use]
+    pub fn for_machine(machine: &Machine) -> SceneState {
+        let g = &machine.geometry;
+        SceneState {
+            axes: MachineAxes { linear: g.start, rotary: AxisValues::default() },
+            wcs: Frame { origin: g.preset, rot: DMat3::IDENTITY },
+            ..SceneState::default()
+        }
+    }
+
     /// The state a `fraction` (0…1) of the way from `from` to `to`, for animating a block: the
     /// axes travel linearly ([`MachineAxes::lerp`]), the W-CS and WPL-CS turn along the shortest
     /// arc (quaternion slerp), so PLANE … STAY shows only the frame turning. Tool, blank, ghost
@@ -201,6 +213,14 @@ mod tests {
         assert!((z - expected).length() < 1e-9, "halfway: SPB 7.5° ({z})");
         let end = SceneState::between(&from, &to, 1.0);
         assert!((end.wpl.rot.col(2) - to.wpl.rot.col(2)).length() < 1e-9);
+    }
+
+    #[test]
+    fn a_machines_own_state_uses_its_preset_and_start() {
+        let m = Machine::builtin("ac-table").expect("machine");
+        let s = SceneState::for_machine(&m);
+        assert_eq!(s.wcs.origin, m.geometry.preset);
+        assert_eq!(s.axes.linear, m.geometry.start);
     }
 
     #[test]
