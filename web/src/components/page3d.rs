@@ -1,9 +1,9 @@
 //! Stand-alone pages for the 3D parts, opened by URL fragment (for teaching with a projector,
 //! for screenshots and for checking every machine by eye):
 //! `#3d:machine=b45-nutating;spb=45` = the machine after that PLANE SPATIAL (ghost = the other
-//! candidate); `#3d:program=musterprogramm1;block=10` = a sample program simulated up to the
-//! first run of that block, with the run's toolpath; `#rechte-hand` (`#right-hand` in English) =
-//! the right-hand demo. Add `;lang=en` for English.
+//! candidate); `#rechte-hand` (`#right-hand` in English) = the right-hand demo. Add `;lang=en`
+//! for English. (A page that runs a sample program through the simulator was left out: it pulls
+//! the simulator into the bundle, ~36 KB gzip, before the app itself uses it.)
 
 use std::rc::Rc;
 
@@ -14,12 +14,9 @@ use yew::prelude::*;
 use super::right_hand_demo::RightHandDemo;
 use super::view3d::{SharedPath, View3d};
 use crate::i18n::Lang;
-use crate::render::from_sim::{scene_state, toolpath};
 use crate::render::plane_scene::{PageQuery, demo_path, state_for};
 use crate::render::scene::SceneState;
 use crate::render::toolpath::PathPoint;
-use crate::samples::SAMPLES;
-use schwenkbar_core::sim::{SimOptions, simulate};
 use schwenkbar_core::solve::{axis_word, fmt_deg};
 
 #[derive(Properties, PartialEq)]
@@ -54,11 +51,7 @@ pub fn page3d(props: &Page3dProps) -> Html {
         return html! { <main class="page3d page3d-hand"><RightHandDemo {lang} /></main> };
     }
     let q = PageQuery::parse(f.trim_start_matches("3d"));
-    let page = match &q.program {
-        Some(id) => program_page(&q, id, lang),
-        None => plane_page(&q, lang),
-    };
-    match page {
+    match plane_page(&q, lang) {
         Ok((machine, state, path, caption)) => html! {
             <main class="page3d page3d-machine">
                 <p class="page3d-caption">{ caption }</p>
@@ -100,50 +93,4 @@ fn plane_page(q: &PageQuery, lang: Lang) -> Page {
     let [a, b, c] = q.spatial.map(fmt_deg);
     let caption = format!("{} · PLANE SPATIAL SPA{a} SPB{b} SPC{c} → {result}", texts(lang, &machine.name));
     Ok((machine, state, path, caption))
-}
-
-/// A sample program run by the simulator up to a block.
-fn program_page(q: &PageQuery, id: &str, lang: Lang) -> Page {
-    let sample = SAMPLES
-        .iter()
-        .find(|s| s.id == id)
-        .ok_or_else(|| format!("{}: {id}", lang.t("Unbekanntes Programm", "Unknown program")))?;
-    let machine = machine_named(q.machine.as_deref().unwrap_or(sample.machine), lang)?;
-    let (program, _) = schwenkbar_core::parse(sample.text);
-    let sim = simulate(&program, &machine, &SimOptions::default());
-    let step = match q.block {
-        Some(n) => program
-            .blocks
-            .iter()
-            .position(|b| b.number == Some(n))
-            .and_then(|i| sim.first_step.get(i).copied().flatten())
-            .map(|s| s as usize)
-            .ok_or_else(|| {
-                format!("{} {n}", lang.t("Dieser Satz wird nicht ausgeführt:", "This block is not executed:"))
-            })?,
-        None => sim.len().checked_sub(1).ok_or_else(|| lang.t("Leerer Lauf", "Empty run").to_string())?,
-    };
-    let st = sim.state_at(&program, step).ok_or_else(|| lang.t("Kein Zustand", "No state").to_string())?;
-    let run = toolpath(&sim, &program);
-    let mut state = scene_state(&machine, &st);
-    state.toolpath_drawn = run.segments_after.get(step).copied();
-    if !q.ghost {
-        state.ghost = None;
-    }
-    // The block's first line as written (a cycle's continuation lines left out).
-    let line = program
-        .blocks
-        .get(st.block)
-        .and_then(|b| sample.text.get(b.span.start..b.span.end))
-        .and_then(|t| t.lines().next())
-        .unwrap_or_default();
-    let axes: Vec<String> = st.axes.named().iter().map(|(l, v)| format!("{l}{}", fmt_deg(*v))).collect();
-    let caption = format!(
-        "{} · {} · {} · {}",
-        lang.t(sample.title.de, sample.title.en),
-        texts(lang, &machine.name),
-        line.trim(),
-        axes.join(" ")
-    );
-    Ok((machine, state, run.points.into(), caption))
 }

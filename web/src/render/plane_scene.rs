@@ -74,12 +74,8 @@ pub fn demo_path(blank: &Blank, wpl: &Frame) -> Vec<PathPoint> {
 /// (unknown keys and bad numbers are ignored; defaults: `ac-table`, all angles 0).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PageQuery {
-    /// `None` = the sample's machine, else `ac-table`.
+    /// `None` = `ac-table`.
     pub machine: Option<String>,
-    /// A sample program (`crate::samples` id) to simulate instead of a single PLANE.
-    pub program: Option<String>,
-    /// With `program`: show the state after the first run of this block number (else the end).
-    pub block: Option<u32>,
     pub spatial: [f64; 3],
     pub ghost: bool,
     /// Draw the demo face-milling path.
@@ -89,21 +85,12 @@ pub struct PageQuery {
 impl PageQuery {
     #[must_use]
     pub fn parse(s: &str) -> PageQuery {
-        let mut q = PageQuery {
-            machine: None,
-            program: None,
-            block: None,
-            spatial: [0.0; 3],
-            ghost: true,
-            path: true,
-        };
+        let mut q = PageQuery { machine: None, spatial: [0.0; 3], ghost: true, path: true };
         for part in s.split([';', '&', '?', ':']) {
             let Some((k, v)) = part.split_once('=') else { continue };
             let num = v.parse::<f64>().ok().filter(|x| x.is_finite());
             match (k.trim().to_ascii_lowercase().as_str(), num) {
                 ("machine", _) => q.machine = Some(v.trim().to_string()),
-                ("program", _) => q.program = Some(v.trim().to_string()),
-                ("block", Some(x)) if x >= 0.0 && x.fract() == 0.0 => q.block = Some(x as u32),
                 ("spa", Some(x)) => q.spatial[0] = x,
                 ("spb", Some(x)) => q.spatial[1] = x,
                 ("spc", Some(x)) => q.spatial[2] = x,
@@ -172,7 +159,5 @@ mod tests {
         assert_eq!(q.spatial, [0.0, -30.0, 0.0]);
         assert!(!q.ghost);
         assert_eq!(PageQuery::parse("").machine, None);
-        let p = PageQuery::parse(":program=musterprogramm1;block=10");
-        assert_eq!((p.program.as_deref(), p.block), (Some("musterprogramm1"), Some(10)));
     }
 }
