@@ -2,6 +2,7 @@
 
 pub mod dialog_area;
 pub mod header;
+pub mod position;
 pub mod program_pane;
 pub mod softkey_row;
 pub mod view3d;
