@@ -5,8 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
-BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-200}"
-wasm_env trunk build --release --offline
+BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
+bundle_env trunk build --release --offline
 total=0
 for f in dist/index.html dist/*.js dist/*.wasm dist/*.css; do
   [ -f "$f" ] || continue

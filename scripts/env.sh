@@ -1,26 +1,38 @@
 # Sourced by the build and test scripts after scripts/setup.sh: puts the tools on PATH and
 # decides how wasm32 is compiled (TOOLCHAIN.md).
-#   - rustup's prebuilt wasm32 std if it is installed (unless SCHWENKBAR_BUILD_STD=1);
+#   - rustup's prebuilt wasm32 std plus its std source (unless SCHWENKBAR_BUILD_STD=1);
 #   - else Debian's rustc-web, building std from source with -Zbuild-std.
-# `wasm_env CMD…` runs CMD with the settings for wasm32 builds.
+# `wasm_env CMD…` runs CMD with the settings for wasm32 builds (tests);
+# `bundle_env CMD…` adds the size-first settings of the release bundle.
 TOOLS_DIR="${SCHWENKBAR_TOOLS:-$HOME/.cache/schwenkbar-tools}"
 export PATH="$TOOLS_DIR/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 export CHROMEDRIVER="${CHROMEDRIVER:-/usr/bin/chromedriver}"
 
-# The bundle is size-first; the native release profile stays speed-first (Cargo.toml).
-_size_first() { CARGO_PROFILE_RELEASE_OPT_LEVEL=z CARGO_PROFILE_RELEASE_PANIC=abort "$@"; }
-
 _sysroot=$(rustc --print sysroot 2>/dev/null || true)
-if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && [ -n "$_sysroot" ] && [ -d "$_sysroot/lib/rustlib/wasm32-unknown-unknown" ]; then
+if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && [ -n "$_sysroot" ] \
+   && [ -d "$_sysroot/lib/rustlib/wasm32-unknown-unknown" ] && [ -d "$_sysroot/lib/rustlib/src/rust/library" ]; then
   WASM_ROUTE="rustup (prebuilt wasm32 std)"
-  wasm_env() { _size_first "$@"; }
+  WASM_STD_SRC="$_sysroot/lib/rustlib/src/rust/library"
+  _route_env() { "$@"; }
 else
   WASM_ROUTE="Debian rustc-web with -Zbuild-std"
+  WASM_STD_SRC=/usr/lib/rustlib/src/rust/library
   # Debian's cargo/rustc first; lets the stable compiler take -Z flags for the std build.
   export PATH="$TOOLS_DIR/node_modules/.bin:/usr/bin:$PATH"
-  wasm_env() {
+  _route_env() {
     RUSTC_BOOTSTRAP=1 CARGO_UNSTABLE_BUILD_STD=std,panic_abort \
-      CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER=wasm-ld _size_first "$@"
+      CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_LINKER=wasm-ld "$@"
   }
 fi
 unset _sysroot
+
+wasm_env() { _route_env "$@"; }
+
+# The bundle is size-first (the native release profile stays speed-first, Cargo.toml): std is
+# rebuilt with optimize_for_size and panics abort at once, which drops the panic formatting
+# machinery (about 21 KB gzip). The app never relies on a panic message: bad input is a message.
+bundle_env() {
+  RUSTC_BOOTSTRAP=1 CARGO_UNSTABLE_BUILD_STD=std,panic_abort CARGO_UNSTABLE_BUILD_STD_FEATURES=optimize_for_size \
+    CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Zunstable-options -Cpanic=immediate-abort" \
+    CARGO_PROFILE_RELEASE_OPT_LEVEL=z _route_env "$@"
+}

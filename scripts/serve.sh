@@ -8,4 +8,4 @@ source scripts/env.sh
 echo
 echo "Schwenkbar: http://127.0.0.1:8080/   (Ctrl+C stops the server)"
 echo
-wasm_env trunk serve --release --offline --address 127.0.0.1 --port 8080
+bundle_env trunk serve --release --offline --address 127.0.0.1 --port 8080

@@ -3,7 +3,8 @@
 # missing or at the wrong version. Idempotent: a second run only checks.
 # Recipe and versions: ../shared/TOOLCHAIN.md (offline machines; crates.io, npm and Debian only).
 #
-# Steps: 1 wasm32 std, 2 wasm-bindgen-cli, 3 trunk, 4 wasm-opt (binaryen), 5 Chromium + ChromeDriver.
+# Steps: 1 wasm32 std (+ std source), 2 wasm-bindgen-cli, 3 trunk, 4 wasm-opt (binaryen),
+# 5 Chromium + ChromeDriver, then the crates std depends on.
 # Prints each step; on failure names the step and exits non-zero.
 set -euo pipefail
 
@@ -33,13 +34,18 @@ HOST_CARGO=$(command -v cargo || true)
 step "1/5: wasm32 standard library"
 rustup_sysroot=""
 if command -v rustc >/dev/null; then rustup_sysroot=$(rustc --print sysroot 2>/dev/null || true); fi
-# SCHWENKBAR_BUILD_STD=1 forces the Debian route (to test it where rustup works).
-if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && [ -n "$rustup_sysroot" ] \
-   && [ -d "$rustup_sysroot/lib/rustlib/wasm32-unknown-unknown" ]; then
-  ok "prebuilt wasm32 std in $rustup_sysroot"
+# The rustup route needs the prebuilt wasm32 std and the std source (the bundle rebuilds std for
+# size). SCHWENKBAR_BUILD_STD=1 forces the Debian route (to test it where rustup works).
+rustup_ready() {
+  [ -n "$rustup_sysroot" ] && [ -d "$rustup_sysroot/lib/rustlib/wasm32-unknown-unknown" ] \
+    && [ -d "$rustup_sysroot/lib/rustlib/src/rust/library" ]
+}
+if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && rustup_ready; then
+  ok "prebuilt wasm32 std and std source in $rustup_sysroot"
 elif [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && command -v rustup >/dev/null \
-   && timeout 30 rustup target add wasm32-unknown-unknown >/dev/null 2>&1; then
-  ok "rustup target add wasm32-unknown-unknown"
+   && timeout 60 rustup target add wasm32-unknown-unknown >/dev/null 2>&1 \
+   && timeout 60 rustup component add rust-src >/dev/null 2>&1 && rustup_ready; then
+  ok "rustup target add wasm32-unknown-unknown, component rust-src"
 elif [ -x /usr/bin/rustc ] && [ -d /usr/lib/rustlib/src/rust/library ] && command -v wasm-ld >/dev/null; then
   ok "Debian rustc-web $(/usr/bin/rustc --version | cut -d' ' -f2) with std source (-Zbuild-std)"
 else
@@ -94,5 +100,12 @@ else
   apt_install chromium chromium-driver || fail "5/5 (apt-get install chromium chromium-driver)"
   ok "$(/usr/bin/chromium --version 2>/dev/null | head -1)"
 fi
+
+# --- the crates std itself depends on, so that `trunk build --offline` can rebuild std -------
+step "std's own dependencies (for building std offline)"
+# shellcheck source=scripts/env.sh
+source "$(dirname "$0")/env.sh"
+(cd "$WASM_STD_SRC" && RUSTC_BOOTSTRAP=1 cargo fetch --quiet) || fail "std dependencies (cargo fetch in $WASM_STD_SRC)"
+ok "fetched for $WASM_ROUTE"
 
 printf '\nsetup complete\n'

@@ -9,6 +9,7 @@ use yew::prelude::*;
 use crate::browser;
 use crate::components::dialog_area::DialogArea;
 use crate::components::header::Header;
+use crate::components::position::PositionDisplay;
 use crate::components::program_pane::ProgramPane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::view3d::View3d;
@@ -66,6 +67,19 @@ pub fn app() -> Html {
             other => state.dispatch(other),
         })
     };
+    // Satzfolge: the next block follows when this one's motion has had its time.
+    {
+        let run = state.run.as_ref().map(|r| (r.step, r.playing, r.tick_ms()));
+        let state = state.clone();
+        use_effect_with(run, move |run| {
+            if let Some((step, true, ms)) = *run {
+                yew::platform::spawn_local(async move {
+                    yew::platform::time::sleep(std::time::Duration::from_millis(ms)).await;
+                    state.dispatch(Action::RunTick(step));
+                });
+            }
+        });
+    }
     let on_import = {
         let state = state.clone();
         Callback::from(move |file: web_sys::File| {
@@ -109,17 +123,29 @@ pub fn app() -> Html {
         |m| l.t(&m.name.de, &m.name.en).to_owned(),
     );
     let dialog = state.dialog.as_ref().map(|(d, _)| d.clone());
+    let mode = match &state.run {
+        None => l.t("Programmieren", "Programming"),
+        Some(r) if r.playing => l.t("Programmlauf Satzfolge", "Program run, full sequence"),
+        Some(_) => l.t("Programmlauf Einzelsatz", "Program run, single block"),
+    };
+    let shown = state.run.as_ref().and_then(|r| r.state.clone());
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
         <div {class} lang={l.code()} tabindex="0" {onkeydown}>
-            <Header lang={l} machine={machine_name} />
+            <Header lang={l} machine={machine_name} mode={mode} />
             <main class="panes">
                 <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
                     text_editing={state.text_editing} {on_select} {on_text} />
                 <View3d lang={l} />
-                <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()} lang={l} />
+                <div class="side">
+                    if let Some(shown) = shown.clone() {
+                        <PositionDisplay state={shown} lang={l} />
+                    }
+                    <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
+                        sim={state.sim.clone()} shown={shown} lang={l} />
+                </div>
             </main>
-            <DialogArea {dialog} text={state.dialog_text()} lang={l} on_action={on_action.clone()} />
+            <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />
             <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
         </div>
     }

@@ -4,6 +4,7 @@ pub mod dialog_area;
 pub mod gl_canvas;
 pub mod header;
 pub mod page3d;
+pub mod position;
 pub mod program_pane;
 pub mod right_hand_demo;
 pub mod softkey_row;

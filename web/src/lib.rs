@@ -11,6 +11,7 @@ pub mod keymap;
 pub mod persist;
 pub mod preview;
 pub mod render;
+pub mod run;
 pub mod samples;
 pub mod softkeys;
 pub mod state;

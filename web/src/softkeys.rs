@@ -64,6 +64,30 @@ pub fn row(state: &AppState) -> Row {
         }
         return row;
     }
+    if let Some(run) = &state.run {
+        let speed = format!("{}\n×{}", Text::new("SCHNELLER", "FASTER").get(l), run.speed_factor());
+        return [
+            Some(Softkey {
+                id: "run-play".to_owned(),
+                label: if run.playing {
+                    Text::new("NC-STOPP", "NC STOP")
+                } else {
+                    Text::new("NC-START\nSATZFOLGE", "NC START\nSEQUENCE")
+                }
+                .get(l)
+                .to_owned(),
+                action: Action::RunPlay,
+                active: run.playing,
+            }),
+            text_key("run-next", Text::new("EINZEL-\nSATZ ▶", "SINGLE\nBLOCK ▶"), l, Action::RunNext),
+            text_key("run-prev", Text::new("◀ SATZ\nZURÜCK", "◀ BLOCK\nBACK"), l, Action::RunPrev),
+            text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
+            text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),
+            key("run-faster", &speed, Action::RunFaster),
+            None,
+            back(l),
+        ];
+    }
     match state.level {
         SoftkeyLevel::Main => [
             key("spec-fct", "SPEC\nFCT", Action::SpecFct),
@@ -76,7 +100,7 @@ pub fn row(state: &AppState) -> Row {
                 active: state.text_editing,
             }),
             text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
-            None,
+            text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
             Some(Softkey {
                 id: "projector".to_owned(),
                 label: Text::new("PROJEKTOR", "PROJECTOR").get(l).to_owned(),

@@ -7,13 +7,15 @@
 use std::rc::Rc;
 
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::{BlockBody, edit};
+use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
+use schwenkbar_core::{BlockBody, Program, edit};
 use yew::Reducible;
 
 use crate::dialog::{Dialog, Function, Key, Outcome};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Saved, Shared};
+use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
 
 /// Which softkey row is shown when no dialog is open.
@@ -51,6 +53,10 @@ pub struct AppState {
     pub message: Option<Text>,
     /// Free text editing of the whole program.
     pub text_editing: bool,
+    /// The program simulated on the machine (recomputed when either changes).
+    pub sim: Option<SimRef>,
+    /// Program run mode, when active.
+    pub run: Option<Run>,
 }
 
 impl Default for AppState {
@@ -65,7 +71,10 @@ impl Default for AppState {
             machine: Machine::builtin(DEFAULT_MACHINE).ok().map(Rc::new),
             message: None,
             text_editing: false,
+            sim: None,
+            run: None,
         }
+        .simulated()
     }
 }
 
@@ -107,6 +116,16 @@ pub enum Action {
     Share,
     /// The app shell reports the outcome of a side effect in the dialog line.
     Notice(Text),
+    /// Program run: enter (single block), step, play/pause (Satzfolge), speed, back to start.
+    StartRun,
+    RunNext,
+    RunPrev,
+    RunPlay,
+    RunFaster,
+    RunSlower,
+    RunToStart,
+    /// The Satzfolge timer fired while step `.0` was shown.
+    RunTick(usize),
     ToggleLang,
     ToggleProjector,
 }
@@ -130,6 +149,7 @@ impl AppState {
                 next.dialog = None;
                 next.message = Some(Text::new("Dialog abgebrochen", "Dialog aborted"));
             }
+            Action::Back if self.run.is_some() => next.run = None,
             Action::Back => {
                 if next.dialog.take().is_none() {
                     next.level = match self.level {
@@ -141,6 +161,9 @@ impl AppState {
             Action::Open => next.open_cursor_block(),
             // The dialog is modal, as on the control: the cursor stays where the block goes.
             Action::CursorUp | Action::CursorDown | Action::CursorTo(_) if self.dialog.is_some() => {}
+            Action::CursorUp | Action::CursorDown | Action::CursorTo(_) if self.run.is_some() => {
+                next.run_cursor(action);
+            }
             Action::CursorUp => next.cursor = self.cursor.saturating_sub(1),
             Action::CursorDown => next.cursor = (self.cursor + 1).min(self.doc.last_index()),
             Action::CursorTo(i) => next.cursor = i.min(self.doc.last_index()),
@@ -169,10 +192,119 @@ impl AppState {
             }
             Action::Download | Action::Share => {}
             Action::Notice(text) => next.message = Some(text),
+            Action::StartRun => next.start_run(),
+            Action::RunNext => next.run_step(|run, sim, p| {
+                run.playing = false;
+                run.next(sim, p);
+            }),
+            Action::RunPrev => next.run_step(|run, sim, p| run.prev(sim, p)),
+            Action::RunToStart => next.run_step(|run, sim, p| {
+                run.playing = false;
+                run.go_to(sim, p, 0);
+            }),
+            Action::RunPlay => next.run_step(|run, sim, p| {
+                run.playing = !run.playing;
+                if run.playing && run.step + 1 >= sim.len() {
+                    run.go_to(sim, p, 0);
+                }
+            }),
+            Action::RunTick(step) => next.run_step(|run, sim, p| {
+                if run.playing && run.step == step {
+                    run.next(sim, p);
+                }
+            }),
+            Action::RunFaster => next.run_step(|run, _, _| run.speed = (run.speed + 1).min(SPEEDS.len() - 1)),
+            Action::RunSlower => next.run_step(|run, _, _| run.speed = run.speed.saturating_sub(1)),
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
         }
+        let machine_changed = match (&self.machine, &next.machine) {
+            (Some(a), Some(b)) => !Rc::ptr_eq(a, b),
+            (a, b) => a.is_some() != b.is_some(),
+        };
+        if !Rc::ptr_eq(&self.doc, &next.doc) || machine_changed {
+            next = next.simulated();
+        }
         next
+    }
+
+    /// Re-runs the simulation (after the program or the machine changed) and keeps an open run
+    /// at the same step where it still exists.
+    #[must_use]
+    fn simulated(mut self) -> AppState {
+        self.sim = self
+            .machine
+            .as_ref()
+            .map(|m| SimRef(Rc::new(simulate(&self.doc.program, m, &SimOptions::default()))));
+        match (&self.sim, self.run.as_mut()) {
+            (Some(sim), Some(run)) => run.go_to(&sim.0, &self.doc.program, run.step),
+            (None, Some(_)) => self.run = None,
+            _ => {}
+        }
+        self.sync_cursor_to_run();
+        self
+    }
+
+    fn start_run(&mut self) {
+        self.dialog = None;
+        self.text_editing = false;
+        match &self.sim {
+            Some(sim) if !sim.0.is_empty() => {
+                let step = sim.0.first_step.get(self.cursor).copied().flatten().unwrap_or(0) as usize;
+                self.run = Some(Run::new(&sim.0, &self.doc.program, step));
+                self.sync_cursor_to_run();
+            }
+            Some(sim) => {
+                self.message = Some(match &sim.0.error {
+                    Some(_) => Text::new(
+                        "Programmlauf nicht möglich: Fehler im ersten Satz",
+                        "Cannot run: error in the first block",
+                    ),
+                    None => Text::new("Kein Satz zum Ausführen", "No block to run"),
+                })
+            }
+            None => self.message = Some(Text::new("Keine Maschine gewählt", "No machine selected")),
+        }
+    }
+
+    /// Applies `f` to the open run with the simulation and program, then moves the cursor along.
+    fn run_step(&mut self, f: impl FnOnce(&mut Run, &Simulation, &Program)) {
+        let (Some(run), Some(sim)) = (self.run.as_mut(), self.sim.as_ref()) else { return };
+        f(run, &sim.0, &self.doc.program);
+        self.sync_cursor_to_run();
+    }
+
+    /// In run mode the cursor shows the block of the current step; a click or an arrow key
+    /// jumps there.
+    fn run_cursor(&mut self, action: Action) {
+        let target = match action {
+            Action::CursorUp => self.cursor.saturating_sub(1),
+            Action::CursorDown => (self.cursor + 1).min(self.doc.last_index()),
+            Action::CursorTo(i) => i,
+            _ => return,
+        };
+        let step = self.sim.as_ref().and_then(|s| s.0.first_step.get(target).copied().flatten());
+        match step {
+            Some(step) => self.run_step(|run, sim, p| {
+                run.playing = false;
+                run.go_to(sim, p, step as usize);
+            }),
+            None => {
+                self.message = Some(Text::new(
+                    "Dieser Satz wird im Programmlauf nicht erreicht",
+                    "The run does not reach this block",
+                ))
+            }
+        }
+    }
+
+    /// The cursor follows the run; when the control refused a block it stands on that block.
+    fn sync_cursor_to_run(&mut self) {
+        let Some(run) = &self.run else { return };
+        let refused = self.sim.as_ref().and_then(|s| s.0.error.as_ref()).filter(|_| run.stopped_by_error);
+        if let Some(block) = refused.map(|e| e.block).or(run.state.as_ref().map(|s| s.block)) {
+            self.cursor = block;
+        }
     }
 
     fn select_machine(&mut self, id: &str) {
@@ -212,6 +344,20 @@ impl AppState {
         }
     }
 
+    /// The dialog line in the UI language: the control's error message when a run stopped, else
+    /// [`AppState::dialog_text`].
+    #[must_use]
+    pub fn dialog_line(&self) -> String {
+        let error = self
+            .run
+            .as_ref()
+            .filter(|r| r.stopped_by_error && self.dialog.is_none() && self.message.is_none());
+        if let Some(e) = error.and(self.sim.as_ref()).and_then(|s| s.0.error.as_ref()) {
+            return self.lang.t(&e.message.de, &e.message.en).to_owned();
+        }
+        self.dialog_text().get(self.lang).to_owned()
+    }
+
     /// The dialog line: the open dialog's prompt or message, else what the control expects.
     #[must_use]
     pub fn dialog_text(&self) -> Text {
@@ -220,6 +366,16 @@ impl AppState {
         }
         if let Some(m) = self.message {
             return m;
+        }
+        if let Some(run) = &self.run {
+            return if run.playing {
+                Text::new("Programmlauf Satzfolge", "Program run, full sequence")
+            } else {
+                Text::new(
+                    "Programmlauf Einzelsatz: NC-Start für den nächsten Satz",
+                    "Program run, single block: NC start for the next block",
+                )
+            };
         }
         match self.level {
             SoftkeyLevel::Main => Text::new("Programm-Einspeichern/Editieren", "Programming"),
@@ -398,6 +554,33 @@ mod tests {
         assert_eq!(opened.cursor, 8);
         assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
         assert_eq!(s.file_name(), "WINKEL.h");
+    }
+
+    #[test]
+    fn run_steps_to_the_swivel_and_stops_on_the_refused_block() {
+        let mut s = AppState::default().apply(Action::StartRun);
+        assert_eq!(s.cursor, 0);
+        while s.cursor < 10 {
+            s = s.apply(Action::RunNext);
+        }
+        let shown = s.run.as_ref().and_then(|r| r.state.clone()).expect("state");
+        let (axis, a) = shown.axes.named()[3];
+        assert!(axis == 'A' && (a - 15.0).abs() < 1e-9, "{axis}{a}");
+        assert_eq!(s.apply(Action::CursorTo(25)).cursor, 25, "a click jumps there");
+        let s = s.apply(Action::Back);
+        assert!(s.run.is_none());
+
+        let mut s = AppState::default()
+            .apply(Action::LoadSample("winkel_nicht_erlaubt".into()))
+            .apply(Action::StartRun);
+        s = s.apply(Action::RunPlay);
+        for step in 0..20 {
+            s = s.apply(Action::RunTick(s.run.as_ref().map_or(step, |r| r.step)));
+        }
+        let run = s.run.as_ref().expect("run");
+        assert!(run.stopped_by_error && !run.playing);
+        assert_eq!(s.cursor, 8, "the cursor stands on the refused block");
+        assert_eq!(s.dialog_line(), "Winkel nicht erlaubt");
     }
 
     #[test]

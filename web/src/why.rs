@@ -7,6 +7,7 @@ use glam::DMat3;
 use schwenkbar_core::BlockBody;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::plane::{PlaneBlock, Value};
+use schwenkbar_core::sim::{Simulation, State};
 use schwenkbar_core::solve::{Explanation, SolveOptions, axis_word, fmt_deg, solve_block};
 
 use crate::i18n::Lang;
@@ -80,6 +81,36 @@ impl PlaneWhy {
             error: None,
             assumptions: Vec::new(),
         }
+    }
+}
+
+/// The panel for block `index`: from the simulation (real start positions, the active plane
+/// before it), where the control stopped if it stopped there, else solved on its own from A0 C0.
+#[must_use]
+pub fn for_block(
+    program: &schwenkbar_core::Program,
+    sim: Option<&Simulation>,
+    shown: Option<&State>,
+    index: usize,
+    machine: &Machine,
+    l: Lang,
+) -> Option<PlaneWhy> {
+    let BlockBody::Plane(block) = &program.blocks.get(index)?.body else { return None };
+    if let Some(e) = sim.and_then(|s| s.error.as_ref()).filter(|e| e.block == index) {
+        let detail = l.t(&e.detail.de, &e.detail.en);
+        return Some(PlaneWhy {
+            error: Some(format!("{} — {detail}", l.t(&e.message.de, &e.message.en))),
+            ..PlaneWhy::empty()
+        });
+    }
+    let from_sim = shown.filter(|s| s.block == index).cloned().or_else(|| {
+        let sim = sim?;
+        let step = sim.first_step.get(index).copied().flatten()?;
+        sim.state_at(program, step as usize)
+    });
+    match from_sim.and_then(|s| s.explanation) {
+        Some(e) => Some(from_explanation(&e, l)),
+        None => Some(explain_plane(block, machine, DMat3::IDENTITY, &SolveOptions::default(), l)),
     }
 }
 

@@ -5,15 +5,15 @@ use glam::DMat3;
 use yew::prelude::*;
 
 use crate::dialog::{Dialog, Key};
-use crate::i18n::{Lang, Text};
+use crate::i18n::Lang;
 use crate::preview::{orientation_of, strokes};
 use crate::state::Action;
 
 #[derive(Properties, PartialEq)]
 pub struct DialogAreaProps {
     pub dialog: Option<Dialog>,
-    /// The dialog line outside a dialog (or the dialog's prompt).
-    pub text: Text,
+    /// The dialog line (the dialog's prompt or message, or what the control reports).
+    pub text: AttrValue,
     pub lang: Lang,
     pub on_action: Callback<Action>,
 }
@@ -39,7 +39,7 @@ pub fn dialog_area(props: &DialogAreaProps) -> Html {
     let Some(d) = &props.dialog else {
         return html! {
             <div class="dialog-area">
-                <div class="dialog-line" role="status" aria-live="polite">{ props.text.get(l) }</div>
+                <div class="dialog-line" role="status" aria-live="polite">{ props.text.clone() }</div>
                 { hard_keys }
             </div>
         };
@@ -61,7 +61,7 @@ pub fn dialog_area(props: &DialogAreaProps) -> Html {
         <div class="dialog-area open">
             <div class="dialog-main">
                 <div class={classes!("dialog-line", d.message.is_some().then_some("error"))} role="status" aria-live="polite">
-                    { props.text.get(l) }
+                    { props.text.clone() }
                 </div>
                 if d.takes_value() {
                     <div class="dialog-input">

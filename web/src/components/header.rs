@@ -9,6 +9,8 @@ pub struct HeaderProps {
     pub lang: Lang,
     /// The selected machine's name.
     pub machine: AttrValue,
+    /// The operating mode (Programmieren, Programmlauf …).
+    pub mode: AttrValue,
 }
 
 #[function_component(Header)]
@@ -16,7 +18,7 @@ pub fn header(props: &HeaderProps) -> Html {
     let l = props.lang;
     html! {
         <header class="mode-header">
-            <span class="mode">{ l.t("Programmieren", "Programming") }</span>
+            <span class="mode" data-testid="mode">{ props.mode.clone() }</span>
             <span class="title">{ "Schwenkbar" }</span>
             <span class="subtitle">{ l.t("Bearbeitungsebene schwenken", "Tilting the working plane") }</span>
             <span class="machine" data-testid="machine-name">{ props.machine.clone() }</span>

@@ -3,21 +3,23 @@
 
 use std::rc::Rc;
 
-use glam::DMat3;
-use schwenkbar_core::BlockBody;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::solve::SolveOptions;
+use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
 use crate::document::Document;
 use crate::i18n::Lang;
-use crate::why::{describe, explain_plane};
+use crate::run::SimRef;
+use crate::why::{describe, for_block};
 
 #[derive(Properties, PartialEq)]
 pub struct WhyPanelProps {
     pub doc: Rc<Document>,
     pub cursor: usize,
     pub machine: Option<Rc<Machine>>,
+    pub sim: Option<SimRef>,
+    /// The state shown in run mode.
+    pub shown: Option<Rc<State>>,
     pub lang: Lang,
 }
 
@@ -27,12 +29,16 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
     let Some(block) = props.doc.program.blocks.get(props.cursor) else {
         return html! { <aside class="why-panel"></aside> };
     };
-    let plane = match (&block.body, &props.machine) {
-        (BlockBody::Plane(p), Some(m)) => {
-            Some(explain_plane(p, m, DMat3::IDENTITY, &SolveOptions::default(), l))
-        }
-        _ => None,
-    };
+    let plane = props.machine.as_ref().and_then(|m| {
+        for_block(
+            &props.doc.program,
+            props.sim.as_ref().map(|s| s.0.as_ref()),
+            props.shown.as_deref(),
+            props.cursor,
+            m,
+            l,
+        )
+    });
     let machine = props.machine.as_ref().map(|m| {
         let axes: Vec<String> = m
             .joints()

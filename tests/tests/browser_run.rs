@@ -1,0 +1,64 @@
+//! Program run in the browser (issue 6): the position display after block 10 of
+//! Musterprogramm 1 shows what the simulator computes, and the error sample stops at the refused
+//! block with the control's message.
+#![cfg(target_arch = "wasm32")]
+
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::{SimOptions, simulate};
+use schwenkbar_tests::browser::{clear_storage, click, mount, query, text};
+use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn cursor_text(root: &web_sys::Element) -> String {
+    query(root, ".program-pane .line.cursor").and_then(|l| l.text_content()).unwrap_or_default()
+}
+
+#[wasm_bindgen_test]
+async fn musterprogramm_1_block_10_shows_the_simulated_axes() {
+    clear_storage();
+    let root = mount().await;
+    click(&root, "[data-key=run]").await;
+    assert_eq!(text(&root, "[data-testid=mode]"), "Programmlauf Einzelsatz");
+    for _ in 0..20 {
+        if cursor_text(&root).starts_with("10 PLANE") {
+            break;
+        }
+        click(&root, "[data-key=run-next]").await;
+    }
+    assert!(cursor_text(&root).starts_with("10 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX"));
+
+    // The same numbers straight from the simulator.
+    let (program, _) = schwenkbar_core::parse(schwenkbar_web::samples::MUSTERPROGRAMM_1.text);
+    let machine = Machine::builtin("ac-table").expect("shipped");
+    let sim = simulate(&program, &machine, &SimOptions::default());
+    let step = sim.first_step[10].expect("block 10 runs") as usize;
+    let state = sim.state_at(&program, step).expect("state");
+    for (axis, value) in state.axes.named() {
+        let shown = text(&root, &format!(".position tr[data-axis='{axis}'] .ref"));
+        assert_eq!(shown, format!("{value:+.3}"), "axis {axis}");
+    }
+    assert_eq!(text(&root, ".position tr[data-axis='A'] .ref"), "+15.000");
+    assert_eq!(text(&root, ".position tr[data-axis='C'] .ref"), "+90.000");
+    assert!(text(&root, "[data-testid=status-line]").contains("SPB+15.000"));
+}
+
+#[wasm_bindgen_test]
+async fn the_error_sample_stops_at_the_refused_block_with_the_controls_message() {
+    clear_storage();
+    let root = mount().await;
+    click(&root, "[data-key=samples]").await;
+    click(&root, "[data-key=sample-winkel_nicht_erlaubt]").await;
+    assert_eq!(text(&root, "[data-testid=machine-name]"), "B-Rundtisch auf A-Schwenktisch");
+    click(&root, "[data-key=run]").await;
+    for _ in 0..15 {
+        click(&root, "[data-key=run-next]").await;
+    }
+    assert_eq!(text(&root, ".dialog-line"), "Winkel nicht erlaubt");
+    assert!(
+        cursor_text(&root).starts_with("8 PLANE SPATIAL SPA-45 SPB+0 SPC+0 TURN FMAX SYM-"),
+        "{}",
+        cursor_text(&root)
+    );
+    assert!(text(&root, "[data-testid=why-error]").starts_with("Winkel nicht erlaubt"));
+}

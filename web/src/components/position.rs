@@ -1,0 +1,102 @@
+//! Position display as on the control: every axis in machine coordinates (REF) and in the
+//! active working plane (IST), the tool, feed and spindle, and a status line with the active
+//! transformations and the active PLANE.
+
+use std::rc::Rc;
+
+use schwenkbar_core::sim::{ActiveTransform, Level, SpindleDir, State};
+use yew::prelude::*;
+
+use crate::i18n::Lang;
+
+#[derive(Properties, PartialEq)]
+pub struct PositionProps {
+    pub state: Rc<State>,
+    pub lang: Lang,
+}
+
+fn signed(x: f64) -> String {
+    let x = if x.abs() < 5e-5 { 0.0 } else { x };
+    format!("{x:+.3}")
+}
+
+/// The status line's entries.
+#[must_use]
+pub fn status(state: &State, l: Lang) -> Vec<String> {
+    let level = |lv: Level| match lv {
+        Level::Wcs => "W-CS",
+        Level::Wpl => "WPL-CS",
+    };
+    let axes = |m: [bool; 3]| {
+        ["X", "Y", "Z"].iter().zip(m).filter(|(_, on)| *on).map(|(a, _)| *a).collect::<String>()
+    };
+    state
+        .transforms
+        .iter()
+        .map(|t| match t {
+            ActiveTransform::Datum { level: lv, offset } => format!(
+                "{} ({}) X{} Y{} Z{}",
+                l.t("Nullpunkt", "Datum"),
+                level(*lv),
+                signed(offset[0]),
+                signed(offset[1]),
+                signed(offset[2])
+            ),
+            ActiveTransform::Mirror { level: lv, axes: m } => {
+                format!("{} ({}) {}", l.t("Spiegeln", "Mirror"), level(*lv), axes(*m))
+            }
+            ActiveTransform::Rotation { deg } => format!("ROT {}", signed(*deg)),
+            ActiveTransform::Tilt { spatial, tool_axis } => format!(
+                "PLANE SPA{} SPB{} SPC{} · {} ({:.4}, {:.4}, {:.4})",
+                signed(spatial[0]),
+                signed(spatial[1]),
+                signed(spatial[2]),
+                l.t("WZ-Achse", "tool axis"),
+                tool_axis[0],
+                tool_axis[1],
+                tool_axis[2]
+            ),
+        })
+        .collect()
+}
+
+#[function_component(PositionDisplay)]
+pub fn position_display(props: &PositionProps) -> Html {
+    let l = props.lang;
+    let s = &props.state;
+    let ist = [s.tip_ics.x, s.tip_ics.y, s.tip_ics.z];
+    let rows = s.axes.named().into_iter().enumerate().map(|(i, (axis, reference))| {
+        let actual = ist.get(i).copied().unwrap_or(reference);
+        html! {
+            <tr data-axis={axis.to_string()}>
+                <th>{ axis }</th>
+                <td class="ref">{ signed(reference) }</td>
+                <td class="ist">{ signed(actual) }</td>
+            </tr>
+        }
+    });
+    let spindle = match s.spindle.dir {
+        SpindleDir::Off => "M5",
+        SpindleDir::Cw => "M3",
+        SpindleDir::Ccw => "M4",
+    };
+    let tool =
+        if s.tool.name.is_empty() { format!("T{}", s.tool.number) } else { format!("T \"{}\"", s.tool.name) };
+    let status = status(s, l);
+    html! {
+        <section class="position" aria-label={l.t("Positionsanzeige", "Position display")}>
+            <table>
+                <thead><tr><th></th><th>{ "REF" }</th><th>{ "IST" }</th></tr></thead>
+                <tbody>{ for rows }</tbody>
+            </table>
+            <p class="tool">{ format!("{tool} {} L{:.1} R{:.1} · F{:.0} · S{:.0} {spindle}", s.tool.axis, s.tool.length, s.tool.radius, s.feed, s.spindle.speed) }</p>
+            <p class="status-line" data-testid="status-line">
+                if status.is_empty() { { l.t("keine Transformation aktiv", "no transformation active") } }
+                else { { status.join(" · ") } }
+            </p>
+            if let Some(m) = &s.message {
+                <p class="block-message">{ l.t(&m.de, &m.en) }</p>
+            }
+        </section>
+    }
+}
