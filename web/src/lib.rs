@@ -20,10 +20,7 @@ pub mod why;
 
 pub use app::App;
 
-/// Mounts the app on the document body (the trunk entry point). A URL fragment naming a 3D
-/// page (`#3d:…`, `#rechte-hand`; see `components::page3d`) mounts that page instead.
+/// Mounts the app on the document body (the trunk entry point).
 pub fn start() {
-    if !components::page3d::mount_if_named() {
-        yew::Renderer::<App>::new().render();
-    }
+    yew::Renderer::<App>::new().render();
 }

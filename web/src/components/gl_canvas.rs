@@ -62,7 +62,7 @@ pub struct GlCanvasProps {
     pub gestures: bool,
     /// Pointer events for a parent that uses drags itself (the right-hand demo).
     #[prop_or_default]
-    pub on_pointer: Option<Callback<(String, PointerEvent)>>,
+    pub on_pointer: Option<Callback<(&'static str, PointerEvent)>>,
 }
 
 /// The animation-frame callback, reachable from itself to schedule the next frame.
@@ -197,7 +197,7 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
         let forward = props.on_pointer.clone();
         Callback::from(move |e: PointerEvent| {
             if let Some(f) = &forward {
-                f.emit((kind.to_string(), e.clone()));
+                f.emit((kind, e.clone()));
             }
             if !gestures {
                 return;
@@ -235,17 +235,16 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
                 oncontextmenu={Callback::from(|e: MouseEvent| e.prevent_default())}
                 {onkeydown}></canvas>
             <div ref={labels_ref} class="gl-labels" aria-hidden="true"></div>
-            if *status == GlStatus::Missing {
-                <p class="no-webgl">
-                    { l.t("Dieser Browser kann kein WebGL2: die 3D-Ansicht ist nicht verfügbar. Alles andere funktioniert.",
-                          "This browser has no WebGL2: the 3D view is not available. Everything else works.") }
-                </p>
-            }
-            if *status == GlStatus::Failed {
-                <p class="no-webgl">
-                    { l.t("Die 3D-Ansicht konnte nicht gestartet werden. Alles andere funktioniert.",
-                          "The 3D view could not start. Everything else works.") }
-                </p>
+            if let Some(text) = match *status {
+                GlStatus::Missing => Some(l.t(
+                    "Dieser Browser kann kein WebGL2: die 3D-Ansicht ist nicht verfügbar. Alles andere funktioniert.",
+                    "This browser has no WebGL2: the 3D view is not available. Everything else works.")),
+                GlStatus::Failed => Some(l.t(
+                    "Die 3D-Ansicht konnte nicht gestartet werden. Alles andere funktioniert.",
+                    "The 3D view could not start. Everything else works.")),
+                _ => None,
+            } {
+                <p class="no-webgl">{ text }</p>
             }
         </>
     }

@@ -79,10 +79,10 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let on_pointer = {
         let (viewer, drag, axis, angle, set_angle) =
             (viewer.clone(), drag.clone(), *axis, *angle, set_angle.clone());
-        Callback::from(move |(kind, e): (String, PointerEvent)| {
+        Callback::from(move |(kind, e): (&'static str, PointerEvent)| {
             let at = (e.offset_x() as f32, e.offset_y() as f32);
             let mut d = drag.borrow_mut();
-            match kind.as_str() {
+            match kind {
                 "down" => {
                     if let Some(t) = e.target().and_then(|t| t.dyn_into::<web_sys::Element>().ok()) {
                         let _ = t.set_pointer_capture(e.pointer_id());

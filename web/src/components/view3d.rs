@@ -52,6 +52,22 @@ pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
     (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
 }
 
+/// The preset buttons: view, `data-view`, German and English label.
+const VIEWS: [(Preset, &str, &str, &str); 4] = [
+    (Preset::Front, "front", "Vorne", "Front"),
+    (Preset::Side, "side", "Seite", "Side"),
+    (Preset::Top, "top", "Oben", "Top"),
+    (Preset::Iso, "iso", "Iso", "Iso"),
+];
+
+/// The triad switches in [`Triads::get`] order: `data-triad`, German and English label.
+const TRIAD_SWITCHES: [(&str, &str, &str); 4] = [
+    ("mcs", "Maschine M-CS", "Machine M-CS"),
+    ("wcs", "Werkstück W-CS", "Workpiece W-CS"),
+    ("wpl", "Bearbeitungsebene WPL-CS", "Working plane WPL-CS"),
+    ("tcs", "Werkzeug T-CS", "Tool T-CS"),
+];
+
 #[function_component(View3d)]
 pub fn view3d(props: &View3dProps) -> Html {
     let viewer = use_mut_ref(|| Viewer::new(Camera::default()));
@@ -106,12 +122,11 @@ pub fn view3d(props: &View3dProps) -> Html {
             v.dirty = true;
         })
     };
-    let toggle = |pick: fn(&mut Triads) -> &mut bool| {
+    let toggle = |i: usize| {
         let triads = triads.clone();
         Callback::from(move |_: Event| {
             let mut t = *triads;
-            let flag = pick(&mut t);
-            *flag = !*flag;
+            t.flip(i);
             triads.set(t);
         })
     };
@@ -123,20 +138,15 @@ pub fn view3d(props: &View3dProps) -> Html {
                            "Machine in 3D: drag to orbit, right-drag or shift to pan, wheel to zoom, keys 1–4")} />
             <div class="view-tools">
                 <div class="view-presets" role="group" aria-label={l.t("Ansichten", "Views")}>
-                    <button type="button" data-view="front" onclick={preset(Preset::Front)}>{ l.t("Vorne", "Front") }</button>
-                    <button type="button" data-view="side" onclick={preset(Preset::Side)}>{ l.t("Seite", "Side") }</button>
-                    <button type="button" data-view="top" onclick={preset(Preset::Top)}>{ l.t("Oben", "Top") }</button>
-                    <button type="button" data-view="iso" onclick={preset(Preset::Iso)}>{ "Iso" }</button>
+                    { for VIEWS.iter().map(|&(p, key, de, en)| html! {
+                        <button type="button" data-view={key} onclick={preset(p)}>{ l.t(de, en) }</button>
+                    }) }
                 </div>
                 <div class="view-triads" role="group" aria-label={l.t("Koordinatensysteme", "Coordinate systems")}>
-                    <label><input type="checkbox" data-triad="mcs" checked={t.mcs} onchange={toggle(|t| &mut t.mcs)} />
-                        { l.t("Maschine M-CS", "Machine M-CS") }</label>
-                    <label><input type="checkbox" data-triad="wcs" checked={t.wcs} onchange={toggle(|t| &mut t.wcs)} />
-                        { l.t("Werkstück W-CS", "Workpiece W-CS") }</label>
-                    <label><input type="checkbox" data-triad="wpl" checked={t.wpl} onchange={toggle(|t| &mut t.wpl)} />
-                        { l.t("Bearbeitungsebene WPL-CS", "Working plane WPL-CS") }</label>
-                    <label><input type="checkbox" data-triad="tcs" checked={t.tcs} onchange={toggle(|t| &mut t.tcs)} />
-                        { l.t("Werkzeug T-CS", "Tool T-CS") }</label>
+                    { for TRIAD_SWITCHES.iter().enumerate().map(|(i, &(key, de, en))| html! {
+                        <label><input type="checkbox" data-triad={key} checked={t.get(i)} onchange={toggle(i)} />
+                            { l.t(de, en) }</label>
+                    }) }
                 </div>
             </div>
         </section>

@@ -45,8 +45,8 @@ pub struct Viewer {
     pan_drag: bool,
     labels: Option<HtmlElement>,
     pool: Vec<HtmlElement>,
-    /// Milliseconds spent in the last paints (newest last, at most 120), for the frame-time probe.
-    pub paint_ms: Vec<f64>,
+    /// Milliseconds the last paint took (`performance.now()` around it).
+    pub last_paint_ms: f64,
     pub paints: u64,
     /// A toolpath to upload at the next frame.
     pub pending_path: Option<Rc<[PathPoint]>>,
@@ -66,7 +66,7 @@ impl Viewer {
             pan_drag: false,
             labels: None,
             pool: Vec::new(),
-            paint_ms: Vec::new(),
+            last_paint_ms: 0.0,
             paints: 0,
             pending_path: None,
         }
@@ -108,17 +108,7 @@ impl Viewer {
             Ok(labels) => {
                 self.dirty = false;
                 self.paints += 1;
-                if self.paint_ms.len() >= 120 {
-                    self.paint_ms.remove(0);
-                }
-                self.paint_ms.push(spent);
-                // In-page probe of the frame-time budget (issue 7): the median CPU time of the
-                // recent paints on the canvas, every 30 paints (a DOM write is not free).
-                if self.paints % 30 == 0 {
-                    if let (Some(r), Some(ms)) = (&self.renderer, self.median_paint_ms()) {
-                        let _ = r.canvas().set_attribute("data-paint-ms", &format!("{ms:.3}"));
-                    }
-                }
+                self.last_paint_ms = spent;
                 self.place_labels(&labels);
                 FrameOutcome::Painted
             }
@@ -160,17 +150,6 @@ impl Viewer {
                 }
             }
         }
-    }
-
-    /// The median of the recorded paint times, milliseconds.
-    #[must_use]
-    pub fn median_paint_ms(&self) -> Option<f64> {
-        let mut v = self.paint_ms.clone();
-        if v.is_empty() {
-            return None;
-        }
-        v.sort_by(f64::total_cmp);
-        Some(v[v.len() / 2])
     }
 
     // ---- pointer gestures -------------------------------------------------------------------

@@ -2,7 +2,7 @@
 //! orbit camera, and returns where the labels go on screen. Per frame it only sets uniforms and
 //! issues draw calls; the unit meshes and the toolpath are uploaded once per context.
 
-use glam::{DAffine3, DMat3, DMat4, Mat3};
+use glam::{DAffine3, DMat3, DMat4};
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl, WebGlUniformLocation};
 
@@ -29,11 +29,17 @@ pub struct ScreenLabel {
 struct LitUniforms {
     model_view: Option<WebGlUniformLocation>,
     projection: Option<WebGlUniformLocation>,
-    normal_matrix: Option<WebGlUniformLocation>,
     colour: Option<WebGlUniformLocation>,
 }
 
 /// Everything that lives in one GL context (rebuilt after a context loss).
+///
+/// The shaders (`shaders/*.vert|frag`) carry no comments because their text ships in the bundle:
+/// `lit` lights meshes in view space, so every view of the machine is lit from the front (a key
+/// light from the upper left behind the viewer, a weaker fill from the right, a floor of ambient
+/// light so no face goes black on a projector, a small highlight); the normal matrix (inverse
+/// transpose of the model-view, for non-uniformly scaled parts) is computed per vertex there.
+/// `line` draws the toolpath in its vertex colours.
 struct Gpu {
     lit: Program,
     lit_u: LitUniforms,
@@ -49,7 +55,6 @@ impl Gpu {
         let lit_u = LitUniforms {
             model_view: lit.uniform("u_model_view"),
             projection: lit.uniform("u_projection"),
-            normal_matrix: lit.uniform("u_normal_matrix"),
             colour: lit.uniform("u_colour"),
         };
         let line = Program::new(gl, include_str!("shaders/line.vert"), include_str!("shaders/line.frag"))?;
@@ -230,17 +235,15 @@ impl Renderer {
 fn draw_pass(gl: &Gl, gpu: &Gpu, list: &DrawList, pass: Pass, view: &DMat4) {
     for inst in list.instances.iter().filter(|i| i.pass == pass) {
         let mv = *view * DMat4::from(inst.model);
-        let m3 = DMat3::from_mat4(mv);
-        if m3.determinant().abs() < 1e-12 {
+        // A flat part (zero scale) has no normals to shade with (the shader inverts this matrix).
+        if DMat3::from_mat4(mv).determinant().abs() < 1e-12 {
             continue;
         }
-        let normal: Mat3 = m3.inverse().transpose().as_mat3();
         gl.uniform_matrix4fv_with_f32_array(
             gpu.lit_u.model_view.as_ref(),
             false,
             &mv.as_mat4().to_cols_array(),
         );
-        gl.uniform_matrix3fv_with_f32_array(gpu.lit_u.normal_matrix.as_ref(), false, &normal.to_cols_array());
         let c = inst.colour;
         gl.uniform4f(gpu.lit_u.colour.as_ref(), c[0], c[1], c[2], c[3]);
         if let Some(mesh) = gpu.shapes.get(inst.shape as usize) {

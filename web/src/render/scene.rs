@@ -106,6 +106,26 @@ impl Default for Triads {
     }
 }
 
+impl Triads {
+    /// Switch `i` in the order M-CS, W-CS, WPL-CS, T-CS (`false` past the end).
+    #[must_use]
+    pub fn get(&self, i: usize) -> bool {
+        [self.mcs, self.wcs, self.wpl, self.tcs].get(i).copied().unwrap_or(false)
+    }
+
+    /// Turns switch `i` over (nothing past the end).
+    pub fn flip(&mut self, i: usize) {
+        let slot = match i {
+            0 => &mut self.mcs,
+            1 => &mut self.wcs,
+            2 => &mut self.wpl,
+            3 => &mut self.tcs,
+            _ => return,
+        };
+        *slot = !*slot;
+    }
+}
+
 /// One machine state to draw.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SceneState {
@@ -213,6 +233,16 @@ mod tests {
         assert!((z - expected).length() < 1e-9, "halfway: SPB 7.5° ({z})");
         let end = SceneState::between(&from, &to, 1.0);
         assert!((end.wpl.rot.col(2) - to.wpl.rot.col(2)).length() < 1e-9);
+    }
+
+    #[test]
+    fn triad_switches_flip_one_at_a_time() {
+        let mut t = Triads::default();
+        t.flip(2);
+        assert_eq!(t, Triads { wpl: false, ..Triads::default() });
+        assert!(!t.get(2) && t.get(0) && t.get(3) && !t.get(4));
+        t.flip(9);
+        assert!(!t.get(2));
     }
 
     #[test]

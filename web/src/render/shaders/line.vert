@@ -1,5 +1,4 @@
 #version 300 es
-// Coloured line segments (the toolpath), transformed with the workpiece.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_colour;
 

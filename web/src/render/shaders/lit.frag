@@ -8,8 +8,6 @@ uniform vec4 u_colour;
 
 out vec4 out_colour;
 
-// Key light from the upper left behind the viewer, a weaker fill from the right, a floor of
-// ambient light so no face goes black (projectors crush dark tones), and a small highlight.
 const vec3 KEY = normalize(vec3(-0.45, 0.65, 0.62));
 const vec3 FILL = normalize(vec3(0.7, -0.2, 0.5));
 
