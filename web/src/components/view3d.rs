@@ -72,44 +72,35 @@ const TRIAD_SWITCHES: [(&str, &str, &str); 4] = [
 pub fn view3d(props: &View3dProps) -> Html {
     let viewer = use_mut_ref(|| Viewer::new(Camera::default()));
     let triads = use_state(Triads::default);
-    let machine = use_memo(props.machine.clone(), |m| match m {
-        Some(m) => Some(m.clone()),
-        None => Machine::builtin("ac-table").ok().map(Rc::new),
-    });
     {
+        // One effect after every render (View3d renders only when its props or switches change)
+        // instead of one per dependency: each `use_effect_with` costs bundle size, and the
+        // comparisons here are by pointer, not by value.
         let viewer = viewer.clone();
-        use_effect_with(((*machine).clone(), props.state.clone(), *triads), move |(m, state, triads)| {
+        let (machine, state, path, triads) =
+            (props.machine.clone(), props.state.clone(), props.toolpath.0.clone(), *triads);
+        use_effect(move || {
             let mut v = viewer.borrow_mut();
-            v.content = m.clone().map(|machine| {
+            let machine = machine.or_else(|| v.fallback_machine());
+            let new_machine = machine.as_ref().map(|m| m.id.as_str()) != v.machine_id.as_deref();
+            v.machine_id = machine.as_ref().map(|m| m.id.clone());
+            v.content = machine.map(|machine| {
                 let state = match state {
-                    Some(s) => (**s).clone(),
+                    Some(s) => (*s).clone(),
                     None => SceneState::for_machine(&machine),
                 };
-                Content::Machine { machine, state: Box::new(state), triads: *triads }
+                Content::Machine { machine, state: Box::new(state), triads }
             });
-            v.dirty = true;
-        });
-    }
-    {
-        // Look at the blank whenever the machine changes (not on every state: a trainee's
-        // pan stays while the program runs).
-        let viewer = viewer.clone();
-        let id = (*machine).as_ref().map(|m| m.id.clone());
-        use_effect_with(id, move |_| {
-            let mut v = viewer.borrow_mut();
-            if let Some(Content::Machine { machine, state, .. }) = &v.content {
-                let at = blank_centre(machine, state);
-                v.camera.target = at.as_vec3();
-                v.dirty = true;
+            // Look at the blank when the machine changes (not on every state: a trainee's pan
+            // stays while the program runs).
+            if new_machine && let Some(Content::Machine { machine, state, .. }) = &v.content {
+                v.camera.target = blank_centre(machine, state).as_vec3();
             }
-        });
-    }
-    {
-        let viewer = viewer.clone();
-        use_effect_with(props.toolpath.clone(), move |path| {
-            let mut v = viewer.borrow_mut();
-            // Uploaded by the next frame (the renderer may not exist yet).
-            v.pending_path = Some(path.0.clone());
+            if !v.path.as_ref().is_some_and(|p| Rc::ptr_eq(p, &path)) {
+                // Uploaded by the next frame (the renderer may not exist yet).
+                v.pending_path = Some(path.clone());
+                v.path = Some(path);
+            }
             v.dirty = true;
         });
     }

@@ -50,6 +50,11 @@ pub struct Viewer {
     pub paints: u64,
     /// A toolpath to upload at the next frame.
     pub pending_path: Option<Rc<[PathPoint]>>,
+    /// The toolpath shown (compared by pointer to notice a new run).
+    pub path: Option<Rc<[PathPoint]>>,
+    /// The machine shown, to notice a change of machine.
+    pub machine_id: Option<String>,
+    fallback: Option<Rc<Machine>>,
 }
 
 impl Viewer {
@@ -69,7 +74,18 @@ impl Viewer {
             last_paint_ms: 0.0,
             paints: 0,
             pending_path: None,
+            path: None,
+            machine_id: None,
+            fallback: None,
         }
+    }
+
+    /// The machine drawn when the parent gives none: the built-in `ac-table`, parsed once.
+    pub fn fallback_machine(&mut self) -> Option<Rc<Machine>> {
+        if self.fallback.is_none() {
+            self.fallback = Machine::builtin("ac-table").ok().map(Rc::new);
+        }
+        self.fallback.clone()
     }
 
     pub fn set_label_layer(&mut self, el: Option<HtmlElement>) {
