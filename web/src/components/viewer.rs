@@ -44,7 +44,7 @@ pub struct Viewer {
     pointers: Vec<(i32, f32, f32)>,
     pan_drag: bool,
     labels: Option<HtmlElement>,
-    pool: Vec<HtmlElement>,
+    pool: Vec<web_sys::Element>,
     /// Milliseconds the last paint took (`performance.now()` around it).
     pub last_paint_ms: f64,
     pub paints: u64,
@@ -140,31 +140,23 @@ impl Viewer {
         let Some(layer) = &self.labels else { return };
         let Some(doc) = web_sys::window().and_then(|w| w.document()) else { return };
         while self.pool.len() < labels.len() {
-            let Some(el) = doc.create_element("span").ok().and_then(|e| e.dyn_into::<HtmlElement>().ok())
-            else {
-                return;
-            };
+            let Ok(el) = doc.create_element("span") else { return };
             if layer.append_child(&el).is_err() {
                 return;
             }
             self.pool.push(el);
         }
         for (i, el) in self.pool.iter().enumerate() {
-            let style = el.style();
-            match labels.get(i) {
+            // One attribute write per label and frame: the style as a whole.
+            let style = match labels.get(i) {
                 Some(l) => {
                     el.set_text_content(Some(l.text));
                     el.set_class_name(&format!("lbl lbl-{}", l.kind));
-                    let _ = style.set_property(
-                        "transform",
-                        &format!("translate({:.1}px, {:.1}px)", f64::from(l.x), f64::from(l.y)),
-                    );
-                    let _ = style.set_property("display", "block");
+                    format!("transform:translate({:.1}px,{:.1}px)", f64::from(l.x), f64::from(l.y))
                 }
-                None => {
-                    let _ = style.set_property("display", "none");
-                }
-            }
+                None => "display:none".to_string(),
+            };
+            let _ = el.set_attribute("style", &style);
         }
     }
 
