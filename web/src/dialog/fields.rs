@@ -1,0 +1,173 @@
+//! The prompts of each PLANE function in the control's order, with their one-line help
+//! (DOMAIN.md §7; the English prompts are the manual's, the German ones UNCONFIRMED).
+
+use crate::i18n::Text;
+
+/// One value the dialog asks for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Field {
+    /// The NC word (`SPA`), also the key for the input range.
+    pub word: &'static str,
+    pub prompt: Text,
+    pub help: Text,
+    pub required: bool,
+}
+
+const fn field(word: &'static str, prompt: Text, help: Text) -> Field {
+    Field { word, prompt, help, required: true }
+}
+
+pub(super) const fn t(de: &'static str, en: &'static str) -> Text {
+    Text { de, en }
+}
+
+pub(super) const SPATIAL: [Field; 3] = [
+    field(
+        "SPA",
+        t("Raumwinkel A?", "Spatial angle A?"),
+        t(
+            "Drehung um die maschinenfeste X-Achse, −359,9999…+359,9999°. Positiv: Daumen der rechten Hand in +X, die Finger zeigen die Drehrichtung.",
+            "Rotation about the machine-fixed X axis, −359.9999…+359.9999°. Positive: right thumb along +X, the fingers show the direction.",
+        ),
+    ),
+    field(
+        "SPB",
+        t("Raumwinkel B?", "Spatial angle B?"),
+        t(
+            "Drehung um die maschinenfeste Y-Achse, −359,9999…+359,9999°. Positiv kippt die Werkzeugachse von +Z nach +X.",
+            "Rotation about the machine-fixed Y axis, −359.9999…+359.9999°. Positive tips the tool axis from +Z towards +X.",
+        ),
+    ),
+    field(
+        "SPC",
+        t("Raumwinkel C?", "Spatial angle C?"),
+        t(
+            "Drehung um die maschinenfeste Z-Achse, −359,9999…+359,9999°. Alle drei Raumwinkel sind Pflicht, auch wenn sie 0 sind.",
+            "Rotation about the machine-fixed Z axis, −359.9999…+359.9999°. All three spatial angles are required, even when 0.",
+        ),
+    ),
+];
+
+pub(super) const PROJECTED: [Field; 3] = [
+    field(
+        "PROPR",
+        t("Proj.-Winkel 1. Koordinatenebene?", "Proj. angle 1st coordinate plane?"),
+        t(
+            "Winkel der Ebene in der Z/X-Ebene (0°-Achse = X), −89,9999…+89,9999°.",
+            "Angle of the plane's trace in the Z/X plane (0° axis = X), −89.9999…+89.9999°.",
+        ),
+    ),
+    field(
+        "PROMIN",
+        t("Proj.-Winkel 2. Koordinatenebene?", "Proj. angle 2nd coordinate plane?"),
+        t(
+            "Winkel der Ebene in der Y/Z-Ebene (0°-Achse = Y), −89,9999…+89,9999°.",
+            "Angle of the plane's trace in the Y/Z plane (0° axis = Y), −89.9999…+89.9999°.",
+        ),
+    ),
+    field(
+        "ROT",
+        t("ROT-Winkel der geschwenkten Ebene?", "ROT angle of the tilted plane?"),
+        t(
+            "Drehung um die geschwenkte Werkzeugachse, 0…360°.",
+            "Rotation about the tilted tool axis, 0…360°.",
+        ),
+    ),
+];
+
+pub(super) const EULER: [Field; 3] = [
+    field(
+        "EULPR",
+        t("Drehwinkel Hauptkoordinatenebene?", "Rot. angle main coordinate plane?"),
+        t(
+            "Präzession: Drehung um die ungeschwenkte Z-Achse, −180…+180°.",
+            "Precession: rotation about the untilted Z axis, −180…+180°.",
+        ),
+    ),
+    field(
+        "EULNU",
+        t("Schwenkwinkel Werkzeugachse?", "Tilting angle tool axis?"),
+        t(
+            "Nutation: Drehung um die gedrehte X-Achse, 0…180°.",
+            "Nutation: rotation about the rotated X axis, 0…180°.",
+        ),
+    ),
+    field(
+        "EULROT",
+        t("Drehwinkel der geschwenkten Ebene?", "Rotation angle of the tilted plane?"),
+        t(
+            "Rotation: Drehung um die geschwenkte Z-Achse, richtet die geschwenkte X-Achse aus, 0…360°.",
+            "Rotation about the tilted Z axis, aligns the tilted X axis, 0…360°.",
+        ),
+    ),
+];
+
+const fn vec_field(word: &'static str, prompt: Text) -> Field {
+    field(
+        word,
+        prompt,
+        t(
+            "Komponente, muss nicht normiert sein: die Steuerung normiert selbst.",
+            "Component; need not be of unit length: the control normalises.",
+        ),
+    )
+}
+
+pub(super) const VECTOR: [Field; 6] = [
+    vec_field("BX", t("X-Komponente Basisvektor?", "X component of base vector?")),
+    vec_field("BY", t("Y-Komponente Basisvektor?", "Y component of base vector?")),
+    vec_field("BZ", t("Z-Komponente Basisvektor?", "Z component of base vector?")),
+    vec_field("NX", t("X-Komponente Normalenvektor?", "X component of normal vector?")),
+    vec_field("NY", t("Y-Komponente Normalenvektor?", "Y component of normal vector?")),
+    vec_field("NZ", t("Z-Komponente Normalenvektor?", "Z component of normal vector?")),
+];
+
+const fn point_field(word: &'static str, prompt: Text) -> Field {
+    field(
+        word,
+        prompt,
+        t(
+            "P1→P2 gibt die geschwenkte X-Achse, P3 die Seite der Y-Achse. Der Nullpunkt wird nicht verschoben.",
+            "P1→P2 gives the tilted X axis, P3 the side of Y. The datum is not moved.",
+        ),
+    )
+}
+
+pub(super) const POINTS: [Field; 9] = [
+    point_field("P1X", t("X-Koordinate 1. Ebenenpunkt?", "X coordinate 1st plane point?")),
+    point_field("P1Y", t("Y-Koordinate 1. Ebenenpunkt?", "Y coordinate 1st plane point?")),
+    point_field("P1Z", t("Z-Koordinate 1. Ebenenpunkt?", "Z coordinate 1st plane point?")),
+    point_field("P2X", t("X-Koordinate 2. Ebenenpunkt?", "X coordinate 2nd plane point?")),
+    point_field("P2Y", t("Y-Koordinate 2. Ebenenpunkt?", "Y coordinate 2nd plane point?")),
+    point_field("P2Z", t("Z-Koordinate 2. Ebenenpunkt?", "Z coordinate 2nd plane point?")),
+    point_field("P3X", t("X-Koordinate 3. Ebenenpunkt?", "X coordinate 3rd plane point?")),
+    point_field("P3Y", t("Y-Koordinate 3. Ebenenpunkt?", "Y coordinate 3rd plane point?")),
+    point_field("P3Z", t("Z-Koordinate 3. Ebenenpunkt?", "Z coordinate 3rd plane point?")),
+];
+
+pub(super) const RELATIV: [Field; 1] = [field(
+    "SPA",
+    t("Inkrementaler Raumwinkel?", "Incremental spatial angle?"),
+    t(
+        "Dreht um die Achse der aktiven geschwenkten Ebene; mehrere RELATIV-Sätze bauen aufeinander auf.",
+        "Rotates about the axis of the active tilted plane; several RELATIV blocks build on each other.",
+    ),
+)];
+
+const fn axial_field(word: &'static str, prompt: Text) -> Field {
+    Field {
+        word,
+        prompt,
+        help: t(
+            "Achswinkel der Maschine direkt; nur vorhandene Achsen. NO ENT überspringt die Achse.",
+            "Machine axis angle directly; existing axes only. NO ENT skips the axis.",
+        ),
+        required: false,
+    }
+}
+
+pub(super) const AXIAL: [Field; 3] = [
+    axial_field("A", t("Achswinkel A?", "Axis angle A?")),
+    axial_field("B", t("Achswinkel B?", "Axis angle B?")),
+    axial_field("C", t("Achswinkel C?", "Axis angle C?")),
+];
