@@ -17,6 +17,11 @@ use crate::render::context::ContextWatch;
 use crate::render::gpu::RenderError;
 use crate::render::renderer::Renderer;
 
+/// The canvas' and labels' CSS, shipped with the component (each component brings its own rules,
+/// so a page pays only for what it mounts; 3D labels are HTML so they stay crisp at any
+/// devicePixelRatio).
+const STYLE: &str = include_str!("gl_canvas.css");
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum GlStatus {
     Pending,
@@ -53,7 +58,7 @@ impl PartialEq for SharedViewer {
 pub struct GlCanvasProps {
     pub lang: Lang,
     pub viewer: SharedViewer,
-    /// CSS class of the canvas (`view3d` for the machine view).
+    /// CSS class of the canvas besides `gl` (`view3d` for the machine view).
     pub class: AttrValue,
     /// Accessible name of the canvas.
     pub label: AttrValue,
@@ -228,23 +233,21 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
     let l = props.lang;
     html! {
         <>
-            <canvas ref={canvas_ref} class={props.class.clone()} data-webgl={status.attr()} tabindex="0"
+            <style>{ STYLE }</style>
+            <canvas ref={canvas_ref} class={classes!("gl", props.class.clone())} data-webgl={status.attr()} tabindex="0"
                 aria-label={props.label.clone()}
                 onpointerdown={pointer("down")} onpointermove={pointer("move")}
                 onpointerup={pointer("up")} onpointercancel={pointer("up")}
                 oncontextmenu={Callback::from(|e: MouseEvent| e.prevent_default())}
                 {onkeydown}></canvas>
             <div ref={labels_ref} class="gl-labels" aria-hidden="true"></div>
-            if let Some(text) = match *status {
-                GlStatus::Missing => Some(l.t(
-                    "Dieser Browser kann kein WebGL2: die 3D-Ansicht ist nicht verfügbar. Alles andere funktioniert.",
-                    "This browser has no WebGL2: the 3D view is not available. Everything else works.")),
-                GlStatus::Failed => Some(l.t(
-                    "Die 3D-Ansicht konnte nicht gestartet werden. Alles andere funktioniert.",
-                    "The 3D view could not start. Everything else works.")),
-                _ => None,
-            } {
-                <p class="no-webgl">{ text }</p>
+            // One message for both ways the view cannot start (no WebGL2, or the GPU refused
+            // the shaders): the trainee can do nothing about either; `data-webgl` tells which.
+            if matches!(*status, GlStatus::Missing | GlStatus::Failed) {
+                <p class="no-webgl">
+                    { l.t("Die 3D-Ansicht ist in diesem Browser nicht verfügbar (WebGL2 fehlt). Alles andere funktioniert.",
+                          "The 3D view is not available in this browser (no WebGL2). Everything else works.") }
+                </p>
             }
         </>
     }

@@ -19,6 +19,9 @@ use crate::render::scene::SceneState;
 use crate::render::toolpath::PathPoint;
 use schwenkbar_core::solve::{axis_word, fmt_deg};
 
+/// The pages' CSS, shipped with the component (in the bundle only where the pages are mounted).
+const STYLE: &str = include_str!("page3d.css");
+
 #[derive(Properties, PartialEq)]
 pub struct Page3dProps {
     /// The URL fragment without `#`.
@@ -50,12 +53,13 @@ pub fn page3d(props: &Page3dProps) -> Html {
     let f = props.fragment.as_str();
     let lang = if f.starts_with("right-hand") || f.contains("lang=en") { Lang::En } else { Lang::De };
     if !f.starts_with("3d") {
-        return html! { <main class="page3d page3d-hand"><RightHandDemo {lang} /></main> };
+        return html! { <main class="page3d page3d-hand"><style>{ STYLE }</style><RightHandDemo {lang} /></main> };
     }
     let q = PageQuery::parse(f.trim_start_matches("3d"));
     match plane_page(&q, lang) {
         Ok((machine, state, path, caption)) => html! {
             <main class="page3d page3d-machine">
+                <style>{ STYLE }</style>
                 <p class="page3d-caption">{ caption }</p>
                 <View3d {lang} machine={Some(Rc::new(machine))} state={Some(Rc::new(state))} toolpath={SharedPath(path)} />
             </main>

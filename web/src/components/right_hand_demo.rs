@@ -17,6 +17,9 @@ use crate::render::right_hand::{
 use glam::Vec3;
 use schwenkbar_core::solve::fmt_deg;
 
+/// The demo's CSS, shipped with the component (in the bundle only where the demo is mounted).
+const STYLE: &str = include_str!("right_hand_demo.css");
+
 #[derive(Properties, PartialEq)]
 pub struct RightHandDemoProps {
     pub lang: Lang,
@@ -155,6 +158,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     });
     html! {
         <section class="right-hand" aria-label={l.t("Rechte-Hand-Regel", "Right-hand rule")}>
+            <style>{ STYLE }</style>
             <div class="rh-view">
                 <GlCanvas lang={l} viewer={SharedViewer(viewer)} class="rh-canvas" gestures={false} {on_pointer}
                     label={l.t("Ebene: um die Achse ziehen dreht sie", "Plane: drag round the axis to turn it")} />

@@ -52,6 +52,9 @@ pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
     (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
 }
 
+/// The toolbar's CSS, shipped with the component.
+const STYLE: &str = include_str!("view3d.css");
+
 /// The preset buttons: view, `data-view`, German and English label.
 const VIEWS: [(Preset, &str, &str, &str); 4] = [
     (Preset::Front, "front", "Vorne", "Front"),
@@ -124,9 +127,9 @@ pub fn view3d(props: &View3dProps) -> Html {
     let t = *triads;
     html! {
         <section class="view-pane" aria-label={l.t("3D-Ansicht", "3D view")}>
+            <style>{ STYLE }</style>
             <GlCanvas lang={l} viewer={SharedViewer(viewer.clone())} class="view3d"
-                label={l.t("Maschine in 3D: ziehen dreht, rechts ziehen oder Umschalt verschiebt, Rad zoomt, Tasten 1–4",
-                           "Machine in 3D: drag to orbit, right-drag or shift to pan, wheel to zoom, keys 1–4")} />
+                label={l.t("Maschine in 3D (ziehen, Umschalt, Rad, 1–4)", "Machine in 3D (drag, shift, wheel, 1–4)")} />
             <div class="view-tools">
                 <div class="view-presets" role="group" aria-label={l.t("Ansichten", "Views")}>
                     { for VIEWS.iter().map(|&(p, key, de, en)| html! {

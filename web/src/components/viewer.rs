@@ -45,8 +45,6 @@ pub struct Viewer {
     pan_drag: bool,
     labels: Option<HtmlElement>,
     pool: Vec<web_sys::Element>,
-    /// Milliseconds the last paint took (`performance.now()` around it).
-    pub last_paint_ms: f64,
     pub paints: u64,
     /// A toolpath to upload at the next frame.
     pub pending_path: Option<Rc<[PathPoint]>>,
@@ -71,7 +69,6 @@ impl Viewer {
             pan_drag: false,
             labels: None,
             pool: Vec::new(),
-            last_paint_ms: 0.0,
             paints: 0,
             pending_path: None,
             path: None,
@@ -112,19 +109,16 @@ impl Viewer {
             return FrameOutcome::Idle;
         }
         let Some(content) = &self.content else { return FrameOutcome::Idle };
-        let t0 = now();
         let result = match content {
             Content::Machine { machine, state, triads } => {
                 renderer.paint(&Scene { machine, state, triads: *triads }, &self.camera)
             }
             Content::List(list) => renderer.paint_list(list, &self.camera, None),
         };
-        let spent = now() - t0;
         match result {
             Ok(labels) => {
                 self.dirty = false;
                 self.paints += 1;
-                self.last_paint_ms = spent;
                 self.place_labels(&labels);
                 FrameOutcome::Painted
             }
@@ -197,10 +191,4 @@ impl Viewer {
     pub fn pointer_up(&mut self, e: &PointerEvent) {
         self.pointers.retain(|p| p.0 != e.pointer_id());
     }
-}
-
-/// `performance.now()` in milliseconds (0 without a window, e.g. in a worker).
-#[must_use]
-pub fn now() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
 }

@@ -2,7 +2,7 @@
 //! orbit camera, and returns where the labels go on screen. Per frame it only sets uniforms and
 //! issues draw calls; the unit meshes and the toolpath are uploaded once per context.
 
-use glam::{DAffine3, DMat3, DMat4};
+use glam::{DAffine3, Mat3, Mat4};
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl, WebGlUniformLocation};
 
@@ -193,7 +193,7 @@ impl Renderer {
         gl.disable(Gl::BLEND);
 
         let aspect = css_w / css_h.max(1.0);
-        let view = camera.view().as_dmat4();
+        let view = camera.view();
         let proj = camera.projection(aspect);
 
         gl.use_program(Some(&gpu.lit.program));
@@ -202,8 +202,8 @@ impl Renderer {
 
         if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {
             gl.use_program(Some(&gpu.line.program));
-            let mvp = proj.as_dmat4() * view * DMat4::from(model);
-            gl.uniform_matrix4fv_with_f32_array(gpu.line_mvp.as_ref(), false, &mvp.as_mat4().to_cols_array());
+            let mvp = proj * view * mat4(&model);
+            gl.uniform_matrix4fv_with_f32_array(gpu.line_mvp.as_ref(), false, &mvp.to_cols_array());
             lines.draw(segments);
             gl.use_program(Some(&gpu.lit.program));
         }
@@ -232,18 +232,27 @@ impl Renderer {
     }
 }
 
-fn draw_pass(gl: &Gl, gpu: &Gpu, list: &DrawList, pass: Pass, view: &DMat4) {
+/// A part's placement for the GPU. The scene is built in f64 (kinematics), drawn in f32: a few
+/// metres at 1e-7 relative precision is far below a pixel, and one matrix type keeps the wasm
+/// small.
+fn mat4(a: &DAffine3) -> Mat4 {
+    let m = a.matrix3.as_mat3();
+    Mat4::from_cols(
+        m.x_axis.extend(0.0),
+        m.y_axis.extend(0.0),
+        m.z_axis.extend(0.0),
+        a.translation.as_vec3().extend(1.0),
+    )
+}
+
+fn draw_pass(gl: &Gl, gpu: &Gpu, list: &DrawList, pass: Pass, view: &Mat4) {
     for inst in list.instances.iter().filter(|i| i.pass == pass) {
-        let mv = *view * DMat4::from(inst.model);
+        let mv = *view * mat4(&inst.model);
         // A flat part (zero scale) has no normals to shade with (the shader inverts this matrix).
-        if DMat3::from_mat4(mv).determinant().abs() < 1e-12 {
+        if Mat3::from_mat4(mv).determinant().abs() < 1e-9 {
             continue;
         }
-        gl.uniform_matrix4fv_with_f32_array(
-            gpu.lit_u.model_view.as_ref(),
-            false,
-            &mv.as_mat4().to_cols_array(),
-        );
+        gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.model_view.as_ref(), false, &mv.to_cols_array());
         let c = inst.colour;
         gl.uniform4f(gpu.lit_u.colour.as_ref(), c[0], c[1], c[2], c[3]);
         if let Some(mesh) = gpu.shapes.get(inst.shape as usize) {
