@@ -428,13 +428,20 @@ impl AppState {
             }
             Some(Err(e)) => state.message = Some(e.message()),
         }
-        if let Some(shared) = fragment.and_then(persist::parse_fragment) {
+        let shared = fragment.and_then(persist::parse_fragment);
+        let run = shared.as_ref().is_some_and(|s| s.run);
+        if let Some(shared) = shared {
             state.doc = Rc::new(Document::new(shared.program));
             state.cursor = shared.block.min(state.doc.last_index());
             if let Some(m) = shared.machine {
                 state.select_machine(&m);
             }
             state.message = Some(Text::new("Programm aus dem Link geöffnet", "Program opened from the link"));
+        }
+        // The default's simulation is of the default program: simulate what was restored.
+        state = state.simulated();
+        if run {
+            state.start_run();
         }
         state
     }
@@ -446,6 +453,7 @@ impl AppState {
             program: self.doc.text.clone(),
             block: self.cursor,
             machine: self.machine.as_ref().map(|m| m.id.clone()),
+            run: self.run.is_some(),
         })
     }
 
@@ -538,6 +546,12 @@ mod tests {
         assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
         assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
         assert_eq!(back.message, None);
+        let sim = back.sim.as_ref().expect("simulated");
+        assert_eq!(
+            sim.0.first_step.len(),
+            back.doc.program.blocks.len(),
+            "the restored program is the one simulated"
+        );
 
         let broken = AppState::start(Some("{\"version\":1,\"cursor\":"), Some("0 L X+1".into()), None);
         assert_eq!(broken.doc, AppState::default().doc);
@@ -554,6 +568,11 @@ mod tests {
         assert_eq!(opened.cursor, 8);
         assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
         assert_eq!(s.file_name(), "WINKEL.h");
+        assert!(opened.run.is_none());
+        let running = AppState::default().apply(Action::CursorTo(10)).apply(Action::StartRun);
+        let opened = AppState::start(None, None, Some(&running.share_fragment()));
+        let shown = opened.run.as_ref().and_then(|r| r.state.as_ref()).map(|s| s.block);
+        assert_eq!(shown, Some(10), "the link opens the run at block 10");
     }
 
     #[test]
