@@ -1,9 +1,13 @@
 //! Small presentational components: each gets data and callbacks as props.
 
 pub mod dialog_area;
+pub mod gl_canvas;
 pub mod header;
+pub mod page3d;
 pub mod position;
 pub mod program_pane;
+pub mod right_hand_demo;
 pub mod softkey_row;
 pub mod view3d;
+pub mod viewer;
 pub mod why_panel;

@@ -10,6 +10,7 @@ pub mod i18n;
 pub mod keymap;
 pub mod persist;
 pub mod preview;
+pub mod render;
 pub mod run;
 pub mod samples;
 pub mod softkeys;

@@ -1,70 +1,145 @@
-//! The 3D view pane. For now it owns a WebGL2 context that it clears to the background
-//! colour; without WebGL2 it says so plainly and the rest of the app keeps working.
+//! The 3D view pane: the machine in its current state, the coordinate systems, the working plane,
+//! the toolpath and the ghost of the other PLANE solution; preset views and triad switches.
+//! Without WebGL2 it says so plainly and the rest of the app keeps working.
+//!
+//! The parent owns time: for an animation it passes the state at the current fraction
+//! (`MachineAxes::lerp` or the simulator's `axes_at`); the view repaints when the state changes.
 
-use wasm_bindgen::JsCast;
-use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl};
+use std::rc::Rc;
+
+use schwenkbar_core::machine::Machine;
 use yew::prelude::*;
 
+use super::gl_canvas::{GlCanvas, SharedViewer};
+use super::viewer::{Content, Viewer};
 use crate::i18n::Lang;
+use crate::render::camera::{Camera, Preset};
+use crate::render::pose::poses;
+use crate::render::scene::{SceneState, Triads};
+use crate::render::toolpath::PathPoint;
 
-/// Background of the view (the control's dark graphics area), linear RGB.
-const BACKGROUND: [f32; 3] = [0.11, 0.15, 0.20];
+/// The toolpath, shared and compared by identity (a run's path has up to 100,000 segments;
+/// comparing it point by point on every render would cost more than drawing it).
+#[derive(Clone, Default)]
+pub struct SharedPath(pub Rc<[PathPoint]>);
+
+impl PartialEq for SharedPath {
+    fn eq(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.0, &other.0)
+    }
+}
 
 #[derive(Properties, PartialEq)]
 pub struct View3dProps {
     pub lang: Lang,
+    /// The machine; `None` = the built-in `ac-table`.
+    #[prop_or_default]
+    pub machine: Option<Rc<Machine>>,
+    /// The state to draw (axes at the current animation fraction, frames, tool, blank, ghost);
+    /// `None` = the machine before a program runs ([`SceneState::for_machine`]).
+    #[prop_or_default]
+    pub state: Option<Rc<SceneState>>,
+    /// The tool tip's path of the run, W-CS on the table at home.
+    #[prop_or_default]
+    pub toolpath: SharedPath,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum GlStatus {
-    Pending,
-    Ready,
-    Missing,
+/// The blank's centre in M-CS as the machine stands.
+#[must_use]
+pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let wcs = glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
+    (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
 }
 
-/// Sizes the drawing buffer to the element and clears it; `false` if there is no WebGL2.
-fn init_and_clear(canvas: &HtmlCanvasElement) -> bool {
-    let Ok(Some(ctx)) = canvas.get_context("webgl2") else { return false };
-    let Ok(gl) = ctx.dyn_into::<Gl>() else { return false };
-    let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
-    let (w, h) = (f64::from(canvas.client_width()) * dpr, f64::from(canvas.client_height()) * dpr);
-    if w >= 1.0 && h >= 1.0 {
-        canvas.set_width(w as u32);
-        canvas.set_height(h as u32);
-    }
-    gl.viewport(0, 0, canvas.width() as i32, canvas.height() as i32);
-    gl.clear_color(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1.0);
-    gl.clear(Gl::COLOR_BUFFER_BIT);
-    true
-}
+/// The preset buttons: view, `data-view`, German and English label.
+const VIEWS: [(Preset, &str, &str, &str); 4] = [
+    (Preset::Front, "front", "Vorne", "Front"),
+    (Preset::Side, "side", "Seite", "Side"),
+    (Preset::Top, "top", "Oben", "Top"),
+    (Preset::Iso, "iso", "Iso", "Iso"),
+];
+
+/// The triad switches in [`Triads::get`] order: `data-triad`, German and English label.
+const TRIAD_SWITCHES: [(&str, &str, &str); 4] = [
+    ("mcs", "Maschine M-CS", "Machine M-CS"),
+    ("wcs", "Werkstück W-CS", "Workpiece W-CS"),
+    ("wpl", "Bearbeitungsebene WPL-CS", "Working plane WPL-CS"),
+    ("tcs", "Werkzeug T-CS", "Tool T-CS"),
+];
 
 #[function_component(View3d)]
 pub fn view3d(props: &View3dProps) -> Html {
-    let canvas_ref = use_node_ref();
-    let status = use_state(|| GlStatus::Pending);
+    let viewer = use_mut_ref(|| Viewer::new(Camera::default()));
+    let triads = use_state(Triads::default);
     {
-        let canvas_ref = canvas_ref.clone();
-        let status = status.clone();
-        use_effect_with((), move |_| {
-            let ok = canvas_ref.cast::<HtmlCanvasElement>().is_some_and(|c| init_and_clear(&c));
-            status.set(if ok { GlStatus::Ready } else { GlStatus::Missing });
+        // One effect after every render (View3d renders only when its props or switches change)
+        // instead of one per dependency: each `use_effect_with` costs bundle size, and the
+        // comparisons here are by pointer, not by value.
+        let viewer = viewer.clone();
+        let (machine, state, path, triads) =
+            (props.machine.clone(), props.state.clone(), props.toolpath.0.clone(), *triads);
+        use_effect(move || {
+            let mut v = viewer.borrow_mut();
+            let machine = machine.or_else(|| v.fallback_machine());
+            let new_machine = machine.as_ref().map(|m| m.id.as_str()) != v.machine_id.as_deref();
+            v.machine_id = machine.as_ref().map(|m| m.id.clone());
+            v.content = machine.map(|machine| {
+                let state = match state {
+                    Some(s) => (*s).clone(),
+                    None => SceneState::for_machine(&machine),
+                };
+                Content::Machine { machine, state: Box::new(state), triads }
+            });
+            // Look at the blank when the machine changes (not on every state: a trainee's pan
+            // stays while the program runs).
+            if new_machine && let Some(Content::Machine { machine, state, .. }) = &v.content {
+                v.camera.target = blank_centre(machine, state).as_vec3();
+            }
+            if !v.path.as_ref().is_some_and(|p| Rc::ptr_eq(p, &path)) {
+                // Uploaded by the next frame (the renderer may not exist yet).
+                v.pending_path = Some(path.clone());
+                v.path = Some(path);
+            }
+            v.dirty = true;
         });
     }
     let l = props.lang;
-    let state = match *status {
-        GlStatus::Pending => "pending",
-        GlStatus::Ready => "ready",
-        GlStatus::Missing => "missing",
+    let preset = |p: Preset| {
+        let viewer = viewer.clone();
+        Callback::from(move |_: MouseEvent| {
+            let mut v = viewer.borrow_mut();
+            v.camera.set_preset(p);
+            v.dirty = true;
+        })
     };
+    let toggle = |i: usize| {
+        let triads = triads.clone();
+        Callback::from(move |_: Event| {
+            let mut t = *triads;
+            t.flip(i);
+            triads.set(t);
+        })
+    };
+    let t = *triads;
     html! {
         <section class="view-pane" aria-label={l.t("3D-Ansicht", "3D view")}>
-            <canvas ref={canvas_ref} class="view3d" data-webgl={state}></canvas>
-            if *status == GlStatus::Missing {
-                <p class="no-webgl">
-                    { l.t("Dieser Browser kann kein WebGL2: die 3D-Ansicht ist nicht verfügbar. Alles andere funktioniert.",
-                          "This browser has no WebGL2: the 3D view is not available. Everything else works.") }
-                </p>
-            }
+            <GlCanvas lang={l} viewer={SharedViewer(viewer.clone())} class="view3d"
+                label={l.t("Maschine in 3D: ziehen dreht, rechts ziehen oder Umschalt verschiebt, Rad zoomt, Tasten 1–4",
+                           "Machine in 3D: drag to orbit, right-drag or shift to pan, wheel to zoom, keys 1–4")} />
+            <div class="view-tools">
+                <div class="view-presets" role="group" aria-label={l.t("Ansichten", "Views")}>
+                    { for VIEWS.iter().map(|&(p, key, de, en)| html! {
+                        <button type="button" data-view={key} onclick={preset(p)}>{ l.t(de, en) }</button>
+                    }) }
+                </div>
+                <div class="view-triads" role="group" aria-label={l.t("Koordinatensysteme", "Coordinate systems")}>
+                    { for TRIAD_SWITCHES.iter().enumerate().map(|(i, &(key, de, en))| html! {
+                        <label><input type="checkbox" data-triad={key} checked={t.get(i)} onchange={toggle(i)} />
+                            { l.t(de, en) }</label>
+                    }) }
+                </div>
+            </div>
         </section>
     }
 }

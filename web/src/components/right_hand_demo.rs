@@ -1,0 +1,201 @@
+//! The right-hand rule, demonstrated (seed 000 §2.2): pick X, Y or Z, turn the plane by dragging
+//! round the axis or with the slider, and watch the thumb arrow, the curled arrow, the hand, the
+//! signed angle and the matching `PLANE SPATIAL` block. "Try it" asks for a signed turn and
+//! checks the trainee's answer.
+
+use wasm_bindgen::JsCast;
+use web_sys::{HtmlElement, HtmlInputElement, PointerEvent};
+use yew::prelude::*;
+
+use super::gl_canvas::{GlCanvas, SharedViewer};
+use super::viewer::{Content, Viewer};
+use crate::i18n::Lang;
+use crate::render::camera::Camera;
+use crate::render::right_hand::{
+    TASKS, TurnAxis, Verdict, block_text, check, drag_turn, draw_list, pivot_on_screen, points_towards,
+};
+use glam::Vec3;
+use schwenkbar_core::solve::fmt_deg;
+
+#[derive(Properties, PartialEq)]
+pub struct RightHandDemoProps {
+    pub lang: Lang,
+}
+
+/// The demo's fixed camera: front right above, so every axis points partly at the viewer.
+fn demo_camera() -> Camera {
+    Camera {
+        target: Vec3::new(0.0, 20.0, 40.0),
+        azimuth: -55.0,
+        elevation: 24.0,
+        distance: 640.0,
+        fov_y: 35.0,
+    }
+}
+
+/// A drag in progress: pointer id, the last pointer position and the unrounded angle so far
+/// (summed move by move, so a drag can go round more than half a turn and small moves are not
+/// lost to the whole-degree rounding of the display).
+#[derive(Default)]
+struct Drag {
+    active: Option<(i32, (f32, f32), f64)>,
+}
+
+/// The task prompt ("Drehen Sie die Ebene um +30° um Y").
+#[must_use]
+pub fn task_text(lang: Lang, task: (TurnAxis, f64)) -> String {
+    let angle = fmt_deg(task.1);
+    match lang {
+        Lang::De => format!("Drehen Sie die Ebene um {angle}° um {}", task.0.letter()),
+        Lang::En => format!("Turn the plane by {angle}° about {}", task.0.letter()),
+    }
+}
+
+#[function_component(RightHandDemo)]
+pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
+    let l = props.lang;
+    let viewer = use_mut_ref(|| Viewer::new(demo_camera()));
+    let axis = use_state(TurnAxis::default);
+    let angle = use_state(|| 15.0_f64);
+    let task = use_state(|| None::<usize>);
+    let verdict = use_state(|| None::<Verdict>);
+    let drag = use_mut_ref(Drag::default);
+    {
+        let viewer = viewer.clone();
+        use_effect_with((*axis, *angle), move |(axis, angle)| {
+            let mut v = viewer.borrow_mut();
+            let eye = v.camera.eye().as_dvec3();
+            v.content = Some(Content::List(draw_list(*axis, *angle, eye)));
+            v.dirty = true;
+        });
+    }
+    let set_angle = {
+        let (angle, verdict) = (angle.clone(), verdict.clone());
+        move |a: f64| {
+            angle.set(a.round().clamp(-180.0, 180.0));
+            verdict.set(None);
+        }
+    };
+    let on_pointer = {
+        let (viewer, drag, axis, angle, set_angle) =
+            (viewer.clone(), drag.clone(), *axis, *angle, set_angle.clone());
+        Callback::from(move |(kind, e): (&'static str, PointerEvent)| {
+            let at = (e.offset_x() as f32, e.offset_y() as f32);
+            let mut d = drag.borrow_mut();
+            match kind {
+                "down" => {
+                    if let Some(t) = e.target().and_then(|t| t.dyn_into::<web_sys::Element>().ok()) {
+                        let _ = t.set_pointer_capture(e.pointer_id());
+                    }
+                    d.active = Some((e.pointer_id(), at, angle));
+                }
+                "move" => {
+                    let Some((id, last, sum)) = d.active else { return };
+                    if id != e.pointer_id() {
+                        return;
+                    }
+                    let Some(el) = e.target().and_then(|t| t.dyn_into::<HtmlElement>().ok()) else { return };
+                    let (w, h) = (el.client_width() as f32, el.client_height() as f32);
+                    let cam = viewer.borrow().camera;
+                    let centre = pivot_on_screen(&cam.view_proj(w / h.max(1.0)), w, h);
+                    // The axis runs through the origin: its sign towards the eye decides.
+                    let turn = drag_turn(centre, last, at, points_towards(axis, cam.eye()));
+                    let sum = (sum + turn).clamp(-180.0, 180.0);
+                    d.active = Some((id, at, sum));
+                    set_angle(sum);
+                }
+                _ => d.active = None,
+            }
+        })
+    };
+    let pick = |a: TurnAxis| {
+        let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
+        Callback::from(move |_: MouseEvent| {
+            axis.set(a);
+            angle.set(0.0);
+            verdict.set(None);
+        })
+    };
+    let on_slider = {
+        let set_angle = set_angle.clone();
+        Callback::from(move |e: InputEvent| {
+            if let Some(v) =
+                e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.value().parse::<f64>().ok())
+            {
+                set_angle(v);
+            }
+        })
+    };
+    let start_task = {
+        let (task, axis, angle, verdict) = (task.clone(), axis.clone(), angle.clone(), verdict.clone());
+        Callback::from(move |_: MouseEvent| {
+            let next = task.map_or(0, |i| (i + 1) % TASKS.len());
+            task.set(Some(next));
+            // The trainee picks the axis; start from the untilted plane.
+            angle.set(0.0);
+            axis.set(TurnAxis::Y);
+            verdict.set(None);
+        })
+    };
+    let on_check = {
+        let (task, axis, angle, verdict) = (task.clone(), *axis, *angle, verdict.clone());
+        Callback::from(move |_: MouseEvent| {
+            if let Some(i) = *task {
+                verdict.set(Some(check(TASKS[i], axis, angle)));
+            }
+        })
+    };
+    let block = block_text(*axis, *angle);
+    let feedback = verdict.map(|v| match v {
+        Verdict::Right => ("right", l.t("Richtig! Daumen in Plus-Richtung, die Finger zeigen die positive Drehung.",
+                                          "Right! Thumb along plus, the fingers show the positive turn.")),
+        Verdict::WrongSign => ("wrong-sign", l.t("Falsches Vorzeichen: richtig gedreht, aber andersherum. Daumen in Plus-Richtung der Achse – die Finger zeigen Plus.",
+                                                 "Wrong sign: the right amount, the other way round. Thumb along the plus axis – the fingers show plus.")),
+        Verdict::Off => ("off", l.t("Noch nicht: Achse und Winkel prüfen.", "Not yet: check the axis and the angle.")),
+    });
+    html! {
+        <section class="right-hand" aria-label={l.t("Rechte-Hand-Regel", "Right-hand rule")}>
+            <div class="rh-view">
+                <GlCanvas lang={l} viewer={SharedViewer(viewer)} class="rh-canvas" gestures={false} {on_pointer}
+                    label={l.t("Ebene: um die Achse ziehen dreht sie", "Plane: drag round the axis to turn it")} />
+            </div>
+            <div class="rh-controls">
+                <div role="group" aria-label={l.t("Drehachse", "Axis")}>
+                    { for TurnAxis::ALL.iter().map(|a| html! {
+                        <button type="button" class="rh-axis" data-axis={a.letter()} aria-pressed={(*axis == *a).to_string()}
+                            onclick={pick(*a)}>{ a.letter() }</button>
+                    }) }
+                </div>
+                <label class="rh-slider">{ l.t("Winkel", "Angle") }
+                    <input type="range" min="-180" max="180" step="1" value={angle.to_string()} oninput={on_slider} />
+                </label>
+                <output class="rh-angle" data-angle={angle.to_string()}>{ format!("{}{}°", axis.word(), fmt_deg(*angle)) }</output>
+                <code class="rh-block">{ block }</code>
+                <p class="rh-rule">{ l.t("Rechte Hand: Daumen in Plus-Richtung der Achse, die gekrümmten Finger zeigen die positive Drehrichtung.",
+                                         "Right hand: thumb along the plus axis, the curled fingers show the positive turning direction.") }</p>
+                <div class="rh-try">
+                    <button type="button" class="rh-start" onclick={start_task}>
+                        { if task.is_some() { l.t("Nächste Aufgabe", "Next task") } else { l.t("Ausprobieren", "Try it") } }</button>
+                    if let Some(i) = *task {
+                        <p class="rh-task">{ task_text(l, TASKS[i]) }</p>
+                        <button type="button" class="rh-check" onclick={on_check}>{ l.t("Prüfen", "Check") }</button>
+                    }
+                    if let Some((kind, text)) = feedback {
+                        <p class={classes!("rh-verdict", kind)}>{ text }</p>
+                    }
+                </div>
+            </div>
+        </section>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_task_asks_for_a_signed_turn_in_german_first() {
+        assert_eq!(task_text(Lang::De, (TurnAxis::Y, 30.0)), "Drehen Sie die Ebene um +30° um Y");
+        assert_eq!(task_text(Lang::En, (TurnAxis::X, -45.0)), "Turn the plane by -45° about X");
+    }
+}

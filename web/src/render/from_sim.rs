@@ -1,0 +1,180 @@
+//! The simulator's output as the view's input: a [`SceneState`] per block, the state at any
+//! fraction of a block's motion, and the run's toolpath. The geometry comes from
+//! `core::sim` ([`Kin`]); this only changes frames of reference.
+
+use glam::{DMat3, DQuat};
+use schwenkbar_core::ast::Program;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::{Kin, Segment, SegmentKind, SegmentPath, Simulation, State};
+
+use super::scene::{Blank, Frame, MachineAxes, SceneState, Tool};
+use super::toolpath::PathPoint;
+
+fn axes(a: &schwenkbar_core::sim::MachineAxes) -> MachineAxes {
+    MachineAxes { linear: a.linear, rotary: a.rotary_values() }
+}
+
+/// The view's state after a simulated block. The simulator gives the frames in M-CS as the
+/// machine stands; the view keeps the W-CS on the table at home (so it turns with the table axes
+/// during an animation) and the WPL-CS relative to the W-CS.
+#[must_use]
+pub fn scene_state(machine: &Machine, s: &State) -> SceneState {
+    let kin = Kin::new(machine, s.tool.length);
+    let home = kin.workpiece_pose(s.axes.rotary).inverse_orthogonal();
+    let (wcs, wpl) = (&s.frames.wcs, &s.frames.wpl);
+    let to_wcs = wcs.axes.transpose();
+    let ghost = s.explanation.as_ref().and_then(|e| {
+        let chosen = e.chosen?;
+        e.candidates.iter().enumerate().find(|(i, _)| *i != chosen).map(|(_, c)| c.axes)
+    });
+    SceneState {
+        axes: axes(&s.axes),
+        ghost,
+        wcs: Frame { origin: home.apply(wcs.origin), rot: home.m * wcs.axes },
+        wpl: Frame { origin: to_wcs * (wpl.origin - wcs.origin), rot: to_wcs * wpl.axes },
+        tool: Tool { length: s.tool.length, radius: s.tool.radius },
+        blank: s.blank.map_or_else(Blank::default, |b| Blank { min: b.min, max: b.max }),
+        toolpath_drawn: None,
+    }
+}
+
+/// The view's state at `fraction` (0…1) of one of `after`'s segments: the axes from the
+/// simulator's `Segment::axes_at` (MOVE keeps its centre of rotation, TURN moves only the
+/// rotary axes), and for STAY the working plane turning from its old to its new orientation
+/// (quaternion slerp, the shortest turn) while nothing moves.
+#[must_use]
+pub fn scene_during(machine: &Machine, after: &State, segment: &Segment, fraction: f64) -> SceneState {
+    let mut st = scene_state(machine, after);
+    st.axes = axes(&segment.axes_at(fraction));
+    if let SegmentPath::Stay { from, to } = &segment.path {
+        let f = fraction.clamp(0.0, 1.0);
+        st.wpl.rot = DMat3::from_quat(DQuat::from_mat3(from).slerp(DQuat::from_mat3(to), f));
+    }
+    st
+}
+
+/// The tool tip's path of a run in W-CS, with how far it reaches after each step.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RunPath {
+    pub points: Vec<PathPoint>,
+    /// `segments_after[step]` = segments of `points` travelled when `step` is done (for
+    /// [`SceneState::toolpath_drawn`]).
+    pub segments_after: Vec<usize>,
+}
+
+/// Samples per swivel or MOVE segment: the tip travels an arc relative to the workpiece there.
+const ARC_SAMPLES: u32 = 12;
+
+/// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
+#[must_use]
+pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
+    let mut path = RunPath::default();
+    for st in sim.states(program) {
+        let kin = Kin::new(&sim.machine, st.tool.length);
+        for seg in &st.segments {
+            if path.points.is_empty() {
+                path.points.push(PathPoint { at: kin.tip_wcs(&seg.start), rapid: true });
+            }
+            let rapid = !matches!(seg.kind, SegmentKind::Feed | SegmentKind::CycleFeed);
+            let samples = if matches!(seg.path, SegmentPath::Linear) && seg.rotary_delta == [0.0; 2] {
+                1
+            } else {
+                ARC_SAMPLES
+            };
+            for k in 1..=samples {
+                let at = kin.tip_wcs(&seg.axes_at(f64::from(k) / f64::from(samples)));
+                path.points.push(PathPoint { at, rapid });
+            }
+        }
+        path.segments_after.push(path.points.len().saturating_sub(1));
+    }
+    path
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::pose::poses;
+    use glam::{DAffine3, DVec3};
+    use schwenkbar_core::plane::RotaryAxis;
+    use schwenkbar_core::sim::{SimOptions, simulate};
+
+    fn musterprogramm1() -> (Program, Machine, Simulation) {
+        let (program, _) = schwenkbar_core::parse(include_str!("../../../static/programs/musterprogramm1.h"));
+        let machine = Machine::builtin("ac-table").expect("machine");
+        let sim = simulate(&program, &machine, &SimOptions::default());
+        assert!(sim.error.is_none(), "{:?}", sim.error);
+        (program, machine, sim)
+    }
+
+    fn step_of_block(sim: &Simulation, program: &Program, number: u32) -> usize {
+        let block = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+        sim.first_step[block].expect("executed") as usize
+    }
+
+    #[test]
+    fn after_block_10_the_tilted_plane_lies_flat_under_the_tool_and_the_ghost_is_the_other_solution() {
+        // Musterprogramm 1, block 10: PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN on the A/C table.
+        let (program, machine, sim) = musterprogramm1();
+        let st = sim.state_at(&program, step_of_block(&sim, &program, 10)).expect("state");
+        let scene = scene_state(&machine, &st);
+        let near = |v: Option<f64>, want: f64| v.is_some_and(|x| (x - want).abs() < 1e-9);
+        assert!(
+            near(scene.axes.rotary.a, 15.0) && near(scene.axes.rotary.c, 90.0),
+            "{:?}",
+            scene.axes.rotary
+        );
+        let g = scene.ghost.expect("the other candidate");
+        assert!(near(g.a, -15.0) && near(g.c, -90.0), "{g:?}");
+        // The view's WPL-CS, carried by the table, must be the simulator's WPL-CS in M-CS.
+        let p = poses(&machine, &scene.axes.rotary, scene.axes.linear, scene.tool.length);
+        let wcs = p.workpiece * DAffine3::from_mat3_translation(scene.wcs.rot, scene.wcs.origin);
+        let wpl_z = wcs.matrix3 * scene.wpl.rot.col(2);
+        assert!((wpl_z - st.frames.wpl.axes.col(2)).length() < 1e-9);
+        assert!((wpl_z - DVec3::Z).length() < 1e-9, "tilted tool axis vertical: {wpl_z}");
+        assert!((wcs.transform_point3(scene.wpl.origin) - st.frames.wpl.origin).length() < 1e-9);
+        // The tool tip drawn is the simulator's.
+        assert!((p.tool.translation - st.tip_mcs).length() < 1e-9);
+    }
+
+    #[test]
+    fn the_face_milling_of_block_12_runs_in_the_plane_tilted_by_spb15() {
+        let (program, machine, sim) = musterprogramm1();
+        let path = toolpath(&sim, &program);
+        assert_eq!(path.segments_after.len(), sim.len());
+        let (from, to) = {
+            let s12 = step_of_block(&sim, &program, 12);
+            // Cycle 232 moves at its call (M99 in block 13).
+            let s13 = step_of_block(&sim, &program, 13);
+            (path.segments_after[s12.min(s13 - 1)], path.segments_after[s13])
+        };
+        let st = sim.state_at(&program, step_of_block(&sim, &program, 13)).expect("state");
+        let scene = scene_state(&machine, &st);
+        let n = scene.wpl.rot.col(2);
+        let depth = |p: DVec3| (p - scene.wpl.origin).dot(n);
+        // The milling strokes: feed moves across the face at one depth along the tilted tool axis.
+        let strokes: Vec<(f64, f64)> = path.points[from..=to]
+            .windows(2)
+            .filter(|w| !w[1].rapid && (w[1].at - w[0].at).length() > 50.0)
+            .map(|w| (depth(w[0].at), depth(w[1].at)))
+            .collect();
+        assert!(strokes.len() >= 2, "the cycle mills: {strokes:?}");
+        for (a, b) in strokes {
+            assert!((a - b).abs() < 1e-6, "a stroke parallel to the tilted plane: {a} → {b}");
+            // Q386 = 0 (end depth) and Q227 = +2 (start): every stroke between them.
+            assert!((-1e-6..=2.0 + 1e-6).contains(&a), "stroke depth {a}");
+        }
+        assert!(n.x > 0.25, "SPB+15 tilts the plane normal towards +X: {n}");
+    }
+
+    #[test]
+    fn a_turn_swivel_is_drawn_moving_and_ends_at_the_block_state() {
+        let (program, machine, sim) = musterprogramm1();
+        let st = sim.state_at(&program, step_of_block(&sim, &program, 10)).expect("state");
+        let seg = st.segments.iter().find(|s| s.kind == SegmentKind::SwivelTurn).expect("TURN segment");
+        let half = scene_during(&machine, &st, seg, 0.5);
+        let a = half.axes.rotary.get(RotaryAxis::A).expect("A");
+        assert!(a > 0.0 && a < 15.0, "halfway through the swivel: A{a}");
+        assert_eq!(scene_during(&machine, &st, seg, 1.0).axes, scene_state(&machine, &st).axes);
+    }
+}

@@ -1,0 +1,144 @@
+//! Where every moving part of the machine is, as rigid transforms in M-CS, from the
+//! simulator's rigid-body model ([`schwenkbar_core::sim::Kin`]; formulas and sources in the
+//! `core::sim` module doc): the workpiece pose W (table axes turn the workpiece by −θ about their
+//! pivot, DOMAIN.md §3.1), the head pose H (head axes turn the tool by +θ about their pivot,
+//! which hangs from the spindle gauge point one tool length above the tip), and the linear axes
+//! L = the tool tip with the head at home, so the tip is L + H(0).
+//!
+//! The view also needs each link on its own (the cradle turns with the master only, the rotary
+//! table with both): a link's pose is `Kin`'s pose with the joints it does not ride on held at
+//! 0°. The test below checks that W and H together give exactly `Machine::forward`.
+
+use glam::{DAffine3, DMat3, DVec3};
+use schwenkbar_core::axes::AxisValues;
+use schwenkbar_core::machine::{Carrier, Machine, RotaryJoint};
+use schwenkbar_core::sim::{Affine, Kin};
+
+/// A head axis' pivot in home coordinates with the linear axes at 0 (tool tip at the origin):
+/// the gauge point `(0, 0, tool_length)` plus the machine's pivot (as in `Kin::head_pose`).
+#[must_use]
+pub fn head_pivot(j: &RotaryJoint, tool_length: f64) -> DVec3 {
+    DVec3::new(0.0, 0.0, tool_length) + j.pivot
+}
+
+/// Poses (link → M-CS) of everything that moves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Poses {
+    /// For each joint in chain order (workpiece → tool): the pose of the part it turns.
+    pub joints: [DAffine3; 2],
+    /// The workpiece (blank, W-CS, WPL-CS, toolpath): the innermost table link.
+    pub workpiece: DAffine3,
+    /// The head carriage (moved by X/Y/Z only): the outermost fixed-orientation head part.
+    pub carriage: DAffine3,
+    /// The tool, origin at the tool tip, +Z from the tip into the spindle.
+    pub tool: DAffine3,
+}
+
+fn affine(a: Affine) -> DAffine3 {
+    DAffine3::from_mat3_translation(a.m, a.v)
+}
+
+/// Forward kinematics for axis values (missing rotary axes at 0°), the linear axes and the
+/// active tool length (it places the head axes, which hang from the gauge point).
+#[must_use]
+pub fn poses(machine: &Machine, rotary: &AxisValues, linear: DVec3, tool_length: f64) -> Poses {
+    let kin = Kin::new(machine, tool_length);
+    let chain = machine.joints();
+    let values: [f64; 2] = std::array::from_fn(|i| rotary.get(chain[i].axis).unwrap_or(0.0));
+    let carriage = DAffine3::from_translation(linear);
+    // Joint i's link rides on the table joints from the bed down to i (indices ≥ i) or on the
+    // head joints from the carriage out to i (indices ≤ i); the others are held at 0°.
+    let joints = std::array::from_fn(|i| match chain[i].carrier {
+        Carrier::Table => {
+            affine(kin.workpiece_pose(std::array::from_fn(|k| if k >= i { values[k] } else { 0.0 })))
+        }
+        Carrier::Head => {
+            carriage * affine(kin.head_pose(std::array::from_fn(|k| if k <= i { values[k] } else { 0.0 })))
+        }
+    });
+    Poses {
+        joints,
+        workpiece: affine(kin.workpiece_pose(values)),
+        carriage,
+        tool: carriage * affine(kin.head_pose(values)),
+    }
+}
+
+/// The tool's orientation relative to the workpiece (its third column is the tool axis in the
+/// workpiece's coordinates).
+#[must_use]
+pub fn relative_orientation(p: &Poses) -> DMat3 {
+    p.workpiece.matrix3.transpose() * p.tool.matrix3
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use schwenkbar_core::plane::RotaryAxis;
+
+    fn close(a: DMat3, b: DMat3) -> bool {
+        (a - b).to_cols_array().iter().all(|d| d.abs() < 1e-9)
+    }
+
+    #[test]
+    fn relative_orientation_is_cores_forward_kinematics_on_every_machine() {
+        let angles = [(0.0, 0.0), (45.0, 90.0), (-30.0, 17.0), (123.0, -75.5)];
+        for id in Machine::builtin_ids() {
+            let m = Machine::builtin(id).expect("shipped machine");
+            for (s, t) in angles {
+                let v = AxisValues::default().with(m.slave().axis, s).with(m.master().axis, t);
+                let p = poses(&m, &v, DVec3::new(10.0, -20.0, 30.0), 80.0);
+                assert!(close(relative_orientation(&p), m.forward_deg(s, t)), "{id} at {s}/{t}");
+            }
+        }
+    }
+
+    #[test]
+    fn spb45_on_the_ac_table_brings_the_tilted_tool_axis_vertical() {
+        // DOMAIN.md §10 oracle 13: PLANE SPATIAL SPB+45 from A0 C0 → A+45 C+90.
+        let m = Machine::builtin("ac-table").expect("ac-table");
+        let v = AxisValues::default().with(RotaryAxis::A, 45.0).with(RotaryAxis::C, 90.0);
+        let p = poses(&m, &v, DVec3::ZERO, 100.0);
+        let t = DVec3::new(45f64.to_radians().sin(), 0.0, 45f64.to_radians().cos());
+        let up = p.workpiece.transform_vector3(t);
+        assert!((up - DVec3::Z).length() < 1e-9, "the workpiece's tilted tool axis points up: {up}");
+        // The workpiece's +X edge tips towards the operator (−Y) and rises.
+        let x = p.workpiece.transform_vector3(DVec3::X);
+        assert!(x.y < -0.7 && x.z > 0.7, "{x}");
+        assert_eq!(p.tool.matrix3, DMat3::IDENTITY, "the head does not move on a table-table machine");
+    }
+
+    #[test]
+    fn head_axes_turn_about_their_pivot_and_carry_the_tool_tip() {
+        let m = Machine::builtin("bc-head-table").expect("bc-head-table");
+        let v = AxisValues::default().with(RotaryAxis::B, 90.0);
+        let p = poses(&m, &v, DVec3::new(0.0, 0.0, 0.0), 100.0);
+        // The B pivot is 300 above the gauge point, which is 100 (the tool length) above the
+        // tip: the tip hangs 400 below the pivot at home; +90° about +Y turns (0, 0, −400) into
+        // Ry(90)·(0, 0, −400) = (−400, 0, 0), so the tip ends at the pivot plus that.
+        let tip = p.tool.transform_point3(DVec3::ZERO);
+        assert!((tip - DVec3::new(-400.0, 0.0, 400.0)).length() < 1e-9, "{tip}");
+        // And the tool axis (tip → spindle) is Ry(90)·ez = +X.
+        assert!((p.tool.transform_vector3(DVec3::Z) - DVec3::X).length() < 1e-9);
+    }
+
+    #[test]
+    fn the_nutating_head_at_b180_lays_the_tool_horizontal_along_plus_y() {
+        let m = Machine::builtin("b45-nutating").expect("b45-nutating");
+        let v = AxisValues::default().with(RotaryAxis::B, 180.0);
+        let p = poses(&m, &v, DVec3::ZERO, 100.0);
+        let axis = p.tool.transform_vector3(DVec3::Z);
+        assert!(
+            (axis - DVec3::Y).length() < 1e-9,
+            "machine description: B180 = tool horizontal (+Y): {axis}"
+        );
+    }
+
+    #[test]
+    fn linear_axes_move_the_carriage_only() {
+        let m = Machine::builtin("ac-table").expect("ac-table");
+        let p = poses(&m, &AxisValues::default(), DVec3::new(1.0, 2.0, 3.0), 100.0);
+        assert_eq!(p.tool.translation, DVec3::new(1.0, 2.0, 3.0));
+        assert_eq!(p.workpiece, DAffine3::IDENTITY);
+    }
+}

@@ -1,0 +1,253 @@
+//! The WebGL2 renderer: owns its context's programs and buffers, draws a [`DrawList`] with the
+//! orbit camera, and returns where the labels go on screen. Per frame it only sets uniforms and
+//! issues draw calls; the unit meshes and the toolpath are uploaded once per context.
+
+use glam::{DAffine3, DMat3, DMat4};
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl, WebGlUniformLocation};
+
+use super::camera::{Camera, project_to_css};
+use super::draw_list::{DrawList, Pass, Shape};
+use super::gpu::{GpuLines, GpuMesh, Program, RenderError};
+use super::mesh::{self, Lines};
+use super::scene::Scene;
+use super::toolpath::{self, PathPoint};
+use super::triads;
+
+/// Background of the view (the control's dark graphics area).
+pub const BACKGROUND: [f32; 3] = [0.11, 0.15, 0.20];
+
+/// A label placed on screen (CSS pixels from the canvas' top left).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScreenLabel {
+    pub text: &'static str,
+    pub kind: &'static str,
+    pub x: f32,
+    pub y: f32,
+}
+
+struct LitUniforms {
+    model_view: Option<WebGlUniformLocation>,
+    projection: Option<WebGlUniformLocation>,
+    colour: Option<WebGlUniformLocation>,
+}
+
+/// Everything that lives in one GL context (rebuilt after a context loss).
+///
+/// The shaders (`shaders/*.vert|frag`) carry no comments because their text ships in the bundle:
+/// `lit` lights meshes in view space, so every view of the machine is lit from the front (a key
+/// light from the upper left behind the viewer, a weaker fill from the right, a floor of ambient
+/// light so no face goes black on a projector, a small highlight); the normal matrix (inverse
+/// transpose of the model-view, for non-uniformly scaled parts) is computed per vertex there.
+/// `line` draws the toolpath in its vertex colours.
+struct Gpu {
+    lit: Program,
+    lit_u: LitUniforms,
+    line: Program,
+    line_mvp: Option<WebGlUniformLocation>,
+    shapes: Vec<GpuMesh>,
+    toolpath: Option<GpuLines>,
+}
+
+impl Gpu {
+    fn new(gl: &Gl, path: &Lines) -> Result<Gpu, RenderError> {
+        let lit = Program::new(gl, include_str!("shaders/lit.vert"), include_str!("shaders/lit.frag"))?;
+        let lit_u = LitUniforms {
+            model_view: lit.uniform("u_model_view"),
+            projection: lit.uniform("u_projection"),
+            colour: lit.uniform("u_colour"),
+        };
+        let line = Program::new(gl, include_str!("shaders/line.vert"), include_str!("shaders/line.frag"))?;
+        let line_mvp = line.uniform("u_mvp");
+        let mut shapes = Vec::with_capacity(Shape::ALL.len());
+        for s in Shape::ALL {
+            shapes.push(GpuMesh::upload(gl, &unit_mesh(s))?);
+        }
+        let toolpath = if path.vertices.is_empty() { None } else { Some(GpuLines::upload(gl, path)?) };
+        Ok(Gpu { lit, lit_u, line, line_mvp, shapes, toolpath })
+    }
+}
+
+/// The unit mesh of each shape (`Shape::ALL` order).
+fn unit_mesh(s: Shape) -> mesh::Mesh {
+    match s {
+        Shape::Cube => mesh::cuboid(glam::Vec3::splat(-0.5), glam::Vec3::splat(0.5)),
+        Shape::Cylinder => mesh::cylinder(1.0, 1.0, 32),
+        Shape::Cone => mesh::cone(1.0, 1.0, 24),
+        Shape::CurlArc => mesh::torus_arc(1.0, Shape::CURL_TUBE, Shape::CURL_SWEEP, 48, 10),
+        Shape::Square => mesh::square(1.0),
+        Shape::Finger => mesh::torus_arc(1.0, Shape::FINGER_TUBE, Shape::CURL_SWEEP, 24, 10),
+    }
+}
+
+/// The renderer of one canvas.
+pub struct Renderer {
+    gl: Gl,
+    canvas: HtmlCanvasElement,
+    gpu: Option<Gpu>,
+    /// The toolpath in CPU memory, to upload again after a context loss.
+    path: Lines,
+}
+
+/// The WebGL2 context of a canvas, with multisampling asked for (the browser may ignore it).
+pub fn context(canvas: &HtmlCanvasElement) -> Result<Gl, RenderError> {
+    let attrs = js_sys::Object::new();
+    for (key, value) in [("antialias", true), ("alpha", false), ("premultipliedAlpha", false)] {
+        js_sys::Reflect::set(&attrs, &JsValue::from_str(key), &JsValue::from_bool(value))
+            .map_err(|_| RenderError::NoWebGl2)?;
+    }
+    match canvas.get_context_with_context_options("webgl2", &attrs) {
+        Ok(Some(ctx)) => ctx.dyn_into::<Gl>().map_err(|_| RenderError::NoWebGl2),
+        _ => Err(RenderError::NoWebGl2),
+    }
+}
+
+impl Renderer {
+    pub fn new(canvas: &HtmlCanvasElement) -> Result<Renderer, RenderError> {
+        let gl = context(canvas)?;
+        let path = Lines::default();
+        let gpu = Gpu::new(&gl, &path)?;
+        Ok(Renderer { gl, canvas: canvas.clone(), gpu: Some(gpu), path })
+    }
+
+    /// The GL context (for tests and pixel probes).
+    #[must_use]
+    pub fn gl(&self) -> &Gl {
+        &self.gl
+    }
+
+    /// The canvas drawn on.
+    #[must_use]
+    pub fn canvas(&self) -> &HtmlCanvasElement {
+        &self.canvas
+    }
+
+    /// Replaces the toolpath (one upload; drawing it later costs one draw call).
+    pub fn set_toolpath(&mut self, points: &[PathPoint]) -> Result<(), RenderError> {
+        self.path = toolpath::lines(points);
+        if let Some(gpu) = &mut self.gpu {
+            gpu.toolpath = None;
+            if !self.path.vertices.is_empty() {
+                gpu.toolpath = Some(GpuLines::upload(&self.gl, &self.path)?);
+            }
+        }
+        Ok(())
+    }
+
+    /// Forgets the GL objects of a lost context (they are invalid anyway).
+    pub fn lost(&mut self) {
+        self.gpu = None;
+    }
+
+    /// Rebuilds every GL object after `webglcontextrestored`.
+    pub fn restore(&mut self) -> Result<(), RenderError> {
+        self.gpu = None;
+        self.gpu = Some(Gpu::new(&self.gl, &self.path)?);
+        Ok(())
+    }
+
+    /// Matches the drawing buffer to the canvas' CSS size × devicePixelRatio; returns the CSS
+    /// size. Cheap when nothing changed.
+    pub fn fit(&self) -> (f32, f32) {
+        let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio()).clamp(0.5, 4.0);
+        let (cw, ch) = (self.canvas.client_width().max(1), self.canvas.client_height().max(1));
+        let (w, h) = ((f64::from(cw) * dpr).round() as u32, (f64::from(ch) * dpr).round() as u32);
+        if self.canvas.width() != w || self.canvas.height() != h {
+            self.canvas.set_width(w);
+            self.canvas.set_height(h);
+        }
+        (cw as f32, ch as f32)
+    }
+
+    /// Draws a machine scene; returns its labels on screen.
+    pub fn paint(&mut self, scene: &Scene<'_>, camera: &Camera) -> Result<Vec<ScreenLabel>, RenderError> {
+        let list = triads::scene(scene);
+        let s = scene.state;
+        let p = super::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+        let wcs = DAffine3::from_mat3_translation(scene.state.wcs.rot, scene.state.wcs.origin);
+        let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
+        self.paint_list(&list, camera, Some(path))
+    }
+
+    /// Draws any draw list (the right-hand demo uses this directly), with the toolpath under
+    /// `toolpath = (model, segments)` if given.
+    pub fn paint_list(
+        &mut self,
+        list: &DrawList,
+        camera: &Camera,
+        toolpath: Option<(DAffine3, usize)>,
+    ) -> Result<Vec<ScreenLabel>, RenderError> {
+        let gl = &self.gl;
+        if gl.is_context_lost() {
+            return Err(RenderError::ContextLost);
+        }
+        let Some(gpu) = &self.gpu else { return Err(RenderError::ContextLost) };
+        let (css_w, css_h) = self.fit();
+        let (w, h) = (self.canvas.width() as i32, self.canvas.height() as i32);
+        gl.viewport(0, 0, w, h);
+        gl.clear_color(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1.0);
+        gl.depth_mask(true);
+        gl.clear(Gl::COLOR_BUFFER_BIT | Gl::DEPTH_BUFFER_BIT);
+        gl.enable(Gl::DEPTH_TEST);
+        gl.disable(Gl::CULL_FACE);
+        gl.disable(Gl::BLEND);
+
+        let aspect = css_w / css_h.max(1.0);
+        let view = camera.view().as_dmat4();
+        let proj = camera.projection(aspect);
+
+        gl.use_program(Some(&gpu.lit.program));
+        gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.projection.as_ref(), false, &proj.to_cols_array());
+        draw_pass(gl, gpu, list, Pass::Opaque, &view);
+
+        if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {
+            gl.use_program(Some(&gpu.line.program));
+            let mvp = proj.as_dmat4() * view * DMat4::from(model);
+            gl.uniform_matrix4fv_with_f32_array(gpu.line_mvp.as_ref(), false, &mvp.as_mat4().to_cols_array());
+            lines.draw(segments);
+            gl.use_program(Some(&gpu.lit.program));
+        }
+
+        gl.enable(Gl::BLEND);
+        gl.blend_func(Gl::SRC_ALPHA, Gl::ONE_MINUS_SRC_ALPHA);
+        gl.depth_mask(false);
+        draw_pass(gl, gpu, list, Pass::Translucent, &view);
+        gl.disable(Gl::BLEND);
+        gl.depth_mask(true);
+
+        // Triads on top: a fresh depth buffer, so they hide each other correctly but nothing
+        // of the machine hides them.
+        gl.clear(Gl::DEPTH_BUFFER_BIT);
+        draw_pass(gl, gpu, list, Pass::Overlay, &view);
+
+        let view_proj = camera.view_proj(aspect);
+        Ok(list
+            .labels
+            .iter()
+            .filter_map(|l| {
+                let (x, y) = project_to_css(&view_proj, l.at.as_vec3(), css_w, css_h)?;
+                Some(ScreenLabel { text: l.text, kind: l.kind, x, y })
+            })
+            .collect())
+    }
+}
+
+fn draw_pass(gl: &Gl, gpu: &Gpu, list: &DrawList, pass: Pass, view: &DMat4) {
+    for inst in list.instances.iter().filter(|i| i.pass == pass) {
+        let mv = *view * DMat4::from(inst.model);
+        // A flat part (zero scale) has no normals to shade with (the shader inverts this matrix).
+        if DMat3::from_mat4(mv).determinant().abs() < 1e-12 {
+            continue;
+        }
+        gl.uniform_matrix4fv_with_f32_array(
+            gpu.lit_u.model_view.as_ref(),
+            false,
+            &mv.as_mat4().to_cols_array(),
+        );
+        let c = inst.colour;
+        gl.uniform4f(gpu.lit_u.colour.as_ref(), c[0], c[1], c[2], c[3]);
+        if let Some(mesh) = gpu.shapes.get(inst.shape as usize) {
+            mesh.draw();
+        }
+    }
+}

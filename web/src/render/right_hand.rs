@@ -1,0 +1,343 @@
+//! The right-hand rule demonstrated (seed 000 §2.2, DOMAIN.md §2): a plane turned about X, Y or
+//! Z, the thumb along the positive axis, the fingers curling in the positive turning direction,
+//! and the `PLANE SPATIAL` block that produces the same turn. Pure maths and text; the component
+//! `components/right_hand_demo.rs` draws it.
+
+use glam::{DAffine3, DMat3, DVec3, Vec3};
+use schwenkbar_core::orientation::spatial;
+use schwenkbar_core::solve::fmt_deg;
+
+use super::camera::project_to_css;
+use super::draw_list::{DrawList, Label, Pass, Shape, rod, z_to};
+use super::triads::{PLANE, X, Y, Z, arrow, triad};
+
+/// The axis the plane turns about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TurnAxis {
+    X,
+    #[default]
+    Y,
+    Z,
+}
+
+impl TurnAxis {
+    pub const ALL: [TurnAxis; 3] = [TurnAxis::X, TurnAxis::Y, TurnAxis::Z];
+
+    #[must_use]
+    pub fn letter(self) -> &'static str {
+        match self {
+            TurnAxis::X => "X",
+            TurnAxis::Y => "Y",
+            TurnAxis::Z => "Z",
+        }
+    }
+
+    #[must_use]
+    pub fn unit(self) -> DVec3 {
+        match self {
+            TurnAxis::X => DVec3::X,
+            TurnAxis::Y => DVec3::Y,
+            TurnAxis::Z => DVec3::Z,
+        }
+    }
+
+    /// The spatial angle word that turns about this axis (SPA about X, SPB about Y, SPC about Z;
+    /// DOMAIN.md §2.1).
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            TurnAxis::X => "SPA",
+            TurnAxis::Y => "SPB",
+            TurnAxis::Z => "SPC",
+        }
+    }
+
+    fn colour(self) -> [f32; 4] {
+        match self {
+            TurnAxis::X => X,
+            TurnAxis::Y => Y,
+            TurnAxis::Z => Z,
+        }
+    }
+}
+
+/// `(SPA, SPB, SPC)` for a single turn.
+#[must_use]
+pub fn spatial_angles(axis: TurnAxis, angle: f64) -> [f64; 3] {
+    let mut a = [0.0; 3];
+    a[axis as usize] = angle;
+    a
+}
+
+/// The block as the control writes it: every angle with its sign (`PLANE SPATIAL SPA+0 SPB+15
+/// SPC+0`; seed 000, Musterprogramm 1 block 10).
+#[must_use]
+pub fn block_text(axis: TurnAxis, angle: f64) -> String {
+    let [a, b, c] = spatial_angles(axis, angle);
+    format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c))
+}
+
+/// The plane's orientation after the turn: the same matrix `core` computes for the block.
+#[must_use]
+pub fn orientation(axis: TurnAxis, angle: f64) -> DMat3 {
+    let [a, b, c] = spatial_angles(axis, angle);
+    spatial(a, b, c)
+}
+
+/// The signed turn (degrees) of a drag from `from` to `to` around the axis' screen position
+/// `centre` (CSS pixels, y down). Counter-clockwise on screen is positive when the axis points
+/// towards the viewer (`towards_viewer`), negative when it points away: the right-hand rule seen
+/// from the thumb's tip is counter-clockwise.
+#[must_use]
+pub fn drag_turn(centre: (f32, f32), from: (f32, f32), to: (f32, f32), towards_viewer: bool) -> f64 {
+    // Flip y so the angle is counter-clockwise positive as in mathematics.
+    let a = (f64::from(from.0 - centre.0), f64::from(centre.1 - from.1));
+    let b = (f64::from(to.0 - centre.0), f64::from(centre.1 - to.1));
+    if a.0.hypot(a.1) < 4.0 || b.0.hypot(b.1) < 4.0 {
+        return 0.0;
+    }
+    let ccw = (a.0 * b.1 - a.1 * b.0).atan2(a.0 * b.0 + a.1 * b.1).to_degrees();
+    if towards_viewer { ccw } else { -ccw }
+}
+
+/// Whether the axis (through the origin) points towards the eye at `eye`.
+#[must_use]
+pub fn points_towards(axis: TurnAxis, eye: Vec3) -> bool {
+    eye.as_dvec3().dot(axis.unit()) > 0.0
+}
+
+/// The axis' origin on screen (the pivot of a drag).
+#[must_use]
+pub fn pivot_on_screen(view_proj: &glam::Mat4, width: f32, height: f32) -> (f32, f32) {
+    project_to_css(view_proj, Vec3::ZERO, width, height).unwrap_or((width / 2.0, height / 2.0))
+}
+
+/// The practice tasks of "try it": axis and signed angle, both signs on every axis.
+pub const TASKS: [(TurnAxis, f64); 6] = [
+    (TurnAxis::Y, 30.0),
+    (TurnAxis::X, -45.0),
+    (TurnAxis::Z, 60.0),
+    (TurnAxis::Y, -20.0),
+    (TurnAxis::X, 30.0),
+    (TurnAxis::Z, -90.0),
+];
+
+/// Tolerance of a trainee's turn, degrees (a drag cannot be exact).
+pub const TOLERANCE: f64 = 5.0;
+
+/// How a trainee's turn compares with the task.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    Right,
+    /// Right size, wrong direction: the classic mistake the demo is for.
+    WrongSign,
+    /// Wrong axis or size.
+    Off,
+}
+
+#[must_use]
+pub fn check(task: (TurnAxis, f64), axis: TurnAxis, angle: f64) -> Verdict {
+    if axis == task.0 && (angle - task.1).abs() <= TOLERANCE {
+        Verdict::Right
+    } else if axis == task.0 && (angle + task.1).abs() <= TOLERANCE {
+        Verdict::WrongSign
+    } else {
+        Verdict::Off
+    }
+}
+
+/// Skin colour of the stylised hand, translucent so the arrows show through.
+const SKIN: [f32; 4] = [0.96, 0.76, 0.60, 0.72];
+const PLANE_SIDE: f64 = 200.0;
+
+/// The demo scene (seen from `eye`): the turned plane and its triad, the fixed reference triad, the thumb arrow,
+/// the curled arrow and a stylised right hand gripping the axis.
+#[must_use]
+pub fn draw_list(axis: TurnAxis, angle: f64, eye: DVec3) -> DrawList {
+    let mut list = DrawList::default();
+    let r = orientation(axis, angle);
+    let m = DAffine3::from_mat3_translation(
+        r * DMat3::from_diagonal(DVec3::new(PLANE_SIDE, PLANE_SIDE, 1.0)),
+        DVec3::ZERO,
+    );
+    list.push(Shape::Square, m, [PLANE[0], PLANE[1], PLANE[2], 0.45], Pass::Translucent);
+    // The untilted axes, thin and grey, for reference.
+    for u in [DVec3::X, DVec3::Y, DVec3::Z] {
+        list.push(Shape::Cylinder, rod(DVec3::ZERO, u * 150.0, 1.2), [0.55, 0.58, 0.62, 1.0], Pass::Opaque);
+    }
+    triad(&mut list, DVec3::ZERO, r, 110.0, "", "frame");
+    list.labels.retain(|l| !l.text.is_empty());
+
+    // Thumb along +axis, the curl around it (rotation about the thumb = positive direction).
+    let u = axis.unit();
+    let frame = z_to(u);
+    arrow(&mut list, DVec3::ZERO, u, 250.0, 3.5, axis.colour(), Pass::Opaque);
+    let curl_at = u * 205.0;
+    let radius = 34.0;
+    list.push(
+        Shape::CurlArc,
+        DAffine3::from_mat3_translation(frame * DMat3::from_diagonal(DVec3::splat(radius)), curl_at),
+        [0.98, 0.62, 0.10, 1.0],
+        Pass::Opaque,
+    );
+    // Arrow head at the end of the arc, pointing along the positive turning direction.
+    let end = f64::from(super::draw_list::Shape::CURL_SWEEP);
+    let (s, c) = end.sin_cos();
+    let tip_at = curl_at + frame * DVec3::new(c, s, 0.0) * radius;
+    let tangent = frame * DVec3::new(-s, c, 0.0);
+    list.push(
+        Shape::Cone,
+        rod(tip_at - tangent * 2.0, tip_at + tangent * 16.0, 6.5),
+        [0.98, 0.62, 0.10, 1.0],
+        Pass::Opaque,
+    );
+
+    // Turn the hand about its axis so the palm and the thumb face the viewer.
+    let e = frame.transpose() * eye;
+    let facing = e.y.atan2(e.x) + std::f64::consts::PI;
+    hand(&mut list, frame * DMat3::from_rotation_z(facing), u * 125.0);
+    list.labels.push(Label { text: axis.letter(), at: u * 268.0, kind: "axis" });
+    list
+}
+
+/// A right hand in the same pose: a fist round the axis, the thumb up along it, the four fingers
+/// curling like the arrow (a palm block, a thumb rod and four thick finger arcs). `frame` maps
+/// the hand's local +Z onto the axis; any turn about that axis keeps the hand a right hand.
+fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
+    let local = |p: DVec3| grip + frame * p;
+    // The palm lies on the local −X side of the axis; the fingers leave it there (180°) and wrap
+    // counter-clockwise about the thumb (+Z local) through −Y, +X to +Y: the positive direction.
+    let from_palm = frame * DMat3::from_rotation_z(std::f64::consts::PI);
+    list.push(
+        Shape::Cube,
+        DAffine3::from_mat3_translation(
+            frame * DMat3::from_diagonal(DVec3::new(16.0, 54.0, 70.0)),
+            local(DVec3::new(-32.0, 0.0, -26.0)),
+        ),
+        SKIN,
+        Pass::Translucent,
+    );
+    // Thumbs up: the thumb lies along the axis, over the thumb arrow.
+    list.push(
+        Shape::Cylinder,
+        rod(local(DVec3::new(-24.0, 0.0, -2.0)), local(DVec3::new(-17.0, 0.0, 50.0)), 9.0),
+        SKIN,
+        Pass::Translucent,
+    );
+    list.push(
+        Shape::Cone,
+        rod(local(DVec3::new(-17.0, 0.0, 50.0)), local(DVec3::new(-15.0, 0.0, 63.0)), 9.0),
+        SKIN,
+        Pass::Translucent,
+    );
+    for k in 0..4 {
+        let z = -6.0 - 17.0 * f64::from(k);
+        list.push(
+            Shape::Finger,
+            DAffine3::from_mat3_translation(
+                from_palm * DMat3::from_diagonal(DVec3::splat(24.0)),
+                local(DVec3::new(0.0, 0.0, z)),
+            ),
+            SKIN,
+            Pass::Translucent,
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn block_text_writes_every_sign_like_the_control() {
+        assert_eq!(block_text(TurnAxis::Y, 15.0), "PLANE SPATIAL SPA+0 SPB+15 SPC+0");
+        assert_eq!(block_text(TurnAxis::X, -30.0), "PLANE SPATIAL SPA-30 SPB+0 SPC+0");
+        assert_eq!(block_text(TurnAxis::Z, 12.5), "PLANE SPATIAL SPA+0 SPB+0 SPC+12.5");
+    }
+
+    #[test]
+    fn positive_spb_tips_the_plane_normal_towards_plus_x() {
+        // DOMAIN.md §2: Ry(b)·ez = (sin b, 0, cos b).
+        let t = orientation(TurnAxis::Y, 15.0).col(2);
+        assert!(t.x > 0.25 && t.y.abs() < 1e-12, "{t}");
+        let t = orientation(TurnAxis::X, 15.0).col(2);
+        assert!(t.y < -0.25, "positive SPA tips the normal towards −Y: {t}");
+    }
+
+    #[test]
+    fn counter_clockwise_drag_is_positive_when_the_axis_points_at_the_viewer() {
+        let centre = (100.0, 100.0);
+        // From the right (3 o'clock) to the top (12 o'clock): a quarter turn counter-clockwise.
+        let ccw = drag_turn(centre, (150.0, 100.0), (100.0, 50.0), true);
+        assert!((ccw - 90.0).abs() < 1e-9, "{ccw}");
+        assert!((drag_turn(centre, (150.0, 100.0), (100.0, 50.0), false) + 90.0).abs() < 1e-9);
+        assert_eq!(drag_turn(centre, (101.0, 100.0), (100.0, 50.0), true), 0.0, "too near the pivot");
+    }
+
+    #[test]
+    fn the_curl_arc_mesh_turns_counter_clockwise_about_plus_z() {
+        // The curled arrow means "positive about the thumb" only if the arc mesh runs from +X
+        // towards +Y (counter-clockwise seen from +Z), as Shape::CurlArc promises.
+        let m = super::super::mesh::torus_arc(1.0, Shape::CURL_TUBE, Shape::CURL_SWEEP, 48, 8);
+        let ring = |seg: usize| {
+            let per = 9 * 6; // (sides + 1) vertices of 6 floats per ring
+            let v = &m.vertices[seg * per..(seg + 1) * per];
+            let (mut x, mut y) = (0.0, 0.0);
+            for p in v.chunks_exact(6).take(8) {
+                x += p[0] / 8.0;
+                y += p[1] / 8.0;
+            }
+            (x, y)
+        };
+        let (x0, y0) = ring(0);
+        assert!((x0 - 1.0).abs() < 0.05 && y0.abs() < 0.05, "starts at +X: {x0},{y0}");
+        assert!(ring(1).1 > 0.05, "then turns towards +Y");
+        let (xe, ye) = ring(48);
+        assert!(xe.abs() < 0.05 && (ye + 1.0).abs() < 0.05, "ends at 270°, i.e. −Y: {xe},{ye}");
+    }
+
+    #[test]
+    fn try_it_tells_a_wrong_sign_from_a_wrong_turn() {
+        let task = (TurnAxis::Y, 30.0);
+        assert_eq!(check(task, TurnAxis::Y, 28.0), Verdict::Right);
+        assert_eq!(check(task, TurnAxis::Y, -31.0), Verdict::WrongSign);
+        assert_eq!(check(task, TurnAxis::X, 30.0), Verdict::Off);
+        assert_eq!(check(task, TurnAxis::Y, 60.0), Verdict::Off);
+        assert!(TASKS.iter().any(|t| t.1 < 0.0) && TASKS.iter().any(|t| t.1 > 0.0));
+    }
+
+    #[test]
+    fn the_demo_scene_shows_the_block_turn() {
+        let list = draw_list(TurnAxis::Y, 15.0, DVec3::new(500.0, -500.0, 300.0));
+        let plane = list.instances.iter().find(|i| i.shape == Shape::Square).expect("plane");
+        let n = plane.model.matrix3.col(2).normalize();
+        assert!((n - orientation(TurnAxis::Y, 15.0).col(2)).length() < 1e-12);
+        assert!(list.labels.iter().any(|l| l.text == "Y" && l.kind == "axis"));
+    }
+
+    #[test]
+    fn the_fingers_and_the_curl_arrow_turn_positively_about_the_thumb_from_any_eye() {
+        // The arc meshes run counter-clockwise about their own +Z (mesh test above); they show
+        // the positive direction only if their +Z is the +axis and nothing mirrors them.
+        for axis in TurnAxis::ALL {
+            for eye in [DVec3::new(500.0, -500.0, 300.0), DVec3::new(-300.0, 200.0, -400.0)] {
+                let list = draw_list(axis, -40.0, eye);
+                let arcs: Vec<_> = list
+                    .instances
+                    .iter()
+                    .filter(|i| matches!(i.shape, Shape::Finger | Shape::CurlArc))
+                    .collect();
+                assert_eq!(arcs.len(), 5, "four fingers and the arrow");
+                for a in arcs {
+                    let m = a.model.matrix3;
+                    assert!(m.determinant() > 0.0, "{axis:?}: mirrored");
+                    assert!(
+                        m.col(2).normalize().dot(axis.unit()) > 0.999,
+                        "{axis:?}: arc about {}",
+                        m.col(2)
+                    );
+                }
+            }
+        }
+    }
+}
