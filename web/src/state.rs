@@ -7,7 +7,7 @@
 use std::rc::Rc;
 
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
+use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{BlockBody, Program, edit};
 use yew::Reducible;
 
@@ -57,6 +57,8 @@ pub struct AppState {
     pub sim: Option<SimRef>,
     /// Program run mode, when active.
     pub run: Option<Run>,
+    /// The right-hand-rule demonstration in place of the machine view.
+    pub right_hand: bool,
 }
 
 impl Default for AppState {
@@ -73,6 +75,7 @@ impl Default for AppState {
             text_editing: false,
             sim: None,
             run: None,
+            right_hand: false,
         }
         .simulated()
     }
@@ -126,6 +129,8 @@ pub enum Action {
     RunToStart,
     /// The Satzfolge timer fired while step `.0` was shown.
     RunTick(usize),
+    /// The right-hand rule on a plane you rotate, in place of the machine view.
+    ToggleRightHand,
     ToggleLang,
     ToggleProjector,
 }
@@ -215,6 +220,7 @@ impl AppState {
             }),
             Action::RunFaster => next.run_step(|run, _, _| run.speed = (run.speed + 1).min(SPEEDS.len() - 1)),
             Action::RunSlower => next.run_step(|run, _, _| run.speed = run.speed.saturating_sub(1)),
+            Action::ToggleRightHand => next.right_hand = !self.right_hand,
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
         }
@@ -265,6 +271,18 @@ impl AppState {
             }
             None => self.message = Some(Text::new("Keine Maschine gewählt", "No machine selected")),
         }
+    }
+
+    /// The machine state the 3D view shows: the run's step, else the state after the cursor
+    /// block (if the run reaches it).
+    #[must_use]
+    pub fn shown_state(&self) -> Option<Rc<State>> {
+        if let Some(run) = &self.run {
+            return run.state.clone();
+        }
+        let sim = &self.sim.as_ref()?.0;
+        let step = sim.first_step.get(self.cursor).copied().flatten()?;
+        sim.state_at(&self.doc.program, step as usize).map(Rc::new)
     }
 
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.
