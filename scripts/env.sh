@@ -7,6 +7,9 @@
 TOOLS_DIR="${SCHWENKBAR_TOOLS:-$HOME/.cache/schwenkbar-tools}"
 export PATH="$TOOLS_DIR/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 export CHROMEDRIVER="${CHROMEDRIVER:-/usr/bin/chromedriver}"
+# wasm-bindgen-test-runner gives a whole test binary 20 s by default; the WebGL suite (software
+# rendering, a 100,000-segment toolpath) takes about 14 s on an idle 2-core machine.
+export WASM_BINDGEN_TEST_TIMEOUT="${WASM_BINDGEN_TEST_TIMEOUT:-300}"
 
 _sysroot=$(rustc --print sysroot 2>/dev/null || true)
 if [ -z "${SCHWENKBAR_BUILD_STD:-}" ] && [ -n "$_sysroot" ] \

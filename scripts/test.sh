@@ -26,6 +26,13 @@ wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | t
 echo; echo "==> release bundle: trunk build --release --offline"
 bash scripts/bundle.sh
 
+echo; echo "==> screenshot: Musterprogramm 1 after block 10 on ac-table, 1920x1080"
+# The app's share link opens the program run at a block (web/src/persist.rs).
+fragment=$(python3 -c 'import sys, urllib.parse
+text = open(sys.argv[1], encoding="utf-8").read()
+print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-table&run=1")' static/programs/musterprogramm1.h)
+bash scripts/screenshot.sh target/screenshots/musterprogramm1-block10.png "#$fragment"
+
 passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4} END {print s+0}')
 failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')
 echo

@@ -11,8 +11,9 @@ use crate::components::dialog_area::DialogArea;
 use crate::components::header::Header;
 use crate::components::position::PositionDisplay;
 use crate::components::program_pane::ProgramPane;
+use crate::components::right_hand_demo::RightHandDemo;
+use crate::components::scene_pane::ScenePane;
 use crate::components::softkey_row::SoftkeyRow;
-use crate::components::view3d::View3d;
 use crate::components::why_panel::WhyPanel;
 use crate::i18n::Text;
 use crate::keymap::{self, KeyPress};
@@ -128,25 +129,32 @@ pub fn app() -> Html {
         Some(r) if r.playing => l.t("Programmlauf Satzfolge", "Program run, full sequence"),
         Some(_) => l.t("Programmlauf Einzelsatz", "Program run, single block"),
     };
+    let speed = state.run.as_ref().map_or(1.0, |r| r.speed_factor());
+    let scene_state = state.shown_state();
     let shown = state.run.as_ref().and_then(|r| r.state.clone());
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
-        <div {class} lang={l.code()} tabindex="0" {onkeydown}>
-            <Header lang={l} machine={machine_name} mode={mode} />
-            <main class="panes">
-                <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
-                    text_editing={state.text_editing} {on_select} {on_text} />
-                <View3d lang={l} />
-                <div class="side">
-                    if let Some(shown) = shown.clone() {
-                        <PositionDisplay state={shown} lang={l} />
+            <div {class} lang={l.code()} tabindex="0" {onkeydown}>
+                <Header lang={l} machine={machine_name} mode={mode} />
+                <main class="panes">
+                    <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
+                        text_editing={state.text_editing} {on_select} {on_text} />
+    if state.right_hand {
+                        <RightHandDemo lang={l} />
+                    } else {
+                        <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
+                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} />
                     }
-                    <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
-                        sim={state.sim.clone()} shown={shown} lang={l} />
-                </div>
-            </main>
-            <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />
-            <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
-        </div>
-    }
+                    <div class="side">
+                        if let Some(shown) = shown.clone() {
+                            <PositionDisplay state={shown} lang={l} />
+                        }
+                        <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
+                            sim={state.sim.clone()} shown={shown} lang={l} />
+                    </div>
+                </main>
+                <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />
+                <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
+            </div>
+        }
 }

@@ -7,6 +7,7 @@ pub mod page3d;
 pub mod position;
 pub mod program_pane;
 pub mod right_hand_demo;
+pub mod scene_pane;
 pub mod softkey_row;
 pub mod view3d;
 pub mod viewer;

@@ -71,6 +71,8 @@ pub struct Shared {
     pub program: String,
     pub block: usize,
     pub machine: Option<String>,
+    /// Open in program run at `block` (the instructor's "look at this moment").
+    pub run: bool,
 }
 
 /// The URL fragment (without `#`) of a share link.
@@ -81,13 +83,16 @@ pub fn share_fragment(shared: &Shared) -> String {
         out.push_str("&machine=");
         out.push_str(&percent_encode(m));
     }
+    if shared.run {
+        out.push_str("&run=1");
+    }
     out
 }
 
 /// Reads a share link's fragment (with or without `#`); `None` if it carries no program.
 #[must_use]
 pub fn parse_fragment(fragment: &str) -> Option<Shared> {
-    let mut shared = Shared { program: String::new(), block: 0, machine: None };
+    let mut shared = Shared { program: String::new(), block: 0, machine: None, run: false };
     let mut has_program = false;
     for pair in fragment.trim_start_matches('#').split('&') {
         let (key, value) = pair.split_once('=')?;
@@ -98,6 +103,7 @@ pub fn parse_fragment(fragment: &str) -> Option<Shared> {
             }
             "block" => shared.block = value.parse().ok()?,
             "machine" => shared.machine = Some(percent_decode(value)?),
+            "run" => shared.run = value == "1",
             _ => {}
         }
     }
@@ -168,9 +174,10 @@ mod tests {
             program: "0 BEGIN PGM Ä MM\n1 L X+1 ; a&b=c%\n".into(),
             block: 7,
             machine: Some("ac-table".into()),
+            run: true,
         };
         let f = share_fragment(&s);
-        assert!(!f.contains('\n') && !f.contains(' ') && f.matches('&').count() == 2, "{f}");
+        assert!(!f.contains('\n') && !f.contains(' ') && f.matches('&').count() == 3, "{f}");
         assert_eq!(parse_fragment(&format!("#{f}")), Some(s));
     }
 

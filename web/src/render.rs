@@ -5,7 +5,7 @@
 //!
 //! Feeding the view from the simulator (`components::view3d::View3d` takes `machine`, `state`,
 //! `toolpath`; every prop has a default):
-//! ```ignore
+//! ```text
 //! let sim = simulate(&program, &machine, &SimOptions::default());
 //! let run = from_sim::toolpath(&sim, &program);                  // once per run
 //! let st = sim.state_at(&program, step)?;                         // the block shown

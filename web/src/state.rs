@@ -7,7 +7,7 @@
 use std::rc::Rc;
 
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
+use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{BlockBody, Program, edit};
 use yew::Reducible;
 
@@ -57,6 +57,8 @@ pub struct AppState {
     pub sim: Option<SimRef>,
     /// Program run mode, when active.
     pub run: Option<Run>,
+    /// The right-hand-rule demonstration in place of the machine view.
+    pub right_hand: bool,
 }
 
 impl Default for AppState {
@@ -73,6 +75,7 @@ impl Default for AppState {
             text_editing: false,
             sim: None,
             run: None,
+            right_hand: false,
         }
         .simulated()
     }
@@ -126,6 +129,8 @@ pub enum Action {
     RunToStart,
     /// The Satzfolge timer fired while step `.0` was shown.
     RunTick(usize),
+    /// The right-hand rule on a plane you rotate, in place of the machine view.
+    ToggleRightHand,
     ToggleLang,
     ToggleProjector,
 }
@@ -215,6 +220,7 @@ impl AppState {
             }),
             Action::RunFaster => next.run_step(|run, _, _| run.speed = (run.speed + 1).min(SPEEDS.len() - 1)),
             Action::RunSlower => next.run_step(|run, _, _| run.speed = run.speed.saturating_sub(1)),
+            Action::ToggleRightHand => next.right_hand = !self.right_hand,
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
         }
@@ -265,6 +271,18 @@ impl AppState {
             }
             None => self.message = Some(Text::new("Keine Maschine gewählt", "No machine selected")),
         }
+    }
+
+    /// The machine state the 3D view shows: the run's step, else the state after the cursor
+    /// block (if the run reaches it).
+    #[must_use]
+    pub fn shown_state(&self) -> Option<Rc<State>> {
+        if let Some(run) = &self.run {
+            return run.state.clone();
+        }
+        let sim = &self.sim.as_ref()?.0;
+        let step = sim.first_step.get(self.cursor).copied().flatten()?;
+        sim.state_at(&self.doc.program, step as usize).map(Rc::new)
     }
 
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.
@@ -428,13 +446,20 @@ impl AppState {
             }
             Some(Err(e)) => state.message = Some(e.message()),
         }
-        if let Some(shared) = fragment.and_then(persist::parse_fragment) {
+        let shared = fragment.and_then(persist::parse_fragment);
+        let run = shared.as_ref().is_some_and(|s| s.run);
+        if let Some(shared) = shared {
             state.doc = Rc::new(Document::new(shared.program));
             state.cursor = shared.block.min(state.doc.last_index());
             if let Some(m) = shared.machine {
                 state.select_machine(&m);
             }
             state.message = Some(Text::new("Programm aus dem Link geöffnet", "Program opened from the link"));
+        }
+        // The default's simulation is of the default program: simulate what was restored.
+        state = state.simulated();
+        if run {
+            state.start_run();
         }
         state
     }
@@ -446,6 +471,7 @@ impl AppState {
             program: self.doc.text.clone(),
             block: self.cursor,
             machine: self.machine.as_ref().map(|m| m.id.clone()),
+            run: self.run.is_some(),
         })
     }
 
@@ -538,6 +564,12 @@ mod tests {
         assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
         assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
         assert_eq!(back.message, None);
+        let sim = back.sim.as_ref().expect("simulated");
+        assert_eq!(
+            sim.0.first_step.len(),
+            back.doc.program.blocks.len(),
+            "the restored program is the one simulated"
+        );
 
         let broken = AppState::start(Some("{\"version\":1,\"cursor\":"), Some("0 L X+1".into()), None);
         assert_eq!(broken.doc, AppState::default().doc);
@@ -554,6 +586,11 @@ mod tests {
         assert_eq!(opened.cursor, 8);
         assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
         assert_eq!(s.file_name(), "WINKEL.h");
+        assert!(opened.run.is_none());
+        let running = AppState::default().apply(Action::CursorTo(10)).apply(Action::StartRun);
+        let opened = AppState::start(None, None, Some(&running.share_fragment()));
+        let shown = opened.run.as_ref().and_then(|r| r.state.as_ref()).map(|s| s.block);
+        assert_eq!(shown, Some(10), "the link opens the run at block 10");
     }
 
     #[test]

@@ -1,0 +1,132 @@
+//! The 3D view fed by the simulation: while editing it shows the machine after the cursor
+//! block; in a program run it animates the shown block's motion segment by segment (the
+//! simulator's `axes_at`: MOVE keeps the tool tip on the workpiece, TURN moves it, STAY turns
+//! only the frame) at the run's speed, and a slider scrubs through the block. The animation
+//! state lives here so that only the 3D view re-renders per frame.
+
+use std::cell::Cell;
+use std::rc::Rc;
+use std::time::Duration;
+
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::State;
+use yew::prelude::*;
+
+use super::view3d::{SharedPath, View3d};
+use crate::document::Document;
+use crate::i18n::Lang;
+use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath};
+use crate::render::scene::SceneState;
+use crate::run::SimRef;
+
+#[derive(Properties, PartialEq)]
+pub struct ScenePaneProps {
+    pub lang: Lang,
+    pub machine: Option<Rc<Machine>>,
+    pub sim: Option<SimRef>,
+    pub doc: Rc<Document>,
+    /// The state to show (after the cursor block, or the run's step).
+    pub state: Option<Rc<State>>,
+    /// Animate the block's motion (program run) instead of showing its end.
+    pub animate: bool,
+    /// Playback speed factor.
+    pub speed: f64,
+}
+
+/// Frame interval of the animation, ms.
+const FRAME_MS: u64 = 33;
+
+/// The scene at `fraction` of the block's motion (by time over its segments).
+#[must_use]
+pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
+    let total = state.duration();
+    if fraction >= 1.0 || total <= 0.0 || state.segments.is_empty() {
+        return scene_state(machine, state);
+    }
+    let mut t = fraction.max(0.0) * total;
+    for seg in &state.segments {
+        if t <= seg.duration && seg.duration > 0.0 {
+            return scene_during(machine, state, seg, t / seg.duration);
+        }
+        t -= seg.duration;
+    }
+    scene_state(machine, state)
+}
+
+#[function_component(ScenePane)]
+pub fn scene_pane(props: &ScenePaneProps) -> Html {
+    // The run's toolpath, once per simulation.
+    let sim_ptr = props.sim.as_ref().map_or(0, |s| Rc::as_ptr(&s.0) as usize);
+    let path = {
+        let (sim, doc) = (props.sim.clone(), props.doc.clone());
+        use_memo(sim_ptr, move |_| match sim {
+            Some(sim) => {
+                let p = toolpath(&sim.0, &doc.program);
+                (SharedPath(p.points.clone().into()), p)
+            }
+            None => (SharedPath::default(), RunPath::default()),
+        })
+    };
+    let fraction = use_state(|| 1.0_f64);
+    // Each new block (or a scrub) ends the previous animation loop.
+    let generation = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
+    {
+        let fraction = fraction.clone();
+        let generation = generation.borrow().clone();
+        let deps = (props.state.as_ref().map(|s| (s.step, Rc::as_ptr(s) as usize)), props.animate);
+        let duration = props.state.as_ref().map_or(0.0, |s| s.duration());
+        let speed = props.speed.max(0.01);
+        use_effect_with(deps, move |(_, animate)| {
+            let gen_now = generation.get() + 1;
+            generation.set(gen_now);
+            if !*animate || duration <= 0.0 {
+                fraction.set(1.0);
+                return;
+            }
+            fraction.set(0.0);
+            // Long cycles are compressed to a few seconds so a lesson does not stall.
+            let seconds = (duration / speed).clamp(0.3, 4.0);
+            yew::platform::spawn_local(async move {
+                let mut f = 0.0;
+                while f < 1.0 && generation.get() == gen_now {
+                    yew::platform::time::sleep(Duration::from_millis(FRAME_MS)).await;
+                    f = (f + FRAME_MS as f64 / 1000.0 / seconds).min(1.0);
+                    if generation.get() == gen_now {
+                        fraction.set(f);
+                    }
+                }
+            });
+        });
+    }
+    let scene = match (&props.machine, &props.state) {
+        (Some(m), Some(s)) => {
+            let mut scene = scene_at(m, s, *fraction);
+            scene.toolpath_drawn = path.1.segments_after.get(s.step).copied();
+            Some(Rc::new(scene))
+        }
+        _ => None,
+    };
+    let l = props.lang;
+    let scrub = {
+        let fraction = fraction.clone();
+        let generation = generation.borrow().clone();
+        Callback::from(move |e: InputEvent| {
+            if let Some(input) = e.target_dyn_into::<web_sys::HtmlInputElement>() {
+                generation.set(generation.get() + 1);
+                fraction.set(input.value().parse::<f64>().map_or(1.0, |v| v / 1000.0));
+            }
+        })
+    };
+    html! {
+        <div class="scene-pane">
+            <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} />
+            if props.state.is_some() {
+                <label class="scrub">
+                    { l.t("Satz-Bewegung", "Block motion") }
+                    <input type="range" min="0" max="1000" value={((*fraction * 1000.0).round() as i64).to_string()}
+                        oninput={scrub} data-testid="scrub" />
+                </label>
+            }
+        </div>
+    }
+}
