@@ -13,6 +13,6 @@ source scripts/env.sh
 cargo run --release -p schwenkbar-core --example bench_parse
 cargo run --release -p schwenkbar-core --example bench_solve
 cargo run --release -p schwenkbar-core --example bench_sim
-wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency -- --nocapture \
+wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_render -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'
 bash scripts/bundle.sh | tail -1

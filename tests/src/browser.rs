@@ -124,3 +124,31 @@ pub fn median(mut samples: Vec<f64>) -> f64 {
     samples.sort_by(f64::total_cmp);
     samples.get(samples.len() / 2).copied().unwrap_or(f64::NAN)
 }
+
+/// Waits (up to `ms`) until `selector`'s attribute `name` is something other than `pending`,
+/// and returns it: WebGL start-up (shader compilation in software) can take a while on a loaded
+/// machine.
+pub async fn settled_attribute(root: &Element, selector: &str, name: &str, ms: u64) -> Option<String> {
+    let mut waited = 0;
+    loop {
+        let value = query(root, selector).and_then(|e| e.get_attribute(name));
+        if value.as_deref() != Some("pending") || waited >= ms {
+            return value;
+        }
+        yew::platform::time::sleep(Duration::from_millis(25)).await;
+        waited += 25;
+    }
+}
+
+/// Waits (up to `ms`) until `el`'s attribute `name` equals `expected`; returns the last value.
+pub async fn wait_attribute(el: &Element, name: &str, expected: &str, ms: u64) -> Option<String> {
+    let mut waited = 0;
+    loop {
+        let value = el.get_attribute(name);
+        if value.as_deref() == Some(expected) || waited >= ms {
+            return value;
+        }
+        yew::platform::time::sleep(Duration::from_millis(25)).await;
+        waited += 25;
+    }
+}

@@ -2,7 +2,7 @@
 //! -p schwenkbar-tests`, see scripts/test.sh). They mount the real root component.
 #![cfg(target_arch = "wasm32")]
 
-use schwenkbar_tests::browser::{clear_storage, click, mount, query, text};
+use schwenkbar_tests::browser::{clear_storage, click, mount, query, settled_attribute, text};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -14,8 +14,9 @@ async fn shell_shows_eight_softkeys_with_spec_fct_and_a_webgl2_canvas() {
     let keys = root.query_selector_all(".softkeys .softkey").expect("selector");
     assert_eq!(keys.length(), 8, "the control shows eight softkeys");
     assert!(query(&root, "[data-key=spec-fct]").is_some(), "SPEC FCT is on the main row");
-    let canvas = query(&root, "canvas.view3d").expect("the 3D view's canvas");
-    assert_eq!(canvas.get_attribute("data-webgl").as_deref(), Some("ready"), "headless Chromium has WebGL2");
+    assert!(query(&root, "canvas.view3d").is_some(), "the 3D view's canvas");
+    let status = settled_attribute(&root, "canvas.view3d", "data-webgl", 10_000).await;
+    assert_eq!(status.as_deref(), Some("ready"), "headless Chromium has WebGL2");
     assert!(query(&root, ".no-webgl").is_none());
 }
 
