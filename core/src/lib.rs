@@ -12,6 +12,7 @@ pub mod edit;
 pub mod format;
 pub mod kinematics;
 pub mod machine;
+pub mod number;
 pub mod orientation;
 pub mod parse;
 pub mod plane;

@@ -97,8 +97,8 @@ pub(crate) fn number(i: &str) -> PResult<'_, f64> {
         return expected(i, "Zahl");
     }
     // All bytes up to `n` are ASCII, so `n` is a char boundary.
-    match i[..n].parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok((&i[n..], v)),
+    match crate::number::parse_f64(&i[..n]) {
+        Some(v) if v.is_finite() => Ok((&i[n..], v)),
         _ => failure(i, "Zahl"),
     }
 }

@@ -40,7 +40,7 @@ fn value(word: &str) -> Option<Value> {
         let index = q.parse().ok()?;
         return Some(Value::Param { index, negate });
     }
-    let x: f64 = rest.parse().ok()?;
+    let x = crate::number::parse_f64(rest)?;
     x.is_finite().then_some(Value::Number(if negate { -x } else { x }))
 }
 

@@ -15,6 +15,7 @@ use crate::render::right_hand::{
     TASKS, TurnAxis, Verdict, block_text, check, drag_turn, draw_list, pivot_on_screen, points_towards,
 };
 use glam::Vec3;
+use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::solve::fmt_deg;
 
 /// The demo's CSS, shipped with the component (in the bundle only where the demo is mounted).
@@ -122,9 +123,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let on_slider = {
         let set_angle = set_angle.clone();
         Callback::from(move |e: InputEvent| {
-            if let Some(v) =
-                e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.value().parse::<f64>().ok())
-            {
+            if let Some(v) = e.target_dyn_into::<HtmlInputElement>().and_then(|i| parse_f64(&i.value())) {
                 set_angle(v);
             }
         })

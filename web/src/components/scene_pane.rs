@@ -9,6 +9,7 @@ use std::rc::Rc;
 use std::time::Duration;
 
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
@@ -113,7 +114,7 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
         Callback::from(move |e: InputEvent| {
             if let Some(input) = e.target_dyn_into::<web_sys::HtmlInputElement>() {
                 generation.set(generation.get() + 1);
-                fraction.set(input.value().parse::<f64>().map_or(1.0, |v| v / 1000.0));
+                fraction.set(parse_f64(&input.value()).map_or(1.0, |v| v / 1000.0));
             }
         })
     };

@@ -6,6 +6,7 @@
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::orientation::spatial;
 use schwenkbar_core::solve::{Explanation, SolveOptions, solve};
 
@@ -88,7 +89,7 @@ impl PageQuery {
         let mut q = PageQuery { machine: None, spatial: [0.0; 3], ghost: true, path: true };
         for part in s.split([';', '&', '?', ':']) {
             let Some((k, v)) = part.split_once('=') else { continue };
-            let num = v.parse::<f64>().ok().filter(|x| x.is_finite());
+            let num = parse_f64(v).filter(|x| x.is_finite());
             match (k.trim().to_ascii_lowercase().as_str(), num) {
                 ("machine", _) => q.machine = Some(v.trim().to_string()),
                 ("spa", Some(x)) => q.spatial[0] = x,
