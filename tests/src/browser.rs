@@ -153,13 +153,13 @@ pub async fn wait_attribute(el: &Element, name: &str, expected: &str, ms: u64) -
     }
 }
 
-/// Mounts the page the URL fragment names (`#kurs/3` = the course's lesson 3), as a visit with
-/// that link would.
+/// Mounts the course page at the URL fragment (`#kurs/3` = lesson 3), as a visit of
+/// `kurs.html#kurs/3` would.
 pub async fn mount_at(fragment: &str) -> Element {
     web_sys::window().expect("window").location().set_hash(fragment).expect("set hash");
     let root = document().create_element("div").expect("create div");
     document().body().expect("body").append_child(&root).expect("append root");
-    let handle = yew::Renderer::<schwenkbar_web::Root>::with_root(root.clone()).render();
+    let handle = yew::Renderer::<schwenkbar_web::CourseRoot>::with_root(root.clone()).render();
     MOUNTED.with(|m| m.borrow_mut().push((root.clone(), handle)));
     settle().await;
     root
@@ -168,7 +168,7 @@ pub async fn mount_at(fragment: &str) -> Element {
 thread_local! {
     /// Pages mounted with [`mount_at`], so [`unmount`] can end them: a page left running would
     /// still follow the URL fragment and save the course progress of earlier tests.
-    static MOUNTED: std::cell::RefCell<Vec<(Element, yew::AppHandle<schwenkbar_web::Root>)>> =
+    static MOUNTED: std::cell::RefCell<Vec<(Element, yew::AppHandle<schwenkbar_web::CourseRoot>)>> =
         const { std::cell::RefCell::new(Vec::new()) };
 }
 

@@ -170,6 +170,6 @@ async fn the_trainer_links_to_the_course() {
     clear_storage();
     let root = mount().await;
     let link = query(&root, "[data-testid=course-link]").expect("course link");
-    assert_eq!(link.get_attribute("href").as_deref(), Some("#kurs"));
+    assert_eq!(link.get_attribute("href").as_deref(), Some("kurs.html"));
     unmount(&root);
 }

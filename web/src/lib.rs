@@ -26,10 +26,10 @@ use yew::prelude::*;
 use crate::components::course::CourseApp;
 use crate::course::Route;
 
-/// The page the URL fragment names: the course (`#kurs…`) or the trainer (anything else,
-/// including a share link). Follows the fragment as it changes.
-#[function_component(Root)]
-pub fn root() -> Html {
+/// The course page (`kurs.html`): the lesson the URL fragment names (`#kurs/3`), else the
+/// overview; follows the fragment as it changes.
+#[function_component(CourseRoot)]
+pub fn course_root() -> Html {
     let fragment = use_state(|| browser::fragment().unwrap_or_default());
     {
         let fragment = fragment.clone();
@@ -38,13 +38,18 @@ pub fn root() -> Html {
             move || drop(listener)
         });
     }
-    match Route::parse(&fragment) {
-        Some(route) => html! { <CourseApp {route} /> },
-        None => html! { <App /> },
-    }
+    let route = Route::parse(&fragment).unwrap_or(Route::Overview);
+    html! { <CourseApp {route} /> }
 }
 
-/// Mounts the app on the document body (the trunk entry point).
+/// Mounts the trainer on the document body (the entry point of `index.html`). The course is a
+/// page of its own (`kurs.html`, [`start_course`]) so that its code and texts stay out of the
+/// trainer's bundle.
 pub fn start() {
-    yew::Renderer::<Root>::new().render();
+    yew::Renderer::<App>::new().render();
+}
+
+/// Mounts the course on the document body (the entry point of `kurs.html`).
+pub fn start_course() {
+    yew::Renderer::<CourseRoot>::new().render();
 }

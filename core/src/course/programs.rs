@@ -190,8 +190,9 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
     ex
 }
 
+/// `A+0 C+0`: the machine's axes in the control's order A, B, C.
 fn example(machine: &Machine) -> String {
-    machine.joints().iter().map(|j| axis_word(j.axis, 0.0)).collect::<Vec<_>>().join(" ")
+    words(&machine.joints().iter().fold(AxisValues::default(), |a, j| a.with(j.axis, 0.0)))
 }
 
 const HEADER: &str = "0 BEGIN PGM KURS MM

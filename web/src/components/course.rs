@@ -99,7 +99,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
                     { l.t("Lehreransicht (I)", "Instructor view (I)") }
                 </button>
                 <button onclick={toggle_lang} data-testid="course-lang">{ l.t("English", "Deutsch") }</button>
-                <a href="#" class="to-trainer" onclick={Callback::from(|_: MouseEvent| go_trainer())}>{ l.t("Zum Trainer", "To the trainer") }</a>
+                <a href="index.html" class="to-trainer">{ l.t("Zum Trainer", "To the trainer") }</a>
             </header>
             if let Some(n) = state.notice {
                 <p class="course-notice" role="status" data-testid="course-notice">{ n.get(l) }</p>
@@ -107,10 +107,6 @@ pub fn course_app(props: &CourseAppProps) -> Html {
             { page }
         </div>
     }
-}
-
-fn go_trainer() {
-    let _ = browser::set_fragment("");
 }
 
 fn overview(state: &CourseState) -> Html {

@@ -26,7 +26,7 @@ pub fn header(props: &HeaderProps) -> Html {
             <span class="subtitle">{ l.t("Bearbeitungsebene schwenken", "Tilting the working plane") }</span>
             <span class="machine" data-testid="machine-name">{ props.machine.clone() }</span>
             if props.course_link {
-                <a class="course-link" href="#kurs" data-testid="course-link">{ l.t("Kurs", "Course") }</a>
+                <a class="course-link" href="kurs.html" data-testid="course-link">{ l.t("Kurs", "Course") }</a>
             }
         </header>
     }
