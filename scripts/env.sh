@@ -39,3 +39,14 @@ bundle_env() {
     CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Zunstable-options -Cpanic=immediate-abort" \
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z _route_env "$@"
 }
+
+# Builds the release pages into dist/: the trainer (index.html) and the course (kurs.html), each
+# its own bundle, so the course's code and texts never weigh on the trainer. trunk builds one
+# page per run and replaces its dist folder, so the course is built aside and copied in.
+build_pages() {
+  bundle_env trunk build index.html --release --offline
+  rm -rf target/kurs-dist
+  bundle_env trunk build kurs.html --release --offline --dist target/kurs-dist
+  cp target/kurs-dist/index.html dist/kurs.html
+  find target/kurs-dist -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+}

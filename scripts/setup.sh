@@ -100,6 +100,8 @@ else
   apt_install chromium chromium-driver || fail "5/5 (apt-get install chromium chromium-driver)"
   ok "$(/usr/bin/chromium --version 2>/dev/null | head -1)"
 fi
+# python3 serves the built pages (scripts/serve.sh) and drives the screenshot.
+command -v python3 >/dev/null || apt_install python3 || fail "5/5 (apt-get install python3)"
 
 # --- the crates std itself depends on, so that `trunk build --offline` can rebuild std -------
 step "std's own dependencies (for building std offline)"

@@ -32,6 +32,8 @@ fragment=$(python3 -c 'import sys, urllib.parse
 text = open(sys.argv[1], encoding="utf-8").read()
 print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-table&run=1")' static/programs/musterprogramm1.h)
 bash scripts/screenshot.sh target/screenshots/musterprogramm1-block10.png "#$fragment"
+echo; echo "==> screenshot: the course page, lesson 5 (SEQ/SYM bench)"
+bash scripts/screenshot.sh target/screenshots/kurs-lektion-5.png "kurs.html#kurs/5"
 
 passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4} END {print s+0}')
 failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')

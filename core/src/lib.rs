@@ -7,6 +7,7 @@
 pub mod angle;
 pub mod ast;
 pub mod axes;
+pub mod course;
 pub mod diag;
 pub mod edit;
 pub mod format;

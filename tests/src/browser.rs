@@ -152,3 +152,76 @@ pub async fn wait_attribute(el: &Element, name: &str, expected: &str, ms: u64) -
         waited += 25;
     }
 }
+
+/// Mounts the course page at the URL fragment (`#kurs/3` = lesson 3), as a visit of
+/// `kurs.html#kurs/3` would.
+pub async fn mount_at(fragment: &str) -> Element {
+    web_sys::window().expect("window").location().set_hash(fragment).expect("set hash");
+    let root = document().create_element("div").expect("create div");
+    document().body().expect("body").append_child(&root).expect("append root");
+    let handle = yew::Renderer::<schwenkbar_web::CourseRoot>::with_root(root.clone()).render();
+    MOUNTED.with(|m| m.borrow_mut().push((root.clone(), handle)));
+    settle().await;
+    root
+}
+
+thread_local! {
+    /// Pages mounted with [`mount_at`], so [`unmount`] can end them: a page left running would
+    /// still follow the URL fragment and save the course progress of earlier tests.
+    static MOUNTED: std::cell::RefCell<Vec<(Element, yew::AppHandle<schwenkbar_web::CourseRoot>)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Ends a page mounted with [`mount_at`] (or only takes it out of the document).
+pub fn unmount(root: &Element) {
+    let handle = MOUNTED.with(|m| {
+        let mut m = m.borrow_mut();
+        let i = m.iter().position(|(r, _)| r == root)?;
+        Some(m.remove(i).1)
+    });
+    if let Some(h) = handle {
+        h.destroy();
+    }
+    root.remove();
+}
+
+/// Types `value` into the input `selector` as a user would (one input event).
+pub async fn type_into(root: &Element, selector: &str, value: &str) {
+    let input: web_sys::HtmlInputElement =
+        query(root, selector).unwrap_or_else(|| panic!("no input {selector}")).dyn_into().expect("an input");
+    input.set_value(value);
+    let init = web_sys::InputEventInit::new();
+    init.set_bubbles(true);
+    let event = web_sys::InputEvent::new_with_event_init_dict("input", &init).expect("input event");
+    input.dispatch_event(&event).expect("dispatch");
+    settle().await;
+}
+
+/// A key pressed on the element `selector` (bubbling like a real key press).
+pub async fn key_on(root: &Element, selector: &str, key: &str) {
+    let init = KeyboardEventInit::new();
+    init.set_key(key);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
+    query(root, selector)
+        .unwrap_or_else(|| panic!("no element {selector}"))
+        .dispatch_event(&event)
+        .expect("dispatch");
+    settle().await;
+}
+
+/// Waits (up to `ms`) until `selector` exists under `root`.
+pub async fn wait_for(root: &Element, selector: &str, ms: u64) -> Option<Element> {
+    let mut waited = 0;
+    loop {
+        if let Some(el) = query(root, selector) {
+            return Some(el);
+        }
+        if waited >= ms {
+            return None;
+        }
+        yew::platform::time::sleep(Duration::from_millis(25)).await;
+        waited += 25;
+    }
+}

@@ -15,32 +15,63 @@ use crate::components::right_hand_demo::RightHandDemo;
 use crate::components::scene_pane::ScenePane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::why_panel::WhyPanel;
-use crate::i18n::Text;
+use crate::i18n::{Lang, Text};
 use crate::keymap::{self, KeyPress};
 use crate::persist;
 use crate::softkeys;
 use crate::state::{Action, AppState};
 
+/// A lesson's program shown in the trainer instead of the trainee's own work.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Embed {
+    pub program: Rc<str>,
+    pub machine: &'static str,
+    pub lang: Lang,
+    /// Told the cursor block's text whenever it is a PLANE block (`None` otherwise).
+    pub on_plane_block: Callback<Option<String>>,
+}
+
+#[derive(Properties, PartialEq, Default)]
+pub struct AppProps {
+    /// Set inside a lesson: that program, nothing saved.
+    #[prop_or_default]
+    pub embed: Option<Embed>,
+}
+
 #[function_component(App)]
-pub fn app() -> Html {
-    let state = use_reducer(|| {
-        let (saved, program) = browser::load_saved();
-        AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
+pub fn app(props: &AppProps) -> Html {
+    let embed = props.embed.clone();
+    let state = use_reducer(|| match &embed {
+        Some(e) => AppState::embedded(&e.program, e.machine, e.lang),
+        None => {
+            let (saved, program) = browser::load_saved();
+            AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
+        }
     });
-    // Keep the trainee's work: the program when its text changed, the small state when the
-    // cursor, machine, language or projector mode changed.
+    // Keep the trainee's work (not a lesson's program): the program when its text changed, the
+    // small state when the cursor, machine, language or projector mode changed. In a lesson,
+    // tell the course which PLANE block the cursor is on.
+    let embedded = props.embed.clone();
     {
         let state = state.clone();
-        use_effect_with(Rc::as_ptr(&state.doc) as usize, move |_| {
-            if let Err(message) = browser::save_program(&state.doc.text) {
-                state.dispatch(Action::Notice(message));
+        let deps = (Rc::as_ptr(&state.doc) as usize, state.cursor);
+        use_effect_with(deps, move |_| match embedded {
+            Some(e) => e.on_plane_block.emit(state.cursor_plane_text()),
+            None => {
+                if let Err(message) = browser::save_program(&state.doc.text) {
+                    state.dispatch(Action::Notice(message));
+                }
             }
         });
     }
     {
         let deps = (state.cursor, state.machine.as_ref().map(|m| m.id.clone()), state.lang, state.projector);
         let state = state.clone();
+        let embedded = props.embed.is_some();
         use_effect_with(deps, move |_| {
+            if embedded {
+                return;
+            }
             if let Err(message) = browser::save_state(&persist::to_json(&state.saved())) {
                 state.dispatch(Action::Notice(message));
             }
@@ -135,7 +166,7 @@ pub fn app() -> Html {
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
             <div {class} lang={l.code()} tabindex="0" {onkeydown}>
-                <Header lang={l} machine={machine_name} mode={mode} />
+                <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
                     <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
                         text_editing={state.text_editing} {on_select} {on_text} />

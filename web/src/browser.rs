@@ -74,3 +74,39 @@ pub async fn read_file(file: File) -> Result<Vec<u8>, Text> {
         .map_err(|_| Text::new("Datei konnte nicht gelesen werden", "The file could not be read"))?;
     Ok(Uint8Array::new(&buffer).to_vec())
 }
+
+/// The saved course progress record, if there is one.
+#[must_use]
+pub fn load_course() -> Option<String> {
+    storage()?.get_item(crate::course::progress::KEY).ok().flatten()
+}
+
+/// Saves the course progress; a blocked storage is reported.
+pub fn save_course(text: &str) -> Result<(), Text> {
+    storage().ok_or(REFUSED)?.set_item(crate::course::progress::KEY, text).map_err(|_| REFUSED)
+}
+
+/// Calls `f` with the new URL fragment whenever it changes, until the guard is dropped.
+pub struct HashListener {
+    closure: Option<wasm_bindgen::closure::Closure<dyn FnMut()>>,
+}
+
+impl Drop for HashListener {
+    fn drop(&mut self) {
+        if let (Some(window), Some(c)) = (web_sys::window(), self.closure.take()) {
+            // Removing can only fail for a listener never added: nothing left to do then.
+            let _ = window.remove_event_listener_with_callback("hashchange", c.as_ref().unchecked_ref());
+        }
+    }
+}
+
+/// Listens to `hashchange`; without a window (never in a browser) the guard does nothing.
+#[must_use]
+pub fn on_hash_change(mut f: impl FnMut(String) + 'static) -> HashListener {
+    let closure =
+        wasm_bindgen::closure::Closure::<dyn FnMut()>::new(move || f(fragment().unwrap_or_default()));
+    let added = web_sys::window().is_some_and(|w| {
+        w.add_event_listener_with_callback("hashchange", closure.as_ref().unchecked_ref()).is_ok()
+    });
+    HashListener { closure: added.then_some(closure) }
+}

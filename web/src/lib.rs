@@ -4,6 +4,7 @@
 pub mod app;
 pub mod browser;
 pub mod components;
+pub mod course;
 pub mod dialog;
 pub mod document;
 pub mod i18n;
@@ -20,7 +21,35 @@ pub mod why;
 
 pub use app::App;
 
-/// Mounts the app on the document body (the trunk entry point).
+use yew::prelude::*;
+
+use crate::components::course::CourseApp;
+use crate::course::Route;
+
+/// The course page (`kurs.html`): the lesson the URL fragment names (`#kurs/3`), else the
+/// overview; follows the fragment as it changes.
+#[function_component(CourseRoot)]
+pub fn course_root() -> Html {
+    let fragment = use_state(|| browser::fragment().unwrap_or_default());
+    {
+        let fragment = fragment.clone();
+        use_effect_with((), move |()| {
+            let listener = browser::on_hash_change(move |f| fragment.set(f));
+            move || drop(listener)
+        });
+    }
+    let route = Route::parse(&fragment).unwrap_or(Route::Overview);
+    html! { <CourseApp {route} /> }
+}
+
+/// Mounts the trainer on the document body (the entry point of `index.html`). The course is a
+/// page of its own (`kurs.html`, [`start_course`]) so that its code and texts stay out of the
+/// trainer's bundle.
 pub fn start() {
     yew::Renderer::<App>::new().render();
+}
+
+/// Mounts the course on the document body (the entry point of `kurs.html`).
+pub fn start_course() {
+    yew::Renderer::<CourseRoot>::new().render();
 }

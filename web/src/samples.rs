@@ -18,7 +18,7 @@ pub const MUSTERPROGRAMM_1: Sample = Sample {
     text: include_str!("../../static/programs/musterprogramm1.h"),
 };
 
-pub const SAMPLES: [Sample; 4] = [
+pub const SAMPLES: [Sample; 5] = [
     MUSTERPROGRAMM_1,
     Sample {
         id: "euler_fasen",
@@ -37,6 +37,15 @@ pub const SAMPLES: [Sample; 4] = [
         title: Text::new("Winkel nicht erlaubt (SYM−)", "Angle not permitted (SYM−)"),
         machine: "ba-table",
         text: include_str!("../../static/programs/winkel_nicht_erlaubt.h"),
+    },
+    Sample {
+        id: "musterprogramm2",
+        title: Text::new(
+            "Musterprogramm 2 (Nullpunkt, dann schwenken)",
+            "Sample program 2 (datum, then tilt)",
+        ),
+        machine: "ac-table",
+        text: include_str!("../../static/programs/musterprogramm2.h"),
     },
 ];
 

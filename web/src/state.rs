@@ -464,6 +464,27 @@ impl AppState {
         state
     }
 
+    /// A lesson's trainer: its own program and machine, the cursor on the first PLANE block;
+    /// nothing of the trainee's saved work is read or written.
+    #[must_use]
+    pub fn embedded(program: &str, machine: &str, lang: Lang) -> AppState {
+        let mut state = AppState { lang, ..AppState::default() };
+        state.doc = Rc::new(Document::new(program.to_owned()));
+        state.cursor =
+            state.doc.program.blocks.iter().position(|b| matches!(b.body, BlockBody::Plane(_))).unwrap_or(0);
+        state.select_machine(machine);
+        state.simulated()
+    }
+
+    /// The cursor block's text when it is a PLANE block (the course takes it as an answer).
+    #[must_use]
+    pub fn cursor_plane_text(&self) -> Option<String> {
+        let block = self.doc.program.blocks.get(self.cursor)?;
+        matches!(block.body, BlockBody::Plane(_))
+            .then(|| self.doc.text.get(block.span.start..block.span.end))?
+            .map(str::to_owned)
+    }
+
     /// The share link's fragment for the current program, block and machine.
     #[must_use]
     pub fn share_fragment(&self) -> String {

@@ -11,6 +11,9 @@ pub struct HeaderProps {
     pub machine: AttrValue,
     /// The operating mode (Programmieren, Programmlauf …).
     pub mode: AttrValue,
+    /// Show the link to the course (not inside a lesson).
+    #[prop_or_default]
+    pub course_link: bool,
 }
 
 #[function_component(Header)]
@@ -22,6 +25,9 @@ pub fn header(props: &HeaderProps) -> Html {
             <span class="title">{ "Schwenkbar" }</span>
             <span class="subtitle">{ l.t("Bearbeitungsebene schwenken", "Tilting the working plane") }</span>
             <span class="machine" data-testid="machine-name">{ props.machine.clone() }</span>
+            if props.course_link {
+                <a class="course-link" href="kurs.html" data-testid="course-link">{ l.t("Kurs", "Course") }</a>
+            }
         </header>
     }
 }

@@ -1,0 +1,331 @@
+//! The set-ups behind the machine exercises: solver questions ([`choose`]), small programs run
+//! through the simulator ([`run`]), and the seed's two SEQ/SYM tables as experiments
+//! ([`seed_rows`], seed 002 / DOMAIN.md oracles 13–27).
+
+use super::{
+    ChooseKind, Exercise, Rng, RunKind, Spec, TILTS, axes_exercise, fmt_value, limit_a, selection_text,
+    texts, transform_text, value_exercise,
+};
+use crate::axes::AxisValues;
+use crate::machine::{Limits, Machine};
+use crate::plane::{PlaneBlock, PlaneDef, Positioning, RotaryAxis, Selection, Sign, TransformMode};
+use crate::solve::{SolveOptions, axis_word, fmt_deg};
+
+const SELECTIONS: [Selection; 4] = [
+    Selection::Seq(Sign::Plus),
+    Selection::Seq(Sign::Minus),
+    Selection::Sym(Sign::Plus),
+    Selection::Sym(Sign::Minus),
+];
+/// Start positions of C that never tie (a tie is decided by an unconfirmed rule).
+const STARTS_C: [f64; 10] = [-150.0, -120.0, -105.0, -60.0, -30.0, 30.0, 60.0, 105.0, 120.0, 150.0];
+
+/// One row of the seed's tables: the set-up; what the control does is the solver's business
+/// (the expected results are in the tests, from DOMAIN.md).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeedRow {
+    /// The oracle's number in DOMAIN.md.
+    pub number: u8,
+    pub machine: &'static str,
+    pub block: PlaneBlock<f64>,
+    pub start: AxisValues,
+    pub limits: Vec<(RotaryAxis, Limits)>,
+}
+
+fn spatial_block(spa: f64, spb: f64, spc: f64, selection: Option<Selection>) -> PlaneBlock<f64> {
+    PlaneBlock {
+        def: PlaneDef::Spatial { spa, spb, spc },
+        positioning: Some(Positioning::Turn { move_back: None, feed: Some(crate::plane::Feed::Max) }),
+        selection,
+        transform: None,
+    }
+}
+
+/// The seed's two tables (seed 002): C table on A tilting table with `SPB+45`, rows 13–22;
+/// B table on A tilting table (A −100…+180) with `SPA-45`, rows 23–27.
+#[must_use]
+pub fn seed_rows() -> Vec<SeedRow> {
+    let ac = |number, c: f64, limit: bool, selection| SeedRow {
+        number,
+        machine: "ac-table",
+        block: spatial_block(0.0, 45.0, 0.0, selection),
+        start: AxisValues::default().with(RotaryAxis::A, 0.0).with(RotaryAxis::C, c),
+        limits: if limit { vec![limit_a(-90.0, 10.0)] } else { Vec::new() },
+    };
+    let ba = |number, selection| SeedRow {
+        number,
+        machine: "ba-table",
+        block: spatial_block(-45.0, 0.0, 0.0, selection),
+        start: AxisValues::default().with(RotaryAxis::A, 0.0).with(RotaryAxis::B, 0.0),
+        limits: Vec::new(),
+    };
+    let (seq, sym) = (|s| Some(Selection::Seq(s)), |s| Some(Selection::Sym(s)));
+    // The first table's "SYM=SEQ" column: on the A/C table the symmetry point is A0, so SYM and
+    // SEQ choose alike; the rows use SYM as the seed's table heads them.
+    vec![
+        ac(13, 0.0, false, None),
+        ac(14, 0.0, false, sym(Sign::Plus)),
+        ac(15, 0.0, false, sym(Sign::Minus)),
+        ac(16, -105.0, false, None),
+        ac(17, -105.0, false, sym(Sign::Plus)),
+        ac(18, -105.0, false, sym(Sign::Minus)),
+        ac(19, 0.0, true, None),
+        ac(20, 0.0, true, sym(Sign::Plus)),
+        ac(21, 0.0, true, sym(Sign::Minus)),
+        ac(22, -135.0, false, seq(Sign::Plus)),
+        ba(23, sym(Sign::Plus)),
+        ba(24, sym(Sign::Minus)),
+        ba(25, seq(Sign::Plus)),
+        ba(26, seq(Sign::Minus)),
+        ba(27, None),
+    ]
+}
+
+fn words(a: &AxisValues) -> String {
+    a.iter().map(|(ax, v)| axis_word(ax, v)).collect::<Vec<_>>().join(" ")
+}
+
+fn block_text(b: &PlaneBlock<f64>) -> String {
+    let PlaneDef::Spatial { spa, spb, spc } = b.def else { return String::new() };
+    format!(
+        "PLANE SPATIAL SPA{} SPB{} SPC{} TURN FMAX{}{}",
+        fmt_deg(spa),
+        fmt_deg(spb),
+        fmt_deg(spc),
+        selection_text(b.selection),
+        transform_text(b.transform)
+    )
+}
+
+pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise {
+    let fixed = variant == 0;
+    let tilt = |rng: &mut Rng| if fixed { 45.0 } else { rng.pick(&TILTS) * rng.pick(&[1.0, -1.0]) };
+    let start_c = |rng: &mut Rng, seed: f64| if fixed { seed } else { rng.pick(&STARTS_C) };
+    let (machine_id, block, start, limits) = match kind {
+        ChooseKind::OtherMachine => {
+            let b = if fixed { 30.0 } else { rng.pick(&TILTS) };
+            (
+                "bc-head-table",
+                spatial_block(0.0, b, 0.0, None),
+                [(RotaryAxis::B, 0.0), (RotaryAxis::C, 0.0)],
+                vec![],
+            )
+        }
+        ChooseKind::ShortestPath => {
+            let b = tilt(rng);
+            let c = start_c(rng, -105.0);
+            ("ac-table", spatial_block(0.0, b, 0.0, None), [(RotaryAxis::A, 0.0), (RotaryAxis::C, c)], vec![])
+        }
+        ChooseKind::Option => {
+            let b = tilt(rng);
+            let sel = if fixed { Selection::Seq(Sign::Minus) } else { rng.pick(&SELECTIONS) };
+            let c = start_c(rng, 0.0);
+            (
+                "ac-table",
+                spatial_block(0.0, b, 0.0, Some(sel)),
+                [(RotaryAxis::A, 0.0), (RotaryAxis::C, c)],
+                vec![],
+            )
+        }
+        ChooseKind::Limits => {
+            let b = tilt(rng);
+            let sel = if fixed {
+                Some(Selection::Sym(Sign::Plus))
+            } else {
+                rng.pick(&[None, Some(Selection::Seq(Sign::Plus)), Some(Selection::Seq(Sign::Minus))])
+            };
+            let c = start_c(rng, 0.0);
+            (
+                "ac-table",
+                spatial_block(0.0, b, 0.0, sel),
+                [(RotaryAxis::A, 0.0), (RotaryAxis::C, c)],
+                vec![limit_a(-90.0, 10.0)],
+            )
+        }
+        ChooseKind::TableRot | ChooseKind::CoordRot => {
+            let spc = if fixed { 30.0 } else { rng.pick(&[15.0, 30.0, 45.0, 60.0, -30.0, -45.0, 90.0]) };
+            let c = if fixed { 0.0 } else { rng.pick(&[0.0, 10.0, -20.0, 45.0]) };
+            let mut block = spatial_block(0.0, 0.0, spc, None);
+            block.transform = Some(if kind == ChooseKind::TableRot {
+                TransformMode::TableRot
+            } else {
+                TransformMode::CoordRot
+            });
+            ("ac-table", block, [(RotaryAxis::A, 0.0), (RotaryAxis::C, c)], vec![])
+        }
+    };
+    let machine = match Machine::builtin(machine_id) {
+        Ok(m) => m,
+        // The ids above are the shipped machines (tested); a missing one is a build error.
+        Err(_) => return super::Exercise::generate(Spec::Lean, variant),
+    };
+    let start = start.iter().fold(AxisValues::default(), |a, &(ax, v)| a.with(ax, v));
+    let limit_text = limits
+        .iter()
+        .map(|(ax, l)| format!(", Endschalter {}{} … {}", ax, fmt_deg(l.min), fmt_deg(l.max)))
+        .collect::<String>();
+    let limit_text_en = limit_text.replace("Endschalter", "limit switches");
+    let text = block_text(&block);
+    let prompt = texts(
+        format!(
+            "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „Winkel nicht erlaubt“)",
+            machine.name.de,
+            words(&start),
+            example(&machine)
+        ),
+        format!(
+            "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"Angle not permitted\")",
+            machine.name.en,
+            words(&start),
+            example(&machine)
+        ),
+    );
+    let opts = SolveOptions { start, limits, ..SolveOptions::default() };
+    let mut ex = axes_exercise(Spec::Choose(kind), variant, machine, &block, &opts, prompt);
+    let program = format!(
+        "0 BEGIN PGM AUFGABE MM\n1 L {} R0 FMAX\n2 {text}\n3 END PGM AUFGABE MM\n",
+        words(&opts.start)
+    );
+    ex.program = Some((program, machine_id));
+    ex
+}
+
+/// `A+0 C+0`: the machine's axes in the control's order A, B, C.
+fn example(machine: &Machine) -> String {
+    words(&machine.joints().iter().fold(AxisValues::default(), |a, j| a.with(j.axis, 0.0)))
+}
+
+const HEADER: &str = "0 BEGIN PGM KURS MM
+1 BLK FORM 0.1 Z X+0 Y+0 Z-40
+2 BLK FORM 0.2 X+100 Y+100 Z+0
+3 TOOL CALL 8 Z S4000 F800
+4 L Z+0 R0 FMAX M91 M3
+5 L X-600 Y+500 R0 FMAX M91
+";
+
+fn program(body: &[String]) -> String {
+    let mut text = HEADER.to_owned();
+    let mut n = 6;
+    for line in body {
+        text.push_str(&format!("{n} {line}\n"));
+        n += 1;
+    }
+    text.push_str(&format!("{n} M30\n{} END PGM KURS MM\n", n + 1));
+    text
+}
+
+/// `6 (PLANE SPATIAL … TURN FMAX)`: the block number with the block's words.
+fn block_line(text: &str, number: u32) -> String {
+    let prefix = format!("{number} ");
+    text.lines().find_map(|l| l.strip_prefix(&prefix)).map_or_else(
+        || number.to_string(),
+        |words| format!("{number} ({})", words.split(';').next().unwrap_or("").trim()),
+    )
+}
+
+const MUSTERPROGRAMM_1: &str = include_str!("../../../static/programs/musterprogramm1.h");
+
+pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
+    let fixed = variant == 0;
+    let b = if fixed { 45.0 } else { rng.pick(&TILTS) * rng.pick(&[1.0, -1.0]) };
+    let spatial = format!("PLANE SPATIAL SPA+0 SPB{} SPC+0", fmt_deg(b));
+    let spec = Spec::Run(kind);
+    // The prompt quotes the block asked about, so a fresh variant shows its new numbers.
+    let ask = |text: &str, block: u32, what_de: &str, what_en: &str| {
+        let line = block_line(text, block);
+        texts(
+            format!(
+                "Welchen Wert zeigt die Steuerung für {what_de} nach Satz {line}? (z. B. +45 oder -12,5)"
+            ),
+            format!("What value does the control show for {what_en} after block {line}? (e.g. +45 or -12.5)"),
+        )
+    };
+    match kind {
+        RunKind::Turn => {
+            let text = program(&[format!("{spatial} TURN FMAX")]);
+            let letter = if fixed { 'A' } else { rng.pick(&['A', 'C']) };
+            let prompt = ask(&text, 6, &format!("die Drehachse {letter}"), &format!("rotary axis {letter}"));
+            value_exercise(spec, variant, text, "ac-table", 6, letter, prompt)
+        }
+        RunKind::Stay | RunKind::StayQ120 => {
+            let text = program(&[format!("{spatial} STAY"), "L A+Q120 C+Q122 R0 FMAX".to_owned()]);
+            let (letter, de, en) = if kind == RunKind::StayQ120 {
+                ('Q', "Q120 (den berechneten A-Wert)".to_owned(), "Q120 (the computed A value)".to_owned())
+            } else {
+                let l = if fixed { 'A' } else { rng.pick(&['A', 'C']) };
+                (l, format!("die Drehachse {l}"), format!("rotary axis {l}"))
+            };
+            let prompt = ask(&text, 6, &de, &en);
+            value_exercise(spec, variant, text, "ac-table", 6, letter, prompt)
+        }
+        RunKind::ResetStay | RunKind::ResetTurn => {
+            let reset = if kind == RunKind::ResetStay { "PLANE RESET STAY" } else { "PLANE RESET TURN FMAX" };
+            let text =
+                program(&[format!("{spatial} TURN FMAX"), reset.to_owned(), "L A+0 C+0 R0 FMAX".to_owned()]);
+            let tilt = block_line(&text, 6);
+            let prompt = ask(
+                &text,
+                7,
+                &format!("die Drehachse A (vorher Satz {tilt})"),
+                &format!("rotary axis A (block {tilt} came before)"),
+            );
+            value_exercise(spec, variant, text, "ac-table", 7, 'A', prompt)
+        }
+        RunKind::Musterprogramm1 => {
+            let (block, letter) =
+                if fixed { (10, 'A') } else { rng.pick(&[(10, 'A'), (10, 'C'), (18, 'A'), (25, 'C')]) };
+            let prompt = ask(
+                MUSTERPROGRAMM_1,
+                block,
+                &format!("die Drehachse {letter}"),
+                &format!("rotary axis {letter}"),
+            );
+            value_exercise(spec, variant, MUSTERPROGRAMM_1.to_owned(), "ac-table", block, letter, prompt)
+        }
+        RunKind::DatumThenPlane => {
+            let (dx, z) = if fixed {
+                (40.0, 10.0)
+            } else {
+                (rng.pick(&[20.0, 30.0, 40.0, 50.0, 60.0]), rng.pick(&[10.0, 20.0]))
+            };
+            let b = if fixed { 30.0 } else { b };
+            let text = program(&[
+                format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
+                format!("PLANE SPATIAL SPA+0 SPB{} SPC+0 TURN FMAX", fmt_deg(b)),
+                format!("L X+0 Y+0 Z{} R0 FMAX", fmt_value(z)),
+            ]);
+            let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
+            let prompt = texts(
+                format!(
+                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor der Verschiebung)? Gib X ein (z. B. +45 oder 12,5)."
+                ),
+                format!(
+                    "Blocks {blocks}: where is the tool tip after block 8 in the workpiece coordinate system (W-CS, before the shift)? Enter X (e.g. +45 or 12.5)."
+                ),
+            );
+            value_exercise(spec, variant, text, "ac-table", 8, 'X', prompt)
+        }
+        RunKind::DatumThenMirror => {
+            let (dx, x) = if fixed {
+                (50.0, 20.0)
+            } else {
+                (rng.pick(&[30.0, 40.0, 50.0, 60.0]), rng.pick(&[10.0, 15.0, 20.0, 25.0]))
+            };
+            let text = program(&[
+                format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
+                "TRANS MIRROR AXIS X".to_owned(),
+                format!("L X{} Y+10 Z+10 R0 FMAX", fmt_value(x)),
+            ]);
+            let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
+            let prompt = texts(
+                format!(
+                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor Verschiebung und Spiegelung)? Gib X ein."
+                ),
+                format!(
+                    "Blocks {blocks}: where is the tool tip after block 8 in the workpiece coordinate system (W-CS, before shift and mirror)? Enter X."
+                ),
+            );
+            value_exercise(spec, variant, text, "ac-table", 8, 'X', prompt)
+        }
+    }
+}

@@ -1,0 +1,175 @@
+//! Headless-Chromium tests of the course (issue 8): every lesson opens; every exercise accepts
+//! its solution and an equivalent answer in another form and rejects the typical mistake with
+//! its hint; the seed tables' rows on lesson 5's bench give the seed's results; the instructor
+//! view, the presenter-remote keys and the progress.
+#![cfg(target_arch = "wasm32")]
+
+use schwenkbar_core::course::{Answer, Exercise, Hint};
+use schwenkbar_tests::browser::{
+    clear_storage, click, key_on, mount, mount_at, query, settle, text, type_into, unmount, wait_for,
+};
+use schwenkbar_web::course::lessons::{self, COUNT};
+use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
+use web_sys::Element;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+async fn verdict(root: &Element, n: usize) -> (String, String) {
+    let found = wait_for(root, &format!("[data-testid=verdict-{n}]"), 3_000).await;
+    let el = found.unwrap_or_else(|| {
+        let page = query(root, "[data-testid=lesson]").and_then(|p| p.get_attribute("data-lesson"));
+        let card = query(root, &format!("[data-testid=exercise-{n}]")).map(|c| c.inner_html());
+        panic!("lesson {page:?}: no verdict {n}; card: {card:?}")
+    });
+    (el.get_attribute("data-verdict").unwrap_or_default(), el.text_content().unwrap_or_default())
+}
+
+async fn answer(root: &Element, n: usize, a: &Answer) {
+    match a {
+        Answer::Text(t) => {
+            type_into(root, &format!("[data-testid=answer-{n}]"), t).await;
+            click(root, &format!("[data-testid=check-{n}]")).await;
+        }
+        Answer::ControlError => click(root, &format!("[data-testid=refuse-{n}]")).await,
+    }
+}
+
+#[wasm_bindgen_test]
+async fn every_lesson_opens_and_its_exercises_accept_right_and_equivalent_answers_and_reject_wrong_ones() {
+    clear_storage();
+    for i in 0..COUNT {
+        let root = mount_at(&format!("#kurs/{}", i + 1)).await;
+        let page = wait_for(&root, "[data-testid=lesson]", 5_000).await.expect("the lesson page");
+        assert_eq!(page.get_attribute("data-lesson"), Some((i + 1).to_string()));
+        assert!(text(&root, "[data-testid=lesson-title]").starts_with(&format!("{}. ", i + 1)));
+        assert!(
+            query(&root, "[data-testid=course-notice]").is_none(),
+            "lesson {} opens without a message",
+            i + 1
+        );
+        let lesson = lessons::lesson(i).expect("lesson");
+        for (n, &spec) in lesson.exercises.iter().enumerate() {
+            let ex = Exercise::generate(spec, 0);
+            assert_eq!(text(&root, &format!("[data-testid=prompt-{n}]")), ex.prompt.de);
+            for good in [&ex.solution, &ex.equivalent] {
+                answer(&root, n, &Answer::typed(good)).await;
+                assert_eq!(verdict(&root, n).await.0, "correct", "lesson {} exercise {n}: {good}", i + 1);
+            }
+            let (wrong, hint) = &ex.typical_mistake;
+            answer(&root, n, wrong).await;
+            let (class, message) = verdict(&root, n).await;
+            assert_eq!(class, "wrong", "lesson {} exercise {n}: {wrong:?}", i + 1);
+            if *hint == Hint::RightHand {
+                assert!(message.contains("Rechte-Hand-Regel"), "{message}");
+            }
+            // What was typed stays for correction.
+            if let Answer::Text(t) = wrong {
+                let input = query(&root, &format!("[data-testid=answer-{n}]")).expect("input");
+                assert_eq!(
+                    input.dyn_ref::<web_sys::HtmlInputElement>().map(|i| i.value()).as_deref(),
+                    Some(t.as_str())
+                );
+            }
+        }
+        unmount(&root);
+    }
+}
+
+use wasm_bindgen::JsCast;
+
+#[wasm_bindgen_test]
+async fn seed_table_rows_on_the_lesson_5_bench_give_the_seed_results() {
+    clear_storage();
+    let root = mount_at("#kurs/5").await;
+    wait_for(&root, "[data-testid=solve-lab]", 5_000).await.expect("the bench");
+    // DOMAIN.md oracles 13–27.
+    let expected: [(u8, Option<&str>); 15] = [
+        (13, Some("A+45 C+90")),
+        (14, Some("A+45 C+90")),
+        (15, Some("A-45 C-90")),
+        (16, Some("A-45 C-90")),
+        (17, Some("A+45 C+90")),
+        (18, Some("A-45 C-90")),
+        (19, Some("A-45 C-90")),
+        (20, None),
+        (21, Some("A-45 C-90")),
+        (22, Some("A+45 C+90")),
+        (23, Some("A-45 B+0")),
+        (24, None),
+        (25, None),
+        (26, Some("A-45 B+0")),
+        (27, Some("A-45 B+0")),
+    ];
+    for (row, want) in expected {
+        click(&root, &format!("[data-testid=seed-row-{row}]")).await;
+        let chosen = text(&root, "[data-testid=lab-result] .chosen");
+        match want {
+            Some(axes) => assert!(chosen.starts_with(axes), "row {row}: {chosen:?}"),
+            None => {
+                assert_eq!(chosen, "", "row {row}");
+                assert_eq!(text(&root, "[data-testid=lab-error]"), "Winkel nicht erlaubt", "row {row}");
+            }
+        }
+    }
+    unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn instructor_view_keys_of_a_presenter_remote_and_solution_only_on_request() {
+    clear_storage();
+    let root = mount_at("#kurs/2").await;
+    wait_for(&root, "[data-lesson='2']", 5_000).await.expect("lesson 2");
+    // A trainee gets the solution button only after trying.
+    assert!(query(&root, "[data-testid=solution-button-0]").is_none());
+    key_on(&root, "[data-testid=course]", "i").await;
+    assert!(query(&root, ".course.projector").is_some(), "the instructor view enlarges for the projector");
+    assert!(query(&root, "[data-testid=solution-0]").is_none(), "the solution is held back");
+    click(&root, "[data-testid=solution-button-0]").await;
+    assert!(text(&root, "[data-testid=solution-0]").contains("PLANE SPATIAL"));
+    key_on(&root, "[data-testid=course]", "PageDown").await;
+    assert!(wait_for(&root, "[data-lesson='3']", 3_000).await.is_some(), "PageDown: next lesson");
+    key_on(&root, "[data-testid=course]", "ArrowRight").await;
+    assert!(wait_for(&root, "[data-lesson='4']", 3_000).await.is_some(), "→: next lesson");
+    key_on(&root, "[data-testid=course]", "PageUp").await;
+    assert!(wait_for(&root, "[data-lesson='3']", 3_000).await.is_some(), "PageUp: previous lesson");
+    key_on(&root, "[data-testid=course]", "Home").await;
+    assert!(wait_for(&root, "[data-testid=course-overview]", 3_000).await.is_some());
+    unmount(&root);
+    // Leave the fragment so later tests in this binary start in the trainer.
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+}
+
+#[wasm_bindgen_test]
+async fn progress_is_kept_and_a_corrupt_record_is_reported() {
+    clear_storage();
+    let root = mount_at("#kurs/1").await;
+    wait_for(&root, "[data-lesson='1']", 5_000).await.expect("lesson 1");
+    let ex = Exercise::generate(lessons::lesson(0).expect("lesson").exercises[0], 0);
+    answer(&root, 0, &Answer::Text(ex.solution.clone())).await;
+    unmount(&root);
+    let root = mount_at("#kurs").await;
+    let status = wait_for(&root, "[data-testid=lesson-status-1]", 3_000).await.expect("overview");
+    assert_eq!(status.text_content().as_deref(), Some("1/2 gelöst"));
+    unmount(&root);
+    web_sys::window()
+        .and_then(|w| w.local_storage().ok().flatten())
+        .expect("storage")
+        .set_item("schwenkbar.kurs", "{kaputt")
+        .expect("set");
+    let root = mount_at("#kurs").await;
+    assert!(text(&root, "[data-testid=course-notice]").contains("zurückgesetzt"));
+    assert!(query(&root, "[data-testid=lesson-link-11]").is_some(), "the course works on");
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+}
+
+#[wasm_bindgen_test]
+async fn the_trainer_links_to_the_course() {
+    clear_storage();
+    let root = mount().await;
+    let link = query(&root, "[data-testid=course-link]").expect("course link");
+    assert_eq!(link.get_attribute("href").as_deref(), Some("kurs.html"));
+    unmount(&root);
+}

@@ -1,0 +1,5 @@
+//! Entry point of the course page (`kurs.html`).
+
+fn main() {
+    schwenkbar_web::start_course();
+}

@@ -1,0 +1,195 @@
+//! The course pages: the overview and a lesson (text, live view, exercises), the instructor
+//! view (projector type, presenter-remote keys, solutions only on request) and the progress
+//! kept in the browser. State in [`crate::course::state::CourseState`].
+
+use std::rc::Rc;
+
+use wasm_bindgen::JsCast;
+use web_sys::HtmlElement;
+use yew::prelude::*;
+
+use super::exercise_card::ExerciseCard;
+use super::positioning::PositioningCompare;
+use super::right_hand_demo::RightHandDemo;
+use super::solve_lab::SolveLab;
+use crate::app::{App, Embed};
+use crate::browser;
+use crate::course::Route;
+use crate::course::lessons::{self, COUNT, Widget};
+use crate::course::state::{CourseAction, CourseState};
+use crate::course::texts::LESSONS;
+
+const STYLE: &str = include_str!("course.css");
+
+#[derive(Properties, PartialEq)]
+pub struct CourseAppProps {
+    pub route: Route,
+}
+
+fn go(route: Route) {
+    // The fragment drives the page (`Root` follows it), so Back in the browser works too.
+    let _ = browser::set_fragment(&route.fragment());
+}
+
+#[function_component(CourseApp)]
+pub fn course_app(props: &CourseAppProps) -> Html {
+    let route = props.route;
+    let state = use_reducer(|| CourseState::start(browser::load_course().as_deref(), route));
+    {
+        let state = state.clone();
+        use_effect_with(route, move |r| state.dispatch(CourseAction::Go(*r)));
+    }
+    {
+        let state = state.clone();
+        use_effect_with(state.progress.clone(), move |p| {
+            if let Err(t) = browser::save_course(&p.to_text()) {
+                state.dispatch(CourseAction::Notice(t));
+            }
+        });
+    }
+    let onkeydown = {
+        let state = state.clone();
+        Callback::from(move |e: KeyboardEvent| {
+            let typing = e
+                .target()
+                .and_then(|t| t.dyn_into::<HtmlElement>().ok())
+                .is_some_and(|el| matches!(el.tag_name().as_str(), "TEXTAREA" | "INPUT" | "SELECT"));
+            // The embedded trainer handles its own keys (it prevents their default).
+            if typing || e.default_prevented() || e.ctrl_key() || e.alt_key() || e.meta_key() {
+                return;
+            }
+            let target = match e.key().as_str() {
+                "ArrowRight" | "PageDown" => Some(state.route.next()),
+                "ArrowLeft" | "PageUp" => Some(state.route.prev()),
+                "Home" => Some(Route::Overview),
+                "i" | "I" => {
+                    state.dispatch(CourseAction::ToggleInstructor);
+                    None
+                }
+                _ => return,
+            };
+            e.prevent_default();
+            if let Some(r) = target {
+                go(r);
+            }
+        })
+    };
+    let l = state.lang();
+    let dispatch = {
+        let state = state.clone();
+        Callback::from(move |a: CourseAction| state.dispatch(a))
+    };
+    let class = classes!("course", state.progress.instructor.then_some("projector"));
+    let page = match state.lesson_index() {
+        Some(i) => lesson_page(&state, i, &dispatch),
+        None => overview(&state),
+    };
+    let toggle_lang = dispatch.reform(|_: MouseEvent| CourseAction::ToggleLang);
+    let toggle_instructor = dispatch.reform(|_: MouseEvent| CourseAction::ToggleInstructor);
+    html! {
+        <div {class} lang={l.code()} tabindex="0" {onkeydown} data-testid="course">
+            <style>{ STYLE }</style>
+            <header class="course-head">
+                <a href="#kurs" class="course-title">{ l.t("Schwenkbar – Kurs", "Schwenkbar – course") }</a>
+                <span class="course-where" data-testid="course-where">{ match state.lesson_index() {
+                    Some(i) => format!("{} {}/{COUNT}", l.t("Lektion", "Lesson"), i + 1),
+                    None => l.t("Übersicht", "Overview").to_owned(),
+                } }</span>
+                <button onclick={toggle_instructor} aria-pressed={state.progress.instructor.to_string()} data-testid="instructor">
+                    { l.t("Lehreransicht (I)", "Instructor view (I)") }
+                </button>
+                <button onclick={toggle_lang} data-testid="course-lang">{ l.t("English", "Deutsch") }</button>
+                <a href="index.html" class="to-trainer">{ l.t("Zum Trainer", "To the trainer") }</a>
+            </header>
+            if let Some(n) = state.notice {
+                <p class="course-notice" role="status" data-testid="course-notice">{ n.get(l) }</p>
+            }
+            { page }
+        </div>
+    }
+}
+
+fn overview(state: &CourseState) -> Html {
+    let l = state.lang();
+    html! {
+        <main class="course-overview" data-testid="course-overview">
+            <h1>{ l.t("Bearbeitungsebene schwenken – der Kurs", "Tilting the working plane – the course") }</h1>
+            <p>{ l.t(
+                "Elf Lektionen, jede mit Erklärung, einer Live-Ansicht und Aufgaben, die das Programm nachrechnet. Weiter mit → oder Bild↓, zurück mit ← oder Bild↑.",
+                "Eleven lessons, each with an explanation, a live view and exercises the program checks. Next with → or Page Down, back with ← or Page Up.",
+            ) }</p>
+            <ol class="lesson-list">
+                { for LESSONS.iter().enumerate().map(|(i, t)| {
+                    let p = state.progress.lessons[i];
+                    let total = lessons::lesson(i).map_or(0, |x| x.exercises.len());
+                    let status = format!("{}/{total} {}", p.solved_count(), l.t("gelöst", "solved"));
+                    html! {
+                        <li class={classes!(p.visited.then_some("visited"))}>
+                            <a href={format!("#{}", Route::Lesson(i).fragment())} data-testid={format!("lesson-link-{}", i + 1)}>
+                                { t.title.get(l) }
+                            </a>
+                            <span class="lesson-goal">{ t.goal.get(l) }</span>
+                            <span class="lesson-status" data-testid={format!("lesson-status-{}", i + 1)}>{ status }</span>
+                        </li>
+                    }
+                }) }
+            </ol>
+        </main>
+    }
+}
+
+fn lesson_page(state: &CourseState, i: usize, dispatch: &Callback<CourseAction>) -> Html {
+    let (Some(lesson), l) = (lessons::lesson(i), state.lang()) else { return overview(state) };
+    let t = lesson.text;
+    let widget = match lesson.widget {
+        Widget::RightHand => html! { <RightHandDemo lang={l} /> },
+        Widget::SolveLab => html! { <SolveLab lang={l} /> },
+        Widget::Positioning { programs, block } => {
+            html! { <PositioningCompare lang={l} {programs} {block} /> }
+        }
+        Widget::Trainer { program, machine } => {
+            let (program, machine): (Rc<str>, &'static str) =
+                state.trainer_program.clone().unwrap_or_else(|| (program.into(), machine));
+            // Rebuilt only for another lesson, another opened program or language (a key that
+            // changed on every render would remount it endlessly).
+            let key = format!("{i}-{}-{}", state.trainer_generation, l.code());
+            let on_plane_block = dispatch.reform(CourseAction::TrainerBlock);
+            let embed = Embed { program, machine, lang: l, on_plane_block };
+            html! { <div class="lesson-trainer" {key}><App embed={Some(embed)} /></div> }
+        }
+    };
+    let prev = Route::Lesson(i).prev();
+    let next = Route::Lesson(i).next();
+    html! {
+        <main class="lesson" data-testid="lesson" data-lesson={(i + 1).to_string()}>
+            <section class="lesson-text">
+                <h1 data-testid="lesson-title">{ format!("{}. {}", i + 1, t.title.get(l)) }</h1>
+                <p class="lesson-goal">{ t.goal.get(l) }</p>
+                { for t.paragraphs.iter().map(|p| html! { <p>{ p.get(l) }</p> }) }
+                if !t.steps.is_empty() {
+                    <ol class="lesson-steps">{ for t.steps.iter().map(|s| html! { <li>{ s.get(l) }</li> }) }</ol>
+                }
+                <p class="lesson-summary"><strong>{ l.t("Merksatz: ", "Remember: ") }</strong>{ t.summary.get(l) }</p>
+            </section>
+            <section class="lesson-widget">
+                <p class="widget-caption">{ t.widget_caption.get(l) }</p>
+                { widget }
+            </section>
+            <section class="lesson-exercises">
+                <h2>{ l.t("Aufgaben", "Exercises") }</h2>
+                { for state.exercises.iter().enumerate().map(|(n, e)| html! {
+                    <ExerciseCard index={n} exercise={e.clone()} lang={l} instructor={state.progress.instructor}
+                        refusal={state.offers_refusal(n)} in_trainer={matches!(lesson.widget, Widget::Trainer { .. })}
+                        on_action={dispatch.clone()} />
+                }) }
+            </section>
+            <nav class="lesson-nav">
+                <a href={format!("#{}", prev.fragment())} data-testid="lesson-prev">{ l.t("← Zurück", "← Back") }</a>
+                <a href="#kurs">{ l.t("Übersicht", "Overview") }</a>
+                if i + 1 < COUNT {
+                    <a href={format!("#{}", next.fragment())} data-testid="lesson-next">{ l.t("Weiter →", "Next →") }</a>
+                }
+            </nav>
+        </main>
+    }
+}
