@@ -34,7 +34,7 @@ impl Answer {
 
 /// A number as typed on the control: sign optional, decimal point or comma.
 fn number(text: &str) -> Option<f64> {
-    let v: f64 = text.trim().replace(',', ".").parse().ok()?;
+    let v = crate::number::parse_f64(&text.trim().replace(',', "."))?;
     v.is_finite().then_some(v)
 }
 

@@ -53,7 +53,7 @@ fn option_word(s: Option<Selection>) -> &'static str {
 }
 
 fn number(text: &str) -> Option<f64> {
-    text.trim().replace(',', ".").parse::<f64>().ok().filter(|v| v.is_finite())
+    schwenkbar_core::number::parse_f64(&text.trim().replace(',', ".")).filter(|v| v.is_finite())
 }
 
 impl LabForm {
