@@ -11,6 +11,13 @@
 
 use std::cmp::Ordering;
 
+/// A number as a person types it into a field: blanks around it, a decimal point or comma
+/// (`-12,5`); finite values only.
+#[must_use]
+pub fn parse_input(text: &str) -> Option<f64> {
+    parse_f64(&text.trim().replace(',', ".")).filter(|v| v.is_finite())
+}
+
 /// Parses a decimal number as `str::parse::<f64>` does: `[+-]` then `inf`, `infinity` or `nan`
 /// (any case), or digits with an optional `.` (at least one digit on either side) and an
 /// optional exponent `e`/`E` `[+-]` digits. Overflow gives ±∞, underflow ±0. `None` where the

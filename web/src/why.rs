@@ -8,7 +8,7 @@ use schwenkbar_core::BlockBody;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::plane::{PlaneBlock, Value};
 use schwenkbar_core::sim::{Simulation, State};
-use schwenkbar_core::solve::{Explanation, SolveOptions, axis_word, fmt_deg, solve_block};
+use schwenkbar_core::solve::{Explanation, SolveOptions, axis_words, fmt_deg, solve_block};
 
 use crate::i18n::Lang;
 
@@ -123,7 +123,7 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
         .iter()
         .enumerate()
         .map(|(i, cand)| {
-            let axes: Vec<String> = cand.axes.iter().map(|(ax, v)| axis_word(ax, v)).collect();
+            let axes = axis_words(&cand.axes);
             let limits = if cand.in_limits {
                 l.t("in den Endschaltern", "inside the limits")
             } else {
@@ -132,15 +132,7 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
             let chosen = e.chosen == Some(i);
             let verdict =
                 if chosen { l.t("gewählt", "chosen") } else { l.t("nicht gewählt", "not chosen") };
-            (
-                format!(
-                    "{} · {limits} · {} {:.1}° · {verdict}",
-                    axes.join(" "),
-                    l.t("Weg", "path"),
-                    cand.path
-                ),
-                chosen,
-            )
+            (format!("{} · {limits} · {} {:.1}° · {verdict}", axes, l.t("Weg", "path"), cand.path), chosen)
         })
         .collect();
     let (rule_de, rule_en) = e.rule.texts();

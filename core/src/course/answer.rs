@@ -5,8 +5,9 @@
 use super::{Hint, VALUE_TOL, Verdict, texts};
 use crate::axes::AxisValues;
 use crate::machine::{Machine, Texts};
+use crate::number::parse_input;
 use crate::plane::RotaryAxis;
-use crate::solve::{Explanation, axis_word};
+use crate::solve::{Explanation, axis_words};
 
 /// A trainee's answer.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -32,14 +33,8 @@ impl Answer {
     }
 }
 
-/// A number as typed on the control: sign optional, decimal point or comma.
-fn number(text: &str) -> Option<f64> {
-    let v = crate::number::parse_f64(&text.trim().replace(',', "."))?;
-    v.is_finite().then_some(v)
-}
-
 /// The axis words of an answer; `Err` names the first word that looks like one but isn't.
-fn axis_words(text: &str) -> Result<AxisValues, Texts> {
+fn typed_axes(text: &str) -> Result<AxisValues, Texts> {
     let mut out = AxisValues::default();
     for word in text.split_whitespace() {
         let mut chars = word.chars();
@@ -49,7 +44,7 @@ fn axis_words(text: &str) -> Result<AxisValues, Texts> {
         if !rest.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.' | ',')) {
             continue;
         }
-        let Some(v) = number(rest) else {
+        let Some(v) = parse_input(rest) else {
             return Err(texts(
                 format!("Eingabe nicht lesbar: {word}"),
                 format!("Cannot read the entry: {word}"),
@@ -62,10 +57,6 @@ fn axis_words(text: &str) -> Result<AxisValues, Texts> {
 
 fn same(a: &AxisValues, b: &AxisValues) -> bool {
     a.iter().all(|(axis, v)| b.get(axis).is_some_and(|w| (v - w).abs() <= VALUE_TOL))
-}
-
-fn words(a: &AxisValues) -> String {
-    a.iter().map(|(ax, v)| axis_word(ax, v)).collect::<Vec<_>>().join(" ")
 }
 
 pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) -> Verdict {
@@ -100,7 +91,7 @@ pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) ->
             ),
         };
     };
-    let given = match axis_words(text) {
+    let given = match typed_axes(text) {
         Ok(g) => g,
         Err(t) => return Verdict::Unreadable(t),
     };
@@ -115,8 +106,8 @@ pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) ->
     }
     if same(&chosen, &given) {
         return Verdict::Correct(texts(
-            format!("Richtig: {}. Grund: {}", words(&chosen), reason.de),
-            format!("Correct: {}. Reason: {}", words(&chosen), reason.en),
+            format!("Richtig: {}. Grund: {}", axis_words(&chosen), reason.de),
+            format!("Correct: {}. Reason: {}", axis_words(&chosen), reason.en),
         ));
     }
     if e.candidates.iter().any(|c| same(&c.axes, &given)) {
@@ -177,7 +168,7 @@ pub(super) fn check_value(answer: &Answer, value: f64, letter: char) -> Verdict 
     let rest = upper.strip_prefix(prefix).unwrap_or(&upper);
     let rest = rest.strip_prefix(letter).unwrap_or(rest);
     let rest = rest.strip_prefix('=').unwrap_or(rest);
-    let Some(v) = number(rest) else {
+    let Some(v) = parse_input(rest) else {
         return Verdict::Unreadable(texts(
             format!(
                 "Eingabe nicht lesbar: „{}“ – bitte eine Zahl eingeben, z. B. +45 oder 12,5",
@@ -189,12 +180,12 @@ pub(super) fn check_value(answer: &Answer, value: f64, letter: char) -> Verdict 
     let shown = if letter == 'Q' { "Q120".to_owned() } else { letter.to_string() };
     if (v - value).abs() <= VALUE_TOL {
         return Verdict::Correct(texts(
-            format!("Richtig: {shown} = {}", super::fmt_value(value)),
-            format!("Correct: {shown} = {}", super::fmt_value(value)),
+            format!("Richtig: {shown} = {}", super::expected::fmt_value(value)),
+            format!("Correct: {shown} = {}", super::expected::fmt_value(value)),
         ));
     }
     if value.abs() > VALUE_TOL && (v + value).abs() <= VALUE_TOL {
-        return Verdict::Wrong { hint: Hint::RightHand, text: super::right_hand_hint() };
+        return Verdict::Wrong { hint: Hint::RightHand, text: super::orientation::right_hand_hint() };
     }
     Verdict::Wrong {
         hint: Hint::Wrong,

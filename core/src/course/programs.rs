@@ -2,14 +2,13 @@
 //! through the simulator ([`run`]), and the seed's two SEQ/SYM tables as experiments
 //! ([`seed_rows`], seed 002 / DOMAIN.md oracles 13–27).
 
-use super::{
-    ChooseKind, Exercise, Rng, RunKind, Spec, TILTS, axes_exercise, fmt_value, limit_a, selection_text,
-    texts, transform_text, value_exercise,
-};
+use super::expected::{axes_exercise, fmt_value, value_exercise};
+use super::orientation::TILTS;
+use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def, texts};
 use crate::axes::AxisValues;
 use crate::machine::{Limits, Machine};
-use crate::plane::{PlaneBlock, PlaneDef, Positioning, RotaryAxis, Selection, Sign, TransformMode};
-use crate::solve::{SolveOptions, axis_word, fmt_deg};
+use crate::plane::{PlaneBlock, RotaryAxis, Selection, Sign, TransformMode};
+use crate::solve::{SolveOptions, axis_words, fmt_deg};
 
 const SELECTIONS: [Selection; 4] = [
     Selection::Seq(Sign::Plus),
@@ -33,12 +32,11 @@ pub struct SeedRow {
 }
 
 fn spatial_block(spa: f64, spb: f64, spc: f64, selection: Option<Selection>) -> PlaneBlock<f64> {
-    PlaneBlock {
-        def: PlaneDef::Spatial { spa, spb, spc },
-        positioning: Some(Positioning::Turn { move_back: None, feed: Some(crate::plane::Feed::Max) }),
-        selection,
-        transform: None,
-    }
+    PlaneBlock { selection, ..plane(spatial_def([spa, spb, spc]), Some(TURN_FMAX)) }
+}
+
+fn limit_a(min: f64, max: f64) -> (RotaryAxis, Limits) {
+    (RotaryAxis::A, Limits { min, max })
 }
 
 /// The seed's two tables (seed 002): C table on A tilting table with `SPB+45`, rows 13–22;
@@ -79,22 +77,6 @@ pub fn seed_rows() -> Vec<SeedRow> {
         ba(26, seq(Sign::Minus)),
         ba(27, None),
     ]
-}
-
-fn words(a: &AxisValues) -> String {
-    a.iter().map(|(ax, v)| axis_word(ax, v)).collect::<Vec<_>>().join(" ")
-}
-
-fn block_text(b: &PlaneBlock<f64>) -> String {
-    let PlaneDef::Spatial { spa, spb, spc } = b.def else { return String::new() };
-    format!(
-        "PLANE SPATIAL SPA{} SPB{} SPC{} TURN FMAX{}{}",
-        fmt_deg(spa),
-        fmt_deg(spb),
-        fmt_deg(spc),
-        selection_text(b.selection),
-        transform_text(b.transform)
-    )
 }
 
 pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise {
@@ -170,13 +152,13 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
         format!(
             "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „Winkel nicht erlaubt“)",
             machine.name.de,
-            words(&start),
+            axis_words(&start),
             example(&machine)
         ),
         format!(
             "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"Angle not permitted\")",
             machine.name.en,
-            words(&start),
+            axis_words(&start),
             example(&machine)
         ),
     );
@@ -184,7 +166,7 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
     let mut ex = axes_exercise(Spec::Choose(kind), variant, machine, &block, &opts, prompt);
     let program = format!(
         "0 BEGIN PGM AUFGABE MM\n1 L {} R0 FMAX\n2 {text}\n3 END PGM AUFGABE MM\n",
-        words(&opts.start)
+        axis_words(&opts.start)
     );
     ex.program = Some((program, machine_id));
     ex
@@ -192,7 +174,7 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
 
 /// `A+0 C+0`: the machine's axes in the control's order A, B, C.
 fn example(machine: &Machine) -> String {
-    words(&machine.joints().iter().fold(AxisValues::default(), |a, j| a.with(j.axis, 0.0)))
+    axis_words(&machine.joints().iter().fold(AxisValues::default(), |a, j| a.with(j.axis, 0.0)))
 }
 
 const HEADER: &str = "0 BEGIN PGM KURS MM

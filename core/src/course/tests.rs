@@ -3,6 +3,8 @@
 //! computed independently (DOMAIN.md numbers, hand-derived matrices).
 
 use super::*;
+use crate::plane::RotaryAxis;
+use crate::solve::SolveOptions;
 
 const ALL: [Spec; 20] = [
     Spec::Lean,

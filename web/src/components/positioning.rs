@@ -25,9 +25,10 @@ pub fn positioning_compare(props: &PositioningProps) -> Html {
     let l = props.lang;
     // Each press of "again" hands new state pointers to the panes, which replays the motion.
     let replay = use_state(|| 0_u32);
+    // The machine and the three simulations, once per set of programs.
     let panes = use_memo(props.programs, |programs| {
         let machine = Machine::builtin("ac-table").ok().map(Rc::new);
-        programs
+        let runs = programs
             .iter()
             .map(|text| {
                 let doc = Rc::new(Document::new((*text).to_owned()));
@@ -36,9 +37,10 @@ pub fn positioning_compare(props: &PositioningProps) -> Html {
                     .map(|m| SimRef(Rc::new(simulate(&doc.program, m, &SimOptions::default()))));
                 (doc, sim)
             })
-            .collect::<Vec<_>>()
+            .collect::<Vec<_>>();
+        (machine, runs)
     });
-    let machine = Machine::builtin("ac-table").ok().map(Rc::new);
+    let machine = &panes.0;
     let again = {
         let replay = replay.clone();
         Callback::from(move |_: MouseEvent| replay.set(*replay + 1))
@@ -48,7 +50,7 @@ pub fn positioning_compare(props: &PositioningProps) -> Html {
         <div class="positioning" data-testid="positioning">
             <button onclick={again} data-testid="replay">{ l.t("Schwenken noch einmal zeigen", "Show the swivel again") }</button>
             <div class="positioning-panes">
-                { for panes.iter().zip(names).map(|((doc, sim), name)| {
+                { for panes.1.iter().zip(names).map(|((doc, sim), name)| {
                     let index = doc.program.blocks.iter().position(|b| b.number == Some(props.block));
                     let state = sim.as_ref().zip(index).and_then(|(s, i)| {
                         let step = s.0.first_step.get(i).copied().flatten()?;

@@ -1,0 +1,401 @@
+//! Exercises answered with a PLANE block: the target is a rotation R, and an answer counts when
+//! its block (any PLANE form) gives the same R. The same block with angle signs flipped, or the
+//! tool tilted the mirrored way, is a sign error and gets the right-hand rule (seed 000 §2.2).
+
+use glam::DMat3;
+
+use super::{
+    Answer, AnswerKind, Check, Exercise, Hint, ORIENTATION_TOL, Rng, Spec, TURN_FMAX, VALUE_TOL, Verdict,
+    block_text, euler_def, plane, spatial_def, texts,
+};
+use crate::machine::Texts;
+use crate::orientation::{self, Context};
+use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning};
+use crate::solve::fmt_deg;
+use crate::{BlockBody, parse};
+
+/// What an orientation answer must also get right.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Require {
+    Nothing,
+    TurnFmax,
+    Move { dist: f64, feed: f64 },
+}
+
+impl Require {
+    /// The positioning the solution writes.
+    fn positioning(self) -> Positioning<f64> {
+        match self {
+            Require::Nothing | Require::TurnFmax => TURN_FMAX,
+            Require::Move { dist, feed } => {
+                Positioning::Move { dist: Some(dist), feed: Some(Feed::Value(feed)) }
+            }
+        }
+    }
+}
+
+/// The four directions a tool can lean in, with the spatial angles that do it:
+/// Ry(+θ)·ez = (sin θ, 0, cos θ), Rx(+θ)·ez = (0, −sin θ, cos θ) (DOMAIN.md §2.1).
+#[derive(Debug, Clone, Copy)]
+enum Toward {
+    PlusX,
+    MinusX,
+    PlusY,
+    MinusY,
+}
+
+impl Toward {
+    fn name(self) -> &'static str {
+        match self {
+            Toward::PlusX => "+X",
+            Toward::MinusX => "−X",
+            Toward::PlusY => "+Y",
+            Toward::MinusY => "−Y",
+        }
+    }
+
+    /// `[SPA, SPB, SPC]` that lean the tool by `theta` towards this direction.
+    fn spatial(self, theta: f64) -> [f64; 3] {
+        match self {
+            Toward::PlusX => [0.0, theta, 0.0],
+            Toward::MinusX => [0.0, -theta, 0.0],
+            Toward::PlusY => [-theta, 0.0, 0.0],
+            Toward::MinusY => [theta, 0.0, 0.0],
+        }
+    }
+}
+
+const DIRECTIONS: [Toward; 4] = [Toward::PlusX, Toward::MinusX, Toward::PlusY, Toward::MinusY];
+pub(super) const TILTS: [f64; 10] = [10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 60.0];
+
+fn orientation_exercise(
+    spec: Spec,
+    variant: u32,
+    prompt: Texts,
+    spatial: [f64; 3],
+    require: Require,
+    not_euler: bool,
+) -> Exercise {
+    let target = orientation::spatial(spatial[0], spatial[1], spatial[2]);
+    let positioning = Some(require.positioning());
+    // The typical mistake: the first non-zero angle with the wrong sign.
+    let mut flipped = spatial;
+    if let Some(v) = flipped.iter_mut().find(|v| v.abs() > 1e-9) {
+        *v = -*v;
+    }
+    Exercise {
+        spec,
+        variant,
+        prompt,
+        answer_kind: AnswerKind::PlaneBlock,
+        solution: block_text(&plane(spatial_def(spatial), positioning)),
+        equivalent: block_text(&plane(euler_def(orientation::to_euler(&target)), positioning)),
+        typical_mistake: (
+            Answer::Text(block_text(&plane(spatial_def(flipped), positioning))),
+            Hint::RightHand,
+        ),
+        program: None,
+        check: Check::Orientation { target, spatial, require, not_euler },
+    }
+}
+
+pub(super) fn lean(spec: Spec, variant: u32, rng: &mut Rng) -> Exercise {
+    let (toward, theta) =
+        if variant == 0 { (Toward::PlusX, 15.0) } else { (rng.pick(&DIRECTIONS), rng.pick(&TILTS)) };
+    let t = fmt_deg(theta).trim_start_matches('+').to_owned();
+    let d = toward.name();
+    let (require, de_tail, en_tail) = match spec {
+        Spec::DialogTurn => (
+            Require::TurnFmax,
+            " Die Drehachsen sollen mit TURN im Eilgang (FMAX) schwenken.",
+            " The rotary axes are to swivel with TURN at rapid traverse (FMAX).",
+        ),
+        Spec::DialogMove => (
+            Require::Move { dist: 50.0, feed: 1000.0 },
+            " Schwenken mit MOVE, Drehpunkt 50 mm über der Werkzeugspitze (DIST 50), F 1000.",
+            " Swivel with MOVE, centre of rotation 50 mm above the tool tip (DIST 50), F 1000.",
+        ),
+        _ => (Require::Nothing, "", ""),
+    };
+    let prompt = texts(
+        format!(
+            "Die Fläche ist so geneigt, dass das Werkzeug senkrecht auf ihr um {t}° in Richtung {d} gekippt steht (die Ebene wird nicht zusätzlich um Z gedreht). Gib den PLANE-Satz ein.{de_tail}"
+        ),
+        format!(
+            "The face is inclined so that a tool perpendicular to it leans {t}° towards {d} (the plane is not turned about Z as well). Enter the PLANE block.{en_tail}"
+        ),
+    );
+    orientation_exercise(spec, variant, prompt, toward.spatial(theta), require, false)
+}
+
+pub(super) fn turn_about_z(variant: u32, rng: &mut Rng) -> Exercise {
+    let phi = if variant == 0 { 30.0 } else { rng.pick(&[15.0, 20.0, 30.0, 45.0, 60.0, 90.0]) };
+    let toward_plus_y = variant == 0 || rng.pick(&[true, false]);
+    let (dir, spc) = if toward_plus_y { ("+Y", phi) } else { ("−Y", -phi) };
+    let t = fmt_deg(phi).trim_start_matches('+').to_owned();
+    let prompt = texts(
+        format!(
+            "Das Werkzeug bleibt senkrecht (Z). Nur die Bearbeitungsebene soll um {t}° um die Z-Achse gedreht werden, so dass ihre X-Achse in Richtung {dir} dreht. Gib den PLANE-Satz ein."
+        ),
+        format!(
+            "The tool stays vertical (Z). Only the working plane is to turn {t}° about the Z axis, so that its X axis turns towards {dir}. Enter the PLANE block."
+        ),
+    );
+    orientation_exercise(Spec::TurnAboutZ, variant, prompt, [0.0, 0.0, spc], Require::Nothing, false)
+}
+
+pub(super) fn lean_and_turn(variant: u32, rng: &mut Rng) -> Exercise {
+    let (theta, phi) = if variant == 0 {
+        (30.0, 90.0)
+    } else {
+        (rng.pick(&TILTS), rng.pick(&[30.0, 45.0, 60.0, 90.0, -90.0]))
+    };
+    let spatial = [0.0, theta, phi];
+    let r = orientation::spatial(0.0, theta, phi);
+    let t = orientation::tool_axis(&r);
+    let prompt = texts(
+        format!(
+            "Erst um Y um {} kippen (SPB), dann um Z um {} drehen (SPC). Die Werkzeugachse zeigt danach in Richtung ({:.4}, {:.4}, {:.4}). Gib den PLANE-Satz ein – SPATIAL oder eine andere Form.",
+            fmt_deg(theta),
+            fmt_deg(phi),
+            t.x + 0.0,
+            t.y + 0.0,
+            t.z + 0.0
+        ),
+        format!(
+            "First tilt {} about Y (SPB), then turn {} about Z (SPC). The tool axis then points along ({:.4}, {:.4}, {:.4}). Enter the PLANE block – SPATIAL or another form.",
+            fmt_deg(theta),
+            fmt_deg(phi),
+            t.x + 0.0,
+            t.y + 0.0,
+            t.z + 0.0
+        ),
+    );
+    orientation_exercise(Spec::LeanAndTurn, variant, prompt, spatial, Require::Nothing, false)
+}
+
+pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
+    let e = if variant == 0 {
+        [90.0, 45.0, 0.0]
+    } else {
+        [
+            rng.pick(&[-90.0, 0.0, 45.0, 90.0, 180.0]),
+            rng.pick(&[20.0, 30.0, 45.0, 60.0]),
+            rng.pick(&[0.0, 90.0, 270.0]),
+        ]
+    };
+    let r = orientation::euler(e[0], e[1], e[2]);
+    let spatial = orientation::to_spatial(&r);
+    let given = block_text(&plane(euler_def(e), None));
+    let prompt = texts(
+        format!("Gegeben: {given}. Gib dieselbe Lage als anderen PLANE-Satz ein (z. B. PLANE SPATIAL)."),
+        format!("Given: {given}. Enter the same orientation as another PLANE block (e.g. PLANE SPATIAL)."),
+    );
+    let mut ex = orientation_exercise(Spec::EulerToOther, variant, prompt, spatial, Require::Nothing, true);
+    // The other equivalent form: VECTOR (base = tilted X, normal = tool axis).
+    let vector = PlaneDef::Vector { base: r.x_axis.to_array(), normal: r.z_axis.to_array() };
+    ex.equivalent = block_text(&plane(vector, Some(TURN_FMAX)));
+    ex
+}
+
+pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
+    // Seed 001: chamfers with EULNU 45 at EULPR 0, 90, 180 and 270 (written −90, the input
+    // range is −180…+180: unconfirmed::EULPR_RANGE).
+    let pr = if variant == 0 { 0.0 } else { rng.pick(&[0.0, 90.0, 180.0, -90.0]) };
+    let r = orientation::euler(pr, 45.0, 0.0);
+    let t = orientation::tool_axis(&r);
+    let side = if t.y < -0.5 {
+        "−Y"
+    } else if t.y > 0.5 {
+        "+Y"
+    } else if t.x > 0.5 {
+        "+X"
+    } else {
+        "−X"
+    };
+    let prompt = texts(
+        format!(
+            "Fase unter 45° an der Seite {side} des Rohteils: das Werkzeug steht senkrecht auf der Fase und kippt 45° in Richtung {side}. Die X-Achse der Bearbeitungsebene liegt entlang der Kante (EULROT 0). Gib den PLANE-Satz ein – EULER oder eine andere Form."
+        ),
+        format!(
+            "A 45° chamfer on the {side} side of the blank: the tool is perpendicular to the chamfer and leans 45° towards {side}. The working plane's X axis runs along the edge (EULROT 0). Enter the PLANE block – EULER or another form."
+        ),
+    );
+    let spatial = orientation::to_spatial(&r);
+    let mut ex = orientation_exercise(Spec::Chamfer, variant, prompt, spatial, Require::Nothing, false);
+    // Here the EULER block is the natural answer; SPATIAL the equivalent one.
+    ex.solution = block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX)));
+    ex.equivalent = block_text(&plane(spatial_def(spatial), Some(TURN_FMAX)));
+    // The typical mistake: the chamfer on the opposite side (EULPR off by 180°). It tilts the
+    // tool the other way, so it gets the right-hand hint.
+    let wrong_pr = if pr > 0.0 { pr - 180.0 } else { pr + 180.0 };
+    let mistake = block_text(&plane(euler_def([wrong_pr, 45.0, 0.0]), Some(TURN_FMAX)));
+    ex.typical_mistake = (Answer::Text(mistake), Hint::RightHand);
+    ex
+}
+
+fn close(a: &DMat3, b: &DMat3) -> bool {
+    (0..3).all(|c| (a.col(c) - b.col(c)).abs().max_element() < ORIENTATION_TOL)
+}
+
+/// The single PLANE block of an answer, with numbers only.
+fn answer_block(answer: &Answer) -> Result<PlaneBlock<f64>, Texts> {
+    let Answer::Text(text) = answer else {
+        return Err(texts("Hier ist ein PLANE-Satz gefragt", "A PLANE block is asked for here"));
+    };
+    let (program, diags) = parse(text.trim());
+    if let Some(d) = diags.iter().find(|d| d.is_error()) {
+        return Err(texts(d.message(crate::Lang::De), d.message(crate::Lang::En)));
+    }
+    let plane = program.blocks.iter().find_map(|b| match &b.body {
+        BlockBody::Plane(p) => Some(p),
+        _ => None,
+    });
+    let Some(plane) = plane else {
+        return Err(texts(
+            "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
+            "No PLANE block found (it starts with PLANE)",
+        ));
+    };
+    plane.try_map(|v| match v {
+        crate::plane::Value::Number(x) => Ok(*x),
+        crate::plane::Value::Param { index, .. } => Err(texts(
+            format!("Q{index} hat hier keinen Wert: bitte Zahlen eingeben"),
+            format!("Q{index} has no value here: please enter numbers"),
+        )),
+    })
+}
+
+pub(super) fn check(
+    answer: &Answer,
+    target: &DMat3,
+    spatial: [f64; 3],
+    require: Require,
+    not_euler: bool,
+) -> Verdict {
+    let block = match answer_block(answer) {
+        Ok(b) => b,
+        Err(t) => return Verdict::Unreadable(t),
+    };
+    if matches!(block.def, PlaneDef::Reset | PlaneDef::Axial { .. } | PlaneDef::Relativ { .. }) {
+        return Verdict::Wrong {
+            hint: Hint::Wrong,
+            text: texts(
+                "Gefragt ist eine Lage im Raum: PLANE SPATIAL, EULER, PROJECTED, VECTOR oder POINTS",
+                "An orientation in space is asked for: PLANE SPATIAL, EULER, PROJECTED, VECTOR or POINTS",
+            ),
+        };
+    }
+    if not_euler && matches!(block.def, PlaneDef::Euler { .. }) {
+        return Verdict::Wrong {
+            hint: Hint::SameForm,
+            text: texts(
+                "Das ist wieder PLANE EULER – gefragt ist eine andere Form, z. B. PLANE SPATIAL",
+                "That is PLANE EULER again – another form is asked for, e.g. PLANE SPATIAL",
+            ),
+        };
+    }
+    let r = match orientation::orientation(&block.def, &Context::default()) {
+        Ok(r) => r,
+        Err(e) => {
+            let (de, en) = e.messages();
+            return Verdict::Unreadable(texts(de, en));
+        }
+    };
+    if close(&r, target) {
+        return match positioning_problem(&block, require) {
+            None => Verdict::Correct(texts(
+                format!(
+                    "Richtig. Dieselbe Lage als SPATIAL: {}",
+                    block_text(&plane(spatial_def(spatial), None))
+                ),
+                format!(
+                    "Correct. The same orientation as SPATIAL: {}",
+                    block_text(&plane(spatial_def(spatial), None))
+                ),
+            )),
+            Some(text) => Verdict::Wrong { hint: Hint::Positioning, text },
+        };
+    }
+    if sign_flips(spatial).any(|s| close(&r, &orientation::spatial(s[0], s[1], s[2]))) {
+        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint() };
+    }
+    let (t, want) = (orientation::tool_axis(&r), orientation::tool_axis(target));
+    if (t - want).abs().max_element() < ORIENTATION_TOL {
+        let gamma = target.x_axis.angle_between(r.x_axis).to_degrees();
+        return Verdict::Wrong {
+            hint: Hint::TurnedAboutToolAxis,
+            text: texts(
+                format!(
+                    "Die Werkzeugachse stimmt, aber die Bearbeitungsebene ist um {gamma:.1}° um die Werkzeugachse verdreht"
+                ),
+                format!(
+                    "The tool axis is right, but the working plane is turned {gamma:.1}° about the tool axis"
+                ),
+            ),
+        };
+    }
+    // The tilt the other way round: the tool axis mirrored about Z (a sign or a side error).
+    let mirrored = glam::DVec3::new(-want.x, -want.y, want.z);
+    if (t - mirrored).abs().max_element() < ORIENTATION_TOL {
+        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint() };
+    }
+    Verdict::Wrong {
+        hint: Hint::Wrong,
+        text: texts(
+            "Noch nicht: stell dir die Fläche vor und kippe die Ebene Schritt für Schritt – erst um X (SPA), dann um Y (SPB), dann um Z (SPC)",
+            "Not yet: picture the face and tilt the plane step by step – first about X (SPA), then about Y (SPB), then about Z (SPC)",
+        ),
+    }
+}
+
+/// Every variant of `spatial` with at least one non-zero angle's sign flipped.
+fn sign_flips(spatial: [f64; 3]) -> impl Iterator<Item = [f64; 3]> {
+    (1_u8..8).filter_map(move |mask| {
+        let mut s = spatial;
+        for (i, v) in s.iter_mut().enumerate() {
+            if mask & (1 << i) != 0 {
+                if v.abs() < 1e-9 {
+                    return None;
+                }
+                *v = -*v;
+            }
+        }
+        Some(s)
+    })
+}
+
+/// The right-hand rule, seed 000 §2.2.
+pub(super) fn right_hand_hint() -> Texts {
+    texts(
+        "Vorzeichen prüfen – Rechte-Hand-Regel: Daumen zeigt in die positive Achsrichtung, die gekrümmten Finger zeigen die positive Drehrichtung. SPB+ kippt das Werkzeug nach +X, SPA+ nach −Y.",
+        "Check the sign – right-hand rule: the thumb points along the positive axis, the curled fingers show the positive direction of rotation. SPB+ tilts the tool towards +X, SPA+ towards −Y.",
+    )
+}
+
+fn positioning_problem(block: &PlaneBlock<f64>, require: Require) -> Option<Texts> {
+    match (require, block.positioning) {
+        (Require::Nothing, _) => None,
+        (Require::TurnFmax, Some(Positioning::Turn { feed: Some(Feed::Max), .. })) => None,
+        (Require::TurnFmax, _) => Some(texts(
+            "Die Lage stimmt. Es fehlt das Positionierverhalten: TURN, und als Vorschub FMAX",
+            "The orientation is right. The positioning is missing: TURN, with FMAX as the feed",
+        )),
+        (
+            Require::Move { dist, feed },
+            Some(Positioning::Move { dist: Some(d), feed: Some(Feed::Value(f)) }),
+        ) if (d - dist).abs() < VALUE_TOL && (f - feed).abs() < VALUE_TOL => None,
+        (Require::Move { dist, feed }, _) => Some(texts(
+            format!(
+                "Die Lage stimmt. Positionierverhalten prüfen: MOVE mit DIST{} und F{}",
+                fmt_deg(dist),
+                fmt_deg(feed)
+            ),
+            format!(
+                "The orientation is right. Check the positioning: MOVE with DIST{} and F{}",
+                fmt_deg(dist),
+                fmt_deg(feed)
+            ),
+        )),
+    }
+}
