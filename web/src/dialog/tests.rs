@@ -1,5 +1,7 @@
 //! The dialog, key by key, against the blocks the control would write.
 
+use schwenkbar_core::plane::PlaneDef;
+
 use super::*;
 
 /// Types `text` and presses ENT.

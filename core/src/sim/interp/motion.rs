@@ -1,0 +1,181 @@
+//! Axis motion: limit checks, the rotary path, feed rates and `L` blocks, each move recorded
+//! as segments the 3D view animates.
+
+use super::*;
+
+impl Interp {
+    pub(super) fn check_linear(&self, cx: &Cx<'_>, l: DVec3) -> R<()> {
+        for (i, lim) in cx.machine.geometry.linear_limits.iter().enumerate() {
+            let v = l[i];
+            if !v.is_finite() || !lim.contains(v) {
+                return Err(SimErrorCode::LimitSwitch {
+                    axis: ['X', 'Y', 'Z'][i],
+                    value: v,
+                    min: lim.min,
+                    max: lim.max,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    pub(super) fn check_rotary(&self, cx: &Cx<'_>, rot: [f64; 2]) -> R<()> {
+        for (j, v) in cx.machine.joints().iter().zip(rot) {
+            if let Some(l) = j.limits.filter(|_| !j.endless)
+                && (!v.is_finite() || !l.contains(v))
+            {
+                return Err(SimErrorCode::RotaryLimit {
+                    axis: j.axis.letter(),
+                    value: v,
+                    min: l.min,
+                    max: l.max,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Rotary travel start → end: the short way for endless axes (solver swivels; `L` blocks
+    /// only with M126).
+    pub(super) fn rotary_delta(&self, cx: &Cx<'_>, end: [f64; 2], short: bool) -> [f64; 2] {
+        let j = cx.machine.joints();
+        let d = |k: usize| {
+            if short && j[k].endless {
+                short_delta(self.axes.rotary[k], end[k])
+            } else {
+                end[k] - self.axes.rotary[k]
+            }
+        };
+        [d(0), d(1)]
+    }
+
+    /// Moves to `target`, recording a segment when a full record is asked for.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn go(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        block: usize,
+        kind: SegmentKind,
+        target: MachineAxes,
+        rotary_delta: [f64; 2],
+        rate: Rate,
+        path: impl FnOnce() -> SegmentPath,
+    ) {
+        let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
+        if let Some(r) = rec.as_deref_mut().filter(|_| moves) {
+            let g = &cx.machine.geometry;
+            let (lin_rate, rot_rate) = match rate {
+                Rate::Feed(f) if f > 0.0 => (f, f),
+                _ => (g.rapid_linear, g.rapid_rotary),
+            };
+            let lin = (target.linear - self.axes.linear).length();
+            let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
+            // Duration (s) = distance / (feed per minute) · 60; the longer share wins (sim.rs doc).
+            let duration = (lin / lin_rate).max(rot / rot_rate) * 60.0;
+            r.segments.push(Segment {
+                step: self.step_count.saturating_sub(1),
+                block,
+                kind,
+                start: self.axes,
+                end: target,
+                rotary_delta,
+                duration: if duration.is_finite() { duration } else { 0.0 },
+                path: path(),
+            });
+        }
+        self.axes = target;
+    }
+
+    pub(super) fn rate(&mut self, feed: Option<&Feed<Value>>) -> R<Rate> {
+        Ok(match feed {
+            None => {
+                if self.feed > 0.0 {
+                    Rate::Feed(self.feed)
+                } else {
+                    Rate::Rapid
+                }
+            }
+            Some(Feed::Value(v)) => {
+                let f = self.value(v)?;
+                self.feed = f;
+                Rate::Feed(f)
+            }
+            Some(Feed::Max) => Rate::Rapid,
+            Some(Feed::Auto) => {
+                if self.tool.feed > 0.0 {
+                    Rate::Feed(self.tool.feed)
+                } else {
+                    Rate::Rapid
+                }
+            }
+        })
+    }
+
+    pub(super) fn line(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, line: &Line) -> R<()> {
+        self.spindle_m(&line.m);
+        let m91 = line.m.contains(&91);
+        let rate = self.rate(line.feed.as_ref())?;
+        let mut p = self.pos_i;
+        let mut l = self.axes.linear;
+        let mut rot = self.axes.rotary;
+        let (mut lin_prog, mut rot_prog) = (false, false);
+        for w in line.axes.iter() {
+            if let Some(i) = linear_index(w.axis) {
+                let v = self.value(&w.value)?;
+                lin_prog = true;
+                let slot = if m91 { &mut l[i] } else { &mut p[i] };
+                *slot = if w.incremental { *slot + v } else { v };
+            } else if let Some(ra) = rotary_of(w.axis) {
+                // The axis must exist before its value matters ("Achse nicht vorhanden" first).
+                let Some(k) = self.axes.letters.iter().position(|&x| x == ra) else {
+                    return Err(SimErrorCode::AxisNotOnMachine { axis: ra.letter() });
+                };
+                let v = self.value(&w.value)?;
+                rot[k] = if w.incremental { rot[k] + v } else { v };
+                rot_prog = true;
+            } else {
+                return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
+            }
+        }
+        if matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
+            note(rec, || {
+                (
+                    "Radiuskorrektur RL/RR nicht simuliert: Werkzeugmittelpunkt auf der Kontur".into(),
+                    "Radius compensation RL/RR not simulated: tool centre on the contour".into(),
+                )
+            });
+        }
+        if let Some(&m) = line.m.iter().find(|&&m| NOT_SIMULATED_M.contains(&m)) {
+            note(rec, || (format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
+        }
+        self.check_rotary(cx, rot)?;
+        if lin_prog && !m91 {
+            l = if rot_prog {
+                self.wcs_to_linear(rot).after(&self.tf.ics_to_wcs()).apply(p)
+            } else {
+                self.map.apply(p)
+            };
+        }
+        if lin_prog || rot_prog {
+            self.check_linear(cx, l)?;
+            let delta = self.rotary_delta(cx, rot, self.m126);
+            let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
+            let target = MachineAxes { linear: l, rotary: rot, letters: self.axes.letters };
+            self.go(cx, rec, idx, kind, target, delta, rate, || SegmentPath::Linear);
+            if rot_prog {
+                self.refresh();
+            }
+            if lin_prog && !m91 {
+                self.pos_i = p;
+            } else {
+                self.pos_i = self.map.inverse_orthogonal().apply(self.axes.linear);
+            }
+        }
+        if line.m.contains(&99) {
+            self.call_cycle(cx, rec, idx)?;
+        }
+        self.end_m(&line.m);
+        Ok(())
+    }
+}
