@@ -138,6 +138,8 @@ pub struct Dialog {
     pub rel_axis: RelAxis,
     /// Entered values of `function.fields()`, `None` = skipped with NO ENT (optional ones only).
     pub values: Vec<Option<Value>>,
+    /// PLANE AXIAL: which of A, B, C is incremental (`IA…`, typed with a leading `I`).
+    pub incremental: [bool; 3],
     pub positioning: Option<PosKind>,
     pub dist: Option<Value>,
     pub move_back: Option<MoveBack>,
@@ -170,6 +172,7 @@ impl Dialog {
             input: String::new(),
             rel_axis: RelAxis::Spa,
             values: Vec::new(),
+            incremental: [false; 3],
             positioning: None,
             dist: None,
             move_back: None,
@@ -352,10 +355,14 @@ impl Dialog {
                 self.goto(Step::Transform);
                 Outcome::Continue
             }
-            Step::Transform => self.no_ent(),
+            // ENT confirms what is chosen (a reopened block's COORD ROT stays); NO ENT clears it.
+            Step::Transform => self.finish(),
             Step::Value(_) | Step::Dist | Step::MoveBack | Step::Feed => {
                 if self.input.trim().is_empty() {
                     return if self.required() { self.fail(MSG_REQUIRED) } else { self.no_ent() };
+                }
+                if let Some(choice) = self.softkey_word() {
+                    return self.key(choice);
                 }
                 let value = match self.checked_value() {
                     Ok(v) => v,
@@ -421,9 +428,35 @@ impl Dialog {
         }
     }
 
+    /// `MAX`, `AUTO` typed (or prefilled by a reopened block) at a prompt whose softkeys they
+    /// name: the softkey itself. Without this a reopened `MB MAX` or `FMAX` would be dropped.
+    fn softkey_word(&self) -> Option<Key> {
+        let typed = self.input.trim().to_ascii_uppercase();
+        let word = typed.strip_prefix(self.word()).unwrap_or(&typed).trim_start();
+        match (self.step, word) {
+            (Step::MoveBack, "MAX") => Some(Key::MbMax),
+            (Step::Feed, "MAX") => Some(Key::FMax),
+            (Step::Feed, "AUTO") => Some(Key::FAuto),
+            _ => None,
+        }
+    }
+
+    /// What is typed as the parser reads it: a decimal comma (German `12,5`) is a point, and
+    /// at a PLANE AXIAL prompt a leading `I` (the control's I key) marks an incremental angle.
+    fn typed(&self) -> (String, bool) {
+        let text = self.input.trim().replace(',', ".");
+        match text.strip_prefix(['I', 'i']) {
+            Some(rest) if self.function == Function::Axial && matches!(self.step, Step::Value(_)) => {
+                (rest.trim_start().to_owned(), true)
+            }
+            _ => (text, false),
+        }
+    }
+
     /// Reads the typed value and checks it against the word's input range.
     fn checked_value(&self) -> Result<Value, Message> {
-        let value = parse_value(self.input.trim()).ok_or(MSG_INVALID)?;
+        let (typed, _) = self.typed();
+        let value = parse_value(&typed).ok_or(MSG_INVALID)?;
         if let (Value::Number(x), Some(range)) = (value, input_range(self.word())) {
             if !range.contains(x) {
                 return Err(if range.angle {
@@ -448,6 +481,10 @@ impl Dialog {
                     self.values.resize(i + 1, None);
                 }
                 self.values[i] = value;
+                let incremental = value.is_some() && self.typed().1;
+                if let Some(flag) = self.incremental.get_mut(i) {
+                    *flag = incremental;
+                }
             }
             Step::Dist => self.dist = value,
             Step::MoveBack => self.move_back = value.map(MoveBack::Dist),
@@ -498,18 +535,26 @@ impl Dialog {
         self.input = self.prefill();
     }
 
-    /// A reopened block shows its stored value at each prompt.
+    /// A reopened block shows its stored value at each prompt, the softkey choices by name
+    /// (`MAX`, `AUTO`), so that ENT or END keeps them (`softkey_word`).
     fn prefill(&self) -> String {
         let v = match self.step {
-            Step::Value(i) => self.values.get(i).copied().flatten(),
+            Step::Value(i) => {
+                let incremental = self.incremental.get(i).copied().unwrap_or(false);
+                let value = self.values.get(i).copied().flatten().map(value_text);
+                return value.map(|v| if incremental { format!("I{v}") } else { v }).unwrap_or_default();
+            }
             Step::Dist => self.dist,
             Step::MoveBack => match self.move_back {
                 Some(MoveBack::Dist(v)) => Some(v),
-                _ => None,
+                Some(MoveBack::Max) => return "MAX".to_owned(),
+                None => None,
             },
             Step::Feed => match self.feed {
                 Some(Feed::Value(v)) => Some(v),
-                _ => None,
+                Some(Feed::Max) => return "MAX".to_owned(),
+                Some(Feed::Auto) => return "AUTO".to_owned(),
+                None => None,
             },
             _ => None,
         };
@@ -568,9 +613,12 @@ fn value_text(v: Value) -> String {
     }
 }
 
-/// The control's `-/+` key: flips the sign of what is typed.
+/// The control's `-/+` key: flips the sign of what is typed (after an incremental `I`).
 fn toggle_sign(input: &str) -> String {
     let s = input.trim();
+    if let Some(rest) = s.strip_prefix(['I', 'i']) {
+        return format!("I{}", toggle_sign(rest));
+    }
     if let Some(rest) = s.strip_prefix('-') {
         rest.to_owned()
     } else if let Some(rest) = s.strip_prefix('+') {

@@ -25,7 +25,12 @@ impl Dialog {
             }
             PlaneDef::Axial { axes } => [RotaryAxis::A, RotaryAxis::B, RotaryAxis::C]
                 .iter()
-                .map(|letter| axes.iter().find(|a| a.axis == *letter && !a.incremental).map(|a| a.value))
+                .enumerate()
+                .map(|(i, letter)| {
+                    let angle = axes.iter().find(|a| a.axis == *letter)?;
+                    d.incremental[i] = angle.incremental;
+                    Some(angle.value)
+                })
                 .collect(),
             PlaneDef::Reset => Vec::new(),
         };
@@ -73,7 +78,7 @@ impl Dialog {
                         self.values.get(i).copied().flatten().map(|value| AxialAngle {
                             axis,
                             value,
-                            incremental: false,
+                            incremental: self.incremental[i],
                         })
                     })
                     .collect();
@@ -105,7 +110,7 @@ impl Dialog {
             Some(Value::Number(x)) => x,
             _ => 0.0,
         };
-        let typed = parse_value(self.input.trim());
+        let typed = parse_value(&self.typed().0);
         let get = |i: usize| {
             if self.step == Step::Value(i) && typed.is_some() {
                 number(typed)

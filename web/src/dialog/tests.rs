@@ -203,3 +203,185 @@ fn preview_follows_the_value_being_typed() {
     d.key(Key::Char('0'));
     assert_eq!(d.preview(), Some(PlaneDef::Spatial { spa: 0.0, spb: 30.0, spc: 0.0 }));
 }
+
+/// The block of a one-line PLANE text, as the parser reads it.
+fn parsed(text: &str) -> schwenkbar_core::plane::PlaneBlock {
+    match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(|b| b.body) {
+        Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
+        other => panic!("{text}: {other:?}"),
+    }
+}
+
+/// The block written by reopening `text` and pressing END at once.
+fn reopened_end(text: &str) -> String {
+    finished(Dialog::reopen(&parsed(text)).key(Key::End))
+}
+
+/// The block written by reopening `text` and walking through every prompt with ENT.
+fn reopened_ent(text: &str) -> String {
+    let mut d = Dialog::reopen(&parsed(text));
+    for _ in 0..40 {
+        if let Outcome::Finished(t) = d.key(Key::Ent) {
+            return t;
+        }
+        assert_eq!(d.message, None, "{text}: ENT at {:?}", d.step);
+    }
+    panic!("{text}: ENT never finished the block")
+}
+
+#[test]
+fn reopening_keeps_fmax_mb_max_f_auto_and_the_options() {
+    // Issue 12, defect 1: these words were dropped on ENT … END.
+    for text in [
+        "PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX",
+        "PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN MB+50 FMAX SYM+ COORD ROT",
+        "PLANE EULER EULPR+0 EULNU+45 EULROT+0 TURN MB MAX F AUTO SEQ- TABLE ROT",
+        "PLANE RESET MOVE DIST+20 F AUTO",
+        "PLANE AXIAL IA+10 C-90 TURN FMAX",
+    ] {
+        assert_eq!(parsed(&reopened_end(text)), parsed(text), "END after reopening {text}");
+        assert_eq!(parsed(&reopened_ent(text)), parsed(text), "ENT through {text}");
+    }
+}
+
+#[test]
+fn softkey_choices_can_be_typed_and_are_shown_by_name() {
+    let mut d = Dialog::reopen(&parsed("PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN MB MAX FMAX"));
+    for _ in 0..4 {
+        d.key(Key::Ent);
+    }
+    assert_eq!((d.step, d.input.as_str()), (Step::MoveBack, "MAX"));
+    d.key(Key::Ent);
+    assert_eq!((d.step, d.input.as_str()), (Step::Feed, "MAX"));
+    d.key(Key::NoEnt);
+    assert_eq!(d.feed, None, "NO ENT takes the feed out");
+}
+
+#[test]
+fn decimal_comma_is_accepted_like_a_point() {
+    let mut d = Dialog::new(Function::Spatial);
+    enter(&mut d, "12,5");
+    assert_eq!(d.message, None);
+    assert_eq!(d.values.first().copied().flatten(), Some(Value::Number(12.5)));
+    d.key(Key::Char('7'));
+    d.key(Key::Char(','));
+    d.key(Key::Char('5'));
+    assert_eq!(d.preview(), Some(PlaneDef::Spatial { spa: 12.5, spb: 7.5, spc: 0.0 }));
+}
+
+mod round_trip {
+    use proptest::prelude::*;
+    use schwenkbar_core::format::plane_text;
+    use schwenkbar_core::plane::{
+        AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign,
+        TransformMode, Value, input_range,
+    };
+
+    use super::{parsed, reopened_end, reopened_ent};
+
+    /// A value the dialog accepts for `word`: a number inside its input range (4 decimals, as
+    /// the control writes them) or a Q parameter.
+    fn value(word: &'static str) -> BoxedStrategy<Value> {
+        let r = input_range(word).expect("a word with a range");
+        let (lo, hi) = ((r.min * 10_000.0) as i64, (r.max * 10_000.0) as i64);
+        prop_oneof![
+            4 => (lo..=hi).prop_map(|n| Value::Number(n as f64 / 10_000.0)),
+            1 => (1u32..2000, any::<bool>()).prop_map(|(index, negate)| Value::Param { index, negate }),
+        ]
+        .boxed()
+    }
+
+    fn three(words: [&'static str; 3]) -> impl Strategy<Value = [Value; 3]> {
+        (value(words[0]), value(words[1]), value(words[2])).prop_map(|(a, b, c)| [a, b, c])
+    }
+
+    fn def() -> impl Strategy<Value = PlaneDef> {
+        let axis = prop::sample::select(vec![RelAxis::Spa, RelAxis::Spb, RelAxis::Spc]);
+        let axial = prop::collection::btree_map(
+            prop::sample::select(vec![RotaryAxis::A, RotaryAxis::B, RotaryAxis::C]),
+            (value("A"), any::<bool>()),
+            1..=3,
+        )
+        .prop_map(|m| PlaneDef::Axial {
+            axes: m
+                .into_iter()
+                .map(|(axis, (value, incremental))| AxialAngle { axis, value, incremental })
+                .collect(),
+        });
+        prop_oneof![
+            three(["SPA", "SPB", "SPC"]).prop_map(|[spa, spb, spc]| PlaneDef::Spatial { spa, spb, spc }),
+            three(["PROPR", "PROMIN", "ROT"]).prop_map(|[propr, promin, rot]| PlaneDef::Projected {
+                propr,
+                promin,
+                rot
+            }),
+            three(["EULPR", "EULNU", "EULROT"]).prop_map(|[eulpr, eulnu, eulrot]| PlaneDef::Euler {
+                eulpr,
+                eulnu,
+                eulrot
+            }),
+            (three(["BX", "BY", "BZ"]), three(["NX", "NY", "NZ"]))
+                .prop_map(|(base, normal)| PlaneDef::Vector { base, normal }),
+            (three(["P1X", "P1Y", "P1Z"]), three(["P2X", "P2Y", "P2Z"]), three(["P3X", "P3Y", "P3Z"]))
+                .prop_map(|(p1, p2, p3)| PlaneDef::Points { p1, p2, p3 }),
+            (axis, value("SPA")).prop_map(|(axis, angle)| PlaneDef::Relativ { axis, angle }),
+            axial,
+            Just(PlaneDef::Reset),
+        ]
+    }
+
+    /// DIST, MB and F are lengths and feeds: the dialog takes no negative ones.
+    fn amount() -> impl Strategy<Value = Value> {
+        prop_oneof![
+            (0i64..=5_000_000).prop_map(|n| Value::Number(n as f64 / 10_000.0)),
+            (1u32..2000).prop_map(|index| Value::Param { index, negate: false }),
+        ]
+    }
+
+    fn positioning() -> impl Strategy<Value = Positioning> {
+        let feed =
+            prop::option::of(prop_oneof![Just(Feed::Max), Just(Feed::Auto), amount().prop_map(Feed::Value)]);
+        let move_back = prop::option::of(prop_oneof![Just(MoveBack::Max), amount().prop_map(MoveBack::Dist)]);
+        prop_oneof![
+            Just(Positioning::Stay),
+            (prop::option::of(amount()), feed.clone())
+                .prop_map(|(dist, feed)| Positioning::Move { dist, feed }),
+            (move_back, feed).prop_map(|(move_back, feed)| Positioning::Turn { move_back, feed }),
+        ]
+    }
+
+    fn block() -> impl Strategy<Value = PlaneBlock> {
+        let sign = prop::sample::select(vec![Sign::Plus, Sign::Minus]);
+        let selection = prop::option::of(prop_oneof![
+            sign.clone().prop_map(Selection::Seq),
+            sign.prop_map(Selection::Sym)
+        ]);
+        let transform =
+            prop::option::of(prop::sample::select(vec![TransformMode::CoordRot, TransformMode::TableRot]));
+        (def(), positioning(), selection, transform).prop_map(|(def, p, selection, transform)| {
+            // AXIAL and RESET have no SEQ/SYM and no COORD ROT/TABLE ROT (DOMAIN.md §2.7).
+            let options = !matches!(def, PlaneDef::Axial { .. } | PlaneDef::Reset);
+            PlaneBlock {
+                def,
+                positioning: Some(p),
+                selection: selection.filter(|_| options),
+                transform: transform.filter(|_| options),
+            }
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+
+        /// Reopening a block and closing it without changes — at once with END, or prompt by
+        /// prompt with ENT — writes a block the parser reads as the same block.
+        #[test]
+        fn reopen_then_close_gives_back_an_equivalent_block(b in block()) {
+            let text = plane_text(&b);
+            let original = parsed(&text);
+            prop_assert_eq!(&original, &b, "the generated block is what its text says");
+            prop_assert_eq!(parsed(&reopened_end(&text)), original.clone(), "END: {}", text);
+            prop_assert_eq!(parsed(&reopened_ent(&text)), original, "ENT: {}", text);
+        }
+    }
+}
