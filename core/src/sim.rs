@@ -237,6 +237,42 @@ impl State {
     pub fn duration(&self) -> f64 {
         self.segments.iter().map(|s| s.duration).sum()
     }
+
+    /// The segment moving at `fraction` (0…1) of the block's motion time and how far into it;
+    /// `None` at the end of the motion or for a block without one.
+    #[must_use]
+    pub fn segment_at(&self, fraction: f64) -> Option<(&Segment, f64)> {
+        let total = self.duration();
+        if fraction.is_nan() || fraction >= 1.0 || total <= 0.0 {
+            return None;
+        }
+        let mut t = fraction.max(0.0) * total;
+        for seg in &self.segments {
+            if t <= seg.duration && seg.duration > 0.0 {
+                return Some((seg, t / seg.duration));
+            }
+            t -= seg.duration;
+        }
+        None
+    }
+
+    /// Every axis (REF) at `fraction` of the block's motion.
+    #[must_use]
+    pub fn axes_at(&self, fraction: f64) -> MachineAxes {
+        self.segment_at(fraction).map_or(self.axes, |(seg, f)| seg.axes_at(f))
+    }
+
+    /// The position display's IST at `fraction` of the block's motion: the block's end
+    /// position less the travel still to come, `tip_ics + Rᵀ·(tip(f) − tip_end)` with the tool
+    /// tip in W-CS and R the I-CS axes in W-CS. At the end it is `tip_ics`; during a straight
+    /// move it runs along the programmed line, during a swivel it follows the tip.
+    #[must_use]
+    pub fn tip_ics_at(&self, machine: &Machine, fraction: f64) -> DVec3 {
+        let Some((seg, f)) = self.segment_at(fraction) else { return self.tip_ics };
+        let travel_wcs = Kin::new(machine, self.tool.length).tip_wcs(&seg.axes_at(f)) - self.tip_wcs;
+        let ics_in_wcs = self.frames.wcs.axes.transpose() * self.frames.ics.axes;
+        self.tip_ics + ics_in_wcs.transpose() * travel_wcs
+    }
 }
 
 /// Key of the label table.

@@ -486,3 +486,36 @@ fn rotation_and_mirror_after_the_tilt_act_in_the_tilted_plane() {
     // The spatial angles are not mirrored by a mirror after the tilt.
     assert_close!(s8.plane.as_ref().expect("tilted").spatial, [0.0, 30.0, 0.0], EXACT);
 }
+
+/// The position display during a block's motion (issue 12, defect 12): REF and IST at a
+/// fraction of the motion, against closed forms.
+#[test]
+fn display_during_a_move_follows_the_motion() {
+    let src = "0 BEGIN PGM D MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+50 R0 F1000\n3 L X+100 F1000\n\
+               4 PLANE SPATIAL SPA+0 SPB+0 SPC+90 STAY\n5 L X+20 F1000\n6 END PGM D MM\n";
+    let (program, diags) = parse(src);
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let m = Machine::builtin("ac-table").expect("shipped machine");
+    let sim = simulate(&program, &m, &SimOptions::default());
+    let before = after(&program, &sim, 2);
+    let s = after(&program, &sim, 3);
+    // A straight feed move: halfway in time is halfway along X, in both displays.
+    let half_ics = s.tip_ics_at(&m, 0.5);
+    assert_close!(half_ics.x, 50.0, EXACT);
+    assert_close!(half_ics.y, 0.0, EXACT);
+    assert_close!(half_ics.z, 50.0, EXACT);
+    let (x0, x1) = (before.axes.linear.x, s.axes.linear.x);
+    assert_close!(s.axes_at(0.5).linear.x, (x0 + x1) / 2.0, EXACT);
+    // The ends: the states before and after.
+    assert!((s.tip_ics_at(&m, 0.0) - before.tip_ics).length() < EXACT);
+    assert_eq!(s.tip_ics_at(&m, 1.0), s.tip_ics);
+    assert_eq!(s.axes_at(1.0), s.axes);
+    assert_eq!(s.axes_at(f64::NAN), s.axes, "a broken fraction shows the end");
+    // In a plane turned by SPC+90 (the table stays: STAY), X+20 from I-CS X+100·… runs along
+    // the turned X: IST X goes from its start to +20 while Y stays.
+    let start = after(&program, &sim, 4).tip_ics;
+    let t = after(&program, &sim, 5);
+    let quarter = t.tip_ics_at(&m, 0.25);
+    assert_close!(quarter.x, start.x + 0.25 * (20.0 - start.x), 1e-6);
+    assert_close!(quarter.y, start.y, 1e-6);
+}

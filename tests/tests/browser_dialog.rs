@@ -124,6 +124,12 @@ async fn state_survives_a_reload_and_a_corrupt_saved_state_falls_back() {
 
     set_saved("{\"version\":1,\"cursor\":");
     let broken = mount().await;
-    assert_eq!(text(&broken, ".dialog-line"), "Gespeicherter Zustand war beschädigt: Vorgabe geladen");
-    assert!(program_lines(&broken).first().is_some_and(|l| l.contains("Musterprogramm1")));
+    assert_eq!(
+        text(&broken, ".dialog-line"),
+        "Gespeicherter Zustand war beschädigt: Cursor, Maschine und Sprache zurückgesetzt, Programm behalten"
+    );
+    assert!(
+        program_lines(&broken).first().is_some_and(|l| l.contains("BEGIN PGM X MM")),
+        "the saved program is kept beside a corrupt state"
+    );
 }

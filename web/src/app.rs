@@ -2,8 +2,6 @@
 
 use std::rc::Rc;
 
-use wasm_bindgen::JsCast;
-use web_sys::HtmlElement;
 use yew::prelude::*;
 
 use crate::browser;
@@ -19,7 +17,7 @@ use crate::i18n::{Lang, Text};
 use crate::keymap::{self, KeyPress};
 use crate::persist;
 use crate::softkeys;
-use crate::state::{Action, AppState};
+use crate::state::{Action, AppState, Effect};
 
 /// A lesson's program shown in the trainer instead of the trainee's own work.
 #[derive(Debug, Clone, PartialEq)]
@@ -48,15 +46,17 @@ pub fn app(props: &AppProps) -> Html {
             AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
         }
     });
-    // Keep the trainee's work (not a lesson's program): the program when its text changed, the
-    // small state when the cursor, machine, language or projector mode changed. In a lesson,
-    // tell the course which PLANE block the cursor is on.
+    // Keep the trainee's work (not a lesson's program, not a share link still being
+    // previewed): the program when its text changed, the small state when the cursor, machine,
+    // language or projector mode changed. In a lesson, tell the course which PLANE block the
+    // cursor is on.
     let embedded = props.embed.clone();
     {
         let state = state.clone();
-        let deps = (Rc::as_ptr(&state.doc) as usize, state.cursor);
+        let deps = (Rc::as_ptr(&state.doc) as usize, state.cursor, state.link.is_some());
         use_effect_with(deps, move |_| match embedded {
             Some(e) => e.on_plane_block.emit(state.cursor_plane_text()),
+            None if state.link.is_some() => {}
             None => {
                 if let Err(message) = browser::save_program(&state.doc.text) {
                     state.dispatch(Action::Notice(message));
@@ -65,11 +65,17 @@ pub fn app(props: &AppProps) -> Html {
         });
     }
     {
-        let deps = (state.cursor, state.machine.as_ref().map(|m| m.id.clone()), state.lang, state.projector);
+        let deps = (
+            state.cursor,
+            state.machine.as_ref().map(|m| m.id.clone()),
+            state.lang,
+            state.projector,
+            state.link.is_some(),
+        );
         let state = state.clone();
         let embedded = props.embed.is_some();
         use_effect_with(deps, move |_| {
-            if embedded {
+            if embedded || state.link.is_some() {
                 return;
             }
             if let Err(message) = browser::save_state(&persist::to_json(&state.saved())) {
@@ -77,27 +83,21 @@ pub fn app(props: &AppProps) -> Html {
             }
         });
     }
+    let root = use_node_ref();
+    // The reducer's side effects, each list once (after the render, so the file input and the
+    // text area exist).
+    {
+        let state = state.clone();
+        let root = root.clone();
+        use_effect_with(state.effects.seq, move |_| {
+            for effect in state.effects.list.iter() {
+                run_effect(effect, &state, root.cast::<web_sys::Element>());
+            }
+        });
+    }
     let on_action = {
         let state = state.clone();
-        Callback::from(move |a: Action| match a {
-            Action::Download => {
-                let bytes = schwenkbar_core::text::encode_latin1(&state.doc.text);
-                if let Err(message) = browser::download(&state.file_name(), &bytes) {
-                    state.dispatch(Action::Notice(message));
-                }
-            }
-            Action::Share => {
-                let notice = match browser::set_fragment(&state.share_fragment()) {
-                    Ok(()) => Text::new(
-                        "Link steht in der Adresszeile: kopieren und weitergeben",
-                        "The link is in the address bar: copy and pass it on",
-                    ),
-                    Err(message) => message,
-                };
-                state.dispatch(Action::Notice(notice));
-            }
-            other => state.dispatch(other),
-        })
+        Callback::from(move |a: Action| state.dispatch(a))
     };
     // Satzfolge: the next block follows when this one's motion has had its time.
     {
@@ -118,35 +118,32 @@ pub fn app(props: &AppProps) -> Html {
             let state = state.clone();
             yew::platform::spawn_local(async move {
                 match browser::read_file(file).await {
-                    Ok(bytes) => state.dispatch(Action::Import(schwenkbar_core::text::decode(bytes))),
+                    Ok(bytes) => state.dispatch(Action::Import(bytes)),
                     Err(message) => state.dispatch(Action::Notice(message)),
                 }
             });
         })
     };
-    let onkeydown = {
-        let state = state.clone();
-        Callback::from(move |e: KeyboardEvent| {
-            // Typing in the program text belongs to the text area, except the function keys.
-            let in_text = e
-                .target()
-                .and_then(|t| t.dyn_into::<HtmlElement>().ok())
-                .is_some_and(|el| matches!(el.tag_name().as_str(), "TEXTAREA" | "INPUT"));
-            let key = e.key();
-            if in_text && !key.starts_with('F') {
-                return;
-            }
-            let press = KeyPress {
-                key: &key,
-                shift: e.shift_key(),
-                ctrl_or_alt: e.ctrl_key() || e.alt_key() || e.meta_key(),
-            };
-            if let Some(action) = keymap::action(&state, &press) {
-                e.prevent_default();
-                state.dispatch(action);
-            }
-        })
-    };
+    // The keyboard belongs to the page from the load on, wherever the focus is; a lesson's
+    // trainer takes only the keys pressed inside it. The listener reads the state of the
+    // latest render.
+    let current = use_mut_ref(|| state.clone());
+    *current.borrow_mut() = state.clone();
+    {
+        let root = root.clone();
+        let embedded = props.embed.is_some();
+        use_effect_with((), move |()| {
+            let own = root.cast::<web_sys::Element>();
+            let listener = browser::on_page_keys(own, embedded, move |e| {
+                let state = current.borrow().clone();
+                let key = e.key();
+                let press = KeyPress { key: &key, shift: e.shift_key(), ctrl_or_alt: false };
+                let action = keymap::action(&state, &press);
+                action.map(|a| state.dispatch(a)).is_some()
+            });
+            move || drop(listener)
+        });
+    }
     let on_select = on_action.reform(Action::CursorTo);
     let on_text = on_action.reform(Action::SetText);
     let l = state.lang;
@@ -162,10 +159,15 @@ pub fn app(props: &AppProps) -> Html {
     };
     let speed = state.run.as_ref().map_or(1.0, |r| r.speed_factor());
     let scene_state = state.shown_state();
+    let fraction = use_state_eq(|| 1.0_f64);
+    let on_fraction = {
+        let fraction = fraction.clone();
+        Callback::from(move |f: f64| fraction.set(f))
+    };
     let shown = state.run.as_ref().and_then(|r| r.state.clone());
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
-            <div {class} lang={l.code()} tabindex="0" {onkeydown}>
+            <div {class} lang={l.code()} tabindex="-1" ref={root}>
                 <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
                     <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
@@ -174,11 +176,11 @@ pub fn app(props: &AppProps) -> Html {
                         <RightHandDemo lang={l} />
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
-                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} />
+                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} />
                     }
                     <div class="side">
                         if let Some(shown) = shown.clone() {
-                            <PositionDisplay state={shown} lang={l} />
+                            <PositionDisplay state={shown} lang={l} machine={state.machine.clone()} fraction={*fraction} />
                         }
                         <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
                             sim={state.sim.clone()} shown={shown} lang={l} />
@@ -188,4 +190,57 @@ pub fn app(props: &AppProps) -> Html {
                 <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
             </div>
         }
+}
+
+/// Carries out one side effect the reducer asked for; the outcome comes back as a notice.
+fn run_effect(effect: &Effect, state: &UseReducerHandle<AppState>, root: Option<web_sys::Element>) {
+    match effect {
+        Effect::Download { name, text } => {
+            let bytes = schwenkbar_core::text::encode_latin1(text);
+            let notice = match browser::download(name, &bytes) {
+                Ok(()) => Text::new(
+                    "Programm wird als .h-Datei heruntergeladen",
+                    "The program is downloaded as a .h file",
+                ),
+                Err(message) => message,
+            };
+            state.dispatch(Action::Notice(notice));
+        }
+        Effect::Share { fragment } => {
+            let state = state.clone();
+            let fragment = fragment.clone();
+            yew::platform::spawn_local(async move {
+                let copied = match browser::share_url(&fragment) {
+                    Some(url) => browser::copy_to_clipboard(&url).await.is_ok(),
+                    None => false,
+                };
+                let notice = if copied {
+                    Text::new(
+                        "Link in die Zwischenablage kopiert: einfügen und weitergeben",
+                        "Link copied to the clipboard: paste it and pass it on",
+                    )
+                } else {
+                    match browser::set_fragment(&fragment) {
+                        Ok(()) => Text::new(
+                            "Link steht in der Adresszeile: kopieren und weitergeben",
+                            "The link is in the address bar: copy and pass it on",
+                        ),
+                        Err(message) => message,
+                    }
+                };
+                state.dispatch(Action::Notice(notice));
+            });
+        }
+        Effect::PickFile => {
+            if let Some(root) = root {
+                browser::pick_file(&root);
+            }
+        }
+        Effect::FocusEditor => {
+            if let Some(root) = root {
+                browser::focus(&root, "textarea.program-text");
+            }
+        }
+        Effect::ConsumeFragment => browser::consume_fragment(),
+    }
 }

@@ -2,9 +2,10 @@
 //! file import. Every failure becomes a message for the dialog line, never a panic.
 
 use js_sys::{Array, Uint8Array};
+use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
-use web_sys::{Blob, BlobPropertyBag, File, HtmlAnchorElement, Url};
+use web_sys::{Blob, BlobPropertyBag, Element, File, HtmlAnchorElement, HtmlElement, KeyboardEvent, Url};
 
 use crate::i18n::Text;
 use crate::persist::{PROGRAM_KEY, STATE_KEY};
@@ -86,27 +87,133 @@ pub fn save_course(text: &str) -> Result<(), Text> {
     storage().ok_or(REFUSED)?.set_item(crate::course::progress::KEY, text).map_err(|_| REFUSED)
 }
 
-/// Calls `f` with the new URL fragment whenever it changes, until the guard is dropped.
-pub struct HashListener {
-    closure: Option<wasm_bindgen::closure::Closure<dyn FnMut()>>,
+/// An event listener on the window, removed when the guard is dropped (a component's effect
+/// returns it as its destructor).
+pub struct Listener {
+    event: &'static str,
+    closure: Option<Closure<dyn FnMut(web_sys::Event)>>,
 }
 
-impl Drop for HashListener {
+impl Drop for Listener {
     fn drop(&mut self) {
         if let (Some(window), Some(c)) = (web_sys::window(), self.closure.take()) {
             // Removing can only fail for a listener never added: nothing left to do then.
-            let _ = window.remove_event_listener_with_callback("hashchange", c.as_ref().unchecked_ref());
+            let _ = window.remove_event_listener_with_callback(self.event, c.as_ref().unchecked_ref());
         }
     }
 }
 
-/// Listens to `hashchange`; without a window (never in a browser) the guard does nothing.
+/// Listens to `event` on the window; without a window (never in a browser) the guard does
+/// nothing.
 #[must_use]
-pub fn on_hash_change(mut f: impl FnMut(String) + 'static) -> HashListener {
-    let closure =
-        wasm_bindgen::closure::Closure::<dyn FnMut()>::new(move || f(fragment().unwrap_or_default()));
-    let added = web_sys::window().is_some_and(|w| {
-        w.add_event_listener_with_callback("hashchange", closure.as_ref().unchecked_ref()).is_ok()
-    });
-    HashListener { closure: added.then_some(closure) }
+pub fn on_window(event: &'static str, f: impl FnMut(web_sys::Event) + 'static) -> Listener {
+    let closure = Closure::<dyn FnMut(web_sys::Event)>::new(f);
+    let added = web_sys::window()
+        .is_some_and(|w| w.add_event_listener_with_callback(event, closure.as_ref().unchecked_ref()).is_ok());
+    Listener { event, closure: added.then_some(closure) }
+}
+
+/// Calls `f` with the new URL fragment whenever it changes, until the guard is dropped.
+#[must_use]
+pub fn on_hash_change(mut f: impl FnMut(String) + 'static) -> Listener {
+    on_window("hashchange", move |_| f(fragment().unwrap_or_default()))
+}
+
+/// The elements that own keys: the trainer (also a lesson's embedded one) and the course page.
+const KEY_OWNERS: &str = ".tnc, [data-testid=course]";
+
+/// Keys for the whole page, wherever the focus is (on BODY after a load or after the focused
+/// softkey was re-rendered), as long as the page lives: `f` gets every keydown that no text
+/// field, focused button or canvas has taken and that was pressed in `own` (the app's root
+/// element) or, unless `only_inside`, outside every app — not inside another one, so a lesson's
+/// embedded trainer keeps its keys from the course around it. `f` returns whether it used the
+/// key.
+#[must_use]
+pub fn on_page_keys(
+    own: Option<Element>,
+    only_inside: bool,
+    mut f: impl FnMut(&KeyboardEvent) -> bool + 'static,
+) -> Listener {
+    on_window("keydown", move |e| {
+        let Some(e) = e.dyn_ref::<KeyboardEvent>() else { return };
+        if e.default_prevented() || e.ctrl_key() || e.alt_key() || e.meta_key() {
+            return;
+        }
+        let target = e.target().and_then(|t| t.dyn_into::<Element>().ok());
+        let app = target.as_ref().and_then(|t| t.closest(KEY_OWNERS).ok().flatten());
+        let mine = match (&own, &app) {
+            (Some(own), Some(app)) => own == app,
+            (_, None) => !only_inside,
+            (None, Some(_)) => false,
+        };
+        if !mine {
+            return;
+        }
+        let key = e.key();
+        let tag = target.as_ref().map(Element::tag_name).unwrap_or_default();
+        // Typing in a field belongs to the field, except the softkeys F1–F8.
+        let function_key =
+            key.len() >= 2 && key.starts_with('F') && key[1..].bytes().all(|b| b.is_ascii_digit());
+        if matches!(tag.as_str(), "TEXTAREA" | "INPUT" | "SELECT") && !function_key {
+            return;
+        }
+        // Enter and Space on a focused button press that button, as everywhere on the web.
+        if matches!(tag.as_str(), "BUTTON" | "A") && matches!(key.as_str(), "Enter" | " ") {
+            return;
+        }
+        if f(e) {
+            e.prevent_default();
+        }
+    })
+}
+
+/// The share link: this page's address with `fragment`.
+#[must_use]
+pub fn share_url(fragment: &str) -> Option<String> {
+    let href = web_sys::window()?.location().href().ok()?;
+    let base = href.split('#').next().unwrap_or(&href);
+    Some(format!("{base}#{fragment}"))
+}
+
+/// Puts `text` on the clipboard. Fails where the browser has no clipboard API (a page not
+/// served from a secure origin such as a classroom server's LAN address) or refuses it.
+pub async fn copy_to_clipboard(text: &str) -> Result<(), ()> {
+    let navigator = web_sys::window().ok_or(())?.navigator();
+    // `navigator.clipboard` is undefined outside secure contexts: calling into it would throw.
+    let api = js_sys::Reflect::get(&navigator, &JsValue::from_str("clipboard")).map_err(|_| ())?;
+    if api.is_undefined() || api.is_null() {
+        return Err(());
+    }
+    JsFuture::from(navigator.clipboard().write_text(text)).await.map(|_| ()).map_err(|_| ())
+}
+
+/// Takes the fragment out of the address bar without a reload or a new history entry.
+pub fn consume_fragment() {
+    let Some(window) = web_sys::window() else { return };
+    let location = window.location();
+    let (Ok(path), Ok(search)) = (location.pathname(), location.search()) else { return };
+    if let Ok(history) = window.history() {
+        // Failing leaves the fragment in place; the trainee's own program is still kept, since
+        // a link over it opens as a preview.
+        let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("{path}{search}")));
+    }
+}
+
+/// Clicks the file input inside `root` (the IMPORT softkey), which opens the file picker; the
+/// key press that asked for it counts as the user's gesture.
+pub fn pick_file(root: &Element) {
+    if let Ok(Some(input)) = root.query_selector("input.file-input")
+        && let Ok(input) = input.dyn_into::<HtmlElement>()
+    {
+        input.click();
+    }
+}
+
+/// Moves the keyboard focus to the first element matching `selector` inside `root`.
+pub fn focus(root: &Element, selector: &str) {
+    if let Ok(Some(el)) = root.query_selector(selector)
+        && let Ok(el) = el.dyn_into::<HtmlElement>()
+    {
+        let _ = el.focus();
+    }
 }

@@ -1,6 +1,7 @@
 //! The physical keyboard mapped onto the control's keys, so the whole app works by keyboard:
 //! F1–F8 are the softkeys (left to right), Enter = ENT, Shift+Enter = NO ENT, End = END,
-//! Esc = DEL (abort), digits/sign/point type into the dialog, arrows move the cursor.
+//! Esc = DEL (abort), digits/sign/point type into the dialog, arrows move the cursor, `p` the
+//! projector mode, `h` the right-hand rule.
 
 use crate::dialog::Key;
 use crate::softkeys;
@@ -48,6 +49,8 @@ pub fn action(state: &AppState, press: &KeyPress<'_>) -> Option<Action> {
         "Enter" => Action::Open,
         "Escape" | "End" => Action::Back,
         "p" | "P" => Action::ToggleProjector,
+        // The right-hand rule on the cursor's PLANE block, in place of the machine view.
+        "h" | "H" => Action::ToggleRightHand,
         _ => return None,
     })
 }

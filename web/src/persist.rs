@@ -37,12 +37,12 @@ impl RestoreError {
     pub fn message(self) -> Text {
         match self {
             RestoreError::Corrupt => Text::new(
-                "Gespeicherter Zustand war beschädigt: Vorgabe geladen",
-                "The saved state was corrupt: defaults loaded",
+                "Gespeicherter Zustand war beschädigt: Cursor, Maschine und Sprache zurückgesetzt, Programm behalten",
+                "The saved state was corrupt: cursor, machine and language reset, program kept",
             ),
             RestoreError::OldVersion => Text::new(
-                "Gespeicherter Zustand stammt von einer älteren Version: Vorgabe geladen",
-                "The saved state is from an older version: defaults loaded",
+                "Gespeicherter Zustand stammt von einer älteren Version: Cursor, Maschine und Sprache zurückgesetzt, Programm behalten",
+                "The saved state is from an older version: cursor, machine and language reset, program kept",
             ),
         }
     }

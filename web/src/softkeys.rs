@@ -50,6 +50,29 @@ pub fn function_label(f: Function) -> &'static str {
     }
 }
 
+/// Characters a softkey line holds at the smallest screen (1280×720 projector).
+const LABEL_WIDTH: usize = 14;
+
+/// A long name broken at blanks into softkey lines of at most `width` characters (a longer
+/// word stands alone on its line).
+fn softkey_lines(name: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line_len = 0;
+    for word in name.split_whitespace() {
+        let n = word.chars().count();
+        if line_len > 0 && line_len + 1 + n > width {
+            out.push('\n');
+            line_len = 0;
+        } else if line_len > 0 {
+            out.push(' ');
+            line_len += 1;
+        }
+        out.push_str(word);
+        line_len += n;
+    }
+    out
+}
+
 /// The row the control shows in `state`.
 #[must_use]
 pub fn row(state: &AppState) -> Row {
@@ -86,6 +109,18 @@ pub fn row(state: &AppState) -> Row {
             key("run-faster", &speed, Action::RunFaster),
             None,
             back(l),
+        ];
+    }
+    if state.link.is_some() {
+        return [
+            text_key("take-link", Text::new("LINK\nÜBER-\nNEHMEN", "TAKE\nLINK"), l, Action::TakeLink),
+            text_key("keep-own", Text::new("EIGENES\nBEHALTEN", "KEEP\nMINE"), l, Action::KeepOwn),
+            None,
+            None,
+            None,
+            text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
+            None,
+            text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
         ];
     }
     match state.level {
@@ -136,7 +171,10 @@ pub fn row(state: &AppState) -> Row {
             let mut row: Row = Default::default();
             for (slot, id) in row.iter_mut().zip(Machine::builtin_ids()) {
                 let active = state.machine.as_ref().is_some_and(|m| m.id == id);
-                let label = id.to_ascii_uppercase().replace('-', "\n");
+                let label = Machine::builtin(id).map_or_else(
+                    |_| id.to_ascii_uppercase(),
+                    |m| softkey_lines(l.t(&m.name.de, &m.name.en), LABEL_WIDTH),
+                );
                 *slot = Some(Softkey {
                     id: format!("machine-{id}"),
                     label,
@@ -148,8 +186,8 @@ pub fn row(state: &AppState) -> Row {
             row
         }
         SoftkeyLevel::Files => [
-            // Rendered as a file picker by the softkey row (a browser needs the user's click).
-            text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::ShowFiles),
+            // Rendered as a file picker by the softkey row; F1 opens it through Effect::PickFile.
+            text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::PickFile),
             text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
             text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
             None,
@@ -200,11 +238,37 @@ mod tests {
     }
 
     #[test]
-    fn machine_row_lists_every_shipped_machine_and_marks_the_selected_one() {
+    fn machine_row_lists_every_shipped_machine_by_name_and_marks_the_selected_one() {
         let s = AppState::default().apply(Action::ShowMachines);
         let r = row(&s);
         let machines: Vec<_> = r.iter().flatten().filter(|k| k.id.starts_with("machine-")).collect();
         assert_eq!(machines.len(), Machine::builtin_ids().len());
-        assert!(machines.iter().any(|k| k.active && k.id == "machine-ac-table"));
+        let ac = machines.iter().find(|k| k.active && k.id == "machine-ac-table").expect("ac-table selected");
+        assert_eq!(ac.label, "C-Rundtisch\nauf\nA-Schwenktisch");
+        for k in &machines {
+            assert!(k.label.lines().all(|line| line.chars().count() <= LABEL_WIDTH), "{:?}", k.label);
+            assert!(
+                !k.label.contains("TABLE") && !k.label.contains("HEAD"),
+                "a name, not an id: {:?}",
+                k.label
+            );
+        }
+        let en = s.apply(Action::ToggleLang);
+        assert!(row(&en).iter().flatten().any(|k| k.label.starts_with("C rotary")));
+    }
+
+    #[test]
+    fn files_row_by_function_keys_asks_the_shell_for_each_effect() {
+        use crate::state::Effect;
+        let s = AppState::default().apply(Action::ShowFiles);
+        let press = |n: usize| s.apply(row(&s)[n].as_ref().expect("a softkey").action.clone());
+        assert_eq!(&*press(0).effects.list, [Effect::PickFile]);
+        assert!(matches!(&*press(1).effects.list, [Effect::Download { name, text }]
+            if name == "Musterprogramm1.h" && *text == s.doc.text));
+        assert!(
+            matches!(&*press(2).effects.list, [Effect::Share { fragment }] if fragment.starts_with("pgm="))
+        );
+        assert_ne!(press(1).effects.seq, s.effects.seq, "each request is new");
+        assert!(press(1).apply(Action::CursorDown).effects.list.is_empty(), "an effect runs once");
     }
 }

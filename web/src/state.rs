@@ -36,6 +36,42 @@ pub enum SoftkeyLevel {
     Files,
 }
 
+/// A side effect asked for by the reducer and carried out by the app shell (`app.rs` with
+/// `browser.rs`), which reports the outcome with [`Action::Notice`]. Keeping them as data keeps
+/// the reducer pure: a softkey clicked and the same softkey pressed as F-key ask for the same.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Effect {
+    /// Offer the program as a `.h` file.
+    Download { name: String, text: String },
+    /// Put the share link (this page's address with `#fragment`) on the clipboard, else into
+    /// the address bar.
+    Share { fragment: String },
+    /// Open the file picker for IMPORT (F1 on the DATEI row; a click opens it directly).
+    PickFile,
+    /// Move the keyboard focus into the program text area (TEXT EDITIEREN).
+    FocusEditor,
+    /// The share link's fragment has been read: take it out of the address bar, so that a
+    /// reload shows the trainee's own work and not the link again.
+    ConsumeFragment,
+}
+
+/// The effects asked for by the last transition; `seq` counts every effect ever asked for, so
+/// the shell runs each list once.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Effects {
+    pub seq: u64,
+    pub list: Rc<[Effect]>,
+}
+
+/// A share link opened over the trainee's own program: the link's program is shown (and can be
+/// run), the own one is kept aside and nothing is saved until the trainee decides.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkPreview {
+    pub own: Rc<Document>,
+    pub own_cursor: usize,
+    pub own_machine: Option<Rc<Machine>>,
+}
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct AppState {
     pub lang: Lang,
@@ -59,6 +95,10 @@ pub struct AppState {
     pub run: Option<Run>,
     /// The right-hand-rule demonstration in place of the machine view.
     pub right_hand: bool,
+    /// A share link shown as a preview: "Übernehmen?".
+    pub link: Option<LinkPreview>,
+    /// Side effects asked for by the last transition.
+    pub effects: Effects,
 }
 
 impl Default for AppState {
@@ -76,6 +116,8 @@ impl Default for AppState {
             sim: None,
             run: None,
             right_hand: false,
+            link: None,
+            effects: Effects::default(),
         }
         .simulated()
     }
@@ -112,11 +154,16 @@ pub enum Action {
     ShowSamples,
     LoadSample(String),
     ShowFiles,
-    /// A file was read (Latin-1 or UTF-8 already decoded).
-    Import(String),
-    /// Side effects, carried out by the app shell (browser.rs), not by the reducer.
+    /// IMPORT by key: opens the file picker ([`Effect::PickFile`]).
+    PickFile,
+    /// A file was read: its bytes (Latin-1 or UTF-8).
+    Import(Vec<u8>),
+    /// HERUNTERLADEN and LINK TEILEN: carried out by the shell ([`Effect`]).
     Download,
     Share,
+    /// The opened share link: take its program as the own one, or keep the own one.
+    TakeLink,
+    KeepOwn,
     /// The app shell reports the outcome of a side effect in the dialog line.
     Notice(Text),
     /// Program run: enter (single block), step, play/pause (Satzfolge), speed, back to start.
@@ -135,12 +182,48 @@ pub enum Action {
     ToggleProjector,
 }
 
+impl Action {
+    /// While a share link is previewed: looking at it and running it is allowed, changing a
+    /// program is not until the trainee took the link or kept the own program.
+    fn allowed_in_link_preview(&self) -> bool {
+        matches!(
+            self,
+            Action::TakeLink
+                | Action::KeepOwn
+                | Action::CursorUp
+                | Action::CursorDown
+                | Action::CursorTo(_)
+                | Action::Notice(_)
+                | Action::Back
+                | Action::StartRun
+                | Action::RunNext
+                | Action::RunPrev
+                | Action::RunPlay
+                | Action::RunFaster
+                | Action::RunSlower
+                | Action::RunToStart
+                | Action::RunTick(_)
+                | Action::ToggleRightHand
+                | Action::ToggleLang
+                | Action::ToggleProjector
+        )
+    }
+}
+
 impl AppState {
     /// The pure transition; `Reducible::reduce` only wraps it.
     #[must_use]
     pub fn apply(&self, action: Action) -> AppState {
         let mut next = self.clone();
         next.message = None;
+        next.effects.list = Rc::from([]);
+        if self.link.is_some() && !action.allowed_in_link_preview() {
+            next.message = Some(Text::new(
+                "Zuerst entscheiden: LINK ÜBERNEHMEN oder EIGENES BEHALTEN",
+                "Decide first: TAKE LINK or KEEP MINE",
+            ));
+            return next;
+        }
         match action {
             Action::SpecFct => {
                 next.dialog = None;
@@ -176,7 +259,12 @@ impl AppState {
                 next.doc = Rc::new(Document::new(text));
                 next.cursor = self.cursor.min(next.doc.last_index());
             }
-            Action::ToggleTextEditing => next.text_editing = !self.text_editing,
+            Action::ToggleTextEditing => {
+                next.text_editing = !self.text_editing;
+                if next.text_editing {
+                    next.emit(Effect::FocusEditor);
+                }
+            }
             Action::ShowMachines => next.level = SoftkeyLevel::Machines,
             Action::SelectMachine(id) => next.select_machine(&id),
             Action::ShowSamples => next.level = SoftkeyLevel::Samples,
@@ -189,13 +277,26 @@ impl AppState {
                 None => next.message = Some(Text::new("Beispiel unbekannt", "Unknown sample")),
             },
             Action::ShowFiles => next.level = SoftkeyLevel::Files,
-            Action::Import(text) => {
-                next.doc = Rc::new(Document::new(text));
-                next.cursor = 0;
-                next.level = SoftkeyLevel::Main;
-                next.message = Some(Text::new("Datei importiert", "File imported"));
+            Action::PickFile => next.emit(Effect::PickFile),
+            Action::Import(bytes) => next.import(bytes),
+            Action::Download => {
+                next.emit(Effect::Download { name: self.file_name(), text: self.doc.text.clone() })
             }
-            Action::Download | Action::Share => {}
+            Action::Share => next.emit(Effect::Share { fragment: self.share_fragment() }),
+            Action::TakeLink => {
+                next.link = None;
+                next.message =
+                    Some(Text::new("Programm aus dem Link übernommen", "Program from the link taken"));
+            }
+            Action::KeepOwn => {
+                if let Some(own) = next.link.take() {
+                    next.run = None;
+                    next.doc = own.own;
+                    next.cursor = own.own_cursor.min(next.doc.last_index());
+                    next.machine = own.own_machine;
+                    next.message = Some(Text::new("Eigenes Programm behalten", "Own program kept"));
+                }
+            }
             Action::Notice(text) => next.message = Some(text),
             Action::StartRun => next.start_run(),
             Action::RunNext => next.run_step(|run, sim, p| {
@@ -249,6 +350,28 @@ impl AppState {
         }
         self.sync_cursor_to_run();
         self
+    }
+
+    fn emit(&mut self, effect: Effect) {
+        let mut list = self.effects.list.to_vec();
+        list.push(effect);
+        self.effects = Effects { seq: self.effects.seq + 1, list: list.into() };
+    }
+
+    /// IMPORT: a text file becomes the program; a binary file (an image, a CAD model, a zip)
+    /// is refused and the program stays.
+    fn import(&mut self, bytes: Vec<u8>) {
+        if schwenkbar_core::text::looks_binary(&bytes) {
+            self.message = Some(Text::new(
+                "Datei ist kein NC-Programm (Binärdatei): nicht importiert",
+                "The file is not an NC program (binary file): not imported",
+            ));
+            return;
+        }
+        self.doc = Rc::new(Document::new(schwenkbar_core::text::decode(bytes)));
+        self.cursor = 0;
+        self.level = SoftkeyLevel::Main;
+        self.message = Some(Text::new("Datei importiert", "File imported"));
     }
 
     fn start_run(&mut self) {
@@ -433,28 +556,49 @@ impl AppState {
     #[must_use]
     pub fn start(saved: Option<&str>, program: Option<String>, fragment: Option<&str>) -> AppState {
         let mut state = AppState::default();
+        // The program is what the trainee typed: it is kept even when the small state beside
+        // it cannot be read.
+        let own_work = program.is_some();
+        if let Some(text) = program {
+            state.doc = Rc::new(Document::new(text));
+        }
         match saved.map(persist::restore) {
             None => {}
             Some(Ok(s)) => {
                 state.lang = s.lang;
                 state.projector = s.projector;
-                if let Some(text) = program {
-                    state.doc = Rc::new(Document::new(text));
-                }
                 state.cursor = s.cursor.min(state.doc.last_index());
                 state.select_machine(&s.machine);
             }
             Some(Err(e)) => state.message = Some(e.message()),
         }
+        if fragment.is_some() {
+            // Read once: a reload must not apply the link again over what was done since.
+            state.emit(Effect::ConsumeFragment);
+        }
         let shared = fragment.and_then(persist::parse_fragment);
         let run = shared.as_ref().is_some_and(|s| s.run);
         if let Some(shared) = shared {
+            // Over the trainee's own, different program the link opens as a preview.
+            if own_work && state.doc.text != shared.program {
+                state.link = Some(LinkPreview {
+                    own: state.doc.clone(),
+                    own_cursor: state.cursor,
+                    own_machine: state.machine.clone(),
+                });
+            }
             state.doc = Rc::new(Document::new(shared.program));
             state.cursor = shared.block.min(state.doc.last_index());
             if let Some(m) = shared.machine {
                 state.select_machine(&m);
             }
-            state.message = Some(Text::new("Programm aus dem Link geöffnet", "Program opened from the link"));
+            state.message = Some(match state.link {
+                Some(_) => Text::new(
+                    "Programm aus dem Link (Vorschau): übernehmen? Ihr eigenes Programm bleibt bis dahin gespeichert",
+                    "Program from the link (preview): take it? Your own program stays saved until then",
+                ),
+                None => Text::new("Programm aus dem Link geöffnet", "Program opened from the link"),
+            });
         }
         // The default's simulation is of the default program: simulate what was restored.
         state = state.simulated();
@@ -593,8 +737,11 @@ mod tests {
         );
 
         let broken = AppState::start(Some("{\"version\":1,\"cursor\":"), Some("0 L X+1".into()), None);
-        assert_eq!(broken.doc, AppState::default().doc);
-        assert_eq!(broken.message.map(|m| m.en), Some("The saved state was corrupt: defaults loaded"));
+        assert_eq!(broken.doc.text, "0 L X+1", "the program typed is kept");
+        assert_eq!(
+            broken.message.map(|m| m.en),
+            Some("The saved state was corrupt: cursor, machine and language reset, program kept")
+        );
     }
 
     #[test]
@@ -648,5 +795,57 @@ mod tests {
         let en = s.apply(Action::ToggleLang);
         assert_eq!(en.dialog_text().get(en.lang), "Special functions: select an area");
         assert_eq!(en.doc, s.doc);
+    }
+
+    #[test]
+    fn a_link_over_own_work_is_a_preview_until_the_trainee_decides() {
+        let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n".to_owned();
+        let saved = persist::to_json(&AppState::default().saved());
+        let link =
+            AppState::default().apply(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
+        let s = AppState::start(Some(&saved), Some(own.clone()), Some(&link));
+        assert!(s.link.is_some());
+        assert_ne!(s.doc.text, own, "the link's program is shown");
+        assert!(s.effects.list.contains(&Effect::ConsumeFragment), "the fragment is read once");
+        assert!(s.dialog_text().de.contains("übernehmen?"));
+        // Editing is held back; looking and running are not.
+        let held = s.apply(Action::SetText("0 L X+1".into()));
+        assert_eq!(held.doc, s.doc);
+        assert!(held.message.is_some_and(|m| m.de.contains("LINK ÜBERNEHMEN")));
+        assert!(s.apply(Action::StartRun).run.is_some());
+        let kept = s.apply(Action::StartRun).apply(Action::KeepOwn);
+        assert_eq!(
+            (kept.doc.text.as_str(), kept.link.is_none(), kept.run.is_none()),
+            (own.as_str(), true, true)
+        );
+        assert_eq!(kept.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+        assert_eq!(kept.sim.as_ref().map(|s| s.0.first_step.len()), Some(3), "the own program is simulated");
+        let taken = s.apply(Action::TakeLink);
+        assert_eq!((taken.doc.text.as_str(), taken.link.is_none()), (s.doc.text.as_str(), true));
+        assert_eq!(taken.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+
+        // No own work, or the same program: nothing to ask.
+        assert!(AppState::start(None, None, Some(&link)).link.is_none());
+        let same = AppState::start(Some(&saved), Some(s.doc.text.clone()), Some(&link));
+        assert!(same.link.is_none());
+    }
+
+    #[test]
+    fn a_binary_file_is_not_imported_and_the_program_stays() {
+        let s = AppState::default().apply(Action::ShowFiles);
+        let png = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x01\0\0\0\x01\0".to_vec();
+        let refused = s.apply(Action::Import(png));
+        assert_eq!(refused.doc, s.doc);
+        assert!(refused.message.is_some_and(|m| m.de.contains("kein NC-Programm")));
+        let imported = s.apply(Action::Import(b"0 BEGIN PGM I MM\r\n1 END PGM I MM\r\n".to_vec()));
+        assert_eq!(imported.doc.program.blocks.len(), 2);
+        assert_eq!(imported.message.map(|m| m.en), Some("File imported"));
+    }
+
+    #[test]
+    fn text_editing_asks_for_the_focus_in_the_editor() {
+        let s = AppState::default().apply(Action::ToggleTextEditing);
+        assert_eq!(&*s.effects.list, [Effect::FocusEditor]);
+        assert!(s.apply(Action::ToggleTextEditing).effects.list.is_empty());
     }
 }

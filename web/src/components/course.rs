@@ -4,8 +4,6 @@
 
 use std::rc::Rc;
 
-use wasm_bindgen::JsCast;
-use web_sys::HtmlElement;
 use yew::prelude::*;
 
 use super::exercise_card::ExerciseCard;
@@ -47,33 +45,35 @@ pub fn course_app(props: &CourseAppProps) -> Html {
             }
         });
     }
-    let onkeydown = {
-        let state = state.clone();
-        Callback::from(move |e: KeyboardEvent| {
-            let typing = e
-                .target()
-                .and_then(|t| t.dyn_into::<HtmlElement>().ok())
-                .is_some_and(|el| matches!(el.tag_name().as_str(), "TEXTAREA" | "INPUT" | "SELECT"));
-            // The embedded trainer handles its own keys (it prevents their default).
-            if typing || e.default_prevented() || e.ctrl_key() || e.alt_key() || e.meta_key() {
-                return;
-            }
-            let target = match e.key().as_str() {
-                "ArrowRight" | "PageDown" => Some(state.route.next()),
-                "ArrowLeft" | "PageUp" => Some(state.route.prev()),
-                "Home" => Some(Route::Overview),
-                "i" | "I" => {
-                    state.dispatch(CourseAction::ToggleInstructor);
-                    None
+    // The page's keys from the load on, wherever the focus is; keys pressed inside a lesson's
+    // embedded trainer stay with the trainer (PageDown there does not leave the lesson). The
+    // listener reads the state of the latest render.
+    let current = use_mut_ref(|| state.clone());
+    *current.borrow_mut() = state.clone();
+    let root = use_node_ref();
+    {
+        let root = root.clone();
+        use_effect_with((), move |()| {
+            let listener = browser::on_page_keys(root.cast::<web_sys::Element>(), false, move |e| {
+                let state = current.borrow().clone();
+                let target = match e.key().as_str() {
+                    "ArrowRight" | "PageDown" => Some(state.route.next()),
+                    "ArrowLeft" | "PageUp" => Some(state.route.prev()),
+                    "Home" => Some(Route::Overview),
+                    "i" | "I" => {
+                        state.dispatch(CourseAction::ToggleInstructor);
+                        None
+                    }
+                    _ => return false,
+                };
+                if let Some(r) = target {
+                    go(r);
                 }
-                _ => return,
-            };
-            e.prevent_default();
-            if let Some(r) = target {
-                go(r);
-            }
-        })
-    };
+                true
+            });
+            move || drop(listener)
+        });
+    }
     let l = state.lang();
     let dispatch = {
         let state = state.clone();
@@ -87,7 +87,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
     let toggle_lang = dispatch.reform(|_: MouseEvent| CourseAction::ToggleLang);
     let toggle_instructor = dispatch.reform(|_: MouseEvent| CourseAction::ToggleInstructor);
     html! {
-        <div {class} lang={l.code()} tabindex="0" {onkeydown} data-testid="course">
+        <div {class} lang={l.code()} tabindex="-1" data-testid="course" ref={root}>
             <style>{ STYLE }</style>
             <header class="course-head">
                 <a href="#kurs" class="course-title">{ l.t("Schwenkbar – Kurs", "Schwenkbar – course") }</a>

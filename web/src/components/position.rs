@@ -1,9 +1,10 @@
 //! Position display as on the control: every axis in machine coordinates (REF) and in the
-//! active working plane (IST), the tool, feed and spindle, and a status line with the active
+//! active working plane (IST; English screens write ACTL.), the tool, feed and spindle, and a status line with the active
 //! transformations and the active PLANE.
 
 use std::rc::Rc;
 
+use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{ActiveTransform, Level, SpindleDir, State};
 use yew::prelude::*;
 
@@ -13,6 +14,11 @@ use crate::i18n::Lang;
 pub struct PositionProps {
     pub state: Rc<State>,
     pub lang: Lang,
+    /// The machine, for the tool tip during the block's motion.
+    pub machine: Option<Rc<Machine>>,
+    /// Where in the block's motion the 3D view stands (1 = its end).
+    #[prop_or(1.0)]
+    pub fraction: f64,
 }
 
 fn signed(x: f64) -> String {
@@ -64,8 +70,13 @@ pub fn status(state: &State, l: Lang) -> Vec<String> {
 pub fn position_display(props: &PositionProps) -> Html {
     let l = props.lang;
     let s = &props.state;
-    let ist = [s.tip_ics.x, s.tip_ics.y, s.tip_ics.z];
-    let rows = s.axes.named().into_iter().enumerate().map(|(i, (axis, reference))| {
+    // During the block's motion (animation or the scrub slider) both columns follow it.
+    let (axes, tip) = match &props.machine {
+        Some(m) if props.fraction < 1.0 => (s.axes_at(props.fraction), s.tip_ics_at(m, props.fraction)),
+        _ => (s.axes, s.tip_ics),
+    };
+    let ist = [tip.x, tip.y, tip.z];
+    let rows = axes.named().into_iter().enumerate().map(|(i, (axis, reference))| {
         let actual = ist.get(i).copied().unwrap_or(reference);
         html! {
             <tr data-axis={axis.to_string()}>
@@ -86,7 +97,7 @@ pub fn position_display(props: &PositionProps) -> Html {
     html! {
         <section class="position" aria-label={l.t("Positionsanzeige", "Position display")}>
             <table>
-                <thead><tr><th></th><th>{ "REF" }</th><th>{ "IST" }</th></tr></thead>
+                <thead><tr><th></th><th>{ "REF" }</th><th>{ l.t("IST", "ACTL.") }</th></tr></thead>
                 <tbody>{ for rows }</tbody>
             </table>
             <p class="tool">{ format!("{tool} {} L{:.1} R{:.1} · F{:.0} · S{:.0} {spindle}", s.tool.axis, s.tool.length, s.tool.radius, s.feed, s.spindle.speed) }</p>

@@ -32,6 +32,10 @@ pub struct ScenePaneProps {
     pub animate: bool,
     /// Playback speed factor.
     pub speed: f64,
+    /// Told where in the block's motion the view stands (animation or scrub), for the
+    /// position display.
+    #[prop_or_default]
+    pub on_fraction: Callback<f64>,
 }
 
 /// Frame interval of the animation, ms.
@@ -40,18 +44,10 @@ const FRAME_MS: u64 = 33;
 /// The scene at `fraction` of the block's motion (by time over its segments).
 #[must_use]
 pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
-    let total = state.duration();
-    if fraction >= 1.0 || total <= 0.0 || state.segments.is_empty() {
-        return scene_state(machine, state);
+    match state.segment_at(fraction) {
+        Some((seg, f)) => scene_during(machine, state, seg, f),
+        None => scene_state(machine, state),
     }
-    let mut t = fraction.max(0.0) * total;
-    for seg in &state.segments {
-        if t <= seg.duration && seg.duration > 0.0 {
-            return scene_during(machine, state, seg, t / seg.duration);
-        }
-        t -= seg.duration;
-    }
-    scene_state(machine, state)
 }
 
 #[function_component(ScenePane)]
@@ -98,6 +94,10 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
                 }
             });
         });
+    }
+    {
+        let on_fraction = props.on_fraction.clone();
+        use_effect_with(*fraction, move |f| on_fraction.emit(*f));
     }
     let scene = match (&props.machine, &props.state) {
         (Some(m), Some(s)) => {

@@ -17,7 +17,7 @@ pub struct SoftkeyRowProps {
 #[function_component(SoftkeyRow)]
 pub fn softkey_row(props: &SoftkeyRowProps) -> Html {
     let keys = props.row.iter().enumerate().map(|(i, slot)| match slot {
-        Some(key) if key.id == "import" => {
+        Some(key) if key.action == Action::PickFile => {
             let on_import = props.on_import.clone();
             let onchange = Callback::from(move |e: Event| {
                 let file =
