@@ -31,6 +31,8 @@ pub async fn mount() -> Element {
     document().body().expect("body").append_child(&root).expect("append root");
     yew::Renderer::<schwenkbar_web::App>::with_root(root.clone()).render();
     settle().await;
+    // The app takes keys once its first render's effects ran; a loaded page can take longer.
+    assert!(wait_for(&root, "[data-keys]", 10_000).await.is_some(), "the app takes keys");
     root
 }
 

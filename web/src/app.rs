@@ -129,11 +129,17 @@ pub fn app(props: &AppProps) -> Html {
     // latest render.
     let current = use_mut_ref(|| state.clone());
     *current.borrow_mut() = state.clone();
+    // Shown as `data-keys="on"` once the listener is there (the browser tests wait for it).
+    let keys_on = use_state_eq(|| false);
     {
         let root = root.clone();
         let embedded = props.embed.is_some();
+        let keys_on = keys_on.clone();
         use_effect_with((), move |()| {
-            let own = root.cast::<web_sys::Element>();
+            // The root element is looked up per key: it is bound once the first render is in
+            // the document.
+            let own = move || root.cast::<web_sys::Element>();
+            keys_on.set(true);
             let listener = browser::on_page_keys(own, embedded, move |e| {
                 let state = current.borrow().clone();
                 let key = e.key();
@@ -167,7 +173,7 @@ pub fn app(props: &AppProps) -> Html {
     let shown = state.run.as_ref().and_then(|r| r.state.clone());
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
-            <div {class} lang={l.code()} tabindex="-1" ref={root}>
+            <div {class} lang={l.code()} tabindex="-1" ref={root} data-keys={keys_on.then_some("on")}>
                 <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
                     <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}

@@ -130,18 +130,20 @@ const KEY_OWNERS: &str = ".tnc, [data-testid=course]";
 /// key.
 #[must_use]
 pub fn on_page_keys(
-    own: Option<Element>,
+    own: impl Fn() -> Option<Element> + 'static,
     only_inside: bool,
     mut f: impl FnMut(&KeyboardEvent) -> bool + 'static,
 ) -> Listener {
     on_window("keydown", move |e| {
         let Some(e) = e.dyn_ref::<KeyboardEvent>() else { return };
-        if e.default_prevented() || e.ctrl_key() || e.alt_key() || e.meta_key() {
-            return;
-        }
         let target = e.target().and_then(|t| t.dyn_into::<Element>().ok());
         let app = target.as_ref().and_then(|t| t.closest(KEY_OWNERS).ok().flatten());
-        let mine = match (&own, &app) {
+        // Inside an app, a key some element already used (a canvas's view keys, an answer
+        // field's Enter) is not used twice; a key pressed outside every app is offered to each.
+        if (app.is_some() && e.default_prevented()) || e.ctrl_key() || e.alt_key() || e.meta_key() {
+            return;
+        }
+        let mine = match (&own(), &app) {
             (Some(own), Some(app)) => own == app,
             (_, None) => !only_inside,
             (None, Some(_)) => false,

@@ -54,23 +54,27 @@ pub fn course_app(props: &CourseAppProps) -> Html {
     {
         let root = root.clone();
         use_effect_with((), move |()| {
-            let listener = browser::on_page_keys(root.cast::<web_sys::Element>(), false, move |e| {
-                let state = current.borrow().clone();
-                let target = match e.key().as_str() {
-                    "ArrowRight" | "PageDown" => Some(state.route.next()),
-                    "ArrowLeft" | "PageUp" => Some(state.route.prev()),
-                    "Home" => Some(Route::Overview),
-                    "i" | "I" => {
-                        state.dispatch(CourseAction::ToggleInstructor);
-                        None
+            let listener = browser::on_page_keys(
+                move || root.cast::<web_sys::Element>(),
+                false,
+                move |e| {
+                    let state = current.borrow().clone();
+                    let target = match e.key().as_str() {
+                        "ArrowRight" | "PageDown" => Some(state.route.next()),
+                        "ArrowLeft" | "PageUp" => Some(state.route.prev()),
+                        "Home" => Some(Route::Overview),
+                        "i" | "I" => {
+                            state.dispatch(CourseAction::ToggleInstructor);
+                            None
+                        }
+                        _ => return false,
+                    };
+                    if let Some(r) = target {
+                        go(r);
                     }
-                    _ => return false,
-                };
-                if let Some(r) = target {
-                    go(r);
-                }
-                true
-            });
+                    true
+                },
+            );
             move || drop(listener)
         });
     }

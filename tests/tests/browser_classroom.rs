@@ -1,0 +1,250 @@
+//! Issue 12's defects, driven as a trainee would: keys wherever the focus is, the DATEI row by
+//! function keys, share links over own work, diagnostics by block, a binary import, the scrub
+//! slider and the position display. Headless Chromium (scripts/test.sh).
+#![cfg(target_arch = "wasm32")]
+
+use std::cell::Cell;
+use std::rc::Rc;
+
+use schwenkbar_tests::browser::{
+    clear_storage, click, key_on, mount, paste_program, program_lines, query, settle, text,
+};
+use schwenkbar_web::state::{Action, AppState};
+use wasm_bindgen::JsCast;
+use wasm_bindgen::closure::Closure;
+use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
+use web_sys::{Element, HtmlElement, KeyboardEvent, KeyboardEventInit};
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+/// Waits (up to 3 s) until `check` holds: several apps with WebGL views share the page and a
+/// loaded machine, so a render can take longer than the 20 ms settle.
+async fn eventually(mut check: impl FnMut() -> bool) -> bool {
+    for _ in 0..150 {
+        if check() {
+            return true;
+        }
+        settle().await;
+    }
+    check()
+}
+
+fn document() -> web_sys::Document {
+    web_sys::window().and_then(|w| w.document()).expect("document")
+}
+
+fn storage() -> web_sys::Storage {
+    web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage")
+}
+
+/// A key pressed where nothing has the focus (BODY), as after a load or a re-rendered button.
+async fn key_on_body(key: &str) {
+    if let Some(el) = document().active_element().and_then(|e| e.dyn_into::<HtmlElement>().ok()) {
+        el.blur().expect("blur");
+    }
+    let init = KeyboardEventInit::new();
+    init.set_key(key);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("event");
+    document().body().expect("body").dispatch_event(&event).expect("dispatch");
+    settle().await;
+}
+
+#[wasm_bindgen_test]
+async fn keys_work_from_the_load_on_and_after_a_click_wherever_the_focus_is() {
+    clear_storage();
+    let root = mount().await;
+    key_on_body("F1").await;
+    assert!(eventually(|| query(&root, "[data-key=tilt-plane]").is_some()).await, "F1 = SPEC FCT on BODY");
+    click(&root, "[data-key=tilt-plane]").await;
+    key_on_body("F1").await;
+    assert!(
+        eventually(|| text(&root, ".dialog-line") == "Raumwinkel A?").await,
+        "F1 = SPATIAL after a click"
+    );
+    key_on_body("Escape").await;
+    key_on_body("End").await;
+    key_on_body("End").await;
+    // Enter on a focused softkey presses that softkey (the browser's own button action), it
+    // does not open the cursor's PLANE block as ENT would.
+    click(&root, ".program-pane .line[data-line='11']").await;
+    let softkey = query(&root, "[data-key=samples]").expect("BEISPIEL ÖFFNEN");
+    softkey.clone().dyn_into::<HtmlElement>().expect("button").focus().expect("focus");
+    key_on(&root, "[data-key=samples]", "Enter").await;
+    assert!(query(&root, ".dialog-area.open").is_none(), "Enter on a softkey is not ENT");
+    key_on_body("p").await;
+    assert!(eventually(|| query(&root, ".tnc.projector").is_some()).await, "p: projector mode from BODY");
+    key_on_body("p").await;
+}
+
+#[wasm_bindgen_test]
+async fn the_files_row_works_by_function_keys() {
+    clear_storage();
+    let root = mount().await;
+    key_on(&root, ".tnc", "F5").await;
+    assert!(eventually(|| query(&root, "input.file-input").is_some()).await, "F5 DATEI");
+    // F1 IMPORT opens the file picker: the file input is clicked.
+    let clicked = Rc::new(Cell::new(false));
+    let flag = clicked.clone();
+    let on_click = Closure::<dyn FnMut(web_sys::Event)>::new(move |e: web_sys::Event| {
+        flag.set(true);
+        e.prevent_default(); // no real picker in the test
+    });
+    let input = query(&root, "input.file-input").expect("the IMPORT softkey's file input");
+    input.add_event_listener_with_callback("click", on_click.as_ref().unchecked_ref()).expect("listen");
+    key_on(&root, ".tnc", "F1").await;
+    assert!(eventually(|| clicked.get()).await, "F1 IMPORT opened the file picker");
+    key_on(&root, ".tnc", "F2").await;
+    assert!(
+        eventually(|| text(&root, ".dialog-line") == "Programm wird als .h-Datei heruntergeladen").await,
+        "F2 HERUNTERLADEN"
+    );
+    key_on(&root, ".tnc", "F3").await;
+    let mut line = String::new();
+    for _ in 0..40 {
+        line = text(&root, ".dialog-line");
+        if line.starts_with("Link") {
+            break;
+        }
+        settle().await;
+    }
+    assert!(
+        line == "Link in die Zwischenablage kopiert: einfügen und weitergeben"
+            || line == "Link steht in der Adresszeile: kopieren und weitergeben",
+        "{line}"
+    );
+    let location = web_sys::window().expect("window").location();
+    if line.contains("Adresszeile") {
+        assert!(
+            location.hash().expect("hash").starts_with("#pgm="),
+            "the fallback puts the link in the address bar"
+        );
+    }
+    location.set_hash("").expect("clear the hash for later tests");
+}
+
+#[wasm_bindgen_test]
+async fn text_editing_takes_the_focus_and_keeps_its_letters() {
+    clear_storage();
+    let root = mount().await;
+    key_on(&root, ".tnc", "F4").await;
+    let focused =
+        || document().active_element().map(|e| e.class_name()).unwrap_or_default() == "program-text";
+    assert!(eventually(focused).await, "F4 TEXT EDITIEREN focuses the editor");
+    key_on(&root, ".program-text", "p").await;
+    assert!(query(&root, ".tnc.projector").is_none(), "p typed in the editor is a letter");
+    key_on(&root, ".program-text", "F4").await;
+}
+
+#[wasm_bindgen_test]
+async fn a_share_link_over_own_work_asks_before_it_replaces_anything() {
+    clear_storage();
+    let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n";
+    storage().set_item("schwenkbar.program", own).expect("save");
+    let link = AppState::default().apply(Action::LoadSample("stay_q120".into())).share_fragment();
+    let location = web_sys::window().expect("window").location();
+    location.set_hash(&link).expect("open the link");
+    let root = mount().await;
+    assert!(eventually(|| query(&root, "[data-key=take-link]").is_some()).await, "Übernehmen?");
+    assert!(location.hash().expect("hash").is_empty(), "the fragment is read once");
+    assert!(program_lines(&root)[0].contains("STAY_Q120"), "the link's program is shown");
+    assert_eq!(
+        storage().get_item("schwenkbar.program").ok().flatten().as_deref(),
+        Some(own),
+        "nothing saved yet"
+    );
+    key_on(&root, ".tnc", "F2").await;
+    assert!(eventually(|| program_lines(&root)[0].contains("MEIN")).await, "EIGENES BEHALTEN");
+    let again = mount().await;
+    assert!(program_lines(&again)[0].contains("MEIN"), "a reload shows the own program");
+    assert!(query(&again, "[data-key=take-link]").is_none());
+
+    location.set_hash(&link).expect("open the link again");
+    let root = mount().await;
+    assert!(eventually(|| query(&root, "[data-key=take-link]").is_some()).await);
+    key_on(&root, ".tnc", "F1").await;
+    assert!(eventually(|| query(&root, "[data-key=take-link]").is_none()).await, "LINK ÜBERNEHMEN");
+    assert!(program_lines(&root)[0].contains("STAY_Q120"));
+    let again = mount().await;
+    assert!(program_lines(&again)[0].contains("STAY_Q120"), "the taken link is the own program now");
+}
+
+#[wasm_bindgen_test]
+async fn diagnostics_name_the_block_and_an_error_is_not_hidden_by_a_warning() {
+    clear_storage();
+    let root = mount().await;
+    paste_program(
+        &root,
+        "0 BEGIN PGM T MM\n1 PLANE SPATIAL SPA+400 SPB+0 SPC+0 STAY\nL X+1\n2 END PGM T MM\n",
+    )
+    .await;
+    assert_eq!(text(&root, ".summary"), "1 Fehler · 1 Warnung");
+    let inline = text(&root, ".line[data-line='2'] .diag-inline");
+    assert!(inline.starts_with("Winkel nicht erlaubt"), "the error, not the warning: {inline}");
+    click(&root, "[data-key=text-edit]").await;
+    let list = text(&root, ".diag-list");
+    assert!(list.contains("Satz 1: Winkel nicht erlaubt"), "{list}");
+    click(&root, "[data-key=text-edit]").await;
+}
+
+#[wasm_bindgen_test]
+async fn a_binary_file_is_not_imported() {
+    clear_storage();
+    let root = mount().await;
+    let before = program_lines(&root);
+    key_on(&root, ".tnc", "F5").await;
+    let bytes = js_sys::Uint8Array::from(&b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x01\0"[..]);
+    let parts = js_sys::Array::of1(&bytes.into());
+    let file = web_sys::File::new_with_u8_array_sequence(&parts, "bild.png").expect("file");
+    let transfer = web_sys::DataTransfer::new().expect("data transfer");
+    transfer.items().add_with_file(&file).expect("add");
+    let input: web_sys::HtmlInputElement =
+        query(&root, "input.file-input").expect("file input").dyn_into().expect("input");
+    input.set_files(transfer.files().as_ref());
+    input.dispatch_event(&web_sys::Event::new("change").expect("event")).expect("dispatch");
+    let mut line = String::new();
+    for _ in 0..40 {
+        settle().await;
+        line = text(&root, ".dialog-line");
+        if line.contains("NC-Programm") {
+            break;
+        }
+    }
+    assert_eq!(line, "Datei ist kein NC-Programm (Binärdatei): nicht importiert");
+    assert_eq!(program_lines(&root), before, "the program stays");
+}
+
+fn cell(root: &Element, axis: &str, column: &str) -> String {
+    text(root, &format!(".position tr[data-axis='{axis}'] td.{column}"))
+}
+
+#[wasm_bindgen_test]
+async fn the_position_display_follows_the_scrub_slider_and_machines_have_names() {
+    clear_storage();
+    let root = mount().await;
+    paste_program(&root, "0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+50 R0 FMAX\n3 L X+100 F1000\n4 END PGM S MM\n")
+        .await;
+    click(&root, ".program-pane .line[data-line='4']").await;
+    click(&root, "[data-key=lang]").await;
+    click(&root, "[data-key=run]").await;
+    assert!(text(&root, ".position thead").contains("ACTL."), "English screens say ACTL.");
+    click(&root, "[data-key=back]").await;
+    click(&root, "[data-key=lang]").await;
+    click(&root, "[data-key=run]").await;
+    assert!(text(&root, ".position thead").contains("IST"));
+    assert_eq!(cell(&root, "X", "ist"), "+100.000");
+    let scrub: web_sys::HtmlInputElement =
+        query(&root, "[data-testid=scrub]").expect("slider").dyn_into().expect("input");
+    scrub.set_value("500");
+    let init = web_sys::InputEventInit::new();
+    init.set_bubbles(true);
+    scrub
+        .dispatch_event(&web_sys::InputEvent::new_with_event_init_dict("input", &init).expect("event"))
+        .expect("dispatch");
+    settle().await;
+    assert_eq!(cell(&root, "X", "ist"), "+50.000", "halfway through L X+100");
+    click(&root, "[data-key=back]").await;
+    click(&root, "[data-key=machines]").await;
+    assert_eq!(text(&root, "[data-key=machine-ac-table]"), "C-RundtischaufA-Schwenktisch");
+}
