@@ -3,7 +3,8 @@
 HTTP API (python3's urllib; Chrome DevTools Protocol commands via its goog/cdp/execute).
 
 Service worker (dist/, served by python3's http.server on a free 127.0.0.1 port): one online
-visit of the trainer; once the service worker controls the page, the HTTP cache is cleared and
+visit of the trainer; once the service worker controls the page, a second build (one file
+changed, sw.js written anew) must replace the cache at the next visit; then the HTTP cache is cleared and
 the browser goes offline (Network.emulateNetworkConditions): the trainer reloads and the course,
 never visited, opens. Then, back "online" but with the server stopped, both open again. The
 manifest must parse without errors and the page be installable (Page.getInstallabilityErrors).
@@ -165,10 +166,22 @@ def controlled(driver):
     return driver.js("return !!(navigator.serviceWorker && navigator.serviceWorker.controller);")
 
 
-def service_worker_tests(driver, dist, run):
+CACHES = """
+const done = arguments[arguments.length - 1];
+caches.keys().then(async (keys) => {
+  const own = keys.filter((k) => k.startsWith('schwenkbar-'));
+  const entries = own.length ? (await (await caches.open(own[0])).keys()).map((r) => new URL(r.url).pathname) : [];
+  done({ keys: own, entries });
+}).catch((e) => done({ error: String(e) }));"""
+
+
+def service_worker_tests(driver, dist, work, run):
+    # A copy of dist/ is served, so that a second build can be made of it (new_build).
+    site = os.path.join(work, "site")
+    shutil.copytree(dist, site)
     port = free_port()
     server = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
-                               "--directory", dist], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                               "--directory", site], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     base = f"http://127.0.0.1:{port}/"
     try:
         wait_for("the HTTP server", lambda: port_open(port), 10)
@@ -178,13 +191,7 @@ def service_worker_tests(driver, dist, run):
             driver.go(base)
             rendered(driver, TRAINER, ["Schwenkbar", "Bearbeitungsebene schwenken"])
             wait_for("the service worker controlling the page", lambda: controlled(driver), 30, step=0.2)
-            cached = driver.js_async("""
-const done = arguments[arguments.length - 1];
-caches.keys().then(async (keys) => {
-  const own = keys.filter((k) => k.startsWith('schwenkbar-'));
-  const entries = own.length ? (await (await caches.open(own[0])).keys()).map((r) => new URL(r.url).pathname) : [];
-  done({ keys: own, entries });
-}).catch((e) => done({ error: String(e) }));""")
+            cached = driver.js_async(CACHES)
             entries = cached.get("entries", [])
             need = ["/index.html", "/kurs.html", "/manifest.webmanifest"]
             kinds = [".wasm", ".js", ".css", ".png", ".svg"]
@@ -205,6 +212,28 @@ caches.keys().then(async (keys) => {
             if errors:
                 raise Failure(f"installability errors: {errors}")
             return "no manifest or installability errors"
+
+        def new_build():
+            # Another build: one file changes, build_pages' precache.py writes a new sw.js.
+            old = driver.js_async(CACHES).get("keys")
+            with open(os.path.join(site, "manifest.webmanifest"), "a", encoding="utf-8") as f:
+                f.write("\n")
+            subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "precache.py"), site],
+                           check=True, stdout=subprocess.DEVNULL, timeout=30)
+            driver.go(base)
+            rendered(driver, TRAINER, ["Schwenkbar"])
+
+            def replaced():
+                # Browsers look for a new sw.js on navigation; update() makes it certain.
+                driver.js_async("const done = arguments[arguments.length - 1];"
+                                "navigator.serviceWorker.getRegistration().then((r) => r && r.update())"
+                                ".then(() => done(), () => done());")
+                keys = driver.js_async(CACHES).get("keys")
+                return keys if keys and len(keys) == 1 and keys != old else None
+
+            keys = wait_for("the new build's cache replacing the old one", replaced, 30, step=0.5)
+            wait_for("the new service worker controlling the page", lambda: controlled(driver), 10)
+            return f"{old[0]} replaced by {keys[0]}, the old cache deleted"
 
         def offline_emulated():
             driver.cdp("Network.enable")
@@ -238,6 +267,7 @@ caches.keys().then(async (keys) => {
 
         run("offline::first_visit_installs_service_worker", first_visit)
         run("offline::manifest_installable", installable)
+        run("offline::new_build_replaces_the_cache", new_build)
         run("offline::trainer_reloads_offline", offline_emulated)
         run("offline::course_opens_offline", course_offline_emulated)
         run("offline::both_pages_with_server_stopped", server_stopped)
@@ -313,10 +343,11 @@ def main():
             return ok
         return run
 
-    groups = {"offline (service worker, dist/)": 5, "single file (dist-single/)": 2}
+    groups = {"offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
     signal.signal(signal.SIGALRM, out_of_time)
     signal.alarm(TIME_LIMIT_S)
-    profile = tempfile.mkdtemp(prefix="schwenkbar-offline-")
+    work = tempfile.mkdtemp(prefix="schwenkbar-offline-")
+    profile = os.path.join(work, "profile")
     driver = None
     t0 = time.monotonic()
     try:
@@ -324,7 +355,7 @@ def main():
             if not os.path.isfile(path):
                 raise Failure(f"{path} is missing: run scripts/bundle.sh and scripts/single-file.sh --from-dist")
         driver = Driver(args.chromedriver, profile)
-        service_worker_tests(driver, args.dist, runner("offline (service worker, dist/)"))
+        service_worker_tests(driver, args.dist, work, runner("offline (service worker, dist/)"))
         single_file_tests(driver, args.single, runner("single file (dist-single/)"))
     except (Failure, OSError) as e:
         print(f"offline tests: {e}", flush=True)
@@ -332,7 +363,7 @@ def main():
         signal.alarm(0)
         if driver:
             driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
+        shutil.rmtree(work, ignore_errors=True)
 
     lines = []
     for group, planned in groups.items():
