@@ -42,11 +42,15 @@ bundle_env() {
 
 # Builds the release pages into dist/: the trainer (index.html) and the course (kurs.html), each
 # its own bundle, so the course's code and texts never weigh on the trainer. trunk builds one
-# page per run and replaces its dist folder, so the course is built aside and copied in.
+# page per run and replaces its dist folder, so the course is built aside and copied in. Both
+# pages share the manifest and the icons (copied by trunk); dist/sw.js is written last.
 build_pages() {
   bundle_env trunk build index.html --release --offline
   rm -rf target/kurs-dist
   bundle_env trunk build kurs.html --release --offline --dist target/kurs-dist
   cp target/kurs-dist/index.html dist/kurs.html
   find target/kurs-dist -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+  # The service worker (offline after one visit): its precache list and cache version come from
+  # the files now in dist/, whose names trunk hashed.
+  python3 scripts/precache.py dist
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up what is missing, then runs every test: formatting and lints, the native workspace
-# tests, the browser suite in headless Chromium, and the release bundle with its size.
+# tests, the browser suite in headless Chromium, the release bundle with its size, and the
+# offline tests of the built pages (service worker, single-file pages).
 # Ends with one summary line "tests: N passed, N failed".
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,6 +27,13 @@ wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | t
 echo; echo "==> release bundle: trunk build --release --offline"
 bash scripts/bundle.sh
 
+echo; echo "==> single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
+bash scripts/single-file.sh --from-dist
+
+echo; echo "==> offline: service worker and manifest (dist/), single-file pages (dist-single/)"
+offline_rc=0
+python3 scripts/offline_test.py --log "$log" || offline_rc=$?
+
 echo; echo "==> screenshot: Musterprogramm 1 after block 10 on ac-table, 1920x1080"
 # The app's share link opens the program run at a block (web/src/persist.rs).
 fragment=$(python3 -c 'import sys, urllib.parse
@@ -39,4 +47,4 @@ passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4}
 failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')
 echo
 echo "tests: $passed passed, $failed failed"
-[ "$failed" = 0 ]
+[ "$failed" = 0 ] && [ "$offline_rc" = 0 ]
