@@ -167,24 +167,36 @@ impl Diagnostic {
     }
 }
 
-/// Formats a range bound the way the manual prints it (`359.9999`, `0`, `-180`).
-fn n(v: f64) -> String {
-    format!("{v}")
+/// A value or range bound the way the manual prints it (`359.9999`, `0`, `-180`), with the
+/// decimal comma in the German message.
+fn n(v: f64, lang: Lang) -> String {
+    crate::number::prose(v, None, lang)
 }
 
 fn messages(code: &DiagCode) -> (String, String) {
+    use Lang::{De, En};
     match code {
         DiagCode::InvalidInput => ("Eingabewert falsch".into(), "Invalid input".into()),
         DiagCode::MissingWord { word } => {
             (format!("Eingabe fehlt: {word}"), format!("Missing input: {word}"))
         }
         DiagCode::AngleNotPermitted { word, value, min, max } => (
-            format!("Winkel nicht erlaubt: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
-            format!("Entered angle not permitted: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
+            format!("Winkel nicht erlaubt: {word} {} ({}…{})", n(*value, De), n(*min, De), n(*max, De)),
+            format!(
+                "Entered angle not permitted: {word} {} ({}…{})",
+                n(*value, En),
+                n(*min, En),
+                n(*max, En)
+            ),
         ),
         DiagCode::ValueOutOfRange { word, value, min, max } => (
-            format!("Eingabebereich überschritten: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
-            format!("Value out of range: {word} {} ({}…{})", n(*value), n(*min), n(*max)),
+            format!(
+                "Eingabebereich überschritten: {word} {} ({}…{})",
+                n(*value, De),
+                n(*min, De),
+                n(*max, De)
+            ),
+            format!("Value out of range: {word} {} ({}…{})", n(*value, En), n(*min, En), n(*max, En)),
         ),
         DiagCode::Duplicate { word } => {
             (format!("Doppelt programmiert: {word}"), format!("Programmed twice: {word}"))

@@ -11,6 +11,34 @@
 
 use std::cmp::Ordering;
 
+/// A number in running text (a message, the why panel), not in an NC word: with a decimal
+/// comma in German ("Weg 105,0°") and a point in English. `decimals` fixes the places; `None`
+/// writes the shortest form that reads back exactly (`359.9999`, `-180`). NC words keep the
+/// point: that is the control's syntax in both languages.
+#[must_use]
+pub fn prose(value: f64, decimals: Option<usize>, lang: crate::Lang) -> String {
+    let text = match decimals {
+        Some(d) => format!("{value:.d$}"),
+        None => format!("{value}"),
+    };
+    match lang {
+        crate::Lang::De => text.replace('.', ","),
+        crate::Lang::En => text,
+    }
+}
+
+/// A vector in running text: `(0,2588; 0,0000; 0,9659)` in German (the comma is taken by the
+/// decimals), `(0.2588, 0.0000, 0.9659)` in English.
+#[must_use]
+pub fn prose_vec(v: [f64; 3], decimals: usize, lang: crate::Lang) -> String {
+    let sep = match lang {
+        crate::Lang::De => "; ",
+        crate::Lang::En => ", ",
+    };
+    let parts: Vec<String> = v.iter().map(|&x| prose(x, Some(decimals), lang)).collect();
+    format!("({})", parts.join(sep))
+}
+
 /// A number as a person types it into a field: blanks around it, a decimal point or comma
 /// (`-12,5`); finite values only.
 #[must_use]
@@ -278,6 +306,17 @@ impl Big {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn prose_numbers_take_a_decimal_comma_in_german() {
+        use crate::Lang::{De, En};
+        assert_eq!(prose(105.0, Some(1), De), "105,0");
+        assert_eq!(prose(105.0, Some(1), En), "105.0");
+        assert_eq!(prose(-359.9999, None, De), "-359,9999");
+        assert_eq!(prose(-180.0, None, En), "-180");
+        assert_eq!(prose_vec([0.258_819, 0.0, 0.965_926], 4, De), "(0,2588; 0,0000; 0,9659)");
+        assert_eq!(prose_vec([0.258_819, 0.0, 0.965_926], 4, En), "(0.2588, 0.0000, 0.9659)");
+    }
 
     fn same(s: &str) {
         let ours = parse_f64(s);

@@ -528,7 +528,11 @@ impl AppState {
                 "Tilt the working plane: select a function",
             ),
             SoftkeyLevel::Machines => Text::new("Maschine wählen", "Select the machine"),
-            SoftkeyLevel::Samples => Text::new("Beispielprogramm öffnen", "Open a sample program"),
+            // The samples are written as for a German control; English says so.
+            SoftkeyLevel::Samples => Text::new(
+                "Beispielprogramm öffnen",
+                "Open a sample program (its comments are in German, as written for the control)",
+            ),
             SoftkeyLevel::Files => Text::new(
                 "Datei: importieren, herunterladen, Link teilen",
                 "File: import, download, share a link",

@@ -6,6 +6,7 @@
 use glam::DMat3;
 use schwenkbar_core::BlockBody;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::number::{prose, prose_vec};
 use schwenkbar_core::plane::{PlaneBlock, Value};
 use schwenkbar_core::sim::{Simulation, State};
 use schwenkbar_core::solve::{Explanation, SolveOptions, axis_words, fmt_deg, solve_block};
@@ -132,14 +133,15 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
             let chosen = e.chosen == Some(i);
             let verdict =
                 if chosen { l.t("gewählt", "chosen") } else { l.t("nicht gewählt", "not chosen") };
-            (format!("{} · {limits} · {} {:.1}° · {verdict}", axes, l.t("Weg", "path"), cand.path), chosen)
+            let path = prose(cand.path, Some(1), l);
+            (format!("{} · {limits} · {} {path}° · {verdict}", axes, l.t("Weg", "path")), chosen)
         })
         .collect();
     let (rule_de, rule_en) = e.rule.texts();
     PlaneWhy {
         spatial: format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c)),
         euler: format!("PLANE EULER EULPR{} EULNU{} EULROT{}", fmt_deg(pr), fmt_deg(nu), fmt_deg(rot)),
-        tool_axis: format!("({tx:.4}, {ty:.4}, {tz:.4})"),
+        tool_axis: prose_vec([tx, ty, tz], 4, l),
         candidates,
         rule: l.t(&rule_de, &rule_en).to_owned(),
         symmetry: format!(

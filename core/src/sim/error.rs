@@ -1,5 +1,7 @@
 //! Why a run stopped: the control's message (German and English) with the numbers.
 
+use crate::Lang;
+use crate::number::prose;
 use serde::Serialize;
 
 use crate::machine::Texts;
@@ -126,7 +128,12 @@ impl SimErrorCode {
             ),
             SimErrorCode::LimitSwitch { axis, value, min, max }
             | SimErrorCode::RotaryLimit { axis, value, min, max } => t(
-                format!("{axis} = {value:.4} außerhalb des Verfahrbereichs {min} … {max}"),
+                format!(
+                    "{axis} = {} außerhalb des Verfahrbereichs {} … {}",
+                    prose(*value, Some(4), Lang::De),
+                    prose(*min, None, Lang::De),
+                    prose(*max, None, Lang::De)
+                ),
                 format!("{axis} = {value:.4} outside the traverse range {min} … {max}"),
             ),
             SimErrorCode::AxisNotOnMachine { axis } => {

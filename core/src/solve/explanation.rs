@@ -264,7 +264,10 @@ impl SolveError {
                 format!("None of the {candidates} solutions lies inside the traverse range"),
             ),
             SolveError::Unreachable { tool_axis: [x, y, z] } => (
-                format!("Werkzeugachse ({x:.4}, {y:.4}, {z:.4}) mit dieser Kinematik nicht erreichbar"),
+                format!(
+                    "Werkzeugachse {} mit dieser Kinematik nicht erreichbar",
+                    crate::number::prose_vec([x, y, z], 4, crate::Lang::De)
+                ),
                 format!("Tool axis ({x:.4}, {y:.4}, {z:.4}) cannot be reached with this kinematics"),
             ),
             SolveError::NotFinite { what, value } => {
