@@ -21,6 +21,12 @@ pub fn prose(value: f64, decimals: Option<usize>, lang: crate::Lang) -> String {
         Some(d) => format!("{value:.d$}"),
         None => format!("{value}"),
     };
+    localise(text, lang)
+}
+
+/// A number already written with a decimal point (`+12.5`), for running text in `lang`.
+#[must_use]
+pub fn localise(text: String, lang: crate::Lang) -> String {
     match lang {
         crate::Lang::De => text.replace('.', ","),
         crate::Lang::En => text,

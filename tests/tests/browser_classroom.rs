@@ -244,7 +244,30 @@ async fn the_position_display_follows_the_scrub_slider_and_machines_have_names()
         .expect("dispatch");
     settle().await;
     assert_eq!(cell(&root, "X", "ist"), "+50.000", "halfway through L X+100");
+    let work = "[data-view=work]";
+    let pressed = |root: &Element| query(root, work).and_then(|b| b.get_attribute("aria-pressed"));
+    assert_eq!(pressed(&root).as_deref(), Some("true"), "a run frames the workpiece by default");
+    click(&root, work).await;
+    assert_eq!(pressed(&root).as_deref(), Some("false"), "the switch turns it off");
+    click(&root, work).await;
     click(&root, "[data-key=back]").await;
     click(&root, "[data-key=machines]").await;
     assert_eq!(text(&root, "[data-key=machine-ac-table]"), "C-RundtischaufA-Schwenktisch");
+}
+
+#[wasm_bindgen_test]
+async fn the_why_panel_says_it_in_plain_words_first() {
+    clear_storage();
+    let root = mount().await;
+    // Musterprogramm 1, block 10: PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN … on the A/C table.
+    click(&root, ".program-pane .line[data-line='11']").await;
+    assert_eq!(
+        text(&root, "[data-testid=why-plain]"),
+        "Keine B-Achse: C dreht auf +90°, dann kippt A auf +15°."
+    );
+    let why = query(&root, ".why-panel").and_then(|w| w.text_content()).unwrap_or_default();
+    let plain_at = why.find("Keine B-Achse").expect("plain words");
+    let vector_at = why.find("Werkzeugachse").expect("the tool axis vector");
+    assert!(plain_at < vector_at, "plain words before the vector");
+    assert!(why.contains("Weg ") && why.contains(",0°"), "German path with a decimal comma: {why}");
 }

@@ -166,6 +166,16 @@ pub fn app(props: &AppProps) -> Html {
     let speed = state.run.as_ref().map_or(1.0, |r| r.speed_factor());
     let scene_state = state.shown_state();
     let fraction = use_state_eq(|| 1.0_f64);
+    // The candidate hovered in the why panel, drawn as the ghost; forgotten when the cursor moves.
+    let hovered = use_state_eq(|| None::<(usize, schwenkbar_core::axes::AxisValues)>);
+    let on_hover = {
+        let hovered = hovered.clone();
+        let cursor = state.cursor;
+        Callback::from(move |axes: Option<schwenkbar_core::axes::AxisValues>| {
+            hovered.set(axes.map(|a| (cursor, a)))
+        })
+    };
+    let ghost = hovered.filter(|(at, _)| *at == state.cursor).map(|(_, axes)| axes);
     let on_fraction = {
         let fraction = fraction.clone();
         Callback::from(move |f: f64| fraction.set(f))
@@ -182,14 +192,14 @@ pub fn app(props: &AppProps) -> Html {
                         <RightHandDemo lang={l} />
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
-                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} />
+                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} />
                     }
                     <div class="side">
                         if let Some(shown) = shown.clone() {
                             <PositionDisplay state={shown} lang={l} machine={state.machine.clone()} fraction={*fraction} />
                         }
                         <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
-                            sim={state.sim.clone()} shown={shown} lang={l} />
+                            sim={state.sim.clone()} shown={shown} lang={l} {on_hover} />
                     </div>
                 </main>
                 <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />

@@ -5,9 +5,10 @@
 
 use glam::DMat3;
 use schwenkbar_core::BlockBody;
+use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::number::{prose, prose_vec};
-use schwenkbar_core::plane::{PlaneBlock, Value};
+use schwenkbar_core::number::{localise, prose, prose_vec};
+use schwenkbar_core::plane::{PlaneBlock, RotaryAxis, Value};
 use schwenkbar_core::sim::{Simulation, State};
 use schwenkbar_core::solve::{Explanation, SolveOptions, axis_words, fmt_deg, solve_block};
 
@@ -16,11 +17,16 @@ use crate::i18n::Lang;
 /// One PLANE solve as the panel shows it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlaneWhy {
+    /// What the machine does, in plain words first ("Keine B-Achse: C dreht auf +90°, dann
+    /// kippt A auf +15°"); empty when it cannot position.
+    pub plain: String,
     pub spatial: String,
     pub euler: String,
     pub tool_axis: String,
     /// One line per candidate: axis words, limits, path, chosen or why not.
     pub candidates: Vec<(String, bool)>,
+    /// The candidates' axis values (hovering one shows it as the ghost in the 3D view).
+    pub candidate_axes: Vec<AxisValues>,
     pub rule: String,
     pub symmetry: String,
     /// The control's message if it refuses the block.
@@ -73,10 +79,12 @@ pub fn explain_plane(
 impl PlaneWhy {
     fn empty() -> PlaneWhy {
         PlaneWhy {
+            plain: String::new(),
             spatial: String::new(),
             euler: String::new(),
             tool_axis: String::new(),
             candidates: Vec::new(),
+            candidate_axes: Vec::new(),
             rule: String::new(),
             symmetry: String::new(),
             error: None,
@@ -139,6 +147,8 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
         .collect();
     let (rule_de, rule_en) = e.rule.texts();
     PlaneWhy {
+        plain: plain_words(e, l),
+        candidate_axes: e.candidates.iter().map(|c| c.axes).collect(),
         spatial: format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c)),
         euler: format!("PLANE EULER EULPR{} EULNU{} EULROT{}", fmt_deg(pr), fmt_deg(nu), fmt_deg(rot)),
         tool_axis: prose_vec([tx, ty, tz], 4, l),
@@ -152,6 +162,46 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
         ),
         error: e.error_message.map(|m| l.t(m.de(), m.en()).to_owned()),
         assumptions: e.decisions.iter().map(|d| l.t(d.text_de(), d.text_en()).to_owned()).collect(),
+    }
+}
+
+/// The chosen positioning in plain words: the slave axis turns, then the master axis tilts
+/// (the order in which the solution is built: the slave brings the tilt direction round, the
+/// master tilts; on the machine both move together). A single tilt about X or Y that the
+/// machine has no axis for is named first: "Keine B-Achse: C dreht auf +90°, dann kippt A
+/// auf +15°."
+fn plain_words(e: &Explanation, l: Lang) -> String {
+    let Some(chosen) = e.chosen_axes() else { return String::new() };
+    let [spa, spb, _] = e.spatial;
+    let on_machine = |axis: RotaryAxis| e.master == axis || e.slave == axis;
+    let missing = match (spa.abs() > 1e-9, spb.abs() > 1e-9) {
+        (true, false) if !on_machine(RotaryAxis::A) => Some('A'),
+        (false, true) if !on_machine(RotaryAxis::B) => Some('B'),
+        _ => None,
+    };
+    let prefix = missing.map_or_else(String::new, |axis| match l {
+        Lang::De => format!("Keine {axis}-Achse: "),
+        Lang::En => format!("No {axis} axis: "),
+    });
+    // (axis letter, verb, preposition, target) of an axis: "dreht", "auf", "+90°".
+    let part = |axis: RotaryAxis, verb_de: &'static str, verb_en: &'static str| {
+        let value = chosen.get(axis).unwrap_or(0.0);
+        let stays = (value - e.start.get(axis).unwrap_or(0.0)).abs() < 1e-9;
+        let (verb, prep) = match (stays, l) {
+            (true, Lang::De) => ("bleibt", "auf"),
+            (true, Lang::En) => ("stays", "at"),
+            (false, Lang::De) => (verb_de, "auf"),
+            (false, Lang::En) => (verb_en, "to"),
+        };
+        (axis.letter(), verb, prep, format!("{}°", localise(fmt_deg(value), l)))
+    };
+    let (s_axis, s_verb, s_prep, s_to) = part(e.slave, "dreht", "turns");
+    let (m_axis, m_verb, m_prep, m_to) = part(e.master, "kippt", "tilts");
+    let first = format!("{prefix}{s_axis} {s_verb} {s_prep} {s_to}");
+    match l {
+        // German puts the verb second after "dann".
+        Lang::De => format!("{first}, dann {m_verb} {m_axis} {m_prep} {m_to}."),
+        Lang::En => format!("{first}, then {m_axis} {m_verb} {m_prep} {m_to}."),
     }
 }
 
@@ -244,6 +294,40 @@ mod tests {
         assert!(chosen[0].0.contains("A-45") && chosen[0].0.contains("C-90"), "{chosen:?}");
         assert!(why.rule.contains("SEQ"), "{}", why.rule);
         assert_eq!(why.spatial, "PLANE SPATIAL SPA+0 SPB+45 SPC+0");
+    }
+
+    #[test]
+    fn plain_words_come_first_and_name_the_missing_axis() {
+        let m = Machine::builtin("ac-table").expect("shipped");
+        let why = |text: &str, l: Lang| {
+            explain_plane(&plane(text), &m, DMat3::IDENTITY, &SolveOptions::default(), l).plain
+        };
+        // Musterprogramm 1, block 10: a tilt about Y on a machine with A and C only.
+        assert_eq!(
+            why("PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX", Lang::De),
+            "Keine B-Achse: C dreht auf +90°, dann kippt A auf +15°."
+        );
+        assert_eq!(
+            why("PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX", Lang::En),
+            "No B axis: C turns to +90°, then A tilts to +15°."
+        );
+        // A tilt about X needs no turn of C: the machine has the A axis.
+        assert_eq!(
+            why("PLANE SPATIAL SPA+12.5 SPB+0 SPC+0 STAY", Lang::De),
+            "C bleibt auf +0°, dann kippt A auf +12,5°."
+        );
+        let both = explain_plane(
+            &plane("PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX"),
+            &m,
+            DMat3::IDENTITY,
+            &SolveOptions::default(),
+            Lang::De,
+        );
+        assert_eq!(
+            both.candidate_axes.len(),
+            both.candidates.len(),
+            "each candidate can be shown as the ghost"
+        );
     }
 
     #[test]

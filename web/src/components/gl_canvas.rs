@@ -119,6 +119,7 @@ fn wheel_listener(canvas: &HtmlCanvasElement, viewer: Rc<RefCell<Viewer>>) -> im
         // 0.15 % per pixel of scroll, the same in and out (no exp(): keeps libm out of the bundle).
         let step = (1.0 + dy.abs() * 0.0015).min(2.0) as f32;
         v.camera.zoom(if dy > 0.0 { step } else { 1.0 / step });
+        v.follow = false;
         v.dirty = true;
     });
     let opts = web_sys::AddEventListenerOptions::new();

@@ -8,6 +8,7 @@ use std::cell::Cell;
 use std::rc::Rc;
 use std::time::Duration;
 
+use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::sim::State;
@@ -32,6 +33,12 @@ pub struct ScenePaneProps {
     pub animate: bool,
     /// Playback speed factor.
     pub speed: f64,
+    /// A program run is shown (the view follows the workpiece by default).
+    #[prop_or_default]
+    pub in_run: bool,
+    /// A PLANE candidate hovered in the why panel: drawn as the ghost instead of the other one.
+    #[prop_or_default]
+    pub ghost: Option<AxisValues>,
     /// Told where in the block's motion the view stands (animation or scrub), for the
     /// position display.
     #[prop_or_default]
@@ -103,6 +110,9 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
         (Some(m), Some(s)) => {
             let mut scene = scene_at(m, s, *fraction);
             scene.toolpath_drawn = path.1.segments_after.get(s.step).copied();
+            if props.ghost.is_some() {
+                scene.ghost = props.ghost;
+            }
             Some(Rc::new(scene))
         }
         _ => None,
@@ -120,7 +130,7 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
     };
     html! {
         <div class="scene-pane">
-            <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} />
+            <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} in_run={props.in_run} />
             if props.state.is_some() {
                 <label class="scrub">
                     { l.t("Satz-Bewegung", "Block motion") }

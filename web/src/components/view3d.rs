@@ -42,6 +42,29 @@ pub struct View3dProps {
     /// The tool tip's path of the run, W-CS on the table at home.
     #[prop_or_default]
     pub toolpath: SharedPath,
+    /// A program run is shown: the "Werkstück" camera is on until the trainee moves the view.
+    #[prop_or_default]
+    pub in_run: bool,
+}
+
+/// What the "Werkstück" camera keeps in view, in M-CS: the blank's eight corners, the tool tip
+/// and the tool's top (tool length along the tool axis), as the machine stands.
+#[must_use]
+pub fn work_points(machine: &Machine, s: &SceneState) -> Vec<glam::Vec3> {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let on_table = p.workpiece * glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
+    let (lo, hi) = (s.blank.min, s.blank.max);
+    let corners = (0..8).map(|i| {
+        let pick = |bit: u32, a: f64, b: f64| if i & (1 << bit) == 0 { a } else { b };
+        on_table.transform_point3(glam::DVec3::new(
+            pick(0, lo.x, hi.x),
+            pick(1, lo.y, hi.y),
+            pick(2, lo.z, hi.z),
+        ))
+    });
+    let tool = [glam::DVec3::ZERO, glam::DVec3::new(0.0, 0.0, s.tool.length.max(0.0))]
+        .map(|q| p.tool.transform_point3(q));
+    corners.chain(tool).map(|q| q.as_vec3()).collect()
 }
 
 /// The blank's centre in M-CS as the machine stands.
@@ -75,6 +98,8 @@ const TRIAD_SWITCHES: [(&str, &str, &str); 4] = [
 pub fn view3d(props: &View3dProps) -> Html {
     let viewer = use_mut_ref(|| Viewer::new(Camera::default()));
     let triads = use_state(Triads::default);
+    // Renders the toolbar again when a button changed the viewer (the "Werkstück" switch).
+    let redraw = use_state(|| false);
     {
         // One effect after every render (View3d renders only when its props or switches change)
         // instead of one per dependency: each `use_effect_with` costs bundle size, and the
@@ -82,8 +107,13 @@ pub fn view3d(props: &View3dProps) -> Html {
         let viewer = viewer.clone();
         let (machine, state, path, triads) =
             (props.machine.clone(), props.state.clone(), props.toolpath.0.clone(), *triads);
+        let in_run = props.in_run;
         use_effect(move || {
             let mut v = viewer.borrow_mut();
+            if in_run != v.in_run {
+                v.in_run = in_run;
+                v.follow = in_run;
+            }
             let machine = machine.or_else(|| v.fallback_machine());
             let new_machine = machine.as_ref().map(|m| m.id.as_str()) != v.machine_id.as_deref();
             v.machine_id = machine.as_ref().map(|m| m.id.clone());
@@ -96,8 +126,12 @@ pub fn view3d(props: &View3dProps) -> Html {
             });
             // Look at the blank when the machine changes (not on every state: a trainee's pan
             // stays while the program runs).
-            if new_machine && let Some(Content::Machine { machine, state, .. }) = &v.content {
-                v.camera.target = blank_centre(machine, state).as_vec3();
+            if let Some(Content::Machine { machine, state, .. }) = &v.content {
+                let (centre, points) = (blank_centre(machine, state).as_vec3(), work_points(machine, state));
+                if new_machine {
+                    v.camera.target = centre;
+                }
+                v.work_points = points;
             }
             if !v.path.as_ref().is_some_and(|p| Rc::ptr_eq(p, &path)) {
                 // Uploaded by the next frame (the renderer may not exist yet).
@@ -114,6 +148,18 @@ pub fn view3d(props: &View3dProps) -> Html {
             let mut v = viewer.borrow_mut();
             v.camera.set_preset(p);
             v.dirty = true;
+        })
+    };
+    // The "Werkstück" camera: frames the blank and the tool, and keeps them framed.
+    let follow = viewer.borrow().follow;
+    let toggle_follow = {
+        let viewer = viewer.clone();
+        let redraw = redraw.clone();
+        Callback::from(move |_: MouseEvent| {
+            let mut v = viewer.borrow_mut();
+            v.follow = !v.follow;
+            v.dirty = true;
+            redraw.set(!*redraw);
         })
     };
     let toggle = |i: usize| {
@@ -135,6 +181,9 @@ pub fn view3d(props: &View3dProps) -> Html {
                     { for VIEWS.iter().map(|&(p, key, de, en)| html! {
                         <button type="button" data-view={key} onclick={preset(p)}>{ l.t(de, en) }</button>
                     }) }
+                    <button type="button" data-view="work" aria-pressed={if follow { "true" } else { "false" }}
+                        title={l.t("Rohteil und Werkzeug im Bild halten", "Keep the blank and the tool in view")}
+                        onclick={toggle_follow}>{ l.t("Werkstück", "Workpiece") }</button>
                 </div>
                 <div class="view-triads" role="group" aria-label={l.t("Koordinatensysteme", "Coordinate systems")}>
                     { for TRIAD_SWITCHES.iter().enumerate().map(|(i, &(key, de, en))| html! {
@@ -144,5 +193,24 @@ pub fn view3d(props: &View3dProps) -> Html {
                 </div>
             </div>
         </section>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_workpiece_camera_frames_the_blank_and_the_whole_tool() {
+        let machine = Machine::builtin("ac-table").expect("shipped machine");
+        let s = SceneState::for_machine(&machine);
+        let points = work_points(&machine, &s);
+        assert_eq!(points.len(), 10, "eight corners, tool tip, tool top");
+        let centre = blank_centre(&machine, &s).as_vec3();
+        let half_diagonal = ((s.blank.max - s.blank.min).length() / 2.0) as f32;
+        for corner in &points[..8] {
+            assert!((corner.distance(centre) - half_diagonal).abs() < 1e-3, "{corner} is a blank corner");
+        }
+        assert!((points[9].distance(points[8]) - s.tool.length as f32).abs() < 1e-3, "the tool's length");
     }
 }

@@ -52,6 +52,13 @@ pub struct Viewer {
     pub path: Option<Rc<[PathPoint]>>,
     /// The machine shown, to notice a change of machine.
     pub machine_id: Option<String>,
+    /// The "Werkstück" camera: frame the blank and the tool at every new state. On by default
+    /// in a program run; a pan or zoom of the trainee's own turns it off.
+    pub follow: bool,
+    /// Whether the last content was a program run (to switch `follow` on as a run starts).
+    pub in_run: bool,
+    /// What the "Werkstück" camera frames: the blank's corners and the tool, M-CS.
+    pub work_points: Vec<glam::Vec3>,
     fallback: Option<Rc<Machine>>,
 }
 
@@ -73,6 +80,9 @@ impl Viewer {
             pending_path: None,
             path: None,
             machine_id: None,
+            follow: false,
+            in_run: false,
+            work_points: Vec::new(),
             fallback: None,
         }
     }
@@ -108,6 +118,9 @@ impl Viewer {
         if !self.dirty {
             return FrameOutcome::Idle;
         }
+        if self.follow && self.size.1 > 0.0 {
+            self.camera.frame(&self.work_points, self.size.0 / self.size.1, WORK_MARGIN);
+        }
         let Some(content) = &self.content else { return FrameOutcome::Idle };
         let result = match content {
             Content::Machine { machine, state, triads } => {
@@ -116,9 +129,10 @@ impl Viewer {
             Content::List(list) => renderer.paint_list(list, &self.camera, None),
         };
         match result {
-            Ok(labels) => {
+            Ok(mut labels) => {
                 self.dirty = false;
                 self.paints += 1;
+                spread_labels(&mut labels);
                 self.place_labels(&labels);
                 FrameOutcome::Painted
             }
@@ -179,8 +193,10 @@ impl Viewer {
             let after = ((x - other.1).hypot(y - other.2)).max(1.0);
             self.camera.zoom(before / after);
             self.camera.pan((x - px) / 2.0, (y - py) / 2.0, h);
+            self.follow = false;
         } else if self.pan_drag || e.shift_key() {
             self.camera.pan(x - px, y - py, h);
+            self.follow = false;
         } else {
             self.camera.orbit(x - px, y - py);
         }
@@ -190,5 +206,56 @@ impl Viewer {
 
     pub fn pointer_up(&mut self, e: &PointerEvent) {
         self.pointers.retain(|p| p.0 != e.pointer_id());
+    }
+}
+
+/// The "Werkstück" camera leaves this much room around the blank and the tool, so the table
+/// and the head around them stay in view.
+const WORK_MARGIN: f32 = 1.35;
+
+/// Label boxes, CSS px: a label this close to an earlier one would cover it.
+const LABEL_W: f32 = 44.0;
+const LABEL_H: f32 = 15.0;
+
+/// Moves each label down until it no longer covers an earlier one, so the names of coordinate
+/// systems whose origins coincide (W-CS, WPL-CS and I-CS on the blank) stay readable.
+fn spread_labels(labels: &mut [ScreenLabel]) {
+    for i in 1..labels.len() {
+        let (placed, rest) = labels.split_at_mut(i);
+        let label = &mut rest[0];
+        // Below the label it covers: y only grows and never comes back to a label it left, so
+        // it is free after at most one move per earlier label.
+        for _ in 0..=placed.len() {
+            let covered =
+                placed.iter().find(|p| (p.x - label.x).abs() < LABEL_W && (p.y - label.y).abs() < LABEL_H);
+            match covered {
+                Some(p) => label.y = p.y + LABEL_H,
+                None => break,
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn labels_at_one_point_are_stacked_not_piled() {
+        let at = |text, x, y| ScreenLabel { text, kind: "x", x, y };
+        let mut labels =
+            vec![at("X", 100.0, 100.0), at("X'", 102.0, 101.0), at("XW", 99.0, 99.0), at("Y", 300.0, 100.0)];
+        spread_labels(&mut labels);
+        for (i, a) in labels.iter().enumerate() {
+            for b in &labels[..i] {
+                assert!(
+                    (a.x - b.x).abs() >= LABEL_W || (a.y - b.y).abs() >= LABEL_H,
+                    "{} covers {}",
+                    a.text,
+                    b.text
+                );
+            }
+        }
+        assert_eq!((labels[3].x, labels[3].y), (300.0, 100.0), "a free label stays where it is");
     }
 }

@@ -3,6 +3,7 @@
 
 use std::rc::Rc;
 
+use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::State;
 use yew::prelude::*;
@@ -21,6 +22,9 @@ pub struct WhyPanelProps {
     /// The state shown in run mode.
     pub shown: Option<Rc<State>>,
     pub lang: Lang,
+    /// A candidate hovered (its axes, shown as the ghost in the 3D view) or left (`None`).
+    #[prop_or_default]
+    pub on_hover: Callback<Option<AxisValues>>,
 }
 
 #[function_component(WhyPanel)]
@@ -69,10 +73,19 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
                     if let Some(e) = &w.error {
                         <p class="why-error" data-testid="why-error">{ e }</p>
                     }
+                    if !w.plain.is_empty() {
+                        <p class="why-plain" data-testid="why-plain">{ &w.plain }</p>
+                    }
                     if !w.candidates.is_empty() {
                         <ul class="candidates">
-                            { for w.candidates.iter().map(|(text, chosen)| html! {
-                                <li class={classes!("candidate", chosen.then_some("chosen"))}>{ text }</li>
+                            { for w.candidates.iter().zip(&w.candidate_axes).map(|((text, chosen), axes)| {
+                                let axes = *axes;
+                                let enter = props.on_hover.reform(move |_: MouseEvent| Some(axes));
+                                let leave = props.on_hover.reform(|_: MouseEvent| None);
+                                html! {
+                                    <li class={classes!("candidate", chosen.then_some("chosen"))}
+                                        onmouseenter={enter} onmouseleave={leave}>{ text }</li>
+                                }
                             }) }
                         </ul>
                         <p class="why-rule">{ &w.rule }</p>

@@ -121,6 +121,22 @@ impl Camera {
         }
     }
 
+    /// Frames `points` (mm): the target at the centre of their box, the distance at which a
+    /// sphere around them fits both the height and the width of a view of `aspect` (width /
+    /// height), times `margin` (> 1 leaves the machine around them in view). The view
+    /// direction stays. Sphere in a cone of half-angle θ: distance = r / sin θ.
+    pub fn frame(&mut self, points: &[Vec3], aspect: f32, margin: f32) {
+        let Some(first) = points.first() else { return };
+        let (min, max) = points.iter().fold((*first, *first), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+        let centre = (min + max) / 2.0;
+        let radius = points.iter().map(|p| p.distance(centre)).fold(10.0_f32, f32::max);
+        let half_v = f64::from(self.fov_y.to_radians()) / 2.0;
+        let half_h = (half_v.tan() * f64::from(aspect.max(1e-3))).atan();
+        let half = half_v.min(half_h);
+        self.target = centre;
+        self.distance = ((f64::from(radius * margin) / half.sin()) as f32).clamp(MIN_DISTANCE, MAX_DISTANCE);
+    }
+
     /// Pans so that the scene follows a drag of `(dx, dy)` CSS pixels in a view `height_px` tall.
     pub fn pan(&mut self, dx: f32, dy: f32, height_px: f32) {
         let view = self.view();
@@ -270,6 +286,31 @@ mod tests {
         assert_eq!(c.distance, MIN_DISTANCE);
         c.zoom(1e12);
         assert_eq!(c.distance, MAX_DISTANCE);
+    }
+
+    #[test]
+    fn framing_puts_every_point_inside_the_view_at_any_aspect() {
+        // Musterprogramm 1 at block 10: the blank near the table centre, the tool at
+        // X-600 Y+500 M91 far away from it (the case that left the tool out of view).
+        let points = [
+            Vec3::new(-50.0, -50.0, -40.0),
+            Vec3::new(50.0, 50.0, 0.0),
+            Vec3::new(-600.0, 500.0, 300.0),
+            Vec3::new(-600.0, 500.0, 420.0),
+        ];
+        for (w, h) in [(1920.0, 1080.0), (800.0, 900.0), (400.0, 300.0)] {
+            for preset in [Preset::Iso, Preset::Front, Preset::Top] {
+                let mut cam = camera(preset);
+                cam.frame(&points, w / h, 1.0);
+                for p in points {
+                    let (x, y) = project_to_css(&cam.view_proj(w / h), p, w, h).expect("in front of the eye");
+                    assert!((0.0..=w).contains(&x) && (0.0..=h).contains(&y), "{p} at ({x}, {y}) in {w}×{h}");
+                }
+            }
+        }
+        let mut cam = camera(Preset::Iso);
+        cam.frame(&[], 1.0, 1.0);
+        assert_eq!(cam, camera(Preset::Iso), "nothing to frame: the camera stays");
     }
 
     #[test]
