@@ -51,7 +51,7 @@ async fn every_lesson_opens_and_its_exercises_accept_right_and_equivalent_answer
         for (n, &spec) in lesson.exercises.iter().enumerate() {
             let ex = Exercise::generate(spec, 0);
             assert_eq!(text(&root, &format!("[data-testid=prompt-{n}]")), ex.prompt.de);
-            for good in [&ex.solution, &ex.equivalent] {
+            for good in [&ex.solution.de, &ex.equivalent.de] {
                 answer(&root, n, &Answer::typed(good)).await;
                 assert_eq!(verdict(&root, n).await.0, "correct", "lesson {} exercise {n}: {good}", i + 1);
             }
@@ -146,7 +146,7 @@ async fn progress_is_kept_and_a_corrupt_record_is_reported() {
     let root = mount_at("#kurs/1").await;
     wait_for(&root, "[data-lesson='1']", 5_000).await.expect("lesson 1");
     let ex = Exercise::generate(lessons::lesson(0).expect("lesson").exercises[0], 0);
-    answer(&root, 0, &Answer::Text(ex.solution.clone())).await;
+    answer(&root, 0, &Answer::Text(ex.solution.de.clone())).await;
     unmount(&root);
     let root = mount_at("#kurs").await;
     let status = wait_for(&root, "[data-testid=lesson-status-1]", 3_000).await.expect("overview");
