@@ -359,6 +359,10 @@ fn the_other_solution_of_a_run_gets_the_other_solution_hint_with_the_rule() {
     ] {
         let ex = Exercise::generate(Spec::Run(kind), 0);
         let (chosen, other) = candidates_of(&ex, block);
+        // What the hint says: both positions give the same tool axis (forward kinematics).
+        let machine = Machine::builtin("ac-table").unwrap();
+        let (tc, to) = (machine.forward(&chosen).col(2), machine.forward(&other).col(2));
+        assert!((tc - to).length() < 1e-9 && chosen != other, "{kind:?}: {tc} vs {to}");
         let word = crate::solve::fmt_deg(other.get(axis).unwrap());
         let v = ex.check(&Answer::typed(&word));
         assert_eq!(hint(&v), Some(Hint::OtherSolution), "{kind:?}: {word} → {v:?}");
