@@ -87,13 +87,21 @@ pub(super) fn check_axes(
         };
     };
     let Answer::Text(text) = answer else {
-        return Verdict::Wrong {
-            hint: Hint::ControlFinds,
-            text: texts(
+        // With COORD ROT/TABLE ROT there are no limits or options to check: say what the mode does.
+        let text = match other_mode {
+            Some(_) => {
+                let t = transform_hint(e, false);
+                texts(
+                    format!("Die Steuerung findet hier eine Stellung. {}", t.de),
+                    format!("The control finds a position here. {}", t.en),
+                )
+            }
+            None => texts(
                 "Die Steuerung findet hier eine erlaubte Lösung. Prüfen Sie beide Lösungen noch einmal gegen Endschalter und Option",
                 "The control finds a permitted solution here. Check both solutions against the limit switches and the option again",
             ),
         };
+        return Verdict::Wrong { hint: Hint::ControlFinds, text };
     };
     let given = match typed_axes(text) {
         Ok(g) => g,

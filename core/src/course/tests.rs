@@ -434,9 +434,12 @@ fn coord_rot_and_table_rot_get_their_own_hints() {
                 && text.contains(&format!("{this}:")),
             "{text}"
         );
-        // Any other wrong position still gets what the mode does.
+        // Any other wrong position, or "the control refuses", still gets what the mode does.
         let v = ex.check(&Answer::typed("A+20 C+5"));
         assert_eq!(hint(&v), Some(Hint::Transform));
         assert!(hint_text(&v).starts_with(&format!("{this}:")));
+        let v = ex.check(&Answer::ControlError);
+        assert_eq!(hint(&v), Some(Hint::ControlFinds));
+        assert!(hint_text(&v).contains(&format!("{this}:")));
     }
 }
