@@ -20,6 +20,7 @@ use std::hash::{Hash, Hasher};
 
 use glam::DMat3;
 
+use crate::axes::AxisValues;
 use crate::format::plane_text;
 use crate::machine::{Machine, Texts};
 use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning, Value};
@@ -47,6 +48,9 @@ pub enum Spec {
     DialogTurn,
     /// Like [`Spec::Lean`], and the block must position with `MOVE` at a given DIST and F.
     DialogMove,
+    /// Like [`Spec::Lean`]; variant 0 is the plane of Musterprogramm 1 (lesson 8), so it has its
+    /// own variant 0 instead of repeating lesson 2's.
+    ProgramLean,
     /// An orientation given as `PLANE EULER`: the same one in another form.
     EulerToOther,
     /// One of the four chamfers (EULNU 45): the PLANE block for it, any form.
@@ -118,8 +122,12 @@ pub enum Hint {
     Positioning,
     /// The task asks for another PLANE form than the one given.
     SameForm,
-    /// The other of the two machine solutions.
+    /// The other of the two machine solutions of the same orientation.
     OtherSolution,
+    /// What `STAY` (or `PLANE RESET STAY`) does: only the coordinate system, no axis moves.
+    Stay,
+    /// What `COORD ROT` or `TABLE ROT` does with the free table axis.
+    Transform,
     /// The control refuses this block, but the answer gives positions.
     ControlRefuses,
     /// The control finds a position, but the answer says it refuses.
@@ -154,10 +162,11 @@ pub struct Exercise {
     pub variant: u32,
     pub prompt: Texts,
     pub answer_kind: AnswerKind,
-    /// The answer the solution shows.
-    pub solution: String,
+    /// The answer the solution shows, per UI language: NC words read the same in both, the
+    /// control's refusal is its message in that language.
+    pub solution: Texts,
     /// The same answer in another form (another PLANE form, or another way to write it).
-    pub equivalent: String,
+    pub equivalent: Texts,
     /// A wrong answer and the hint it gets (for the tests, and as "typical mistake").
     pub typical_mistake: (Answer, Hint),
     /// The program this exercise is about, to open in the lesson's trainer, and its machine.
@@ -167,9 +176,20 @@ pub struct Exercise {
 
 #[derive(Debug, Clone)]
 enum Check {
-    Orientation { target: DMat3, spatial: [f64; 3], require: orientation::Require, not_euler: bool },
-    Axes { machine: Box<Machine>, explanation: Box<Explanation> },
-    Value { value: f64, letter: char },
+    Orientation {
+        target: DMat3,
+        spatial: [f64; 3],
+        require: orientation::Require,
+        not_euler: bool,
+    },
+    /// `other_mode`: for a block with COORD ROT or TABLE ROT, where the axes would go with the
+    /// other of the two (the solver's answer), so its hint can tell the two apart.
+    Axes {
+        machine: Box<Machine>,
+        explanation: Box<Explanation>,
+        other_mode: Option<AxisValues>,
+    },
+    Value(expected::ValueCheck),
 }
 
 /// A small deterministic generator (SplitMix64): the same variant always gives the same numbers.
@@ -199,6 +219,11 @@ impl Rng {
 
 fn texts(de: impl Into<String>, en: impl Into<String>) -> Texts {
     Texts { de: de.into(), en: en.into() }
+}
+
+/// NC words (a block, axis words, a number): the same in both languages.
+fn nc(words: String) -> Texts {
+    Texts { de: words.clone(), en: words }
 }
 
 /// `TURN FMAX`: how the exercises' blocks position unless the task asks otherwise.
@@ -233,7 +258,9 @@ impl Exercise {
     pub fn generate(spec: Spec, variant: u32) -> Exercise {
         let mut rng = Rng::new(spec, variant);
         match spec {
-            Spec::Lean | Spec::DialogTurn | Spec::DialogMove => orientation::lean(spec, variant, &mut rng),
+            Spec::Lean | Spec::DialogTurn | Spec::DialogMove | Spec::ProgramLean => {
+                orientation::lean(spec, variant, &mut rng)
+            }
             Spec::TurnAboutZ => orientation::turn_about_z(variant, &mut rng),
             Spec::LeanAndTurn => orientation::lean_and_turn(variant, &mut rng),
             Spec::EulerToOther => orientation::euler_to_other(variant, &mut rng),
@@ -250,8 +277,10 @@ impl Exercise {
             Check::Orientation { target, spatial, require, not_euler } => {
                 orientation::check(answer, target, *spatial, *require, *not_euler)
             }
-            Check::Axes { machine, explanation } => answer::check_axes(answer, machine, explanation),
-            Check::Value { value, letter } => answer::check_value(answer, *value, *letter),
+            Check::Axes { machine, explanation, other_mode } => {
+                answer::check_axes(answer, machine, explanation, other_mode.as_ref())
+            }
+            Check::Value(v) => answer::check_value(answer, v),
         }
     }
 }

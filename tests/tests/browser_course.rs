@@ -51,7 +51,7 @@ async fn every_lesson_opens_and_its_exercises_accept_right_and_equivalent_answer
         for (n, &spec) in lesson.exercises.iter().enumerate() {
             let ex = Exercise::generate(spec, 0);
             assert_eq!(text(&root, &format!("[data-testid=prompt-{n}]")), ex.prompt.de);
-            for good in [&ex.solution, &ex.equivalent] {
+            for good in [&ex.solution.de, &ex.equivalent.de] {
                 answer(&root, n, &Answer::typed(good)).await;
                 assert_eq!(verdict(&root, n).await.0, "correct", "lesson {} exercise {n}: {good}", i + 1);
             }
@@ -146,7 +146,7 @@ async fn progress_is_kept_and_a_corrupt_record_is_reported() {
     let root = mount_at("#kurs/1").await;
     wait_for(&root, "[data-lesson='1']", 5_000).await.expect("lesson 1");
     let ex = Exercise::generate(lessons::lesson(0).expect("lesson").exercises[0], 0);
-    answer(&root, 0, &Answer::Text(ex.solution.clone())).await;
+    answer(&root, 0, &Answer::Text(ex.solution.de.clone())).await;
     unmount(&root);
     let root = mount_at("#kurs").await;
     let status = wait_for(&root, "[data-testid=lesson-status-1]", 3_000).await.expect("overview");
@@ -172,4 +172,92 @@ async fn the_trainer_links_to_the_course() {
     let link = query(&root, "[data-testid=course-link]").expect("course link");
     assert_eq!(link.get_attribute("href").as_deref(), Some("kurs.html"));
     unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn lesson_2_try_it_hides_the_signed_angle_and_the_block_until_checked() {
+    clear_storage();
+    let root = mount_at("#kurs/2").await;
+    wait_for(&root, ".right-hand", 5_000).await.expect("the right-hand demo");
+    assert!(query(&root, ".rh-block").is_some(), "free play shows the block");
+    click(&root, ".rh-start").await;
+    assert!(query(&root, ".rh-task").is_some());
+    assert!(query(&root, ".rh-block").is_none(), "the block would give the sign away");
+    let angle = query(&root, ".rh-angle").expect("the angle readout");
+    assert_eq!(angle.get_attribute("data-hidden").as_deref(), Some("true"));
+    assert!(angle.get_attribute("data-angle").is_none());
+    click(&root, ".rh-check").await;
+    assert!(query(&root, ".rh-verdict").is_some());
+    assert!(text(&root, ".rh-block").starts_with("PLANE SPATIAL"), "shown after Prüfen");
+    assert!(query(&root, ".rh-angle[data-angle]").is_some());
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+}
+
+/// The solver's other solution of the exercise program's block `number` from A+0 C+0.
+fn other_solution(ex: &Exercise, number: u32) -> schwenkbar_core::axes::AxisValues {
+    use schwenkbar_core::plane::Value;
+    let (text, machine) = ex.program.clone().expect("a program");
+    let (program, _) = schwenkbar_core::parse(&text);
+    let block = program
+        .blocks
+        .iter()
+        .find(|b| b.number == Some(number))
+        .and_then(|b| match &b.body {
+            schwenkbar_core::BlockBody::Plane(p) => p
+                .try_map(|v| match v {
+                    Value::Number(x) => Ok(*x),
+                    Value::Param { .. } => Err(()),
+                })
+                .ok(),
+            _ => None,
+        })
+        .expect("a PLANE block");
+    let machine = schwenkbar_core::machine::Machine::builtin(machine).expect("machine");
+    let e = schwenkbar_core::solve::solve_block(
+        &machine,
+        &block,
+        glam::DMat3::IDENTITY,
+        &schwenkbar_core::solve::SolveOptions::default(),
+    )
+    .expect("solvable");
+    let chosen = e.chosen.expect("a choice");
+    e.candidates.iter().enumerate().find(|(i, _)| *i != chosen).map(|(_, c)| c.axes).expect("two solutions")
+}
+
+#[wasm_bindgen_test]
+async fn the_other_solution_in_lessons_4_8_and_9_gets_its_own_hint_and_lesson_5_refuses_in_english() {
+    use schwenkbar_core::course::{RunKind, Spec};
+    use schwenkbar_core::plane::RotaryAxis;
+    clear_storage();
+    // Lesson 4 exercise 1 (TURN), lesson 8 exercise 1 (Musterprogramm 1 block 10), lesson 9
+    // exercise 2 (TURN): the axis A at the solver's other solution.
+    for (lesson, n, kind, block) in
+        [(4, 0, RunKind::Turn, 6), (8, 0, RunKind::Musterprogramm1, 10), (9, 1, RunKind::Turn, 6)]
+    {
+        let root = mount_at(&format!("#kurs/{lesson}")).await;
+        wait_for(&root, &format!("[data-lesson='{lesson}']"), 5_000).await.expect("the lesson");
+        let ex = Exercise::generate(Spec::Run(kind), 0);
+        let a = other_solution(&ex, block).get(RotaryAxis::A).expect("A");
+        answer(&root, n, &Answer::Text(schwenkbar_core::solve::fmt_deg(a))).await;
+        let (class, message) = verdict(&root, n).await;
+        assert_eq!(class, "wrong", "lesson {lesson}");
+        assert!(message.contains("andere Lösung derselben Lage"), "lesson {lesson}: {message}");
+        assert!(!message.contains("Rechte-Hand-Regel"), "lesson {lesson}: {message}");
+        unmount(&root);
+    }
+    // Lesson 5 exercise 3: the control refuses; the English view shows the English message.
+    let root = mount_at("#kurs/5").await;
+    wait_for(&root, "[data-lesson='5']", 5_000).await.expect("lesson 5");
+    click(&root, "[data-testid=course-lang]").await;
+    click(&root, "[data-testid=refuse-2]").await;
+    assert_eq!(verdict(&root, 2).await.0, "correct");
+    click(&root, "[data-testid=solution-button-2]").await;
+    let shown = text(&root, "[data-testid=solution-2]");
+    assert!(shown.contains("Entered angle not permitted") && !shown.contains("Winkel"), "{shown}");
+    click(&root, "[data-testid=course-lang]").await;
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
 }

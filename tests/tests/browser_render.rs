@@ -286,8 +286,12 @@ async fn try_it_asks_for_a_signed_turn_and_tells_a_wrong_sign() {
     click(&demo, ".rh-start").await;
     assert_eq!(query(&demo, ".rh-task").text_content().as_deref(), Some("Drehen Sie die Ebene um +30° um Y"));
     set_slider(&demo, "-30").await;
-    assert_eq!(query(&demo, ".rh-block").text_content().as_deref(), Some("PLANE SPATIAL SPA+0 SPB-30 SPC+0"));
+    // The signed angle and the block would give the sign away: hidden until "Prüfen".
+    assert!(demo.query_selector(".rh-block").expect("selector").is_none(), "no block before the check");
+    assert_eq!(query(&demo, ".rh-angle").get_attribute("data-hidden").as_deref(), Some("true"));
+    assert!(!query(&demo, ".rh-angle").text_content().unwrap_or_default().contains("30"));
     click(&demo, ".rh-check").await;
+    assert_eq!(query(&demo, ".rh-block").text_content().as_deref(), Some("PLANE SPATIAL SPA+0 SPB-30 SPC+0"));
     assert!(query(&demo, ".rh-verdict").class_name().contains("wrong-sign"), "−30 for +30 is the wrong sign");
     set_slider(&demo, "30").await;
     click(&demo, ".rh-check").await;
@@ -333,8 +337,11 @@ async fn mount_view(w: u32, h: u32, lang: Lang) -> Element {
 /// Mounts the right-hand demo (German) into a new element.
 async fn mount_demo() -> Element {
     let root = host("width:900px;height:500px");
-    yew::Renderer::<RightHandDemo>::with_root_and_props(root.clone(), RightHandDemoProps { lang: Lang::De })
-        .render();
+    yew::Renderer::<RightHandDemo>::with_root_and_props(
+        root.clone(),
+        RightHandDemoProps { lang: Lang::De, block: None },
+    )
+    .render();
     sleep(100).await;
     root
 }

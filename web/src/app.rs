@@ -189,7 +189,7 @@ pub fn app(props: &AppProps) -> Html {
                     <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
                         text_editing={state.text_editing} {on_select} {on_text} />
     if state.right_hand {
-                        <RightHandDemo lang={l} />
+                        <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
                         state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} />

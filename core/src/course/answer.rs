@@ -2,11 +2,12 @@
 //! inside `PLANE AXIAL …` or `L …`), numbers with a decimal point or comma, and "the control
 //! refuses" as its own answer.
 
-use super::{Hint, VALUE_TOL, Verdict, texts};
+use super::expected::ValueCheck;
+use super::{Hint, RunKind, VALUE_TOL, Verdict, texts};
 use crate::axes::AxisValues;
 use crate::machine::{Machine, Texts};
 use crate::number::parse_input;
-use crate::plane::RotaryAxis;
+use crate::plane::{RotaryAxis, TransformMode};
 use crate::solve::{Explanation, axis_words};
 
 /// A trainee's answer.
@@ -55,19 +56,22 @@ fn typed_axes(text: &str) -> Result<AxisValues, Texts> {
     Ok(out)
 }
 
-fn same(a: &AxisValues, b: &AxisValues) -> bool {
+pub(super) fn same(a: &AxisValues, b: &AxisValues) -> bool {
     a.iter().all(|(axis, v)| b.get(axis).is_some_and(|w| (v - w).abs() <= VALUE_TOL))
 }
 
-pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) -> Verdict {
+pub(super) fn check_axes(
+    answer: &Answer,
+    machine: &Machine,
+    e: &Explanation,
+    other_mode: Option<&AxisValues>,
+) -> Verdict {
     let reason = texts(e.reason.de(), e.reason.en());
     let Some(chosen) = e.chosen_axes() else {
         return match answer {
             Answer::ControlError => {
                 let (de, en) = e.error.map_or((String::new(), String::new()), |err| err.details());
-                let m = e
-                    .error_message
-                    .map_or(("Winkel nicht erlaubt", "Angle not permitted"), |m| (m.de(), m.en()));
+                let m = super::expected::refusal(e);
                 Verdict::Correct(texts(
                     format!("Richtig: die Steuerung meldet „{}“. {de}", m.0),
                     format!("Correct: the control reports \"{}\". {en}", m.1),
@@ -76,20 +80,28 @@ pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) ->
             Answer::Text(_) => Verdict::Wrong {
                 hint: Hint::ControlRefuses,
                 text: texts(
-                    "Prüfe jede Lösung gegen die Endschalter und die Option (SEQ/SYM): bleibt keine übrig, meldet die Steuerung einen Fehler",
+                    "Prüfen Sie jede Lösung gegen die Endschalter und die Option (SEQ/SYM): bleibt keine übrig, meldet die Steuerung einen Fehler",
                     "Check each solution against the limit switches and the option (SEQ/SYM): if none is left, the control reports an error",
                 ),
             },
         };
     };
     let Answer::Text(text) = answer else {
-        return Verdict::Wrong {
-            hint: Hint::ControlFinds,
-            text: texts(
-                "Die Steuerung findet hier eine erlaubte Lösung. Prüfe beide Lösungen noch einmal gegen Endschalter und Option",
+        // With COORD ROT/TABLE ROT there are no limits or options to check: say what the mode does.
+        let text = match other_mode {
+            Some(_) => {
+                let t = transform_hint(e, false);
+                texts(
+                    format!("Die Steuerung findet hier eine Stellung. {}", t.de),
+                    format!("The control finds a position here. {}", t.en),
+                )
+            }
+            None => texts(
+                "Die Steuerung findet hier eine erlaubte Lösung. Prüfen Sie beide Lösungen noch einmal gegen Endschalter und Option",
                 "The control finds a permitted solution here. Check both solutions against the limit switches and the option again",
             ),
         };
+        return Verdict::Wrong { hint: Hint::ControlFinds, text };
     };
     let given = match typed_axes(text) {
         Ok(g) => g,
@@ -126,6 +138,9 @@ pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) ->
         };
     }
     let (m, s) = (e.master, e.slave);
+    if let Some(other) = other_mode {
+        return Verdict::Wrong { hint: Hint::Transform, text: transform_hint(e, same(other, &given)) };
+    }
     Verdict::Wrong {
         hint: Hint::Wrong,
         text: texts(
@@ -137,6 +152,52 @@ pub(super) fn check_axes(answer: &Answer, machine: &Machine, e: &Explanation) ->
             ),
         ),
     }
+}
+
+/// What COORD ROT or TABLE ROT does when only SPC is non-zero (seed 000 §2.3.3, DOMAIN.md
+/// §3.4): the tool stays vertical, so the master axis does not tilt and the free slave axis is
+/// either left standing (COORD ROT) or turned (TABLE ROT). `other_mode`: the answer is where the
+/// axes go with the other one.
+fn transform_hint(e: &Explanation, other_mode: bool) -> Texts {
+    let (m, s) = (e.master, e.slave);
+    let (mixed_de, mixed_en, de, en) = match e.transform {
+        TransformMode::TableRot => (
+            "Das ist die Stellung mit COORD ROT. ",
+            "That is the position with COORD ROT. ",
+            format!(
+                "TABLE ROT: Der Tisch dreht mit – die freie Drehachse {s} stellt die Drehung um SPC ein. Die Werkzeugachse bleibt senkrecht (nur SPC ist ungleich 0), {m} kippt also nicht."
+            ),
+            format!(
+                "TABLE ROT: the table turns – the free rotary axis {s} realises the turn by SPC. The tool axis stays vertical (only SPC is non-zero), so {m} does not tilt."
+            ),
+        ),
+        TransformMode::CoordRot => (
+            "Das ist die Stellung mit TABLE ROT. ",
+            "That is the position with TABLE ROT. ",
+            format!(
+                "COORD ROT: Der Tisch bleibt stehen – {s} behält seine Stellung, die Drehung um SPC rechnet die Steuerung nur ins Koordinatensystem ein. Die Werkzeugachse bleibt senkrecht (nur SPC ist ungleich 0), {m} kippt also nicht."
+            ),
+            format!(
+                "COORD ROT: the table stays – {s} keeps its position, the control applies the turn by SPC to the coordinate system only. The tool axis stays vertical (only SPC is non-zero), so {m} does not tilt."
+            ),
+        ),
+    };
+    if other_mode { texts(format!("{mixed_de}{de}"), format!("{mixed_en}{en}")) } else { texts(de, en) }
+}
+
+/// The hint for the other solution of the same orientation in a run: both axis positions give
+/// the same plane, and the rule the solver applied says why the control takes the other one.
+fn other_solution_hint(e: &Explanation) -> Texts {
+    texts(
+        format!(
+            "Das ist die andere Lösung derselben Lage: Beide Achsstellungen schwenken die Ebene gleich, die Maschine könnte beide anfahren. Die Steuerung wählt die andere. Grund: {}.",
+            e.reason.de()
+        ),
+        format!(
+            "That is the other solution of the same orientation: both axis positions tilt the plane alike, the machine could reach either. The control chooses the other one. Reason: {}.",
+            e.reason.en()
+        ),
+    )
 }
 
 /// Which rule decides, without giving the numbers away.
@@ -154,8 +215,8 @@ fn rule_hint(e: &Explanation) -> Texts {
     }
 }
 
-/// `letter` is the asked quantity: A/B/C, X/Y/Z, or `Q` for Q120.
-pub(super) fn check_value(answer: &Answer, value: f64, letter: char) -> Verdict {
+pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
+    let (value, letter) = (c.value, c.letter);
     let Answer::Text(text) = answer else {
         return Verdict::Wrong {
             hint: Hint::ControlFinds,
@@ -178,20 +239,64 @@ pub(super) fn check_value(answer: &Answer, value: f64, letter: char) -> Verdict 
         ));
     };
     let shown = if letter == 'Q' { "Q120".to_owned() } else { letter.to_string() };
-    if (v - value).abs() <= VALUE_TOL {
+    let is = |w: f64| (v - w).abs() <= VALUE_TOL;
+    if is(value) {
         return Verdict::Correct(texts(
             format!("Richtig: {shown} = {}", super::expected::fmt_value(value)),
             format!("Correct: {shown} = {}", super::expected::fmt_value(value)),
         ));
     }
-    if value.abs() > VALUE_TOL && (v + value).abs() <= VALUE_TOL {
-        return Verdict::Wrong { hint: Hint::RightHand, text: super::orientation::right_hand_hint() };
+    if let (Some(e), Some(other)) = (c.decider.as_deref(), c.other_solution())
+        && is(other)
+    {
+        return Verdict::Wrong { hint: Hint::OtherSolution, text: other_solution_hint(e) };
+    }
+    if c.is_stay() {
+        return Verdict::Wrong { hint: Hint::Stay, text: stay_hint(c.kind, c.computed().is_some_and(is)) };
+    }
+    if c.sign_flipped.is_some_and(is) {
+        let about = c.decider.as_deref().map_or([true; 3], |e| super::orientation::non_zero(e.spatial));
+        return Verdict::Wrong { hint: Hint::RightHand, text: super::orientation::right_hand_hint(about) };
     }
     Verdict::Wrong {
         hint: Hint::Wrong,
         text: texts(
-            "Noch nicht. Öffne das Programm im Trainer und lass es Satz für Satz bis zu diesem Satz laufen: die Positionsanzeige zeigt den Wert",
+            "Noch nicht. Öffnen Sie das Programm im Trainer und lassen Sie es Satz für Satz bis zu diesem Satz laufen: die Positionsanzeige zeigt den Wert",
             "Not yet. Open the program in the trainer and run it block by block up to this block: the position display shows the value",
         ),
+    }
+}
+
+/// What STAY does (seed 000 §2.3.3, §2.3.4; DOMAIN.md §4): only the coordinate system is
+/// tilted, the axes do not move, the computed positions wait in Q120–Q122 for a later block.
+/// `computed`: the answer is the position the block computed.
+fn stay_hint(kind: RunKind, computed: bool) -> Texts {
+    match kind {
+        RunKind::StayQ120 => texts(
+            "Auch mit STAY rechnet die Steuerung die Achsstellung aus, als ob sie schwenken würde, und legt sie in Q120 bis Q122 ab (Q120 = A). Sie fährt sie nur nicht an: Das macht ein späterer Satz wie L A+Q120 C+Q122 R0 FMAX.",
+            "With STAY, too, the control computes the axis position as if it swivelled and stores it in Q120 to Q122 (Q120 = A). It just does not move there: a later block such as L A+Q120 C+Q122 R0 FMAX does.",
+        ),
+        RunKind::ResetStay => texts(
+            "PLANE RESET STAY setzt nur die Rechnung zurück: Die Drehachsen fahren nicht und bleiben geschwenkt stehen, bis ein späterer Satz sie zurückfährt (z. B. L A+0 C+0 R0 FMAX).",
+            "PLANE RESET STAY only resets the calculation: the rotary axes do not move and stay tilted until a later block moves them back (e.g. L A+0 C+0 R0 FMAX).",
+        ),
+        _ => {
+            let (de, en) = if computed {
+                (
+                    "Das ist die Stellung, die die Steuerung berechnet – angefahren wird sie mit STAY nicht. ",
+                    "That is the position the control computes – with STAY it does not move there. ",
+                )
+            } else {
+                ("", "")
+            };
+            texts(
+                format!(
+                    "{de}STAY schwenkt nur das Koordinatensystem, keine Achse fährt: Die Drehachsen bleiben, wo sie vor dem Satz standen. Die berechneten Achswinkel stehen in Q120 bis Q122 für einen späteren Satz wie L A+Q120 C+Q122 R0 FMAX."
+                ),
+                format!(
+                    "{en}STAY only tilts the coordinate system, no axis moves: the rotary axes stay where they were before the block. The computed axis angles are in Q120 to Q122, for a later block such as L A+Q120 C+Q122 R0 FMAX."
+                ),
+            )
+        }
     }
 }

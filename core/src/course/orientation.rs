@@ -6,7 +6,7 @@ use glam::DMat3;
 
 use super::{
     Answer, AnswerKind, Check, Exercise, Hint, ORIENTATION_TOL, Rng, Spec, TURN_FMAX, VALUE_TOL, Verdict,
-    block_text, euler_def, plane, spatial_def, texts,
+    block_text, euler_def, nc, plane, spatial_def, texts,
 };
 use crate::machine::Texts;
 use crate::orientation::{self, Context};
@@ -88,8 +88,8 @@ fn orientation_exercise(
         variant,
         prompt,
         answer_kind: AnswerKind::PlaneBlock,
-        solution: block_text(&plane(spatial_def(spatial), positioning)),
-        equivalent: block_text(&plane(euler_def(orientation::to_euler(&target)), positioning)),
+        solution: nc(block_text(&plane(spatial_def(spatial), positioning))),
+        equivalent: nc(block_text(&plane(euler_def(orientation::to_euler(&target)), positioning))),
         typical_mistake: (
             Answer::Text(block_text(&plane(spatial_def(flipped), positioning))),
             Hint::RightHand,
@@ -100,8 +100,16 @@ fn orientation_exercise(
 }
 
 pub(super) fn lean(spec: Spec, variant: u32, rng: &mut Rng) -> Exercise {
-    let (toward, theta) =
-        if variant == 0 { (Toward::PlusX, 15.0) } else { (rng.pick(&DIRECTIONS), rng.pick(&TILTS)) };
+    // Variant 0 differs per exercise, so the course does not ask the same lean four times.
+    // DialogTurn's is the block lesson 3's steps enter, ProgramLean's the plane of Musterprogramm 1
+    // (block 10, lesson 8); the lesson texts rely on those two.
+    let (toward, theta) = match (spec, variant) {
+        (Spec::Lean, 0) => (Toward::MinusY, 20.0),
+        (Spec::DialogTurn, 0) => (Toward::PlusX, 25.0),
+        (Spec::DialogMove, 0) => (Toward::MinusX, 30.0),
+        (_, 0) => (Toward::PlusX, 15.0),
+        _ => (rng.pick(&DIRECTIONS), rng.pick(&TILTS)),
+    };
     let t = fmt_deg(theta).trim_start_matches('+').to_owned();
     let d = toward.name();
     let (require, de_tail, en_tail) = match spec {
@@ -119,7 +127,7 @@ pub(super) fn lean(spec: Spec, variant: u32, rng: &mut Rng) -> Exercise {
     };
     let prompt = texts(
         format!(
-            "Die Fläche ist so geneigt, dass das Werkzeug senkrecht auf ihr um {t}° in Richtung {d} gekippt steht (die Ebene wird nicht zusätzlich um Z gedreht). Gib den PLANE-Satz ein.{de_tail}"
+            "Die Fläche ist so geneigt, dass das Werkzeug senkrecht auf ihr um {t}° in Richtung {d} gekippt steht (die Ebene wird nicht zusätzlich um Z gedreht). Geben Sie den PLANE-Satz ein.{de_tail}"
         ),
         format!(
             "The face is inclined so that a tool perpendicular to it leans {t}° towards {d} (the plane is not turned about Z as well). Enter the PLANE block.{en_tail}"
@@ -135,7 +143,7 @@ pub(super) fn turn_about_z(variant: u32, rng: &mut Rng) -> Exercise {
     let t = fmt_deg(phi).trim_start_matches('+').to_owned();
     let prompt = texts(
         format!(
-            "Das Werkzeug bleibt senkrecht (Z). Nur die Bearbeitungsebene soll um {t}° um die Z-Achse gedreht werden, so dass ihre X-Achse in Richtung {dir} dreht. Gib den PLANE-Satz ein."
+            "Das Werkzeug bleibt senkrecht (Z). Nur die Bearbeitungsebene soll um {t}° um die Z-Achse gedreht werden, so dass ihre X-Achse in Richtung {dir} dreht. Geben Sie den PLANE-Satz ein."
         ),
         format!(
             "The tool stays vertical (Z). Only the working plane is to turn {t}° about the Z axis, so that its X axis turns towards {dir}. Enter the PLANE block."
@@ -155,7 +163,7 @@ pub(super) fn lean_and_turn(variant: u32, rng: &mut Rng) -> Exercise {
     let t = orientation::tool_axis(&r);
     let prompt = texts(
         format!(
-            "Erst um Y um {} kippen (SPB), dann um Z um {} drehen (SPC). Die Werkzeugachse zeigt danach in Richtung ({:.4}, {:.4}, {:.4}). Gib den PLANE-Satz ein – SPATIAL oder eine andere Form.",
+            "Erst um Y um {} kippen (SPB), dann um Z um {} drehen (SPC). Die Werkzeugachse zeigt danach in Richtung ({:.4}, {:.4}, {:.4}). Geben Sie den PLANE-Satz ein – SPATIAL oder eine andere Form.",
             fmt_deg(theta),
             fmt_deg(phi),
             t.x + 0.0,
@@ -188,13 +196,15 @@ pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
     let spatial = orientation::to_spatial(&r);
     let given = block_text(&plane(euler_def(e), None));
     let prompt = texts(
-        format!("Gegeben: {given}. Gib dieselbe Lage als anderen PLANE-Satz ein (z. B. PLANE SPATIAL)."),
+        format!(
+            "Gegeben: {given}. Geben Sie dieselbe Lage als anderen PLANE-Satz ein (z. B. PLANE SPATIAL)."
+        ),
         format!("Given: {given}. Enter the same orientation as another PLANE block (e.g. PLANE SPATIAL)."),
     );
     let mut ex = orientation_exercise(Spec::EulerToOther, variant, prompt, spatial, Require::Nothing, true);
     // The other equivalent form: VECTOR (base = tilted X, normal = tool axis).
     let vector = PlaneDef::Vector { base: r.x_axis.to_array(), normal: r.z_axis.to_array() };
-    ex.equivalent = block_text(&plane(vector, Some(TURN_FMAX)));
+    ex.equivalent = nc(block_text(&plane(vector, Some(TURN_FMAX))));
     ex
 }
 
@@ -215,7 +225,7 @@ pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
     };
     let prompt = texts(
         format!(
-            "Fase unter 45° an der Seite {side} des Rohteils: das Werkzeug steht senkrecht auf der Fase und kippt 45° in Richtung {side}. Die X-Achse der Bearbeitungsebene liegt entlang der Kante (EULROT 0). Gib den PLANE-Satz ein – EULER oder eine andere Form."
+            "Fase unter 45° an der Seite {side} des Rohteils: das Werkzeug steht senkrecht auf der Fase und kippt 45° in Richtung {side}. Die X-Achse der Bearbeitungsebene liegt entlang der Kante (EULROT 0). Geben Sie den PLANE-Satz ein – EULER oder eine andere Form."
         ),
         format!(
             "A 45° chamfer on the {side} side of the blank: the tool is perpendicular to the chamfer and leans 45° towards {side}. The working plane's X axis runs along the edge (EULROT 0). Enter the PLANE block – EULER or another form."
@@ -224,8 +234,8 @@ pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
     let spatial = orientation::to_spatial(&r);
     let mut ex = orientation_exercise(Spec::Chamfer, variant, prompt, spatial, Require::Nothing, false);
     // Here the EULER block is the natural answer; SPATIAL the equivalent one.
-    ex.solution = block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX)));
-    ex.equivalent = block_text(&plane(spatial_def(spatial), Some(TURN_FMAX)));
+    ex.solution = nc(block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX))));
+    ex.equivalent = nc(block_text(&plane(spatial_def(spatial), Some(TURN_FMAX))));
     // The typical mistake: the chamfer on the opposite side (EULPR off by 180°). It tilts the
     // tool the other way, so it gets the right-hand hint.
     let wrong_pr = if pr > 0.0 { pr - 180.0 } else { pr + 180.0 };
@@ -317,8 +327,10 @@ pub(super) fn check(
             Some(text) => Verdict::Wrong { hint: Hint::Positioning, text },
         };
     }
-    if sign_flips(spatial).any(|s| close(&r, &orientation::spatial(s[0], s[1], s[2]))) {
-        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint() };
+    if let Some((_, flipped)) =
+        sign_flips(spatial).find(|(s, _)| close(&r, &orientation::spatial(s[0], s[1], s[2])))
+    {
+        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint(flipped) };
     }
     let (t, want) = (orientation::tool_axis(&r), orientation::tool_axis(target));
     if (t - want).abs().max_element() < ORIENTATION_TOL {
@@ -338,39 +350,86 @@ pub(super) fn check(
     // The tilt the other way round: the tool axis mirrored about Z (a sign or a side error).
     let mirrored = glam::DVec3::new(-want.x, -want.y, want.z);
     if (t - mirrored).abs().max_element() < ORIENTATION_TOL {
-        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint() };
+        return Verdict::Wrong { hint: Hint::RightHand, text: right_hand_hint(non_zero(spatial)) };
     }
     Verdict::Wrong {
         hint: Hint::Wrong,
         text: texts(
-            "Noch nicht: stell dir die Fläche vor und kippe die Ebene Schritt für Schritt – erst um X (SPA), dann um Y (SPB), dann um Z (SPC)",
+            "Noch nicht: Stellen Sie sich die Fläche vor und kippen Sie die Ebene Schritt für Schritt – erst um X (SPA), dann um Y (SPB), dann um Z (SPC)",
             "Not yet: picture the face and tilt the plane step by step – first about X (SPA), then about Y (SPB), then about Z (SPC)",
         ),
     }
 }
 
-/// Every variant of `spatial` with at least one non-zero angle's sign flipped.
-fn sign_flips(spatial: [f64; 3]) -> impl Iterator<Item = [f64; 3]> {
+/// Every variant of `spatial` with at least one non-zero angle's sign flipped, and which angles
+/// it flips.
+fn sign_flips(spatial: [f64; 3]) -> impl Iterator<Item = ([f64; 3], [bool; 3])> {
     (1_u8..8).filter_map(move |mask| {
         let mut s = spatial;
-        for (i, v) in s.iter_mut().enumerate() {
-            if mask & (1 << i) != 0 {
-                if v.abs() < 1e-9 {
-                    return None;
-                }
-                *v = -*v;
+        let flipped = [0, 1, 2].map(|i| mask & (1 << i) != 0);
+        for (v, _) in s.iter_mut().zip(flipped).filter(|(_, f)| *f) {
+            if v.abs() < 1e-9 {
+                return None;
             }
+            *v = -*v;
         }
-        Some(s)
+        Some((s, flipped))
     })
 }
 
-/// The right-hand rule, seed 000 §2.2.
-pub(super) fn right_hand_hint() -> Texts {
-    texts(
-        "Vorzeichen prüfen – Rechte-Hand-Regel: Daumen zeigt in die positive Achsrichtung, die gekrümmten Finger zeigen die positive Drehrichtung. SPB+ kippt das Werkzeug nach +X, SPA+ nach −Y.",
-        "Check the sign – right-hand rule: the thumb points along the positive axis, the curled fingers show the positive direction of rotation. SPB+ tilts the tool towards +X, SPA+ towards −Y.",
-    )
+/// What a positive spatial angle does (seed 000 §2.2, DOMAIN.md §2.1), as data so the tests can
+/// check every claim against the orientation maths: the angle's word, the column of R it moves
+/// (2 = tool axis, 0 = the plane's X axis) and the direction that column turns towards.
+pub(super) struct SignRule {
+    pub word: &'static str,
+    pub column: usize,
+    pub towards: glam::DVec3,
+}
+
+impl SignRule {
+    /// `+X`, `−Y`: the unit direction [`SignRule::towards`] as the lesson texts name it.
+    fn towards_name(&self) -> String {
+        let t = self.towards;
+        let (name, v) = if t.x.abs() > 0.5 {
+            ("X", t.x)
+        } else if t.y.abs() > 0.5 {
+            ("Y", t.y)
+        } else {
+            ("Z", t.z)
+        };
+        format!("{}{name}", if v < 0.0 { '−' } else { '+' })
+    }
+}
+
+pub(super) const SIGN_RULES: [SignRule; 3] = [
+    SignRule { word: "SPA", column: 2, towards: glam::DVec3::NEG_Y },
+    SignRule { word: "SPB", column: 2, towards: glam::DVec3::X },
+    SignRule { word: "SPC", column: 0, towards: glam::DVec3::Y },
+];
+
+/// The right-hand rule (seed 000 §2.2), with the sign rule of each angle in `about` (SPA, SPB,
+/// SPC): only the angles the answer got wrong, so an SPC task does not talk about SPB.
+pub(super) fn right_hand_hint(about: [bool; 3]) -> Texts {
+    let (mut de, mut en) = (
+        "Vorzeichen prüfen – Rechte-Hand-Regel: Der Daumen zeigt in die positive Achsrichtung, die gekrümmten Finger zeigen die positive Drehrichtung.".to_owned(),
+        "Check the sign – right-hand rule: the thumb points along the positive axis, the curled fingers show the positive direction of rotation.".to_owned(),
+    );
+    for rule in SIGN_RULES.iter().zip(about).filter_map(|(r, on)| on.then_some(r)) {
+        let (w, to) = (rule.word, rule.towards_name());
+        if rule.column == 2 {
+            de.push_str(&format!(" {w}+ kippt die Werkzeugachse von +Z nach {to}."));
+            en.push_str(&format!(" {w}+ tilts the tool axis from +Z towards {to}."));
+        } else {
+            de.push_str(&format!(" {w}+ dreht die X-Achse der Ebene von +X nach {to}."));
+            en.push_str(&format!(" {w}+ turns the plane's X axis from +X towards {to}."));
+        }
+    }
+    texts(de, en)
+}
+
+/// The angles of `spatial` that are not zero (what a sign hint can be about).
+pub(super) fn non_zero(spatial: [f64; 3]) -> [bool; 3] {
+    spatial.map(|v| v.abs() > 1e-9)
 }
 
 fn positioning_problem(block: &PlaneBlock<f64>, require: Require) -> Option<Texts> {

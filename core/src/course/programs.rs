@@ -2,13 +2,15 @@
 //! through the simulator ([`run`]), and the seed's two SEQ/SYM tables as experiments
 //! ([`seed_rows`], seed 002 / DOMAIN.md oracles 13–27).
 
+use glam::DMat3;
+
 use super::expected::{axes_exercise, fmt_value, value_exercise};
 use super::orientation::TILTS;
 use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def, texts};
 use crate::axes::AxisValues;
 use crate::machine::{Limits, Machine};
 use crate::plane::{PlaneBlock, RotaryAxis, Selection, Sign, TransformMode};
-use crate::solve::{SolveOptions, axis_words, fmt_deg};
+use crate::solve::{SolveError, SolveOptions, axis_words, fmt_deg, solve_block};
 
 const SELECTIONS: [Selection; 4] = [
     Selection::Seq(Sign::Plus),
@@ -148,22 +150,32 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
         .collect::<String>();
     let limit_text_en = limit_text.replace("Endschalter", "limit switches");
     let text = block_text(&block);
+    // The control's refusal as the solver words it, in each language.
+    let (refuse_de, refuse_en) = SolveError::NoSolutionInLimits { candidates: 0 }.messages();
     let prompt = texts(
         format!(
-            "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „Winkel nicht erlaubt“)",
+            "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „{refuse_de}“)",
             machine.name.de,
             axis_words(&start),
             example(&machine)
         ),
         format!(
-            "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"Angle not permitted\")",
+            "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"{refuse_en}\")",
             machine.name.en,
             axis_words(&start),
             example(&machine)
         ),
     );
     let opts = SolveOptions { start, limits, ..SolveOptions::default() };
-    let mut ex = axes_exercise(Spec::Choose(kind), variant, machine, &block, &opts, prompt);
+    // COORD ROT and TABLE ROT: where the axes go with the other mode (the solver's answer), so a
+    // trainee who mixes the two up gets told so.
+    let other_mode = block.transform.and_then(|mode| {
+        let other =
+            if mode == TransformMode::TableRot { TransformMode::CoordRot } else { TransformMode::TableRot };
+        let block = PlaneBlock { transform: Some(other), ..block.clone() };
+        solve_block(&machine, &block, DMat3::IDENTITY, &opts).ok()?.chosen_axes()
+    });
+    let mut ex = axes_exercise(Spec::Choose(kind), variant, machine, &block, &opts, prompt, other_mode);
     let program = format!(
         "0 BEGIN PGM AUFGABE MM\n1 L {} R0 FMAX\n2 {text}\n3 END PGM AUFGABE MM\n",
         axis_words(&opts.start)
@@ -211,7 +223,6 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
     let fixed = variant == 0;
     let b = if fixed { 45.0 } else { rng.pick(&TILTS) * rng.pick(&[1.0, -1.0]) };
     let spatial = format!("PLANE SPATIAL SPA+0 SPB{} SPC+0", fmt_deg(b));
-    let spec = Spec::Run(kind);
     // The prompt quotes the block asked about, so a fresh variant shows its new numbers.
     let ask = |text: &str, block: u32, what_de: &str, what_en: &str| {
         let line = block_line(text, block);
@@ -227,7 +238,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
             let text = program(&[format!("{spatial} TURN FMAX")]);
             let letter = if fixed { 'A' } else { rng.pick(&['A', 'C']) };
             let prompt = ask(&text, 6, &format!("die Drehachse {letter}"), &format!("rotary axis {letter}"));
-            value_exercise(spec, variant, text, "ac-table", 6, letter, prompt)
+            value_exercise(kind, variant, text, None, "ac-table", (6, letter), prompt)
         }
         RunKind::Stay | RunKind::StayQ120 => {
             let text = program(&[format!("{spatial} STAY"), "L A+Q120 C+Q122 R0 FMAX".to_owned()]);
@@ -238,7 +249,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 (l, format!("die Drehachse {l}"), format!("rotary axis {l}"))
             };
             let prompt = ask(&text, 6, &de, &en);
-            value_exercise(spec, variant, text, "ac-table", 6, letter, prompt)
+            value_exercise(kind, variant, text, None, "ac-table", (6, letter), prompt)
         }
         RunKind::ResetStay | RunKind::ResetTurn => {
             let reset = if kind == RunKind::ResetStay { "PLANE RESET STAY" } else { "PLANE RESET TURN FMAX" };
@@ -251,7 +262,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 &format!("die Drehachse A (vorher Satz {tilt})"),
                 &format!("rotary axis A (block {tilt} came before)"),
             );
-            value_exercise(spec, variant, text, "ac-table", 7, 'A', prompt)
+            value_exercise(kind, variant, text, None, "ac-table", (7, 'A'), prompt)
         }
         RunKind::Musterprogramm1 => {
             let (block, letter) =
@@ -262,7 +273,15 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 &format!("die Drehachse {letter}"),
                 &format!("rotary axis {letter}"),
             );
-            value_exercise(spec, variant, MUSTERPROGRAMM_1.to_owned(), "ac-table", block, letter, prompt)
+            value_exercise(
+                kind,
+                variant,
+                MUSTERPROGRAMM_1.to_owned(),
+                None,
+                "ac-table",
+                (block, letter),
+                prompt,
+            )
         }
         RunKind::DatumThenPlane => {
             let (dx, z) = if fixed {
@@ -271,21 +290,24 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 (rng.pick(&[20.0, 30.0, 40.0, 50.0, 60.0]), rng.pick(&[10.0, 20.0]))
             };
             let b = if fixed { 30.0 } else { b };
-            let text = program(&[
-                format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
-                format!("PLANE SPATIAL SPA+0 SPB{} SPC+0 TURN FMAX", fmt_deg(b)),
-                format!("L X+0 Y+0 Z{} R0 FMAX", fmt_value(z)),
-            ]);
+            let with_tilt = |b: f64| {
+                program(&[
+                    format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
+                    format!("PLANE SPATIAL SPA+0 SPB{} SPC+0 TURN FMAX", fmt_deg(b)),
+                    format!("L X+0 Y+0 Z{} R0 FMAX", fmt_value(z)),
+                ])
+            };
+            let (text, flipped) = (with_tilt(b), with_tilt(-b));
             let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
             let prompt = texts(
                 format!(
-                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor der Verschiebung)? Gib X ein (z. B. +45 oder 12,5)."
+                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor der Verschiebung)? Geben Sie X ein (z. B. +45 oder 12,5)."
                 ),
                 format!(
                     "Blocks {blocks}: where is the tool tip after block 8 in the workpiece coordinate system (W-CS, before the shift)? Enter X (e.g. +45 or 12.5)."
                 ),
             );
-            value_exercise(spec, variant, text, "ac-table", 8, 'X', prompt)
+            value_exercise(kind, variant, text, Some(&flipped), "ac-table", (8, 'X'), prompt)
         }
         RunKind::DatumThenMirror => {
             let (dx, x) = if fixed {
@@ -301,13 +323,13 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
             let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
             let prompt = texts(
                 format!(
-                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor Verschiebung und Spiegelung)? Gib X ein."
+                    "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor Verschiebung und Spiegelung)? Geben Sie X ein."
                 ),
                 format!(
                     "Blocks {blocks}: where is the tool tip after block 8 in the workpiece coordinate system (W-CS, before shift and mirror)? Enter X."
                 ),
             );
-            value_exercise(spec, variant, text, "ac-table", 8, 'X', prompt)
+            value_exercise(kind, variant, text, None, "ac-table", (8, 'X'), prompt)
         }
     }
 }

@@ -100,8 +100,8 @@ pub fn exercise_card(props: &ExerciseCardProps) -> Html {
             </div>
             if e.solution_shown {
                 <p class="solution" data-testid={format!("solution-{i}")}>
-                    { l.t("Lösung: ", "Solution: ") }<code>{ ex.solution.clone() }</code>
-                    { l.t(" – gleichwertig: ", " – equivalent: ") }<code>{ ex.equivalent.clone() }</code>
+                    { l.t("Lösung: ", "Solution: ") }<code>{ l.t(&ex.solution.de, &ex.solution.en) }</code>
+                    { l.t(" – gleichwertig: ", " – equivalent: ") }<code>{ l.t(&ex.equivalent.de, &ex.equivalent.en) }</code>
                 </p>
             }
         </article>

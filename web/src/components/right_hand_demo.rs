@@ -1,7 +1,8 @@
 //! The right-hand rule, demonstrated (seed 000 §2.2): pick X, Y or Z, turn the plane by dragging
 //! round the axis or with the slider, and watch the thumb arrow, the curled arrow, the hand, the
 //! signed angle and the matching `PLANE SPATIAL` block. "Try it" asks for a signed turn and
-//! checks the trainee's answer.
+//! checks the trainee's answer; the angle and the block stay hidden until "Prüfen", they would
+//! give the sign away. In the trainer the demo opens on the cursor's PLANE block (`block`).
 
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlElement, HtmlInputElement, PointerEvent};
@@ -12,7 +13,8 @@ use super::viewer::{Content, Viewer};
 use crate::i18n::Lang;
 use crate::render::camera::Camera;
 use crate::render::right_hand::{
-    TASKS, TurnAxis, Verdict, block_text, check, drag_turn, draw_list, pivot_on_screen, points_towards,
+    DragTurn, TASKS, TurnAxis, Verdict, block_angles, block_text, check, draw_list, first_turn,
+    pivot_on_screen, points_towards,
 };
 use glam::Vec3;
 use schwenkbar_core::number::parse_f64;
@@ -24,6 +26,10 @@ const STYLE: &str = include_str!("right_hand_demo.css");
 #[derive(Properties, PartialEq)]
 pub struct RightHandDemoProps {
     pub lang: Lang,
+    /// A PLANE block (its text, as in the program): the demo shows its turns about X, Y and Z
+    /// (SPA, SPB, SPC of the same orientation), starting with the first the control makes.
+    #[prop_or_default]
+    pub block: Option<AttrValue>,
 }
 
 /// The demo's fixed camera: front right above, so every axis points partly at the viewer.
@@ -37,12 +43,11 @@ fn demo_camera() -> Camera {
     }
 }
 
-/// A drag in progress: pointer id, the last pointer position and the unrounded angle so far
-/// (summed move by move, so a drag can go round more than half a turn and small moves are not
-/// lost to the whole-degree rounding of the display).
+/// A drag in progress: the pointer's id and the unrounded drag (so small moves are not lost to
+/// the whole-degree rounding of the display).
 #[derive(Default)]
 struct Drag {
-    active: Option<(i32, (f32, f32), f64)>,
+    active: Option<(i32, DragTurn)>,
 }
 
 /// The task prompt ("Drehen Sie die Ebene um +30° um Y").
@@ -64,6 +69,20 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let task = use_state(|| None::<usize>);
     let verdict = use_state(|| None::<Verdict>);
     let drag = use_mut_ref(Drag::default);
+    let block_turns = props.block.as_deref().and_then(block_angles);
+    {
+        // A new block: show its first turn.
+        let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
+        use_effect_with(block_turns.map(|a| a.map(f64::to_bits)), move |bits| {
+            if let Some(bits) = bits {
+                let turns = bits.map(f64::from_bits);
+                let first = first_turn(turns);
+                axis.set(first);
+                angle.set(turns[first as usize]);
+                verdict.set(None);
+            }
+        });
+    }
     {
         let viewer = viewer.clone();
         use_effect_with((*axis, *angle), move |(axis, angle)| {
@@ -88,25 +107,24 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
             let mut d = drag.borrow_mut();
             match kind {
                 "down" => {
-                    if let Some(t) = e.target().and_then(|t| t.dyn_into::<web_sys::Element>().ok()) {
-                        let _ = t.set_pointer_capture(e.pointer_id());
-                    }
-                    d.active = Some((e.pointer_id(), at, angle));
+                    let Some(el) = e.target().and_then(|t| t.dyn_into::<HtmlElement>().ok()) else { return };
+                    let _ = el.set_pointer_capture(e.pointer_id());
+                    // The camera does not move while the demo is dragged: one pivot per drag.
+                    let (w, h) = (el.client_width() as f32, el.client_height() as f32);
+                    let cam = viewer.borrow().camera;
+                    let pivot = pivot_on_screen(&cam.view_proj(w / h.max(1.0)), w, h);
+                    // The axis runs through the origin: its sign towards the eye decides.
+                    let towards = points_towards(axis, cam.eye());
+                    d.active = Some((e.pointer_id(), DragTurn::start(pivot, at, angle, towards)));
                 }
                 "move" => {
-                    let Some((id, last, sum)) = d.active else { return };
+                    let Some((id, turn)) = d.active else { return };
                     if id != e.pointer_id() {
                         return;
                     }
-                    let Some(el) = e.target().and_then(|t| t.dyn_into::<HtmlElement>().ok()) else { return };
-                    let (w, h) = (el.client_width() as f32, el.client_height() as f32);
-                    let cam = viewer.borrow().camera;
-                    let centre = pivot_on_screen(&cam.view_proj(w / h.max(1.0)), w, h);
-                    // The axis runs through the origin: its sign towards the eye decides.
-                    let turn = drag_turn(centre, last, at, points_towards(axis, cam.eye()));
-                    let sum = (sum + turn).clamp(-180.0, 180.0);
-                    d.active = Some((id, at, sum));
-                    set_angle(sum);
+                    let turn = turn.moved(at);
+                    d.active = Some((id, turn));
+                    set_angle(turn.angle);
                 }
                 _ => d.active = None,
             }
@@ -114,9 +132,11 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     };
     let pick = |a: TurnAxis| {
         let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
+        // With a block, each axis shows that block's turn about it; without, the plane starts flat.
+        let start = block_turns.map_or(0.0, |t| t[a as usize]);
         Callback::from(move |_: MouseEvent| {
             axis.set(a);
-            angle.set(0.0);
+            angle.set(start);
             verdict.set(None);
         })
     };
@@ -148,6 +168,8 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
         })
     };
     let block = block_text(*axis, *angle);
+    // During a task the readout would give the sign away: it shows after "Prüfen".
+    let hidden = task.is_some() && verdict.is_none();
     let feedback = verdict.map(|v| match v {
         Verdict::Right => ("right", l.t("Richtig! Daumen in Plus-Richtung, die Finger zeigen die positive Drehung.",
                                           "Right! Thumb along plus, the fingers show the positive turn.")),
@@ -172,8 +194,19 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                 <label class="rh-slider">{ l.t("Winkel", "Angle") }
                     <input type="range" min="-180" max="180" step="1" value={angle.to_string()} oninput={on_slider} />
                 </label>
-                <output class="rh-angle" data-angle={angle.to_string()}>{ format!("{}{}°", axis.word(), fmt_deg(*angle)) }</output>
-                <code class="rh-block">{ block }</code>
+                if hidden {
+                    <output class="rh-angle" data-hidden="true">{ format!("{} ?", axis.word()) }</output>
+                    <p class="rh-hidden">{ l.t("Winkel und Satz erscheinen nach „Prüfen“.", "The angle and the block show after \"Check\".") }</p>
+                } else {
+                    <output class="rh-angle" data-angle={angle.to_string()}>{ format!("{}{}°", axis.word(), fmt_deg(*angle)) }</output>
+                    <code class="rh-block">{ block }</code>
+                }
+                if let Some(t) = block_turns {
+                    <p class="rh-of-block">{ format!("{} SPA{} SPB{} SPC{} – {}", l.t("Raumwinkel des Satzes:", "The block's spatial angles:"),
+                        fmt_deg(t[0]), fmt_deg(t[1]), fmt_deg(t[2]),
+                        l.t("X, Y und Z zeigen je eine Drehung; die Steuerung dreht erst um X, dann um Y, dann um Z.",
+                            "X, Y and Z show one turn each; the control turns about X first, then Y, then Z.")) }</p>
+                }
                 <p class="rh-rule">{ l.t("Rechte Hand: Daumen in Plus-Richtung der Achse, die gekrümmten Finger zeigen die positive Drehrichtung.",
                                          "Right hand: thumb along the plus axis, the curled fingers show the positive turning direction.") }</p>
                 <div class="rh-try">

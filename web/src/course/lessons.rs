@@ -75,7 +75,7 @@ pub fn lesson(index: usize) -> Option<Lesson> {
         ),
         7 => (
             trainer(include_str!("../../../static/programs/musterprogramm1.h")),
-            &[Spec::Run(RunKind::Musterprogramm1), Spec::Lean],
+            &[Spec::Run(RunKind::Musterprogramm1), Spec::ProgramLean],
         ),
         8 => (
             trainer(include_str!("../../../static/programs/musterprogramm2.h")),

@@ -240,7 +240,7 @@ mod tests {
             assert!(s.progress.lessons[l].visited);
             for (i, e) in s.exercises.iter().enumerate() {
                 let ex = e.exercise.clone();
-                for good in [&ex.solution, &ex.equivalent] {
+                for good in [&ex.solution.de, &ex.equivalent.de] {
                     let done = answer(&s, i, &Answer::typed(good));
                     assert!(
                         done.exercises[i].verdict.as_ref().is_some_and(Verdict::is_correct),
@@ -264,13 +264,13 @@ mod tests {
 
     #[test]
     fn a_wrong_answer_keeps_the_input_and_the_solution_waits_until_asked() {
-        let s = lesson(1).apply(CourseAction::Input(0, "PLANE SPATIAL SPA+0 SPB-15 SPC+0".into()));
+        let s = lesson(1).apply(CourseAction::Input(0, "PLANE SPATIAL SPA-20 SPB+0 SPC+0".into()));
         // A trainee has no solution button before a first try.
         assert!(!s.exercises[0].solution_offered(false));
         assert!(!s.apply(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
         let s = s.apply(CourseAction::Check(0));
         assert!(matches!(s.exercises[0].verdict, Some(Verdict::Wrong { hint: Hint::RightHand, .. })));
-        assert_eq!(s.exercises[0].input, "PLANE SPATIAL SPA+0 SPB-15 SPC+0");
+        assert_eq!(s.exercises[0].input, "PLANE SPATIAL SPA-20 SPB+0 SPC+0");
         assert!(!s.exercises[0].solution_shown);
         assert!(s.apply(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
         // The instructor may reveal at once, but only when asked.
@@ -291,7 +291,7 @@ mod tests {
     #[test]
     fn progress_survives_a_reload_and_a_corrupt_record_is_reported() {
         let s = lesson(0);
-        let sol = s.exercises[0].exercise.solution.clone();
+        let sol = s.exercises[0].exercise.solution.de.clone();
         let s = answer(&s, 0, &Answer::typed(&sol)).apply(CourseAction::ToggleLang);
         let saved = s.progress.to_text();
         let back = CourseState::start(Some(&saved), Route::Overview);
@@ -311,7 +311,7 @@ mod tests {
         let s = lesson(2).apply(CourseAction::TakeBlock(0));
         assert!(s.notice.is_some());
         let s = s
-            .apply(CourseAction::TrainerBlock(Some("5 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX".into())))
+            .apply(CourseAction::TrainerBlock(Some("5 PLANE SPATIAL SPA+0 SPB+25 SPC+0 TURN FMAX".into())))
             .apply(CourseAction::TakeBlock(0))
             .apply(CourseAction::Check(0));
         assert!(s.exercises[0].verdict.as_ref().is_some_and(Verdict::is_correct));

@@ -90,6 +90,7 @@ pub const LESSONS: [LessonText; 11] = [
         ),
     },
     // 3 — seed 000 §2.3.1–2.3.3; dialog order as in `crate::dialog` (SPATIAL, keys in `crate::keymap`).
+    // The steps enter variant 0 of its first exercise (Spec::DialogTurn: 25° towards +X).
     LessonText {
         slug: "spatial-eingeben",
         title: Text::new("PLANE SPATIAL eingeben", "Entering PLANE SPATIAL"),
@@ -116,7 +117,7 @@ pub const LESSONS: [LessonText; 11] = [
             Text::new("Softkey BEARB.-EBENE SCHWENKEN (F3).", "Softkey TILT MACHINING PLANE (F3)."),
             Text::new("Softkey SPATIAL (F1).", "Softkey SPATIAL (F1)."),
             Text::new("SPA: 0 eingeben, ENT.", "SPA: type 0, ENT."),
-            Text::new("SPB: 15 eingeben, ENT.", "SPB: type 15, ENT."),
+            Text::new("SPB: 25 eingeben, ENT.", "SPB: type 25, ENT."),
             Text::new("SPC: 0 eingeben, ENT.", "SPC: type 0, ENT."),
             Text::new(
                 "Positionierverhalten: Softkey TURN (F2).",
@@ -126,8 +127,8 @@ pub const LESSONS: [LessonText; 11] = [
             Text::new("F: Softkey FMAX (F2).", "F: softkey FMAX (F2)."),
             Text::new("SEQ/SYM: NO ENT.", "SEQ/SYM: NO ENT."),
             Text::new(
-                "COORD ROT/TABLE ROT: NO ENT oder END – im Programm steht PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX.",
-                "COORD ROT/TABLE ROT: NO ENT or END – the program now holds PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX.",
+                "COORD ROT/TABLE ROT: NO ENT oder END – im Programm steht PLANE SPATIAL SPA+0 SPB+25 SPC+0 TURN FMAX.",
+                "COORD ROT/TABLE ROT: NO ENT or END – the program now holds PLANE SPATIAL SPA+0 SPB+25 SPC+0 TURN FMAX.",
             ),
         ],
         widget_caption: Text::new(
@@ -281,7 +282,8 @@ pub const LESSONS: [LessonText; 11] = [
             "PLANE RESET STAY only clears the calculation – you move the rotary axes back yourself.",
         ),
     },
-    // 8 — seed 000 §2.3.5; static/programs/musterprogramm1.h on ac-table.
+    // 8 — seed 000 §2.3.5; static/programs/musterprogramm1.h on ac-table. Variant 0 of its
+    // Spec::ProgramLean is block 10's plane (15° towards +X).
     LessonText {
         slug: "musterprogramm-1",
         title: Text::new("Musterprogramm 1", "Sample program 1"),

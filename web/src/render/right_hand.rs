@@ -4,7 +4,7 @@
 //! `components/right_hand_demo.rs` draws it.
 
 use glam::{DAffine3, DMat3, DVec3, Vec3};
-use schwenkbar_core::orientation::spatial;
+use schwenkbar_core::orientation::{spatial, to_spatial};
 use schwenkbar_core::solve::fmt_deg;
 
 use super::camera::project_to_css;
@@ -84,20 +84,75 @@ pub fn orientation(axis: TurnAxis, angle: f64) -> DMat3 {
     spatial(a, b, c)
 }
 
-/// The signed turn (degrees) of a drag from `from` to `to` around the axis' screen position
-/// `centre` (CSS pixels, y down). Counter-clockwise on screen is positive when the axis points
-/// towards the viewer (`towards_viewer`), negative when it points away: the right-hand rule seen
-/// from the thumb's tip is counter-clockwise.
-#[must_use]
-pub fn drag_turn(centre: (f32, f32), from: (f32, f32), to: (f32, f32), towards_viewer: bool) -> f64 {
-    // Flip y so the angle is counter-clockwise positive as in mathematics.
-    let a = (f64::from(from.0 - centre.0), f64::from(centre.1 - from.1));
-    let b = (f64::from(to.0 - centre.0), f64::from(centre.1 - to.1));
-    if a.0.hypot(a.1) < 4.0 || b.0.hypot(b.1) < 4.0 {
-        return 0.0;
+/// Near the pivot the pointer's bearing is ill-defined: a few pixels there would swing the
+/// plane by tens of degrees, so within this radius (CSS pixels) the bearing is held.
+pub const DEAD_ZONE: f32 = 20.0;
+
+/// A drag of the plane: one turn of the pointer around the pivot (the axis' origin on screen) is
+/// one turn of the plane, i.e. the angle follows the pointer's bearing (atan2) around the pivot.
+/// Counter-clockwise on screen is positive when the axis points towards the viewer: the
+/// right-hand rule seen from the thumb's tip is counter-clockwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DragTurn {
+    pivot: (f32, f32),
+    towards_viewer: bool,
+    /// The pointer's last bearing (degrees, counter-clockwise); `None` inside [`DEAD_ZONE`].
+    bearing: Option<f64>,
+    /// The plane's angle, −180…+180.
+    pub angle: f64,
+}
+
+/// The bearing of `at` around `pivot`, counter-clockwise from 3 o'clock (y is down on screen).
+fn bearing(pivot: (f32, f32), at: (f32, f32)) -> Option<f64> {
+    let (x, y) = (f64::from(at.0 - pivot.0), f64::from(pivot.1 - at.1));
+    (x.hypot(y) >= f64::from(DEAD_ZONE)).then(|| y.atan2(x).to_degrees())
+}
+
+impl DragTurn {
+    /// A drag that starts at `at` with the plane at `angle`.
+    #[must_use]
+    pub fn start(pivot: (f32, f32), at: (f32, f32), angle: f64, towards_viewer: bool) -> DragTurn {
+        DragTurn { pivot, towards_viewer, bearing: bearing(pivot, at), angle }
     }
-    let ccw = (a.0 * b.1 - a.1 * b.0).atan2(a.0 * b.0 + a.1 * b.1).to_degrees();
-    if towards_viewer { ccw } else { -ccw }
+
+    /// The drag after the pointer moved to `at`. The step between two bearings is taken the
+    /// short way round, so crossing 9 o'clock (atan2's ±180°) does not jump; the angle stops at
+    /// ±180° like the slider.
+    #[must_use]
+    pub fn moved(self, at: (f32, f32)) -> DragTurn {
+        let Some(now) = bearing(self.pivot, at) else { return self };
+        let Some(before) = self.bearing else { return DragTurn { bearing: Some(now), ..self } };
+        let step = (now - before + 540.0).rem_euclid(360.0) - 180.0;
+        let step = if self.towards_viewer { step } else { -step };
+        DragTurn { bearing: Some(now), angle: (self.angle + step).clamp(-180.0, 180.0), ..self }
+    }
+}
+
+/// The spatial angles `[SPA, SPB, SPC]` of the PLANE block in `text` (any form the orientation
+/// maths reads without a machine), or `None` when it has none (not a PLANE block, a Q parameter,
+/// PLANE AXIAL).
+#[must_use]
+pub fn block_angles(text: &str) -> Option<[f64; 3]> {
+    let (program, _) = schwenkbar_core::parse(text);
+    let block = program.blocks.iter().find_map(|b| match &b.body {
+        schwenkbar_core::BlockBody::Plane(p) => Some(p),
+        _ => None,
+    })?;
+    let block = block
+        .try_map(|v| match v {
+            schwenkbar_core::plane::Value::Number(x) => Ok(*x),
+            schwenkbar_core::plane::Value::Param { .. } => Err(()),
+        })
+        .ok()?;
+    let r = schwenkbar_core::orientation::orientation(&block.def, &Default::default()).ok()?;
+    Some(to_spatial(&r).map(|a| (a * 1e4).round() / 1e4 + 0.0))
+}
+
+/// The first turn the control makes for `angles` (about X, then Y, then Z): the axis the demo
+/// opens on for a block.
+#[must_use]
+pub fn first_turn(angles: [f64; 3]) -> TurnAxis {
+    TurnAxis::ALL.into_iter().zip(angles).find(|(_, a)| a.abs() > 1e-9).map_or(TurnAxis::Z, |(t, _)| t)
 }
 
 /// Whether the axis (through the origin) points towards the eye at `eye`.
@@ -264,14 +319,63 @@ mod tests {
         assert!(t.y < -0.25, "positive SPA tips the normal towards −Y: {t}");
     }
 
+    /// The pointer `r` px from `pivot` at `deg` (counter-clockwise from 3 o'clock, y down).
+    fn at(pivot: (f32, f32), r: f32, deg: f32) -> (f32, f32) {
+        let (s, c) = deg.to_radians().sin_cos();
+        (pivot.0 + r * c, pivot.1 - r * s)
+    }
+
+    /// Drags from bearing `from` to `to` in 1° steps, radius 60 px.
+    fn drag(towards_viewer: bool, from: i32, to: i32, angle: f64) -> f64 {
+        let pivot = (200.0, 150.0);
+        let mut d = DragTurn::start(pivot, at(pivot, 60.0, from as f32), angle, towards_viewer);
+        let step = if to >= from { 1 } else { -1 };
+        let mut b = from;
+        while b != to {
+            b += step;
+            d = d.moved(at(pivot, 60.0, b as f32));
+        }
+        d.angle
+    }
+
     #[test]
-    fn counter_clockwise_drag_is_positive_when_the_axis_points_at_the_viewer() {
-        let centre = (100.0, 100.0);
-        // From the right (3 o'clock) to the top (12 o'clock): a quarter turn counter-clockwise.
-        let ccw = drag_turn(centre, (150.0, 100.0), (100.0, 50.0), true);
-        assert!((ccw - 90.0).abs() < 1e-9, "{ccw}");
-        assert!((drag_turn(centre, (150.0, 100.0), (100.0, 50.0), false) + 90.0).abs() < 1e-9);
-        assert_eq!(drag_turn(centre, (101.0, 100.0), (100.0, 50.0), true), 0.0, "too near the pivot");
+    fn a_quarter_turn_of_the_pointer_round_the_pivot_turns_the_plane_90_degrees() {
+        // Counter-clockwise seen with the axis towards the viewer: plus; clockwise: minus.
+        assert!((drag(true, 0, 90, 0.0) - 90.0).abs() < 1e-3);
+        assert!((drag(true, 0, -90, 0.0) + 90.0).abs() < 1e-3);
+        // The axis pointing away: the same pointer turn is the other sign.
+        assert!((drag(false, 0, 90, 0.0) + 90.0).abs() < 1e-3);
+        // Across 9 o'clock (atan2's ±180°) without a jump, in both directions.
+        assert!((drag(true, 135, 225, 10.0) - 100.0).abs() < 1e-3);
+        assert!((drag(true, 225, 135, 10.0) + 80.0).abs() < 1e-3);
+        // The same quarter turn further out or closer in is still 90°: not a matter of pixels.
+        let pivot = (0.0, 0.0);
+        let d = DragTurn::start(pivot, at(pivot, 300.0, 0.0), 0.0, true).moved(at(pivot, 30.0, 45.0));
+        assert!((d.moved(at(pivot, 150.0, 90.0)).angle - 90.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn a_drag_stops_at_half_a_turn_and_holds_near_the_pivot() {
+        assert!((drag(true, 0, 270, 0.0) - 180.0).abs() < 1e-9);
+        let pivot = (100.0, 100.0);
+        let d = DragTurn::start(pivot, (160.0, 100.0), 0.0, true);
+        // Through the dead zone: no swing, and the bearing picks up again outside it.
+        let d = d.moved((105.0, 95.0)).moved((100.0, 40.0));
+        assert!((d.angle - 90.0).abs() < 1e-3, "{}", d.angle);
+    }
+
+    #[test]
+    fn a_plane_block_gives_its_spatial_angles_and_the_first_turn() {
+        let a = block_angles("7 PLANE SPATIAL SPA+0 SPB+30 SPC+90 TURN FMAX").unwrap();
+        assert!((a[1] - 30.0).abs() < 1e-9 && (a[2] - 90.0).abs() < 1e-9 && a[0].abs() < 1e-9, "{a:?}");
+        assert_eq!(first_turn(a), TurnAxis::Y);
+        // EULER (90, 45, 0) = SPATIAL (45, 0, 90) (DOMAIN.md oracle 3): the same orientation.
+        let e = block_angles("PLANE EULER EULPR+90 EULNU+45 EULROT+0 STAY").unwrap();
+        let (r, s) = (spatial(e[0], e[1], e[2]), spatial(45.0, 0.0, 90.0));
+        assert!(r.abs_diff_eq(s, 1e-6), "{e:?}");
+        assert_eq!(first_turn(e), TurnAxis::X);
+        assert_eq!(block_angles("PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 TURN FMAX"), None);
+        assert_eq!(block_angles("L X+10 R0 FMAX"), None);
     }
 
     #[test]
