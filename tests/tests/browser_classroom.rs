@@ -271,3 +271,37 @@ async fn the_why_panel_says_it_in_plain_words_first() {
     assert!(plain_at < vector_at, "plain words before the vector");
     assert!(why.contains("Weg ") && why.contains(",0°"), "German path with a decimal comma: {why}");
 }
+
+#[wasm_bindgen_test]
+async fn in_projector_mode_the_run_asks_the_class_before_a_swivel() {
+    clear_storage();
+    let root = mount().await;
+    key_on(&root, ".tnc", "p").await;
+    // Musterprogramm 1: the cursor on block 9, then NC start steps towards block 10's swivel.
+    click(&root, ".program-pane .line[data-line='10']").await;
+    click(&root, "[data-key=run]").await;
+    click(&root, "[data-key=run-next]").await;
+    assert_eq!(
+        text(&root, ".dialog-line"),
+        "Vorhersage: Wohin schwenkt der Tisch? Welche Werte haben A und C? NC-Start zeigt es."
+    );
+    assert_eq!(text(&root, "[data-key=run-next]"), "ZEIGEN ▶");
+    assert_eq!(cell(&root, "A", "ref"), "+0.000", "nothing has moved yet");
+    click(&root, "[data-key=run-next]").await;
+    assert!(eventually(|| cell(&root, "A", "ref") == "+15.000").await, "revealed: A+15");
+    key_on(&root, ".tnc", "End").await;
+    key_on(&root, ".tnc", "p").await;
+}
+
+#[wasm_bindgen_test]
+async fn the_h_key_shows_the_right_hand_rule_on_the_cursor_plane_block() {
+    clear_storage();
+    let root = mount().await;
+    click(&root, ".program-pane .line[data-line='11']").await;
+    key_on(&root, ".tnc", "h").await;
+    assert!(eventually(|| query(&root, ".rh-of-block").is_some()).await, "the demo on block 10");
+    let of_block = text(&root, ".rh-of-block");
+    assert!(of_block.contains("SPA+0 SPB+15 SPC+0"), "{of_block}");
+    key_on(&root, ".tnc", "h").await;
+    assert!(eventually(|| query(&root, "canvas.view3d").is_some()).await, "h again: the machine");
+}

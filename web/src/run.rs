@@ -32,12 +32,15 @@ pub struct Run {
     pub state: Option<Rc<State>>,
     /// The run reached the block the control refuses.
     pub stopped_by_error: bool,
+    /// Classroom: the class is asked where the next block swivels before it runs.
+    pub asking: bool,
 }
 
 impl Run {
     #[must_use]
     pub fn new(sim: &Simulation, program: &Program, step: usize) -> Run {
-        let mut run = Run { step: 0, playing: false, speed: 2, state: None, stopped_by_error: false };
+        let mut run =
+            Run { step: 0, playing: false, speed: 2, state: None, stopped_by_error: false, asking: false };
         run.go_to(sim, program, step);
         run
     }
@@ -47,6 +50,7 @@ impl Run {
         self.step = step.min(sim.len().saturating_sub(1));
         self.state = sim.state_at(program, self.step).map(Rc::new);
         self.stopped_by_error = false;
+        self.asking = false;
     }
 
     /// One block on; at the end (or at the refused block) playing stops. `true` if it moved.

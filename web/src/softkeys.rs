@@ -102,7 +102,12 @@ pub fn row(state: &AppState) -> Row {
                 action: Action::RunPlay,
                 active: run.playing,
             }),
-            text_key("run-next", Text::new("EINZEL-\nSATZ ▶", "SINGLE\nBLOCK ▶"), l, Action::RunNext),
+            if run.asking {
+                // The class has answered: show it.
+                text_key("run-next", Text::new("ZEIGEN ▶", "SHOW ▶"), l, Action::RunNext)
+            } else {
+                text_key("run-next", Text::new("EINZEL-\nSATZ ▶", "SINGLE\nBLOCK ▶"), l, Action::RunNext)
+            },
             text_key("run-prev", Text::new("◀ SATZ\nZURÜCK", "◀ BLOCK\nBACK"), l, Action::RunPrev),
             text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
             text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),

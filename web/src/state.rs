@@ -6,7 +6,9 @@
 
 use std::rc::Rc;
 
+use schwenkbar_core::machine::Carrier;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::plane::Positioning;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{BlockBody, Program, edit};
 use yew::Reducible;
@@ -182,6 +184,16 @@ pub enum Action {
     ToggleProjector,
 }
 
+/// Whether executed step `step` is a PLANE block that moves the rotary axes (MOVE or TURN):
+/// in the classroom the run stops before it and asks the class first.
+fn swivels(sim: &Simulation, program: &Program, step: usize) -> bool {
+    let Some(record) = sim.records.get(step).filter(|r| r.executed) else { return false };
+    matches!(
+        program.blocks.get(record.block as usize).map(|b| &b.body),
+        Some(BlockBody::Plane(p)) if matches!(p.positioning, Some(Positioning::Move { .. } | Positioning::Turn { .. }))
+    )
+}
+
 impl Action {
     /// While a share link is previewed: looking at it and running it is allowed, changing a
     /// program is not until the trainee took the link or kept the own program.
@@ -299,26 +311,47 @@ impl AppState {
             }
             Action::Notice(text) => next.message = Some(text),
             Action::StartRun => next.start_run(),
-            Action::RunNext => next.run_step(|run, sim, p| {
-                run.playing = false;
-                run.next(sim, p);
-            }),
+            Action::RunNext => {
+                let classroom = self.projector;
+                next.run_step(|run, sim, p| {
+                    run.playing = false;
+                    if classroom && !run.asking && swivels(sim, p, run.step + 1) {
+                        run.asking = true;
+                    } else {
+                        run.next(sim, p);
+                    }
+                });
+            }
             Action::RunPrev => next.run_step(|run, sim, p| run.prev(sim, p)),
             Action::RunToStart => next.run_step(|run, sim, p| {
                 run.playing = false;
                 run.go_to(sim, p, 0);
             }),
             Action::RunPlay => next.run_step(|run, sim, p| {
+                if run.asking {
+                    // NC start after the question: reveal, then go on.
+                    run.next(sim, p);
+                    run.playing = true;
+                    return;
+                }
                 run.playing = !run.playing;
                 if run.playing && run.step + 1 >= sim.len() {
                     run.go_to(sim, p, 0);
                 }
             }),
-            Action::RunTick(step) => next.run_step(|run, sim, p| {
-                if run.playing && run.step == step {
-                    run.next(sim, p);
-                }
-            }),
+            Action::RunTick(step) => {
+                let classroom = self.projector;
+                next.run_step(|run, sim, p| {
+                    if run.playing && run.step == step {
+                        if classroom && !run.asking && swivels(sim, p, run.step + 1) {
+                            run.playing = false;
+                            run.asking = true;
+                        } else {
+                            run.next(sim, p);
+                        }
+                    }
+                });
+            }
             Action::RunFaster => next.run_step(|run, _, _| run.speed = (run.speed + 1).min(SPEEDS.len() - 1)),
             Action::RunSlower => next.run_step(|run, _, _| run.speed = run.speed.saturating_sub(1)),
             Action::ToggleRightHand => next.right_hand = !self.right_hand,
@@ -496,7 +529,31 @@ impl AppState {
         if let Some(e) = error.and(self.sim.as_ref()).and_then(|s| s.0.error.as_ref()) {
             return self.lang.t(&e.message.de, &e.message.en).to_owned();
         }
+        if let (Some(machine), true) = (&self.machine, self.run.as_ref().is_some_and(|r| r.asking)) {
+            return self.prediction_question(machine);
+        }
         self.dialog_text().get(self.lang).to_owned()
+    }
+
+    /// The classroom's question before a swivel: "Wohin schwenkt der Tisch? Welche Werte haben
+    /// A und C?" (master first, as the control names the solution).
+    fn prediction_question(&self, machine: &Machine) -> String {
+        let [slave, master] = machine.joints();
+        let (m, s) = (master.axis.letter(), slave.axis.letter());
+        match (self.lang, master.carrier) {
+            (Lang::De, Carrier::Table) => format!(
+                "Vorhersage: Wohin schwenkt der Tisch? Welche Werte haben {m} und {s}? NC-Start zeigt es."
+            ),
+            (Lang::De, Carrier::Head) => format!(
+                "Vorhersage: Wohin schwenkt der Kopf? Welche Werte haben {m} und {s}? NC-Start zeigt es."
+            ),
+            (Lang::En, Carrier::Table) => {
+                format!("Predict: where does the table swivel? What are {m} and {s}? NC start shows it.")
+            }
+            (Lang::En, Carrier::Head) => {
+                format!("Predict: where does the head swivel? What are {m} and {s}? NC start shows it.")
+            }
+        }
     }
 
     /// The dialog line: the open dialog's prompt or message, else what the control expects.
@@ -851,5 +908,49 @@ mod tests {
         let s = AppState::default().apply(Action::ToggleTextEditing);
         assert_eq!(&*s.effects.list, [Effect::FocusEditor]);
         assert!(s.apply(Action::ToggleTextEditing).effects.list.is_empty());
+    }
+
+    #[test]
+    fn the_classroom_run_asks_before_a_swivel_and_reveals_on_nc_start() {
+        let to_block_9 = |projector: bool| {
+            let mut s = AppState { projector, ..AppState::default() }.apply(Action::StartRun);
+            while s.cursor < 9 {
+                s = s.apply(Action::RunNext);
+            }
+            s
+        };
+        // Musterprogramm 1, block 10: PLANE SPATIAL … TURN on the A/C table.
+        let s = to_block_9(true).apply(Action::RunNext);
+        let run = s.run.as_ref().expect("run");
+        assert!(run.asking);
+        assert_eq!(run.state.as_ref().map(|st| st.block), Some(9), "block 10 has not run yet");
+        assert_eq!(
+            s.dialog_line(),
+            "Vorhersage: Wohin schwenkt der Tisch? Welche Werte haben A und C? NC-Start zeigt es."
+        );
+        let revealed = s.apply(Action::RunNext);
+        let run = revealed.run.as_ref().expect("run");
+        assert!(!run.asking);
+        assert_eq!(run.state.as_ref().map(|st| st.block), Some(10), "NC start reveals block 10");
+        // The other solution is there to be shown as the ghost.
+        assert!(
+            run.state
+                .as_ref()
+                .and_then(|st| st.explanation.as_ref())
+                .is_some_and(|e| e.candidates.len() == 2)
+        );
+        // Outside the classroom the run does not stop to ask.
+        let plain = to_block_9(false).apply(Action::RunNext);
+        assert_eq!(plain.run.as_ref().and_then(|r| r.state.as_ref()).map(|st| st.block), Some(10));
+        // In a full sequence the run stops at the question and NC start goes on after it.
+        let mut playing = to_block_9(true).apply(Action::RunPlay);
+        let step = playing.run.as_ref().map_or(0, |r| r.step);
+        playing = playing.apply(Action::RunTick(step));
+        let run = playing.run.as_ref().expect("run");
+        assert!(run.asking && !run.playing);
+        let on = playing.apply(Action::RunPlay);
+        let run = on.run.as_ref().expect("run");
+        assert!(run.playing && !run.asking);
+        assert_eq!(run.state.as_ref().map(|st| st.block), Some(10));
     }
 }
