@@ -7,7 +7,8 @@ use std::cell::Cell;
 use std::rc::Rc;
 
 use schwenkbar_tests::browser::{
-    clear_storage, click, key_on, mount, paste_program, program_lines, query, settle, text,
+    clear_storage, click, key_on, mount, mount_at, paste_program, program_lines, query, settle, text,
+    unmount, wait_for,
 };
 use schwenkbar_web::state::{Action, AppState};
 use wasm_bindgen::JsCast;
@@ -304,4 +305,23 @@ async fn the_h_key_shows_the_right_hand_rule_on_the_cursor_plane_block() {
     assert!(of_block.contains("SPA+0 SPB+15 SPC+0"), "{of_block}");
     key_on(&root, ".tnc", "h").await;
     assert!(eventually(|| query(&root, "canvas.view3d").is_some()).await, "h again: the machine");
+}
+
+#[wasm_bindgen_test]
+async fn the_course_takes_its_keys_from_the_load_and_an_embedded_trainer_keeps_its_own() {
+    clear_storage();
+    let root = mount_at("#kurs/3").await;
+    wait_for(&root, "[data-lesson='3']", 5_000).await.expect("lesson 3");
+    wait_for(&root, ".tnc[data-keys]", 5_000).await.expect("lesson 3 embeds the trainer");
+    key_on(&root, ".tnc", "PageDown").await;
+    settle().await;
+    assert!(query(&root, "[data-lesson='3']").is_some(), "PageDown in the trainer stays in the lesson");
+    key_on_body("PageDown").await;
+    assert!(wait_for(&root, "[data-lesson='4']", 3_000).await.is_some(), "PageDown on BODY: next lesson");
+    key_on_body("i").await;
+    assert!(eventually(|| query(&root, ".course.projector").is_some()).await, "I on BODY: instructor view");
+    key_on_body("i").await;
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
 }

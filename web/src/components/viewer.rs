@@ -213,21 +213,31 @@ impl Viewer {
 /// and the head around them stay in view.
 const WORK_MARGIN: f32 = 1.35;
 
-/// Label boxes, CSS px: a label this close to an earlier one would cover it.
-const LABEL_W: f32 = 44.0;
+/// Axis letter boxes, CSS px: a letter this close to an earlier one would cover it.
+const LABEL_W: f32 = 16.0;
 const LABEL_H: f32 = 15.0;
 
-/// Moves each label down until it no longer covers an earlier one, so the names of coordinate
-/// systems whose origins coincide (W-CS, WPL-CS and I-CS on the blank) stay readable.
+/// Frame names (`lbl-frame-*`) sit beside their origin by CSS offsets of their own (one per
+/// frame, gl_canvas.css), so only the axis letters are spread here.
+fn is_frame_name(label: &ScreenLabel) -> bool {
+    label.kind.starts_with("frame")
+}
+
+/// Moves each axis letter down until it no longer covers an earlier one, so the letters of
+/// triads whose origins coincide (W-CS, WPL-CS and I-CS on the blank) stay readable.
 fn spread_labels(labels: &mut [ScreenLabel]) {
     for i in 1..labels.len() {
         let (placed, rest) = labels.split_at_mut(i);
         let label = &mut rest[0];
-        // Below the label it covers: y only grows and never comes back to a label it left, so
-        // it is free after at most one move per earlier label.
+        if is_frame_name(label) {
+            continue;
+        }
+        // Below the letter it covers: y only grows and never comes back to a letter it left,
+        // so it is free after at most one move per earlier letter.
         for _ in 0..=placed.len() {
-            let covered =
-                placed.iter().find(|p| (p.x - label.x).abs() < LABEL_W && (p.y - label.y).abs() < LABEL_H);
+            let covered = placed.iter().find(|p| {
+                !is_frame_name(p) && (p.x - label.x).abs() < LABEL_W && (p.y - label.y).abs() < LABEL_H
+            });
             match covered {
                 Some(p) => label.y = p.y + LABEL_H,
                 None => break,
@@ -257,5 +267,9 @@ mod tests {
             }
         }
         assert_eq!((labels[3].x, labels[3].y), (300.0, 100.0), "a free label stays where it is");
+        let mut mixed =
+            vec![at("X", 100.0, 100.0), ScreenLabel { text: "W-CS", kind: "frame-wcs", x: 100.0, y: 100.0 }];
+        spread_labels(&mut mixed);
+        assert_eq!(mixed[1].y, 100.0, "a frame name keeps its own CSS offset");
     }
 }
