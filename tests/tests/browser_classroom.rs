@@ -316,11 +316,16 @@ async fn the_course_takes_its_keys_from_the_load_and_an_embedded_trainer_keeps_i
     key_on(&root, ".tnc", "PageDown").await;
     settle().await;
     assert!(query(&root, "[data-lesson='3']").is_some(), "PageDown in the trainer stays in the lesson");
-    key_on_body("PageDown").await;
-    assert!(wait_for(&root, "[data-lesson='4']", 3_000).await.is_some(), "PageDown on BODY: next lesson");
     key_on_body("i").await;
     assert!(eventually(|| query(&root, ".course.projector").is_some()).await, "I on BODY: instructor view");
+    assert!(
+        eventually(|| query(&root, ".tnc.projector[data-keys]").is_some()).await,
+        "the instructor view shows the lesson's trainer in projector mode"
+    );
     key_on_body("i").await;
+    assert!(eventually(|| query(&root, ".course.projector").is_none()).await);
+    key_on_body("PageDown").await;
+    assert!(wait_for(&root, "[data-lesson='4']", 3_000).await.is_some(), "PageDown on BODY: next lesson");
     unmount(&root);
     web_sys::window().expect("window").location().set_hash("").expect("hash");
     settle().await;

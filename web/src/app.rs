@@ -25,6 +25,8 @@ pub struct Embed {
     pub program: Rc<str>,
     pub machine: &'static str,
     pub lang: Lang,
+    /// The course's instructor view: projector mode with the classroom's question.
+    pub classroom: bool,
     /// Told the cursor block's text whenever it is a PLANE block (`None` otherwise).
     pub on_plane_block: Callback<Option<String>>,
 }
@@ -40,7 +42,7 @@ pub struct AppProps {
 pub fn app(props: &AppProps) -> Html {
     let embed = props.embed.clone();
     let state = use_reducer(|| match &embed {
-        Some(e) => AppState::embedded(&e.program, e.machine, e.lang),
+        Some(e) => AppState::embedded(&e.program, e.machine, e.lang, e.classroom),
         None => {
             let (saved, program) = browser::load_saved();
             AppState::start(saved.as_deref(), program, browser::fragment().as_deref())

@@ -669,11 +669,12 @@ impl AppState {
         state
     }
 
-    /// A lesson's trainer: its own program and machine, the cursor on the first PLANE block;
-    /// nothing of the trainee's saved work is read or written.
+    /// A lesson's trainer: its own program and machine, the cursor on the first PLANE block,
+    /// in projector mode in the instructor view (`classroom`); nothing of the trainee's saved
+    /// work is read or written.
     #[must_use]
-    pub fn embedded(program: &str, machine: &str, lang: Lang) -> AppState {
-        let mut state = AppState { lang, ..AppState::default() };
+    pub fn embedded(program: &str, machine: &str, lang: Lang, classroom: bool) -> AppState {
+        let mut state = AppState { lang, projector: classroom, ..AppState::default() };
         state.doc = Rc::new(Document::new(program.to_owned()));
         state.cursor =
             state.doc.program.blocks.iter().position(|b| matches!(b.body, BlockBody::Plane(_))).unwrap_or(0);

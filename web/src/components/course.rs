@@ -156,9 +156,12 @@ fn lesson_page(state: &CourseState, i: usize, dispatch: &Callback<CourseAction>)
                 state.trainer_program.clone().unwrap_or_else(|| (program.into(), machine));
             // Rebuilt only for another lesson, another opened program or language (a key that
             // changed on every render would remount it endlessly).
-            let key = format!("{i}-{}-{}", state.trainer_generation, l.code());
+            // The instructor view shows the trainer in projector mode, with the classroom's
+            // question before each swivel (a new key: the trainer starts again in that mode).
+            let classroom = state.progress.instructor;
+            let key = format!("{i}-{}-{}-{classroom}", state.trainer_generation, l.code());
             let on_plane_block = dispatch.reform(CourseAction::TrainerBlock);
-            let embed = Embed { program, machine, lang: l, on_plane_block };
+            let embed = Embed { program, machine, lang: l, classroom, on_plane_block };
             html! { <div class="lesson-trainer" {key}><App embed={Some(embed)} /></div> }
         }
     };
