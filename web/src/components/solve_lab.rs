@@ -1,12 +1,22 @@
 //! Lesson 5's experiment bench: set machine, limit switches, start position and option, see the
-//! control's choice and the reason; the seed's table rows load as set-ups.
+//! control's choice and the reason, the master axis' gauge (limit switches, symmetry point, start,
+//! both candidates) and the machine in 3D (chosen solution, the other as the ghost); the seed's
+//! table rows load as set-ups, each named by what it shows.
+
+use std::rc::Rc;
 
 use schwenkbar_core::course::seed_rows;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::solve::axis_words;
 use yew::prelude::*;
 
-use crate::course::lab::{LabForm, OPTIONS};
+use super::view3d::View3d;
+use crate::course::bench::{DIAL, GAUGE_VIEW, Gauge, GaugeMark, bench_scene, row_name};
+use crate::course::lab::{Bench, LabForm, OPTIONS};
 use crate::i18n::Lang;
+
+/// The bench's CSS, shipped with the component.
+const STYLE: &str = include_str!("solve_lab.css");
 
 #[derive(Properties, PartialEq)]
 pub struct SolveLabProps {
@@ -58,8 +68,9 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
     let axes =
         machine.as_ref().map_or(['?', '?'], |m| [m.joints()[0].axis.letter(), m.joints()[1].axis.letter()]);
     let master = machine.as_ref().map_or('?', |m| m.master().axis.letter());
-    let result = match form.solve(l) {
-        Ok(why) => html! {
+    let bench = form.bench(l);
+    let result = match &bench {
+        Ok(Bench { why, .. }) => html! {
             <div class="lab-result" data-testid="lab-result">
                 { for why.candidates.iter().map(|(t, chosen)| html! {
                     <p class={classes!("candidate", chosen.then_some("chosen"))} data-chosen={chosen.to_string()}>{ t }</p>
@@ -71,14 +82,38 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
         },
         Err(message) => html! { <p class="error" data-testid="lab-error">{ message }</p> },
     };
+    let figures = match &bench {
+        Ok(b) => figures(b, l),
+        // An entry the bench cannot read: the machine at home, and the message above says why.
+        Err(_) => {
+            let machine = Machine::builtin(&form.machine).ok().map(Rc::new);
+            html! {
+                <div class="bench-figures">
+                    <figure class="bench-view" data-testid="bench-view">
+                        <View3d lang={l} {machine} />
+                        <figcaption>{ l.t("Grundstellung: die Eingabe ist nicht lesbar.", "Home position: the entry cannot be read.") }</figcaption>
+                    </figure>
+                </div>
+            }
+        }
+    };
     let rows = seed_rows().into_iter().map(|row| {
         let form = form.clone();
         let number = row.number;
-        let load = Callback::from(move |_: MouseEvent| form.set(LabForm::from_row(&row)));
-        html! { <button onclick={load} data-testid={format!("seed-row-{number}")}>{ format!("{} {number}", l.t("Zeile", "Row")) }</button> }
+        let set_up = LabForm::from_row(&row);
+        let pressed = if *form == set_up { "true" } else { "false" };
+        let name = row_name(&row, l);
+        let load = Callback::from(move |_: MouseEvent| form.set(set_up.clone()));
+        html! {
+            <li><button onclick={load} data-testid={format!("seed-row-{number}")} aria-pressed={pressed}
+                title={format!("{} {number}", l.t("Handbuch-Tabelle, Zeile", "Manual table, row"))}>
+                { name }<small class="row-no">{ format!("{} {number}", l.t("Zeile", "Row")) }</small>
+            </button></li>
+        }
     });
     html! {
         <div class="solve-lab" data-testid="solve-lab">
+            <style>{ STYLE }</style>
             <div class="lab-fields">
                 <label>{ l.t("Maschine", "Machine") }
                     <select onchange={on(Field::Machine)} data-testid="lab-machine">
@@ -109,11 +144,118 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
                     </select>
                 </label>
             </div>
-            <div class="seed-rows">
+            <div class="seed-rows" data-testid="seed-rows">
                 <span>{ l.t("Zeilen der Tabellen aus dem Handbuch:", "Rows of the manual's tables:") }</span>
-                { for rows }
+                <ul>{ for rows }</ul>
             </div>
             { result }
+            { figures }
         </div>
+    }
+}
+
+/// The gauge and the 3D view of a set-up the bench could read.
+fn figures(b: &Bench, l: Lang) -> Html {
+    let scene = bench_scene(&b.machine, b.explanation.as_ref(), &b.opts.start);
+    let chosen = b.explanation.as_ref().and_then(|e| e.chosen_axes());
+    let caption = match (&chosen, &scene.ghost) {
+        (Some(axes), Some(ghost)) => format!(
+            "{} {} · {} {}",
+            l.t("Gewählt:", "Chosen:"),
+            axis_words(axes),
+            l.t("durchscheinend die andere Lösung", "translucent: the other solution"),
+            axis_words(ghost)
+        ),
+        (Some(axes), None) => format!("{} {}", l.t("Gewählt:", "Chosen:"), axis_words(axes)),
+        (None, _) => format!(
+            "{} {}",
+            l.t(
+                "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
+                "The control refuses the block – the machine stays at the start position"
+            ),
+            axis_words(&scene.axes.rotary)
+        ),
+    };
+    html! {
+        <div class="bench-figures">
+            { gauge(&Gauge::of_bench(b), l) }
+            <figure class="bench-view" data-testid="bench-view" data-solved={chosen.is_some().to_string()}>
+                <View3d lang={l} machine={Rc::new(b.machine.clone())} state={Rc::new(scene)} />
+                <figcaption data-testid="bench-view-caption">{ caption }</figcaption>
+            </figure>
+        </div>
+    }
+}
+
+fn num(v: f64) -> String {
+    format!("{v:.1}")
+}
+
+/// A mark's label as SVG text.
+fn label(m: &GaugeMark, text: String, class: &'static str) -> Html {
+    html! {
+        <text class={class} x={num(m.label_at.0)} y={num(m.label_at.1)} text-anchor={m.anchor}>{ text }</text>
+    }
+}
+
+/// A radial tick across the dial at a mark.
+fn tick(m: &GaugeMark, inner: f64, outer: f64, class: &'static str) -> Html {
+    let (a, b) = (DIAL.point(m.value, inner), DIAL.point(m.value, outer));
+    html! { <line class={class} x1={num(a.0)} y1={num(a.1)} x2={num(b.0)} y2={num(b.1)} /> }
+}
+
+/// The master axis gauge: the dial with the traverse range, the limit switches, the symmetry
+/// point's radius, the start and both candidates (the chosen one filled, one beyond a limit
+/// switch crossed out).
+fn gauge(g: &Gauge, l: Lang) -> Html {
+    let r = DIAL.r;
+    let axis = g.axis;
+    let limits_text = g.limits.as_ref().map_or_else(
+        || format!("{} {axis}", l.t("Keine Endschalter an", "No limit switches on")),
+        |[min, max]| format!("{} {axis}: {} … {}", l.t("Endschalter", "Limit switches"), min.word, max.word),
+    );
+    let sym_end = DIAL.point(g.symmetry.value, r);
+    html! {
+        <figure class="bench-gauge" data-testid="gauge">
+            <svg viewBox={GAUGE_VIEW} role="img"
+                aria-label={format!("{} {axis}", l.t("Verfahrbereich der Master-Achse", "Traverse range of the master axis"))}>
+                <path class="allowed" d={g.allowed.clone()} />
+                if let Some(f) = &g.forbidden { <path class="forbidden" d={f.clone()} /> }
+                <line class="symmetry" x1={num(DIAL.cx)} y1={num(DIAL.cy)} x2={num(sym_end.0)} y2={num(sym_end.1)} />
+                { label(&g.symmetry, format!("{} {}", l.t("Sym.", "Sym."), g.symmetry.word), "symmetry-label") }
+                if let Some(limits) = &g.limits {
+                    { for limits.iter().map(|m| html! {
+                        <g class="limit" data-testid="gauge-limit">
+                            { tick(m, r - 9.0, r + 9.0, "limit-tick") }
+                            { label(m, m.word.clone(), "limit-label") }
+                        </g>
+                    }) }
+                }
+                <g class="start" data-testid="gauge-start">
+                    { tick(&g.start, r - 16.0, r - 4.0, "start-tick") }
+                    { label(&g.start, format!("{} {}", l.t("Start", "Start"), g.start.word), "start-label") }
+                </g>
+                { for g.candidates.iter().map(|c| {
+                    let (x, y) = c.mark.at;
+                    html! {
+                        <g class={classes!("candidate", c.chosen.then_some("chosen"), c.out_of_limits.then_some("out"))}
+                            data-testid="gauge-candidate" data-chosen={c.chosen.to_string()}
+                            data-out={c.out_of_limits.to_string()} data-word={c.mark.word.clone()}>
+                            <circle cx={num(x)} cy={num(y)} r={if c.chosen { "8" } else { "6" }} />
+                            if c.out_of_limits {
+                                <path class="cross" d={format!("M{} {}l10 10m0 -10l-10 10", num(x - 5.0), num(y - 5.0))} />
+                            }
+                            { label(&c.mark, c.mark.word.clone(), "candidate-label") }
+                        </g>
+                    }
+                }) }
+            </svg>
+            <figcaption>
+                <span class="limits">{ limits_text }</span>
+                <span class="key-chosen">{ l.t("● gewählt", "● chosen") }</span>
+                <span class="key-other">{ l.t("○ andere Lösung", "○ other solution") }</span>
+                <span class="key-out">{ l.t("✕ hinter dem Endschalter", "✕ beyond a limit switch") }</span>
+            </figcaption>
+        </figure>
     }
 }
