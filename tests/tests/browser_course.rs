@@ -168,7 +168,10 @@ async fn the_lesson_5_bench_shows_the_machine_in_3d_the_master_axis_gauge_and_na
         query(&root, "[data-testid=seed-row-21]").and_then(|b| b.get_attribute("aria-pressed")).as_deref(),
         Some("true")
     );
-    assert!(text(&root, "[data-testid=bench-view-caption]").contains("A+45 C+90"), "the other one as the ghost");
+    assert!(
+        text(&root, "[data-testid=bench-view-caption]").contains("A+45 C+90"),
+        "the other one as the ghost"
+    );
     // A refused row: no candidate chosen, the machine stays at the start position and says so.
     seed_button(&root, &row_name(row(20), schwenkbar_core::Lang::De)).click();
     settle().await;

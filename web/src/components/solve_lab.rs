@@ -11,7 +11,7 @@ use schwenkbar_core::solve::axis_words;
 use yew::prelude::*;
 
 use super::view3d::View3d;
-use crate::course::bench::{DIAL, GAUGE_VIEW, Gauge, GaugeMark, bench_scene, row_name};
+use crate::course::bench::{Gauge, bench_scene, row_name};
 use crate::course::lab::{Bench, LabForm, OPTIONS};
 use crate::i18n::Lang;
 
@@ -187,69 +187,16 @@ fn figures(b: &Bench, l: Lang) -> Html {
     }
 }
 
-fn num(v: f64) -> String {
-    format!("{v:.1}")
-}
-
-/// A mark's label as SVG text.
-fn label(m: &GaugeMark, text: String, class: &'static str) -> Html {
-    html! {
-        <text class={class} x={num(m.label_at.0)} y={num(m.label_at.1)} text-anchor={m.anchor}>{ text }</text>
-    }
-}
-
-/// A radial tick across the dial at a mark.
-fn tick(m: &GaugeMark, inner: f64, outer: f64, class: &'static str) -> Html {
-    let (a, b) = (DIAL.point(m.value, inner), DIAL.point(m.value, outer));
-    html! { <line class={class} x1={num(a.0)} y1={num(a.1)} x2={num(b.0)} y2={num(b.1)} /> }
-}
-
-/// The master axis gauge: the dial with the traverse range, the limit switches, the symmetry
-/// point's radius, the start and both candidates (the chosen one filled, one beyond a limit
-/// switch crossed out).
+/// The master axis gauge ([`Gauge::svg`]) and its key.
 fn gauge(g: &Gauge, l: Lang) -> Html {
-    let r = DIAL.r;
     let axis = g.axis;
     let limits_text = g.limits.as_ref().map_or_else(
         || format!("{} {axis}", l.t("Keine Endschalter an", "No limit switches on")),
         |[min, max]| format!("{} {axis}: {} … {}", l.t("Endschalter", "Limit switches"), min.word, max.word),
     );
-    let sym_end = DIAL.point(g.symmetry.value, r);
     html! {
         <figure class="bench-gauge" data-testid="gauge">
-            <svg viewBox={GAUGE_VIEW} role="img"
-                aria-label={format!("{} {axis}", l.t("Verfahrbereich der Master-Achse", "Traverse range of the master axis"))}>
-                <path class="allowed" d={g.allowed.clone()} />
-                if let Some(f) = &g.forbidden { <path class="forbidden" d={f.clone()} /> }
-                <line class="symmetry" x1={num(DIAL.cx)} y1={num(DIAL.cy)} x2={num(sym_end.0)} y2={num(sym_end.1)} />
-                { label(&g.symmetry, format!("{} {}", l.t("Sym.", "Sym."), g.symmetry.word), "symmetry-label") }
-                if let Some(limits) = &g.limits {
-                    { for limits.iter().map(|m| html! {
-                        <g class="limit" data-testid="gauge-limit">
-                            { tick(m, r - 9.0, r + 9.0, "limit-tick") }
-                            { label(m, m.word.clone(), "limit-label") }
-                        </g>
-                    }) }
-                }
-                <g class="start" data-testid="gauge-start">
-                    { tick(&g.start, r - 16.0, r - 4.0, "start-tick") }
-                    { label(&g.start, format!("{} {}", l.t("Start", "Start"), g.start.word), "start-label") }
-                </g>
-                { for g.candidates.iter().map(|c| {
-                    let (x, y) = c.mark.at;
-                    html! {
-                        <g class={classes!("candidate", c.chosen.then_some("chosen"), c.out_of_limits.then_some("out"))}
-                            data-testid="gauge-candidate" data-chosen={c.chosen.to_string()}
-                            data-out={c.out_of_limits.to_string()} data-word={c.mark.word.clone()}>
-                            <circle cx={num(x)} cy={num(y)} r={if c.chosen { "8" } else { "6" }} />
-                            if c.out_of_limits {
-                                <path class="cross" d={format!("M{} {}l10 10m0 -10l-10 10", num(x - 5.0), num(y - 5.0))} />
-                            }
-                            { label(&c.mark, c.mark.word.clone(), "candidate-label") }
-                        </g>
-                    }
-                }) }
-            </svg>
+            { Html::from_html_unchecked(g.svg(l).into()) }
             <figcaption>
                 <span class="limits">{ limits_text }</span>
                 <span class="key-chosen">{ l.t("● gewählt", "● chosen") }</span>

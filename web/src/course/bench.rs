@@ -7,7 +7,9 @@ use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::course::SeedRow;
 use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::plane::RotaryAxis;
-use schwenkbar_core::solve::{Exclusion, Explanation, SolveError, SolveOptions, axis_word, solve_block};
+use schwenkbar_core::solve::{
+    Exclusion, Explanation, Rule, SolveError, SolveOptions, axis_word, solve_block,
+};
 
 use super::lab::{Bench, LabForm, option_word};
 use crate::i18n::Lang;
@@ -70,8 +72,11 @@ fn outcome(e: &Explanation, l: Lang) -> String {
         return match e.error {
             Some(SolveError::AxisOutOfLimit { axis, value, .. }) => {
                 let v = axis_word(axis, value);
-                l.t(&format!("{v} hinter dem Endschalter – {refused}"), &format!("{v} beyond the limit switch – {refused}"))
-                    .to_owned()
+                l.t(
+                    &format!("{v} hinter dem Endschalter – {refused}"),
+                    &format!("{v} beyond the limit switch – {refused}"),
+                )
+                .to_owned()
             }
             Some(SolveError::NoSolutionOnSide { .. }) => l
                 .t(
@@ -88,12 +93,23 @@ fn outcome(e: &Explanation, l: Lang) -> String {
     };
     let o_word = word(other);
     let longer = e.candidates[chosen].path > o.path + PATH_TOL;
+    if let Rule::SeqNearer { .. } = e.rule {
+        return l
+            .t(
+                &format!("beide auf dieser Seite – die nähere {c} statt {o_word}"),
+                &format!("both on that side – the nearer {c} rather than {o_word}"),
+            )
+            .to_owned();
+    }
     match o.excluded {
-        Some(Exclusion::OutOfLimits(_)) => {
-            l.t(&format!("Endschalter – nur {c} erlaubt"), &format!("limit switch – only {c} allowed")).to_owned()
-        }
+        Some(Exclusion::OutOfLimits(_)) => l
+            .t(&format!("nur {c} innerhalb der Endschalter"), &format!("only {c} within the limit switches"))
+            .to_owned(),
         Some(Exclusion::LongerPath { .. }) => l
-            .t(&format!("kürzerer Weg – {c} statt {o_word}"), &format!("shorter path – {c} rather than {o_word}"))
+            .t(
+                &format!("kürzerer Weg – {c} statt {o_word}"),
+                &format!("shorter path – {c} rather than {o_word}"),
+            )
             .to_owned(),
         Some(Exclusion::LostTie { .. }) => l
             .t(
@@ -107,7 +123,9 @@ fn outcome(e: &Explanation, l: Lang) -> String {
                 &format!("chooses {c} rather than {o_word}, though the path is longer"),
             )
             .to_owned(),
-        _ => l.t(&format!("wählt {c} statt {o_word}"), &format!("chooses {c} rather than {o_word}")).to_owned(),
+        _ => {
+            l.t(&format!("wählt {c} statt {o_word}"), &format!("chooses {c} rather than {o_word}")).to_owned()
+        }
     }
 }
 
@@ -143,9 +161,7 @@ impl Dial {
         if span >= 360.0 - 1e-9 {
             let (x1, y1) = self.point(from + 180.0, self.r);
             let r = self.r;
-            return format!(
-                "M{x0:.2} {y0:.2}A{r} {r} 0 1 1 {x1:.2} {y1:.2}A{r} {r} 0 1 1 {x0:.2} {y0:.2}"
-            );
+            return format!("M{x0:.2} {y0:.2}A{r} {r} 0 1 1 {x1:.2} {y1:.2}A{r} {r} 0 1 1 {x0:.2} {y0:.2}");
         }
         let (x1, y1) = self.point(from + span, self.r);
         let large = u8::from(span > 180.0);
@@ -201,7 +217,8 @@ pub struct Gauge {
     pub forbidden: Option<String>,
     /// The two limit switches, min then max.
     pub limits: Option<[GaugeMark; 2]>,
-    /// The symmetry point (its radius is drawn as the mirror line).
+    /// The symmetry point (the diameter through it is drawn as the mirror line: the two
+    /// candidates lie mirrored about it).
     pub symmetry: GaugeMark,
     pub start: GaugeMark,
     pub candidates: Vec<CandidateMark>,
@@ -234,7 +251,12 @@ impl Gauge {
             allowed,
             forbidden,
             limits: bounded.map(|l| [mark(l.min, d.r, d.r + 16.0), mark(l.max, d.r, d.r + 16.0)]),
-            symmetry: mark(symmetry, d.r, d.r * 0.45),
+            symmetry: GaugeMark {
+                // Its label sits inside, on the mirror line's far half, clear of the start's.
+                label_at: d.label(symmetry + 180.0, d.r * 0.55).0,
+                anchor: "middle",
+                ..mark(symmetry, d.r, d.r)
+            },
             start: mark(start, d.r - 10.0, d.r - 24.0),
             candidates: candidates
                 .iter()
@@ -262,6 +284,102 @@ impl Gauge {
             None => (b.machine.symmetry_positions()[0], Vec::new()),
         };
         Gauge::new(master, limits, symmetry, start, &candidates)
+    }
+}
+
+/// A number in the SVG (one decimal is a tenth of a pixel).
+fn num(v: f64) -> String {
+    format!("{v:.1}")
+}
+
+impl GaugeMark {
+    /// The mark's label as SVG text (`text` is the trainer's own: NC words and fixed words).
+    fn label(&self, text: &str, class: &str) -> String {
+        let (x, y) = self.label_at;
+        format!(
+            r#"<text class="{class}" x="{}" y="{}" text-anchor="{}">{text}</text>"#,
+            num(x),
+            num(y),
+            self.anchor
+        )
+    }
+
+    /// A radial tick across the dial at the mark, from radius `inner` to `outer`.
+    fn tick(&self, inner: f64, outer: f64, class: &str) -> String {
+        line(DIAL.point(self.value, inner), DIAL.point(self.value, outer), class)
+    }
+}
+
+fn line(a: (f64, f64), b: (f64, f64), class: &str) -> String {
+    format!(
+        r#"<line class="{class}" x1="{}" y1="{}" x2="{}" y2="{}"/>"#,
+        num(a.0),
+        num(a.1),
+        num(b.0),
+        num(b.1)
+    )
+}
+
+impl Gauge {
+    /// The gauge as one SVG element: the traverse range along the dial (beyond the limit
+    /// switches dashed red), the limit switches as ticks, the mirror line through the symmetry
+    /// point, the start, and the candidates (`data-chosen`, `data-out`, `data-word` for the
+    /// tests; the chosen one filled, one beyond a limit switch crossed out). Every text in it is
+    /// the trainer's own (NC words, numbers, fixed words), so it needs no escaping.
+    #[must_use]
+    pub fn svg(&self, l: Lang) -> String {
+        let r = DIAL.r;
+        let mut s = format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="{GAUGE_VIEW}" role="img" aria-label="{} {}">"#,
+            l.t("Verfahrbereich der Master-Achse", "Traverse range of the master axis"),
+            self.axis
+        );
+        s += &format!(r#"<path class="allowed" d="{}"/>"#, self.allowed);
+        if let Some(f) = &self.forbidden {
+            s += &format!(r#"<path class="forbidden" d="{f}"/>"#);
+        }
+        let sym = self.symmetry.value;
+        s += &line(DIAL.point(sym, r), DIAL.point(sym + 180.0, r), "symmetry");
+        s += &self
+            .symmetry
+            .label(&format!("{} {}", l.t("Symmetrie", "Symmetry"), self.symmetry.word), "symmetry-label");
+        for m in self.limits.iter().flatten() {
+            s += &format!(
+                r#"<g class="limit" data-testid="gauge-limit">{}{}</g>"#,
+                m.tick(r - 9.0, r + 9.0, "limit-tick"),
+                m.label(&m.word, "limit-label")
+            );
+        }
+        s += &format!(
+            r#"<g class="start" data-testid="gauge-start">{}{}</g>"#,
+            self.start.tick(r - 16.0, r - 4.0, "start-tick"),
+            self.start.label(&format!("{} {}", l.t("Start", "Start"), self.start.word), "start-label")
+        );
+        for c in &self.candidates {
+            let (x, y) = c.mark.at;
+            let class = match (c.chosen, c.out_of_limits) {
+                (true, true) => "candidate chosen out",
+                (true, false) => "candidate chosen",
+                (false, true) => "candidate out",
+                (false, false) => "candidate",
+            };
+            let cross = if c.out_of_limits {
+                format!(r#"<path class="cross" d="M{} {}l10 10m0 -10l-10 10"/>"#, num(x - 5.0), num(y - 5.0))
+            } else {
+                String::new()
+            };
+            s += &format!(
+                r#"<g class="{class}" data-testid="gauge-candidate" data-chosen="{}" data-out="{}" data-word="{}"><circle cx="{}" cy="{}" r="{}"/>{cross}{}</g>"#,
+                c.chosen,
+                c.out_of_limits,
+                c.mark.word,
+                num(x),
+                num(y),
+                if c.chosen { 8 } else { 6 },
+                c.mark.label(&c.mark.word, "candidate-label")
+            );
+        }
+        s + "</svg>"
     }
 }
 
@@ -322,13 +440,17 @@ mod tests {
         assert_eq!(name(15), "SYM-: wählt A-45 statt A+45");
         assert_eq!(name(17), "SYM+ ab C-105: wählt A+45 statt A-45, obwohl der Weg länger ist");
         assert_eq!(name(16), "ohne SEQ/SYM ab C-105: kürzerer Weg – A-45 statt A+45");
-        assert_eq!(name(19), "ohne SEQ/SYM mit Endschalter A-90 … A+10: Endschalter – nur A-45 erlaubt");
+        assert_eq!(name(19), "ohne SEQ/SYM mit Endschalter A-90 … A+10: nur A-45 innerhalb der Endschalter");
         assert_eq!(
             name(20),
             "SYM+ mit Endschalter A-90 … A+10: A+45 hinter dem Endschalter – Winkel nicht erlaubt"
         );
         assert_eq!(name(23), "SYM+ auf der B/A-Maschine: wählt A-45 statt A-135");
         assert!(name(25).contains("keine Lösung auf dieser Seite – Winkel nicht erlaubt"));
+        assert_eq!(
+            name(26),
+            "SEQ- auf der B/A-Maschine: beide auf dieser Seite – die nähere A-45 statt A-135"
+        );
         let row = seed_rows().into_iter().find(|r| r.number == 14).expect("row");
         assert_eq!(row_name(&row, Lang::En), "SYM+: chooses A+45 rather than A-45");
     }
@@ -354,21 +476,43 @@ mod tests {
 
     #[test]
     fn the_gauge_marks_limits_symmetry_start_and_both_candidates() {
-        let g = Gauge::new(RotaryAxis::A, Some(Limits { min: -90.0, max: 10.0 }), 0.0, 0.0, &[
-            (45.0, false),
-            (-45.0, true),
-        ]);
+        let g = Gauge::new(
+            RotaryAxis::A,
+            Some(Limits { min: -90.0, max: 10.0 }),
+            0.0,
+            0.0,
+            &[(45.0, false), (-45.0, true)],
+        );
         let [min, max] = g.limits.clone().expect("limit switches");
         assert_eq!((min.word.as_str(), max.word.as_str()), ("A-90", "A+10"));
         assert_eq!(min.at, DIAL.point(-90.0, DIAL.r));
         assert!(g.forbidden.is_some());
         assert_eq!(g.symmetry.word, "A+0");
-        let c: Vec<_> = g.candidates.iter().map(|c| (c.mark.word.as_str(), c.chosen, c.out_of_limits)).collect();
+        let c: Vec<_> =
+            g.candidates.iter().map(|c| (c.mark.word.as_str(), c.chosen, c.out_of_limits)).collect();
         assert_eq!(c, [("A+45", false, true), ("A-45", true, false)]);
         // Without limit switches: the whole circle is allowed, nothing is out.
         let g = Gauge::new(RotaryAxis::A, None, 0.0, 0.0, &[(45.0, true), (-45.0, false)]);
         assert!(g.limits.is_none() && g.forbidden.is_none());
         assert!(g.candidates.iter().all(|c| !c.out_of_limits));
+    }
+
+    #[test]
+    fn the_gauge_svg_carries_every_mark_and_marks_the_chosen_candidate() {
+        let g = Gauge::new(
+            RotaryAxis::A,
+            Some(Limits { min: -90.0, max: 10.0 }),
+            0.0,
+            0.0,
+            &[(45.0, false), (-45.0, true)],
+        );
+        let svg = g.svg(Lang::De);
+        assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>"));
+        assert_eq!(svg.matches("data-testid=\"gauge-limit\"").count(), 2);
+        assert!(svg.contains(r#"class="candidate chosen" data-testid="gauge-candidate" data-chosen="true" data-out="false" data-word="A-45""#));
+        assert!(svg.contains(r#"class="candidate out" data-testid="gauge-candidate" data-chosen="false" data-out="true" data-word="A+45""#));
+        assert!(svg.contains(">Start A+0</text>") && svg.contains(">Symmetrie A+0</text>"));
+        assert_eq!(svg.matches('<').count(), svg.matches('>').count(), "every tag closed");
     }
 
     #[test]

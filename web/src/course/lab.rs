@@ -6,8 +6,8 @@ use glam::DMat3;
 use schwenkbar_core::course::SeedRow;
 use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::number::parse_input;
-use schwenkbar_core::plane::{Selection, Sign, Value};
 use schwenkbar_core::plane::PlaneBlock;
+use schwenkbar_core::plane::{Selection, Sign, Value};
 use schwenkbar_core::solve::{Explanation, SolveOptions, fmt_deg, solve_block};
 use schwenkbar_core::{BlockBody, parse};
 
