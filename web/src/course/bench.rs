@@ -66,67 +66,56 @@ pub fn row_name(row: &SeedRow, l: Lang) -> String {
 /// Which candidate the control takes and why, in a few words.
 fn outcome(e: &Explanation, l: Lang) -> String {
     let word = |i: usize| e.candidates.get(i).map_or_else(String::new, |c| axis_word(e.master, c.master));
-    let refused = e.error_message.map(|m| l.t(m.de(), m.en()).to_owned());
-    let Some(chosen) = e.chosen else {
-        let refused = refused.unwrap_or_default();
-        return match e.error {
-            Some(SolveError::AxisOutOfLimit { axis, value, .. }) => {
-                let v = axis_word(axis, value);
-                l.t(
-                    &format!("{v} hinter dem Endschalter – {refused}"),
-                    &format!("{v} beyond the limit switch – {refused}"),
-                )
-                .to_owned()
-            }
-            Some(SolveError::NoSolutionOnSide { .. }) => l
-                .t(
-                    &format!("keine Lösung auf dieser Seite – {refused}"),
-                    &format!("no solution on that side – {refused}"),
-                )
-                .to_owned(),
-            _ => refused,
-        };
-    };
-    let c = word(chosen);
-    let Some((other, o)) = e.candidates.iter().enumerate().find(|(i, _)| *i != chosen) else {
-        return l.t(&format!("nur eine Lösung: {c}"), &format!("only one solution: {c}")).to_owned();
-    };
-    let o_word = word(other);
-    let longer = e.candidates[chosen].path > o.path + PATH_TOL;
-    if let Rule::SeqNearer { .. } = e.rule {
-        return l
-            .t(
-                &format!("beide auf dieser Seite – die nähere {c} statt {o_word}"),
-                &format!("both on that side – the nearer {c} rather than {o_word}"),
-            )
-            .to_owned();
-    }
-    match o.excluded {
-        Some(Exclusion::OutOfLimits(_)) => l
-            .t(&format!("nur {c} innerhalb der Endschalter"), &format!("only {c} within the limit switches"))
-            .to_owned(),
-        Some(Exclusion::LongerPath { .. }) => l
-            .t(
-                &format!("kürzerer Weg – {c} statt {o_word}"),
-                &format!("shorter path – {c} rather than {o_word}"),
-            )
-            .to_owned(),
-        Some(Exclusion::LostTie { .. }) => l
-            .t(
-                &format!("gleich weit – {c} statt {o_word} (Annahme)"),
-                &format!("equal paths – {c} rather than {o_word} (assumption)"),
-            )
-            .to_owned(),
-        _ if longer => l
-            .t(
-                &format!("wählt {c} statt {o_word}, obwohl der Weg länger ist"),
-                &format!("chooses {c} rather than {o_word}, though the path is longer"),
-            )
-            .to_owned(),
-        _ => {
-            l.t(&format!("wählt {c} statt {o_word}"), &format!("chooses {c} rather than {o_word}")).to_owned()
+    // One template per case, German and English: `{c}` the chosen (or refused) master value,
+    // `{o}` the other, `{r}` the control's message.
+    let (template, c, o) = match e.chosen {
+        None => {
+            let template = match e.error {
+                Some(SolveError::AxisOutOfLimit { .. }) => {
+                    ("{c} hinter dem Endschalter – {r}", "{c} beyond the limit switch – {r}")
+                }
+                Some(SolveError::NoSolutionOnSide { .. }) => {
+                    ("keine Lösung auf dieser Seite – {r}", "no solution on that side – {r}")
+                }
+                _ => ("{r}", "{r}"),
+            };
+            let c = match e.error {
+                Some(SolveError::AxisOutOfLimit { axis, value, .. }) => axis_word(axis, value),
+                _ => String::new(),
+            };
+            (template, c, String::new())
         }
-    }
+        Some(chosen) => match e.candidates.iter().enumerate().find(|(i, _)| *i != chosen) {
+            None => (("nur eine Lösung: {c}", "only one solution: {c}"), word(chosen), String::new()),
+            Some((other, o)) => {
+                let longer = e.candidates[chosen].path > o.path + PATH_TOL;
+                let template = match (e.rule, o.excluded) {
+                    (Rule::SeqNearer { .. }, _) => (
+                        "beide auf dieser Seite – die nähere {c} statt {o}",
+                        "both on that side – the nearer {c} rather than {o}",
+                    ),
+                    (_, Some(Exclusion::OutOfLimits(_))) => {
+                        ("nur {c} innerhalb der Endschalter", "only {c} within the limit switches")
+                    }
+                    (_, Some(Exclusion::LongerPath { .. })) => {
+                        ("kürzerer Weg – {c} statt {o}", "shorter path – {c} rather than {o}")
+                    }
+                    (_, Some(Exclusion::LostTie { .. })) => (
+                        "gleich weit – {c} statt {o} (Annahme)",
+                        "equal paths – {c} rather than {o} (assumption)",
+                    ),
+                    _ if longer => (
+                        "wählt {c} statt {o}, obwohl der Weg länger ist",
+                        "chooses {c} rather than {o}, though the path is longer",
+                    ),
+                    _ => ("wählt {c} statt {o}", "chooses {c} rather than {o}"),
+                };
+                (template, word(chosen), word(other))
+            }
+        },
+    };
+    let refused = e.error_message.map_or("", |m| l.t(m.de(), m.en()));
+    l.t(template.0, template.1).replace("{c}", &c).replace("{o}", &o).replace("{r}", refused)
 }
 
 /// The gauge's dial: a circle in SVG coordinates (y down). The master axis angle θ sits at
