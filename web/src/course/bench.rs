@@ -241,8 +241,12 @@ impl Gauge {
             forbidden,
             limits: bounded.map(|l| [mark(l.min, d.r, d.r + 16.0), mark(l.max, d.r, d.r + 16.0)]),
             symmetry: GaugeMark {
-                // Its label sits inside, on the mirror line's far half, clear of the start's.
-                label_at: d.label(symmetry + 180.0, d.r * 0.55).0,
+                // Its label sits inside, just below the mirror line's far half, clear of the
+                // start's and of the dial.
+                label_at: {
+                    let (x, y) = d.point(symmetry + 180.0, d.r * 0.3);
+                    (x, y + 12.0)
+                },
                 anchor: "middle",
                 ..mark(symmetry, d.r, d.r)
             },
