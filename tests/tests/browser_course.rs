@@ -189,6 +189,21 @@ async fn the_lesson_5_bench_shows_the_machine_in_3d_the_master_axis_gauge_and_na
     settle().await;
     assert!(text(&root, "[data-testid=lab-error]").contains("nicht lesbar"));
     assert!(query(&root, "[data-testid=bench-view] .view-pane").is_some());
+    // Q parameters: nothing to compute yet; the view says the machine stands at the start.
+    for (field, value) in [("lab-start-1", "0"), ("lab-block", "PLANE SPATIAL SPA+Q1 SPB+45 SPC+0 TURN FMAX")]
+    {
+        let input: web_sys::HtmlInputElement =
+            query(&root, &format!("[data-testid={field}]")).expect("field").dyn_into().expect("input");
+        input.set_value(value);
+        input.dispatch_event(&web_sys::Event::new("change").expect("event")).expect("dispatch");
+        settle().await;
+    }
+    assert!(
+        text(&root, "[data-testid=lab-error]").contains("Q-Parameter"),
+        "{}",
+        text(&root, "[data-testid=lab-error]")
+    );
+    assert!(text(&root, "[data-testid=bench-view-caption]").contains("Keine Achsstellung berechnet"));
     unmount(&root);
     web_sys::window().expect("window").location().set_hash("").expect("hash");
     settle().await;

@@ -169,10 +169,17 @@ fn figures(b: &Bench, l: Lang) -> Html {
         (Some(axes), None) => format!("{} {}", l.t("Gewählt:", "Chosen:"), axis_words(axes)),
         (None, _) => format!(
             "{} {}",
-            l.t(
-                "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
-                "The control refuses the block – the machine stays at the start position"
-            ),
+            match b.explanation {
+                Some(_) => l.t(
+                    "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
+                    "The control refuses the block – the machine stays at the start position"
+                ),
+                // Q parameters or an orientation the solver cannot take: the message above says.
+                None => l.t(
+                    "Keine Achsstellung berechnet – die Maschine steht in der Startstellung",
+                    "No axis position computed – the machine stands at the start position"
+                ),
+            },
             axis_words(&scene.axes.rotary)
         ),
     };
