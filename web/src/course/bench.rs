@@ -204,7 +204,7 @@ pub struct Gauge {
     pub allowed: String,
     /// The rest of the circle, beyond the limit switches (`None` without limits).
     pub forbidden: Option<String>,
-    /// The two limit switches, min then max.
+    /// The two limit switches, min then max (`None` without limit switches).
     pub limits: Option<[GaugeMark; 2]>,
     /// The symmetry point (the diameter through it is drawn as the mirror line: the two
     /// candidates lie mirrored about it).
@@ -239,7 +239,16 @@ impl Gauge {
             axis,
             allowed,
             forbidden,
-            limits: bounded.map(|l| [mark(l.min, d.r, d.r + 16.0), mark(l.max, d.r, d.r + 16.0)]),
+            limits: limits.map(|l| {
+                let (mut min, mut max) = (mark(l.min, d.r, d.r + 16.0), mark(l.max, d.r, d.r + 16.0));
+                // Limit switches a whole turn apart (−180 … +180) meet on the dial: their labels
+                // move apart, each away from the range it ends.
+                if ((l.max - l.min) % 360.0).abs() < 1e-6 {
+                    (min.label_at, min.anchor) = d.label(l.min - 12.0, d.r + 16.0);
+                    (max.label_at, max.anchor) = d.label(l.max + 12.0, d.r + 16.0);
+                }
+                [min, max]
+            }),
             symmetry: GaugeMark {
                 // Its label sits inside, just below the mirror line's far half, clear of the
                 // start's and of the dial.
@@ -484,6 +493,12 @@ mod tests {
         let c: Vec<_> =
             g.candidates.iter().map(|c| (c.mark.word.as_str(), c.chosen, c.out_of_limits)).collect();
         assert_eq!(c, [("A+45", false, true), ("A-45", true, false)]);
+        // A whole turn (−180 … +180): both limit switches, nothing beyond them.
+        let g =
+            Gauge::new(RotaryAxis::B, Some(Limits { min: -180.0, max: 180.0 }), 0.0, 0.0, &[(90.0, true)]);
+        let [min, max] = g.limits.clone().expect("limit switches");
+        assert!(g.forbidden.is_none() && min.at.0.round() == max.at.0.round());
+        assert!((min.label_at.0 - max.label_at.0).abs() > 30.0, "their labels apart");
         // Without limit switches: the whole circle is allowed, nothing is out.
         let g = Gauge::new(RotaryAxis::A, None, 0.0, 0.0, &[(45.0, true), (-45.0, false)]);
         assert!(g.limits.is_none() && g.forbidden.is_none());
