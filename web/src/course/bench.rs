@@ -129,9 +129,9 @@ pub struct Dial {
 }
 
 /// The bench's dial (the SVG's `viewBox` is [`GAUGE_VIEW`]).
-pub const DIAL: Dial = Dial { cx: 130.0, cy: 112.0, r: 72.0 };
+pub const DIAL: Dial = Dial { cx: 150.0, cy: 112.0, r: 72.0 };
 /// `viewBox` of the gauge's SVG.
-pub const GAUGE_VIEW: &str = "0 0 260 224";
+pub const GAUGE_VIEW: &str = "0 0 300 224";
 
 impl Dial {
     /// The point at angle `deg` on a circle of radius `radius` about the dial's centre.
@@ -231,6 +231,10 @@ impl Gauge {
         };
         let limits = limits.filter(|l| l.min.is_finite() && l.max.is_finite() && l.min < l.max);
         let bounded = limits.filter(|l| l.max - l.min < 360.0);
+        let near_limit = |value: f64| {
+            let apart = |a: f64, b: f64| ((a - b).rem_euclid(360.0) + 180.0).rem_euclid(360.0) - 180.0;
+            limits.is_some_and(|l| apart(value, l.min).abs() < 8.0 || apart(value, l.max).abs() < 8.0)
+        };
         let (allowed, forbidden) = match bounded {
             Some(l) => (d.arc(l.min, l.max), Some(d.arc(l.max, l.min + 360.0))),
             None => (d.arc(0.0, 360.0), None),
@@ -244,8 +248,12 @@ impl Gauge {
                 // Limit switches a whole turn apart (−180 … +180) meet on the dial: their labels
                 // move apart, each away from the range it ends.
                 if ((l.max - l.min) % 360.0).abs() < 1e-6 {
-                    (min.label_at, min.anchor) = d.label(l.min - 12.0, d.r + 16.0);
-                    (max.label_at, max.anchor) = d.label(l.max + 12.0, d.r + 16.0);
+                    let apart = |value: f64| {
+                        let (label_at, _) = d.label(value, d.r + 16.0);
+                        (label_at, if label_at.0 > d.cx { "start" } else { "end" })
+                    };
+                    (min.label_at, min.anchor) = apart(l.min - 6.0);
+                    (max.label_at, max.anchor) = apart(l.max + 6.0);
                 }
                 [min, max]
             }),
@@ -263,7 +271,8 @@ impl Gauge {
             candidates: candidates
                 .iter()
                 .map(|&(value, chosen)| CandidateMark {
-                    mark: mark(value, d.r, d.r + 16.0),
+                    // A candidate on a limit switch: its label further out than the limit's.
+                    mark: mark(value, d.r, if near_limit(value) { d.r + 30.0 } else { d.r + 16.0 }),
                     chosen,
                     out_of_limits: limits.is_some_and(|l| !l.contains(value)),
                 })
@@ -498,11 +507,24 @@ mod tests {
             Gauge::new(RotaryAxis::B, Some(Limits { min: -180.0, max: 180.0 }), 0.0, 0.0, &[(90.0, true)]);
         let [min, max] = g.limits.clone().expect("limit switches");
         assert!(g.forbidden.is_none() && min.at.0.round() == max.at.0.round());
-        assert!((min.label_at.0 - max.label_at.0).abs() > 30.0, "their labels apart");
+        assert!(
+            min.label_at.0 > max.label_at.0 && (min.anchor, max.anchor) == ("start", "end"),
+            "labels apart"
+        );
         // Without limit switches: the whole circle is allowed, nothing is out.
         let g = Gauge::new(RotaryAxis::A, None, 0.0, 0.0, &[(45.0, true), (-45.0, false)]);
         assert!(g.limits.is_none() && g.forbidden.is_none());
         assert!(g.candidates.iter().all(|c| !c.out_of_limits));
+        // A candidate on a limit switch (A+180 on the B/A table): its label clear of the limit's.
+        let g = Gauge::new(
+            RotaryAxis::A,
+            Some(Limits { min: -100.0, max: 180.0 }),
+            -90.0,
+            0.0,
+            &[(180.0, false)],
+        );
+        let [_, max] = g.limits.clone().expect("limit switches");
+        assert!(g.candidates[0].mark.label_at.1 > max.label_at.1 + 10.0);
     }
 
     #[test]
