@@ -114,6 +114,101 @@ async fn seed_table_rows_on_the_lesson_5_bench_give_the_seed_results() {
     unmount(&root);
 }
 
+/// The seed row button whose text starts with `name` (the row's name, not its number).
+fn seed_button(root: &Element, name: &str) -> web_sys::HtmlElement {
+    let buttons = root.query_selector_all("[data-testid=seed-rows] button").expect("selector");
+    (0..buttons.length())
+        .filter_map(|i| buttons.item(i)?.dyn_into::<web_sys::HtmlElement>().ok())
+        .find(|b| b.text_content().is_some_and(|t| t.starts_with(name)))
+        .unwrap_or_else(|| panic!("no seed row button named {name:?}"))
+}
+
+/// The gauge's candidates as (word, chosen, beyond a limit switch).
+fn gauge_candidates(root: &Element) -> Vec<(String, bool, bool)> {
+    let marks = root.query_selector_all("[data-testid=gauge-candidate]").expect("selector");
+    (0..marks.length())
+        .filter_map(|i| marks.item(i)?.dyn_into::<Element>().ok())
+        .map(|m| {
+            let attr = |n: &str| m.get_attribute(n).unwrap_or_default();
+            (attr("data-word"), attr("data-chosen") == "true", attr("data-out") == "true")
+        })
+        .collect()
+}
+
+#[wasm_bindgen_test]
+async fn the_lesson_5_bench_shows_the_machine_in_3d_the_master_axis_gauge_and_named_rows() {
+    use schwenkbar_core::course::seed_rows;
+    use schwenkbar_web::course::bench::row_name;
+    clear_storage();
+    let root = mount_at("#kurs/5").await;
+    wait_for(&root, "[data-testid=solve-lab]", 5_000).await.expect("the bench");
+    // The 3D view (or its plain no-WebGL message) and the gauge for the default set-up.
+    assert!(query(&root, "[data-testid=bench-view] .view-pane").is_some(), "the 3D view");
+    assert!(query(&root, "[data-testid=gauge] svg").is_some(), "the gauge");
+    assert_eq!(gauge_candidates(&root).len(), 2, "both candidates on the gauge");
+    // The rows are named by what they show; the number is only a small label.
+    let rows = seed_rows();
+    let row = |n: u8| rows.iter().find(|r| r.number == n).expect("row");
+    let name = row_name(row(21), schwenkbar_core::Lang::De);
+    assert!(name.starts_with("SYM-"), "{name}");
+    let button = seed_button(&root, &name);
+    assert_eq!(button.get_attribute("data-testid").as_deref(), Some("seed-row-21"));
+    button.click();
+    settle().await;
+    assert!(text(&root, "[data-testid=lab-result] .chosen").starts_with("A-45 C-90"));
+    assert_eq!(
+        gauge_candidates(&root),
+        [("A+45".to_owned(), false, true), ("A-45".to_owned(), true, false)],
+        "SYM- with −90 < A < +10: A-45 chosen, A+45 beyond the limit switch"
+    );
+    let limits = root.query_selector_all("[data-testid=gauge-limit]").expect("selector");
+    assert_eq!(limits.length(), 2, "both limit switches on the gauge");
+    assert!(text(&root, "[data-testid=gauge] figcaption").contains("A-90 … A+10"));
+    assert_eq!(
+        query(&root, "[data-testid=seed-row-21]").and_then(|b| b.get_attribute("aria-pressed")).as_deref(),
+        Some("true")
+    );
+    assert!(
+        text(&root, "[data-testid=bench-view-caption]").contains("A+45 C+90"),
+        "the other one as the ghost"
+    );
+    // A refused row: no candidate chosen, the machine stays at the start position and says so.
+    seed_button(&root, &row_name(row(20), schwenkbar_core::Lang::De)).click();
+    settle().await;
+    assert!(gauge_candidates(&root).iter().all(|c| !c.1), "nothing chosen");
+    assert!(text(&root, "[data-testid=bench-view-caption]").contains("Startstellung A+0 C+0"));
+    assert_eq!(
+        query(&root, "[data-testid=bench-view]").and_then(|v| v.get_attribute("data-solved")).as_deref(),
+        Some("false")
+    );
+    // A letter in a field: the form's message, the view stays.
+    let input: web_sys::HtmlInputElement =
+        query(&root, "[data-testid=lab-start-1]").expect("start field").dyn_into().expect("input");
+    input.set_value("x");
+    input.dispatch_event(&web_sys::Event::new("change").expect("event")).expect("dispatch");
+    settle().await;
+    assert!(text(&root, "[data-testid=lab-error]").contains("nicht lesbar"));
+    assert!(query(&root, "[data-testid=bench-view] .view-pane").is_some());
+    // Q parameters: nothing to compute yet; the view says the machine stands at the start.
+    for (field, value) in [("lab-start-1", "0"), ("lab-block", "PLANE SPATIAL SPA+Q1 SPB+45 SPC+0 TURN FMAX")]
+    {
+        let input: web_sys::HtmlInputElement =
+            query(&root, &format!("[data-testid={field}]")).expect("field").dyn_into().expect("input");
+        input.set_value(value);
+        input.dispatch_event(&web_sys::Event::new("change").expect("event")).expect("dispatch");
+        settle().await;
+    }
+    assert!(
+        text(&root, "[data-testid=lab-error]").contains("Q-Parameter"),
+        "{}",
+        text(&root, "[data-testid=lab-error]")
+    );
+    assert!(text(&root, "[data-testid=bench-view-caption]").contains("Keine Achsstellung berechnet"));
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+}
+
 #[wasm_bindgen_test]
 async fn instructor_view_keys_of_a_presenter_remote_and_solution_only_on_request() {
     clear_storage();

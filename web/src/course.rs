@@ -2,6 +2,7 @@
 //! exercises the core checks; an overview; an instructor view; progress kept in the browser.
 //! Routes: `#kurs` (overview), `#kurs/N` (lesson N, 1-based).
 
+pub mod bench;
 pub mod lab;
 pub mod lessons;
 pub mod progress;

@@ -1,12 +1,22 @@
 //! Lesson 5's experiment bench: set machine, limit switches, start position and option, see the
-//! control's choice and the reason; the seed's table rows load as set-ups.
+//! control's choice and the reason, the master axis' gauge (limit switches, symmetry point, start,
+//! both candidates) and the machine in 3D (chosen solution, the other as the ghost); the seed's
+//! table rows load as set-ups, each named by what it shows.
+
+use std::rc::Rc;
 
 use schwenkbar_core::course::seed_rows;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::solve::axis_words;
 use yew::prelude::*;
 
-use crate::course::lab::{LabForm, OPTIONS};
+use super::view3d::View3d;
+use crate::course::bench::{Gauge, bench_scene, row_name};
+use crate::course::lab::{Bench, LabForm, OPTIONS};
 use crate::i18n::Lang;
+
+/// The bench's CSS, shipped with the component.
+const STYLE: &str = include_str!("solve_lab.css");
 
 #[derive(Properties, PartialEq)]
 pub struct SolveLabProps {
@@ -58,8 +68,9 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
     let axes =
         machine.as_ref().map_or(['?', '?'], |m| [m.joints()[0].axis.letter(), m.joints()[1].axis.letter()]);
     let master = machine.as_ref().map_or('?', |m| m.master().axis.letter());
-    let result = match form.solve(l) {
-        Ok(why) => html! {
+    let bench = form.bench(l);
+    let result = match &bench {
+        Ok(Bench { why, .. }) => html! {
             <div class="lab-result" data-testid="lab-result">
                 { for why.candidates.iter().map(|(t, chosen)| html! {
                     <p class={classes!("candidate", chosen.then_some("chosen"))} data-chosen={chosen.to_string()}>{ t }</p>
@@ -71,14 +82,38 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
         },
         Err(message) => html! { <p class="error" data-testid="lab-error">{ message }</p> },
     };
+    let figures = match &bench {
+        Ok(b) => figures(b, l),
+        // An entry the bench cannot read: the machine at home, and the message above says why.
+        Err(_) => {
+            let machine = Machine::builtin(&form.machine).ok().map(Rc::new);
+            html! {
+                <div class="bench-figures">
+                    <figure class="bench-view" data-testid="bench-view">
+                        <View3d lang={l} {machine} />
+                        <figcaption>{ l.t("Grundstellung: die Eingabe ist nicht lesbar.", "Home position: the entry cannot be read.") }</figcaption>
+                    </figure>
+                </div>
+            }
+        }
+    };
     let rows = seed_rows().into_iter().map(|row| {
         let form = form.clone();
         let number = row.number;
-        let load = Callback::from(move |_: MouseEvent| form.set(LabForm::from_row(&row)));
-        html! { <button onclick={load} data-testid={format!("seed-row-{number}")}>{ format!("{} {number}", l.t("Zeile", "Row")) }</button> }
+        let set_up = LabForm::from_row(&row);
+        let pressed = if *form == set_up { "true" } else { "false" };
+        let name = row_name(&row, l);
+        let load = Callback::from(move |_: MouseEvent| form.set(set_up.clone()));
+        html! {
+            <li><button onclick={load} data-testid={format!("seed-row-{number}")} aria-pressed={pressed}
+                title={format!("{} {number}", l.t("Handbuch-Tabelle, Zeile", "Manual table, row"))}>
+                { name }<small class="row-no">{ format!("{} {number}", l.t("Zeile", "Row")) }</small>
+            </button></li>
+        }
     });
     html! {
         <div class="solve-lab" data-testid="solve-lab">
+            <style>{ STYLE }</style>
             <div class="lab-fields">
                 <label>{ l.t("Maschine", "Machine") }
                     <select onchange={on(Field::Machine)} data-testid="lab-machine">
@@ -109,11 +144,72 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
                     </select>
                 </label>
             </div>
-            <div class="seed-rows">
+            <div class="seed-rows" data-testid="seed-rows">
                 <span>{ l.t("Zeilen der Tabellen aus dem Handbuch:", "Rows of the manual's tables:") }</span>
-                { for rows }
+                <ul>{ for rows }</ul>
             </div>
             { result }
+            { figures }
         </div>
+    }
+}
+
+/// The gauge and the 3D view of a set-up the bench could read.
+fn figures(b: &Bench, l: Lang) -> Html {
+    let scene = bench_scene(&b.machine, b.explanation.as_ref(), &b.opts.start);
+    let chosen = b.explanation.as_ref().and_then(|e| e.chosen_axes());
+    let caption = match (&chosen, &scene.ghost) {
+        (Some(axes), Some(ghost)) => format!(
+            "{} {} · {} {}",
+            l.t("Gewählt:", "Chosen:"),
+            axis_words(axes),
+            l.t("durchscheinend die andere Lösung", "translucent: the other solution"),
+            axis_words(ghost)
+        ),
+        (Some(axes), None) => format!("{} {}", l.t("Gewählt:", "Chosen:"), axis_words(axes)),
+        (None, _) => format!(
+            "{} {}",
+            match b.explanation {
+                Some(_) => l.t(
+                    "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
+                    "The control refuses the block – the machine stays at the start position"
+                ),
+                // Q parameters or an orientation the solver cannot take: the message above says.
+                None => l.t(
+                    "Keine Achsstellung berechnet – die Maschine steht in der Startstellung",
+                    "No axis position computed – the machine stands at the start position"
+                ),
+            },
+            axis_words(&scene.axes.rotary)
+        ),
+    };
+    html! {
+        <div class="bench-figures">
+            { gauge(&Gauge::of_bench(b), l) }
+            <figure class="bench-view" data-testid="bench-view" data-solved={chosen.is_some().to_string()}>
+                <View3d lang={l} machine={Rc::new(b.machine.clone())} state={Rc::new(scene)} />
+                <figcaption data-testid="bench-view-caption">{ caption }</figcaption>
+            </figure>
+        </div>
+    }
+}
+
+/// The master axis gauge ([`Gauge::svg`]) and its key.
+fn gauge(g: &Gauge, l: Lang) -> Html {
+    let axis = g.axis;
+    let limits_text = g.limits.as_ref().map_or_else(
+        || format!("{} {axis}", l.t("Keine Endschalter an", "No limit switches on")),
+        |[min, max]| format!("{} {axis}: {} … {}", l.t("Endschalter", "Limit switches"), min.word, max.word),
+    );
+    html! {
+        <figure class="bench-gauge" data-testid="gauge">
+            { Html::from_html_unchecked(g.svg(l).into()) }
+            <figcaption>
+                <span class="limits">{ limits_text }</span>
+                <span class="key-chosen">{ l.t("● gewählt", "● chosen") }</span>
+                <span class="key-other">{ l.t("○ andere Lösung", "○ other solution") }</span>
+                <span class="key-out">{ l.t("✕ hinter dem Endschalter", "✕ beyond a limit switch") }</span>
+            </figcaption>
+        </figure>
     }
 }

@@ -6,8 +6,9 @@ use glam::DMat3;
 use schwenkbar_core::course::SeedRow;
 use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::number::parse_input;
+use schwenkbar_core::plane::PlaneBlock;
 use schwenkbar_core::plane::{Selection, Sign, Value};
-use schwenkbar_core::solve::{SolveOptions, fmt_deg};
+use schwenkbar_core::solve::{Explanation, SolveOptions, fmt_deg, solve_block};
 use schwenkbar_core::{BlockBody, parse};
 
 use crate::i18n::{Lang, Text};
@@ -43,7 +44,7 @@ impl Default for LabForm {
 
 pub const OPTIONS: [&str; 5] = ["", "SEQ+", "SEQ-", "SYM+", "SYM-"];
 
-fn option_word(s: Option<Selection>) -> &'static str {
+pub(crate) fn option_word(s: Option<Selection>) -> &'static str {
     match s {
         None => "",
         Some(Selection::Seq(Sign::Plus)) => "SEQ+",
@@ -84,6 +85,11 @@ impl LabForm {
 
     /// The control's choice for this set-up, or the message why the set-up cannot be read.
     pub fn solve(&self, l: Lang) -> Result<PlaneWhy, String> {
+        self.bench(l).map(|b| b.why)
+    }
+
+    /// The set-up as the solver reads it: machine, PLANE block (with the option) and options.
+    fn setup(&self, l: Lang) -> Result<(Machine, PlaneBlock, SolveOptions), String> {
         let unreadable =
             |what: &str| format!("{}: {what}", l.t("Eingabe nicht lesbar", "Cannot read the entry"));
         let machine = Machine::builtin(&self.machine).map_err(|_| unreadable(&self.machine))?;
@@ -120,8 +126,33 @@ impl LabForm {
                 }
             }
         }
-        Ok(explain_plane(&block, &machine, DMat3::IDENTITY, &opts, l))
+        Ok((machine, *block, opts))
     }
+
+    /// Everything the bench shows for this set-up: the "why" texts, and for the 3D view and the
+    /// limit gauge the machine, the solver's explanation (`None` when the block has Q
+    /// parameters or cannot be solved) and the options (start, limit switches).
+    pub fn bench(&self, l: Lang) -> Result<Bench, String> {
+        let (machine, block, opts) = self.setup(l)?;
+        let why = explain_plane(&block, &machine, DMat3::IDENTITY, &opts, l);
+        let explanation = block
+            .try_map(|v| match v {
+                Value::Number(x) => Ok(*x),
+                Value::Param { .. } => Err(()),
+            })
+            .ok()
+            .and_then(|b| solve_block(&machine, &b, DMat3::IDENTITY, &opts).ok());
+        Ok(Bench { why, machine, explanation, opts })
+    }
+}
+
+/// What the bench shows for one set-up ([`LabForm::bench`]).
+#[derive(Debug, Clone)]
+pub struct Bench {
+    pub why: PlaneWhy,
+    pub machine: Machine,
+    pub explanation: Option<Explanation>,
+    pub opts: SolveOptions,
 }
 
 #[cfg(test)]
