@@ -164,6 +164,11 @@ pub async fn mount_at(fragment: &str) -> Element {
     let handle = yew::Renderer::<schwenkbar_web::CourseRoot>::with_root(root.clone()).render();
     MOUNTED.with(|m| m.borrow_mut().push((root.clone(), handle)));
     settle().await;
+    // The page takes keys once its first render's effects ran; a loaded page can take longer.
+    assert!(
+        wait_for(&root, "[data-testid=course][data-keys]", 10_000).await.is_some(),
+        "the course takes keys"
+    );
     root
 }
 

@@ -217,7 +217,10 @@ async fn instructor_view_keys_of_a_presenter_remote_and_solution_only_on_request
     // A trainee gets the solution button only after trying.
     assert!(query(&root, "[data-testid=solution-button-0]").is_none());
     key_on(&root, "[data-testid=course]", "i").await;
-    assert!(query(&root, ".course.projector").is_some(), "the instructor view enlarges for the projector");
+    assert!(
+        wait_for(&root, ".course.projector", 3_000).await.is_some(),
+        "the instructor view enlarges for the projector"
+    );
     assert!(query(&root, "[data-testid=solution-0]").is_none(), "the solution is held back");
     click(&root, "[data-testid=solution-button-0]").await;
     assert!(text(&root, "[data-testid=solution-0]").contains("PLANE SPATIAL"));

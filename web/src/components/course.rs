@@ -51,9 +51,13 @@ pub fn course_app(props: &CourseAppProps) -> Html {
     let current = use_mut_ref(|| state.clone());
     *current.borrow_mut() = state.clone();
     let root = use_node_ref();
+    // Shown as `data-keys="on"` once the listener is there (the browser tests wait for it).
+    let keys_on = use_state_eq(|| false);
     {
         let root = root.clone();
+        let keys_on = keys_on.clone();
         use_effect_with((), move |()| {
+            keys_on.set(true);
             let listener = browser::on_page_keys(
                 move || root.cast::<web_sys::Element>(),
                 false,
@@ -91,7 +95,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
     let toggle_lang = dispatch.reform(|_: MouseEvent| CourseAction::ToggleLang);
     let toggle_instructor = dispatch.reform(|_: MouseEvent| CourseAction::ToggleInstructor);
     html! {
-        <div {class} lang={l.code()} tabindex="-1" data-testid="course" ref={root}>
+        <div {class} lang={l.code()} tabindex="-1" data-testid="course" ref={root} data-keys={keys_on.then_some("on")}>
             <style>{ STYLE }</style>
             <header class="course-head">
                 <a href="#kurs" class="course-title">{ l.t("Schwenkbar – Kurs", "Schwenkbar – course") }</a>
