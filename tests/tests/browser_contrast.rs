@@ -11,7 +11,9 @@
 //! own CSS). Headless Chromium (scripts/test.sh).
 #![cfg(target_arch = "wasm32")]
 
-use schwenkbar_tests::browser::{clear_storage, click, key, mount, mount_at, query, settle, unmount, wait_for};
+use schwenkbar_tests::browser::{
+    clear_storage, click, key, mount, mount_at, query, settle, unmount, wait_for,
+};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 use web_sys::Element;
@@ -56,9 +58,13 @@ impl std::fmt::Display for Rgba {
 
 /// A computed colour: `rgb(r, g, b)`, `rgba(r, g, b, a)` or `rgb(r g b / a)`.
 fn parse_color(s: &str) -> Option<Rgba> {
-    let inner = s.trim().strip_prefix("rgba(").or_else(|| s.trim().strip_prefix("rgb("))?.strip_suffix(')')?;
-    let parts: Vec<f64> =
-        inner.split([',', ' ', '/']).filter(|p| !p.is_empty()).map(|p| p.trim().parse().ok()).collect::<Option<_>>()?;
+    let inner =
+        s.trim().strip_prefix("rgba(").or_else(|| s.trim().strip_prefix("rgb("))?.strip_suffix(')')?;
+    let parts: Vec<f64> = inner
+        .split([',', ' ', '/'])
+        .filter(|p| !p.is_empty())
+        .map(|p| p.trim().parse().ok())
+        .collect::<Option<_>>()?;
     match parts[..] {
         [r, g, b] => Some(Rgba(r / 255.0, g / 255.0, b / 255.0, 1.0)),
         [r, g, b, a] => Some(Rgba(r / 255.0, g / 255.0, b / 255.0, a)),
@@ -69,7 +75,12 @@ fn parse_color(s: &str) -> Option<Rgba> {
 /// `top` painted over the opaque `bottom`.
 fn over(top: Rgba, bottom: Rgba) -> Rgba {
     let a = top.3;
-    Rgba(top.0 * a + bottom.0 * (1.0 - a), top.1 * a + bottom.1 * (1.0 - a), top.2 * a + bottom.2 * (1.0 - a), 1.0)
+    Rgba(
+        top.0 * a + bottom.0 * (1.0 - a),
+        top.1 * a + bottom.1 * (1.0 - a),
+        top.2 * a + bottom.2 * (1.0 - a),
+        1.0,
+    )
 }
 
 fn luminance(c: Rgba) -> f64 {
@@ -113,7 +124,8 @@ fn background(el: &Element) -> (Rgba, String, f64) {
 }
 
 fn describe(el: &Element) -> String {
-    let class = el.get_attribute("class").map(|c| format!(".{}", c.split_whitespace().collect::<Vec<_>>().join(".")));
+    let class =
+        el.get_attribute("class").map(|c| format!(".{}", c.split_whitespace().collect::<Vec<_>>().join(".")));
     let key = el.get_attribute("data-key").map(|k| format!("[data-key={k}]"));
     format!("<{}{}{}>", el.tag_name().to_lowercase(), class.unwrap_or_default(), key.unwrap_or_default())
 }
@@ -144,7 +156,11 @@ fn low_contrast(root: &Element, context: &str) -> Vec<String> {
             continue; // not rendered
         }
         let Some(fg) = parse_color(&prop(&el, "color")) else {
-            out.push(format!("{context}: {} has a colour this test cannot read: {}", describe(&el), prop(&el, "color")));
+            out.push(format!(
+                "{context}: {} has a colour this test cannot read: {}",
+                describe(&el),
+                prop(&el, "color")
+            ));
             continue;
         };
         let (bg, from, opacity) = background(&el);
@@ -186,7 +202,10 @@ fn the_contrast_maths_matches_wcag() {
     // #767676 on white is the classic 4.54:1.
     let grey = parse_color("rgb(118, 118, 118)").expect("grey");
     assert!((ratio(grey, white) - 4.54).abs() < 0.01);
-    assert_eq!(parse_color("rgba(10, 20, 30, 0.5)"), Some(Rgba(10.0 / 255.0, 20.0 / 255.0, 30.0 / 255.0, 0.5)));
+    assert_eq!(
+        parse_color("rgba(10, 20, 30, 0.5)"),
+        Some(Rgba(10.0 / 255.0, 20.0 / 255.0, 30.0 / 255.0, 0.5))
+    );
     assert_eq!(over(Rgba(0.0, 0.0, 0.0, 0.5), white), Rgba(0.5, 0.5, 0.5, 1.0));
 }
 
@@ -197,8 +216,9 @@ async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_
     for (lang, projector) in [("De", false), ("En", false), ("De", true), ("En", true)] {
         clear_storage();
         // The cursor on Musterprogramm 1's PLANE block 10: the "why" panel has its explanation.
-        let state =
-            format!(r#"{{"version":1,"cursor":10,"machine":"ac-table","lang":"{lang}","projector":{projector}}}"#);
+        let state = format!(
+            r#"{{"version":1,"cursor":10,"machine":"ac-table","lang":"{lang}","projector":{projector}}}"#
+        );
         let storage = window().local_storage().ok().flatten().expect("localStorage");
         storage.set_item("schwenkbar.state", &state).expect("set state");
         let root = mount().await;
@@ -224,7 +244,10 @@ async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_
         click(&root, "[data-key=run]").await;
         click(&root, "[data-key=run-next]").await;
         click(&root, "[data-key=run-next]").await;
-        assert!(eventually(|| query(&root, ".position").is_some()).await, "{lang} {mode}: the position display");
+        assert!(
+            eventually(|| query(&root, ".position").is_some()).await,
+            "{lang} {mode}: the position display"
+        );
         failures.extend(low_contrast(&root, &ctx("program run")));
         root.remove();
     }
@@ -238,11 +261,16 @@ async fn every_text_of_the_course_reaches_4_5_to_1_overview_lessons_and_instruct
     let mut failures = Vec::new();
     for instructor in [false, true] {
         let view = if instructor { "instructor view" } else { "normal view" };
-        for (fragment, screen) in [("#kurs", "overview"), ("#kurs/5", "lesson 5 (bench)"), ("#kurs/3", "lesson 3 (trainer)")] {
+        for (fragment, screen) in
+            [("#kurs", "overview"), ("#kurs/5", "lesson 5 (bench)"), ("#kurs/3", "lesson 3 (trainer)")]
+        {
             let root = mount_at(fragment).await;
             assert!(wait_for(&root, ".course-head", 5_000).await.is_some(), "{screen}: the course page");
             if fragment != "#kurs" {
-                assert!(wait_for(&root, "[data-testid=lesson]", 5_000).await.is_some(), "{screen}: the lesson");
+                assert!(
+                    wait_for(&root, "[data-testid=lesson]", 5_000).await.is_some(),
+                    "{screen}: the lesson"
+                );
             }
             let on = query(&root, ".course.projector").is_some();
             if on != instructor {
