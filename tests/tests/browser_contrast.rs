@@ -226,6 +226,14 @@ async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_
         assert_eq!(query(&root, ".tnc.projector").is_some(), projector, "{lang} {mode}: the saved mode");
         let ctx = |screen: &str| format!("{lang} {mode}, {screen}");
         failures.extend(low_contrast(&root, &ctx("program and why panel")));
+        // The right-hand rule in place of the 3D view.
+        key(&root, "h", false).await;
+        assert!(
+            eventually(|| query(&root, ".right-hand").is_some()).await,
+            "{lang} {mode}: h, the right-hand rule"
+        );
+        failures.extend(low_contrast(&root, &ctx("right-hand rule")));
+        key(&root, "h", false).await;
         // A softkey row with an active (highlighted) key.
         click(&root, "[data-key=machines]").await;
         failures.extend(low_contrast(&root, &ctx("machine softkeys")));
