@@ -42,6 +42,11 @@ print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-tab
 bash scripts/screenshot.sh target/screenshots/musterprogramm1-block10.png "#$fragment"
 echo; echo "==> screenshot: the course page, lesson 5 (SEQ/SYM bench)"
 bash scripts/screenshot.sh target/screenshots/kurs-lektion-5.png "kurs.html#kurs/5"
+echo; echo "==> screenshots: the classroom projector, 1280x720 (trainer in projector mode, course instructor view)"
+SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
+  bash scripts/screenshot.sh target/screenshots/projektor-1280x720-musterprogramm1-block10.png "#$fragment"
+SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
+  bash scripts/screenshot.sh target/screenshots/projektor-1280x720-kurs-lektion-5.png "kurs.html#kurs/5"
 
 passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4} END {print s+0}')
 failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')

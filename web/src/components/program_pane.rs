@@ -28,6 +28,16 @@ pub struct ProgramPaneProps {
 
 #[function_component(ProgramPane)]
 pub fn program_pane(props: &ProgramPaneProps) -> Html {
+    let pane = use_node_ref();
+    {
+        // The cursor block stays in sight however the lines wrap (large type on a projector).
+        let pane = pane.clone();
+        use_effect(move || {
+            if let Some(pane) = pane.cast::<web_sys::Element>() {
+                keep_cursor_in_sight(&pane);
+            }
+        });
+    }
     let l = props.lang;
     let doc = &props.doc;
     let title = l.t("NC-Programm", "NC program");
@@ -77,10 +87,26 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
         }
     });
     html! {
-        <section class="program-pane" aria-label={title}>
+        <section class="program-pane" aria-label={title} ref={pane}>
             <div class="pane-title">{ title }<span class="summary">{ summary }</span></div>
             <ol class="blocks">{ for rows }</ol>
         </section>
+    }
+}
+
+/// Scrolls the pane (only the pane, never the page around it) so that the cursor block's
+/// lines are inside it, a third of the way down if they were not.
+fn keep_cursor_in_sight(pane: &web_sys::Element) {
+    let Ok(Some(first)) = pane.query_selector(".line.cursor") else { return };
+    let mut last = first.clone();
+    while let Some(next) = last.next_element_sibling().filter(|n| n.matches(".cursor").unwrap_or(false)) {
+        last = next;
+    }
+    let (view, top, bottom) =
+        (pane.get_bounding_client_rect(), first.get_bounding_client_rect(), last.get_bounding_client_rect());
+    if top.top() < view.top() || bottom.bottom() > view.bottom() {
+        let offset = top.top() - view.top() - view.height() / 3.0;
+        pane.set_scroll_top(pane.scroll_top() + offset as i32);
     }
 }
 
