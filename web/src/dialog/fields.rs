@@ -1,5 +1,7 @@
 //! The prompts of each PLANE function in the control's order, with their one-line help
-//! (DOMAIN.md §7; the English prompts are the manual's, the German ones UNCONFIRMED).
+//! (DOMAIN.md §7; the English prompts are the manual's). German: the EULER prompts are the
+//! iTNC 530 German user manual's (PLANE EULER, input parameters) and confirmed; the other German
+//! prompts are ours, UNCONFIRMED.
 
 use crate::i18n::Text;
 
@@ -78,7 +80,7 @@ pub(super) const PROJECTED: [Field; 3] = [
 pub(super) const EULER: [Field; 3] = [
     field(
         "EULPR",
-        t("Drehwinkel Hauptkoordinatenebene?", "Rot. angle main coordinate plane?"),
+        t("Drehw. Haupt-Koordinatenebene?", "Rot. angle main coordinate plane?"),
         t(
             "Präzession: Drehung um die ungeschwenkte Z-Achse, −180…+180°.",
             "Precession: rotation about the untilted Z axis, −180…+180°.",
@@ -86,7 +88,7 @@ pub(super) const EULER: [Field; 3] = [
     ),
     field(
         "EULNU",
-        t("Schwenkwinkel Werkzeugachse?", "Tilting angle tool axis?"),
+        t("Schwenkwinkel Werkzeug-Achse?", "Tilting angle tool axis?"),
         t(
             "Nutation: Drehung um die gedrehte X-Achse, 0…180°.",
             "Nutation: rotation about the rotated X axis, 0…180°.",
@@ -94,7 +96,7 @@ pub(super) const EULER: [Field; 3] = [
     ),
     field(
         "EULROT",
-        t("Drehwinkel der geschwenkten Ebene?", "Rotation angle of the tilted plane?"),
+        t("ROT-Winkel der geschw. Ebene?", "ROT angle of the tilted plane?"),
         t(
             "Rotation: Drehung um die geschwenkte Z-Achse, richtet die geschwenkte X-Achse aus, 0…360°.",
             "Rotation about the tilted Z axis, aligns the tilted X axis, 0…360°.",
