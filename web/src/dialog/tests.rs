@@ -385,3 +385,22 @@ mod round_trip {
         }
     }
 }
+
+#[test]
+fn euler_prompts_are_the_manuals() {
+    // iTNC 530 user manual, PLANE EULER, input parameters (German and English editions).
+    let mut d = Dialog::new(Function::Euler);
+    let mut prompts = Vec::new();
+    for v in ["0", "45", "0"] {
+        prompts.push(d.prompt());
+        enter(&mut d, v);
+    }
+    assert_eq!(
+        prompts.iter().map(|p| p.de).collect::<Vec<_>>(),
+        ["Drehw. Haupt-Koordinatenebene?", "Schwenkwinkel Werkzeug-Achse?", "ROT-Winkel der geschw. Ebene?"]
+    );
+    assert_eq!(
+        prompts.iter().map(|p| p.en).collect::<Vec<_>>(),
+        ["Rot. angle main coordinate plane?", "Tilting angle tool axis?", "ROT angle of the tilted plane?"]
+    );
+}
