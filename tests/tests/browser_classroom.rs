@@ -330,3 +330,17 @@ async fn the_course_takes_its_keys_from_the_load_and_an_embedded_trainer_keeps_i
     web_sys::window().expect("window").location().set_hash("").expect("hash");
     settle().await;
 }
+
+#[wasm_bindgen_test]
+async fn hovering_a_candidate_in_the_why_panel_shows_it_as_the_ghost() {
+    clear_storage();
+    let root = mount().await;
+    click(&root, ".program-pane .line[data-line='11']").await;
+    let ghost = |root: &Element| query(root, ".view-pane").and_then(|v| v.get_attribute("data-ghost"));
+    assert_eq!(ghost(&root).as_deref(), Some("A-15 C-90"), "the other solution by default");
+    let chosen = query(&root, ".candidate.chosen").expect("the chosen candidate");
+    chosen.dispatch_event(&web_sys::MouseEvent::new("mouseenter").expect("event")).expect("hover");
+    assert!(eventually(|| ghost(&root).as_deref() == Some("A+15 C+90")).await, "the hovered one");
+    chosen.dispatch_event(&web_sys::MouseEvent::new("mouseleave").expect("event")).expect("leave");
+    assert!(eventually(|| ghost(&root).as_deref() == Some("A-15 C-90")).await, "back to the other one");
+}

@@ -171,8 +171,10 @@ pub fn view3d(props: &View3dProps) -> Html {
         })
     };
     let t = *triads;
+    // The translucent other solution, named for assistive technology and the browser tests.
+    let ghost = props.state.as_ref().and_then(|s| s.ghost).map(|g| schwenkbar_core::solve::axis_words(&g));
     html! {
-        <section class="view-pane" aria-label={l.t("3D-Ansicht", "3D view")}>
+        <section class="view-pane" aria-label={l.t("3D-Ansicht", "3D view")} data-ghost={ghost}>
             <style>{ STYLE }</style>
             <GlCanvas lang={l} viewer={SharedViewer(viewer.clone())} class="view3d"
                 label={l.t("Maschine in 3D (ziehen, Umschalt, Rad, 1–4)", "Machine in 3D (drag, shift, wheel, 1–4)")} />
