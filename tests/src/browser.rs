@@ -6,7 +6,8 @@ use std::time::Duration;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlElement, KeyboardEvent, KeyboardEventInit};
 
-fn document() -> web_sys::Document {
+#[must_use]
+pub fn document() -> web_sys::Document {
     web_sys::window().and_then(|w| w.document()).expect("a browser document")
 }
 
@@ -231,4 +232,42 @@ pub async fn wait_for(root: &Element, selector: &str, ms: u64) -> Option<Element
         yew::platform::time::sleep(Duration::from_millis(25)).await;
         waited += 25;
     }
+}
+
+/// Waits (up to 3 s) until `check` holds: several apps with WebGL views share the page and a
+/// loaded machine, so a render can take longer than one settle.
+pub async fn eventually(mut check: impl FnMut() -> bool) -> bool {
+    for _ in 0..150 {
+        if check() {
+            return true;
+        }
+        settle().await;
+    }
+    check()
+}
+
+/// A key pressed where nothing has the focus (BODY), as after a load or a re-rendered button.
+pub async fn key_on_body(key: &str) {
+    if let Some(el) = document().active_element().and_then(|e| e.dyn_into::<HtmlElement>().ok()) {
+        el.blur().expect("blur");
+    }
+    let init = KeyboardEventInit::new();
+    init.set_key(key);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("event");
+    document().body().expect("body").dispatch_event(&event).expect("dispatch");
+    settle().await;
+}
+
+/// The shipped stylesheet, static/app.css, in the page's head (once): the browser tests mount
+/// the components without the page that links it.
+pub fn inject_app_css() {
+    if document().get_element_by_id("app-css").is_some() {
+        return;
+    }
+    let style = document().create_element("style").expect("style");
+    style.set_id("app-css");
+    style.set_text_content(Some(include_str!("../../static/app.css")));
+    document().head().expect("head").append_child(&style).expect("append style");
 }

@@ -7,49 +7,19 @@ use std::cell::Cell;
 use std::rc::Rc;
 
 use schwenkbar_tests::browser::{
-    clear_storage, click, key_on, mount, mount_at, paste_program, program_lines, query, settle, text,
-    unmount, wait_for,
+    clear_storage, click, document, eventually, key_on, key_on_body, mount, mount_at, paste_program,
+    program_lines, query, settle, text, unmount, wait_for,
 };
 use schwenkbar_web::state::{Action, AppState};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
-use web_sys::{Element, HtmlElement, KeyboardEvent, KeyboardEventInit};
+use web_sys::{Element, HtmlElement};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
-/// Waits (up to 3 s) until `check` holds: several apps with WebGL views share the page and a
-/// loaded machine, so a render can take longer than the 20 ms settle.
-async fn eventually(mut check: impl FnMut() -> bool) -> bool {
-    for _ in 0..150 {
-        if check() {
-            return true;
-        }
-        settle().await;
-    }
-    check()
-}
-
-fn document() -> web_sys::Document {
-    web_sys::window().and_then(|w| w.document()).expect("document")
-}
-
 fn storage() -> web_sys::Storage {
     web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage")
-}
-
-/// A key pressed where nothing has the focus (BODY), as after a load or a re-rendered button.
-async fn key_on_body(key: &str) {
-    if let Some(el) = document().active_element().and_then(|e| e.dyn_into::<HtmlElement>().ok()) {
-        el.blur().expect("blur");
-    }
-    let init = KeyboardEventInit::new();
-    init.set_key(key);
-    init.set_bubbles(true);
-    init.set_cancelable(true);
-    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("event");
-    document().body().expect("body").dispatch_event(&event).expect("dispatch");
-    settle().await;
 }
 
 #[wasm_bindgen_test]

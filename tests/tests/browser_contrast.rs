@@ -12,7 +12,7 @@
 #![cfg(target_arch = "wasm32")]
 
 use schwenkbar_tests::browser::{
-    clear_storage, click, key, mount, mount_at, query, settle, unmount, wait_for,
+    clear_storage, click, eventually, inject_app_css, key, mount, mount_at, query, unmount, wait_for,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -20,26 +20,10 @@ use web_sys::Element;
 
 wasm_bindgen_test_configure!(run_in_browser);
 
-const APP_CSS: &str = include_str!("../../static/app.css");
 const MIN_RATIO: f64 = 4.5;
 
 fn window() -> web_sys::Window {
     web_sys::window().expect("window")
-}
-
-fn document() -> web_sys::Document {
-    window().document().expect("document")
-}
-
-/// static/app.css in the page's head, once.
-fn inject_app_css() {
-    if document().get_element_by_id("app-css").is_some() {
-        return;
-    }
-    let style = document().create_element("style").expect("style");
-    style.set_id("app-css");
-    style.set_text_content(Some(APP_CSS));
-    document().head().expect("head").append_child(&style).expect("append style");
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -177,17 +161,6 @@ fn low_contrast(root: &Element, context: &str) -> Vec<String> {
     }
     assert!(checked > 5, "{context}: only {checked} texts found: is the page rendered?");
     out
-}
-
-/// Waits until `check` holds (up to 3 s): a loaded page can take longer than one settle.
-async fn eventually(mut check: impl FnMut() -> bool) -> bool {
-    for _ in 0..150 {
-        if check() {
-            return true;
-        }
-        settle().await;
-    }
-    check()
 }
 
 fn assert_none(failures: &[String]) {

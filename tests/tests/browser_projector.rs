@@ -6,28 +6,14 @@
 //! overflow and shows its trainer in projector type. Headless Chromium (scripts/test.sh).
 #![cfg(target_arch = "wasm32")]
 
-use schwenkbar_tests::browser::{clear_storage, click, mount, mount_at, query, settle, unmount, wait_for};
+use schwenkbar_tests::browser::{
+    clear_storage, click, inject_app_css, mount, mount_at, query, settle, unmount, wait_for,
+};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 use web_sys::{Element, HtmlElement};
 
 wasm_bindgen_test_configure!(run_in_browser);
-
-const APP_CSS: &str = include_str!("../../static/app.css");
-
-fn document() -> web_sys::Document {
-    web_sys::window().and_then(|w| w.document()).expect("document")
-}
-
-fn inject_app_css() {
-    if document().get_element_by_id("app-css").is_some() {
-        return;
-    }
-    let style = document().create_element("style").expect("style");
-    style.set_id("app-css");
-    style.set_text_content(Some(APP_CSS));
-    document().head().expect("head").append_child(&style).expect("append style");
-}
 
 fn prop(el: &Element, name: &str) -> String {
     web_sys::window()
