@@ -12,6 +12,16 @@ pub fn document() -> web_sys::Document {
 }
 
 /// Clears what an earlier test saved, so every test starts like a first visit.
+/// Keeps a trainer state (cursor, machine) and the shared preferences the way the app saves
+/// them, before [`mount`].
+pub fn save_trainer_state(cursor: usize, machine: &str, lang: schwenkbar_app::i18n::Lang, projector: bool) {
+    use schwenkbar_app::persist::{PREFS_KEY, Prefs, STATE_KEY, Saved};
+    let storage = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
+    let state = Saved { cursor, machine: machine.to_owned() };
+    storage.set_item(STATE_KEY, &state.to_record()).expect("save state");
+    storage.set_item(PREFS_KEY, &Prefs { lang, classroom: projector }.to_record()).expect("save prefs");
+}
+
 pub fn clear_storage() {
     if let Some(s) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
         s.clear().expect("clear localStorage");

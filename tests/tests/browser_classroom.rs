@@ -6,11 +6,11 @@
 use std::cell::Cell;
 use std::rc::Rc;
 
+use schwenkbar_app::state::{Action, AppState};
 use schwenkbar_tests::browser::{
     clear_storage, click, document, eventually, key_on, key_on_body, mount, mount_at, paste_program,
     program_lines, query, settle, text, unmount, wait_for,
 };
-use schwenkbar_web::state::{Action, AppState};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -113,7 +113,7 @@ async fn a_share_link_over_own_work_asks_before_it_replaces_anything() {
     clear_storage();
     let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n";
     storage().set_item("schwenkbar.program", own).expect("save");
-    let link = AppState::default().apply(Action::LoadSample("stay_q120".into())).share_fragment();
+    let link = AppState::default().apply(Action::LoadSample("stay_q120".into())).0.share_fragment();
     let location = web_sys::window().expect("window").location();
     location.set_hash(&link).expect("open the link");
     let root = mount().await;

@@ -11,8 +11,10 @@
 //! own CSS). Headless Chromium (scripts/test.sh).
 #![cfg(target_arch = "wasm32")]
 
+use schwenkbar_app::i18n::Lang;
 use schwenkbar_tests::browser::{
-    clear_storage, click, eventually, inject_app_css, key, mount, mount_at, query, unmount, wait_for,
+    clear_storage, click, eventually, inject_app_css, key, mount, mount_at, query, save_trainer_state,
+    unmount, wait_for,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -186,24 +188,20 @@ fn the_contrast_maths_matches_wcag() {
 async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_and_english() {
     inject_app_css();
     let mut failures = Vec::new();
-    for (lang, projector) in [("De", false), ("En", false), ("De", true), ("En", true)] {
+    for (lang, projector) in [(Lang::De, false), (Lang::En, false), (Lang::De, true), (Lang::En, true)] {
         clear_storage();
         // The cursor on Musterprogramm 1's PLANE block 10: the "why" panel has its explanation.
-        let state = format!(
-            r#"{{"version":1,"cursor":10,"machine":"ac-table","lang":"{lang}","projector":{projector}}}"#
-        );
-        let storage = window().local_storage().ok().flatten().expect("localStorage");
-        storage.set_item("schwenkbar.state", &state).expect("set state");
+        save_trainer_state(10, "ac-table", lang, projector);
         let root = mount().await;
         let mode = if projector { "projector" } else { "normal" };
-        assert_eq!(query(&root, ".tnc.projector").is_some(), projector, "{lang} {mode}: the saved mode");
-        let ctx = |screen: &str| format!("{lang} {mode}, {screen}");
+        assert_eq!(query(&root, ".tnc.projector").is_some(), projector, "{lang:?} {mode}: the saved mode");
+        let ctx = |screen: &str| format!("{lang:?} {mode}, {screen}");
         failures.extend(low_contrast(&root, &ctx("program and why panel")));
         // The right-hand rule in place of the 3D view.
         key(&root, "h", false).await;
         assert!(
             eventually(|| query(&root, ".right-hand").is_some()).await,
-            "{lang} {mode}: h, the right-hand rule"
+            "{lang:?} {mode}: h, the right-hand rule"
         );
         failures.extend(low_contrast(&root, &ctx("right-hand rule")));
         key(&root, "h", false).await;
@@ -215,7 +213,10 @@ async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_
         click(&root, "[data-key=spec-fct]").await;
         click(&root, "[data-key=tilt-plane]").await;
         click(&root, "[data-key=fn-spatial]").await;
-        assert!(eventually(|| query(&root, ".keypad").is_some()).await, "{lang} {mode}: the dialog is open");
+        assert!(
+            eventually(|| query(&root, ".keypad").is_some()).await,
+            "{lang:?} {mode}: the dialog is open"
+        );
         failures.extend(low_contrast(&root, &ctx("PLANE dialog")));
         click(&root, "[data-key=del]").await;
         for _ in 0..3 {
@@ -227,7 +228,7 @@ async fn every_text_of_the_trainer_reaches_4_5_to_1_normal_and_projector_german_
         click(&root, "[data-key=run-next]").await;
         assert!(
             eventually(|| query(&root, ".position").is_some()).await,
-            "{lang} {mode}: the position display"
+            "{lang:?} {mode}: the position display"
         );
         failures.extend(low_contrast(&root, &ctx("program run")));
         root.remove();

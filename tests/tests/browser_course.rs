@@ -4,11 +4,11 @@
 //! view, the presenter-remote keys and the progress.
 #![cfg(target_arch = "wasm32")]
 
+use schwenkbar_app::course::lessons::{self, COUNT};
 use schwenkbar_core::course::{Answer, Exercise, Hint};
 use schwenkbar_tests::browser::{
     clear_storage, click, key_on, mount, mount_at, query, settle, text, type_into, unmount, wait_for,
 };
-use schwenkbar_web::course::lessons::{self, COUNT};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 use web_sys::Element;
 
@@ -137,8 +137,8 @@ fn gauge_candidates(root: &Element) -> Vec<(String, bool, bool)> {
 
 #[wasm_bindgen_test]
 async fn the_lesson_5_bench_shows_the_machine_in_3d_the_master_axis_gauge_and_named_rows() {
+    use schwenkbar_app::course::bench::row_name;
     use schwenkbar_core::course::seed_rows;
-    use schwenkbar_web::course::bench::row_name;
     clear_storage();
     let root = mount_at("#kurs/5").await;
     wait_for(&root, "[data-testid=solve-lab]", 5_000).await.expect("the bench");

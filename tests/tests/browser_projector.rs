@@ -6,8 +6,10 @@
 //! overflow and shows its trainer in projector type. Headless Chromium (scripts/test.sh).
 #![cfg(target_arch = "wasm32")]
 
+use schwenkbar_app::i18n::Lang;
 use schwenkbar_tests::browser::{
-    clear_storage, click, inject_app_css, mount, mount_at, query, settle, unmount, wait_for,
+    clear_storage, click, inject_app_css, mount, mount_at, query, save_trainer_state, settle, unmount,
+    wait_for,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -39,13 +41,7 @@ fn cut(el: &Element) -> bool {
 /// The app in projector mode, 1280 px wide, the cursor on Musterprogramm 1's block 10.
 async fn projector_app() -> Element {
     clear_storage();
-    let storage = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
-    storage
-        .set_item(
-            "schwenkbar.state",
-            r#"{"version":1,"cursor":10,"machine":"ac-table","lang":"De","projector":true}"#,
-        )
-        .expect("set state");
+    save_trainer_state(10, "ac-table", Lang::De, true);
     let root = mount().await;
     root.set_attribute("style", "width: 1280px").expect("style");
     settle().await;

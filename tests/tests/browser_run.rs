@@ -29,7 +29,7 @@ async fn musterprogramm_1_block_10_shows_the_simulated_axes() {
     assert!(cursor_text(&root).starts_with("10 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX"));
 
     // The same numbers straight from the simulator.
-    let (program, _) = schwenkbar_core::parse(schwenkbar_web::samples::MUSTERPROGRAMM_1.text);
+    let (program, _) = schwenkbar_core::parse(schwenkbar_app::samples::MUSTERPROGRAMM_1.text);
     let machine = Machine::builtin("ac-table").expect("shipped");
     let sim = simulate(&program, &machine, &SimOptions::default());
     let step = sim.first_step[10].expect("block 10 runs") as usize;

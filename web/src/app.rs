@@ -13,11 +13,11 @@ use crate::components::right_hand_demo::RightHandDemo;
 use crate::components::scene_pane::ScenePane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::why_panel::WhyPanel;
-use crate::i18n::{Lang, Text};
-use crate::keymap::{self, KeyPress};
-use crate::persist;
-use crate::softkeys;
-use crate::state::{Action, AppState, Effect};
+use crate::effects::{Shell, Trainer, use_effects};
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::keymap::{self, KeyPress};
+use schwenkbar_app::softkeys;
+use schwenkbar_app::state::{Action, AppState};
 
 /// A lesson's program shown in the trainer instead of the trainee's own work.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,79 +41,28 @@ pub struct AppProps {
 #[function_component(App)]
 pub fn app(props: &AppProps) -> Html {
     let embed = props.embed.clone();
-    let state = use_reducer(|| match &embed {
-        Some(e) => AppState::embedded(&e.program, e.machine, e.lang, e.classroom),
-        None => {
-            let (saved, program) = browser::load_saved();
-            AppState::start(saved.as_deref(), program, browser::fragment().as_deref())
-        }
+    let state = use_reducer(|| {
+        Trainer::new(match &embed {
+            Some(e) => AppState::embedded(&e.program, e.machine, e.lang, e.classroom),
+            None => AppState::start(browser::load_stored(), browser::fragment().as_deref()),
+        })
     });
-    // Keep the trainee's work (not a lesson's program, not a share link still being
-    // previewed): the program when its text changed, the small state when the cursor, machine,
-    // language or projector mode changed. In a lesson, tell the course which PLANE block the
-    // cursor is on.
-    let embedded = props.embed.clone();
-    {
-        let state = state.clone();
-        let deps = (Rc::as_ptr(&state.doc) as usize, state.cursor, state.link.is_some());
-        use_effect_with(deps, move |_| match embedded {
-            Some(e) => e.on_plane_block.emit(state.cursor_plane_text()),
-            None if state.link.is_some() => {}
-            None => {
-                if let Err(message) = browser::save_program(&state.doc.text) {
-                    state.dispatch(Action::Notice(message));
-                }
-            }
-        });
-    }
-    {
-        let deps = (
-            state.cursor,
-            state.machine.as_ref().map(|m| m.id.clone()),
-            state.lang,
-            state.projector,
-            state.link.is_some(),
-        );
-        let state = state.clone();
-        let embedded = props.embed.is_some();
-        use_effect_with(deps, move |_| {
-            if embedded || state.link.is_some() {
-                return;
-            }
-            if let Err(message) = browser::save_state(&persist::to_json(&state.saved())) {
-                state.dispatch(Action::Notice(message));
-            }
-        });
-    }
     let root = use_node_ref();
-    // The reducer's side effects, each list once (after the render, so the file input and the
-    // text area exist).
-    {
-        let state = state.clone();
-        let root = root.clone();
-        use_effect_with(state.effects.seq, move |_| {
-            for effect in state.effects.list.iter() {
-                run_effect(effect, &state, root.cast::<web_sys::Element>());
-            }
-        });
-    }
     let on_action = {
         let state = state.clone();
         Callback::from(move |a: Action| state.dispatch(a))
     };
-    // Satzfolge: the next block follows when this one's motion has had its time.
-    {
-        let run = state.run.as_ref().map(|r| (r.step, r.playing, r.tick_ms()));
-        let state = state.clone();
-        use_effect_with(run, move |run| {
-            if let Some((step, true, ms)) = *run {
-                yew::platform::spawn_local(async move {
-                    yew::platform::time::sleep(std::time::Duration::from_millis(ms)).await;
-                    state.dispatch(Action::RunTick(step));
-                });
-            }
-        });
-    }
+    // What the reducer asked for: saving, downloads, the share link, the Satzfolge timer, the
+    // lesson's "which PLANE block".
+    use_effects(
+        &state.pending,
+        Shell {
+            notice: on_action.reform(Action::Notice),
+            tick: on_action.reform(Action::RunTick),
+            root: root.clone(),
+            tell_course: props.embed.as_ref().map(|e| e.on_plane_block.clone()),
+        },
+    );
     let on_import = {
         let state = state.clone();
         Callback::from(move |file: web_sys::File| {
@@ -208,57 +157,4 @@ pub fn app(props: &AppProps) -> Html {
                 <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
             </div>
         }
-}
-
-/// Carries out one side effect the reducer asked for; the outcome comes back as a notice.
-fn run_effect(effect: &Effect, state: &UseReducerHandle<AppState>, root: Option<web_sys::Element>) {
-    match effect {
-        Effect::Download { name, text } => {
-            let bytes = schwenkbar_core::text::encode_latin1(text);
-            let notice = match browser::download(name, &bytes) {
-                Ok(()) => Text::new(
-                    "Programm wird als .h-Datei heruntergeladen",
-                    "The program is downloaded as a .h file",
-                ),
-                Err(message) => message,
-            };
-            state.dispatch(Action::Notice(notice));
-        }
-        Effect::Share { fragment } => {
-            let state = state.clone();
-            let fragment = fragment.clone();
-            yew::platform::spawn_local(async move {
-                let copied = match browser::share_url(&fragment) {
-                    Some(url) => browser::copy_to_clipboard(&url).await.is_ok(),
-                    None => false,
-                };
-                let notice = if copied {
-                    Text::new(
-                        "Link in die Zwischenablage kopiert: einfügen und weitergeben",
-                        "Link copied to the clipboard: paste it and pass it on",
-                    )
-                } else {
-                    match browser::set_fragment(&fragment) {
-                        Ok(()) => Text::new(
-                            "Link steht in der Adresszeile: kopieren und weitergeben",
-                            "The link is in the address bar: copy and pass it on",
-                        ),
-                        Err(message) => message,
-                    }
-                };
-                state.dispatch(Action::Notice(notice));
-            });
-        }
-        Effect::PickFile => {
-            if let Some(root) = root {
-                browser::pick_file(&root);
-            }
-        }
-        Effect::FocusEditor => {
-            if let Some(root) = root {
-                browser::focus(&root, "textarea.program-text");
-            }
-        }
-        Effect::ConsumeFragment => browser::consume_fragment(),
-    }
 }

@@ -7,18 +7,27 @@ use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 use web_sys::{Blob, BlobPropertyBag, Element, File, HtmlAnchorElement, HtmlElement, KeyboardEvent, Url};
 
-use crate::i18n::Text;
-use crate::persist::{PROGRAM_KEY, STATE_KEY};
+use schwenkbar_app::i18n::Text;
+use schwenkbar_app::persist::{COURSE_KEY, PREFS_KEY, PROGRAM_KEY, STATE_KEY, Stored};
 
 fn storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok()?
 }
 
-/// The saved state's JSON and program text, if there are.
+fn load(key: &str) -> Option<String> {
+    storage()?.get_item(key).ok().flatten()
+}
+
+/// What the trainer kept: its small state, the shared preferences and the program text.
 #[must_use]
-pub fn load_saved() -> (Option<String>, Option<String>) {
-    let Some(s) = storage() else { return (None, None) };
-    (s.get_item(STATE_KEY).ok().flatten(), s.get_item(PROGRAM_KEY).ok().flatten())
+pub fn load_stored() -> Stored {
+    Stored { state: load(STATE_KEY), prefs: load(PREFS_KEY), program: load(PROGRAM_KEY) }
+}
+
+/// The course's progress record and the shared preferences.
+#[must_use]
+pub fn load_course() -> (Option<String>, Option<String>) {
+    (load(COURSE_KEY), load(PREFS_KEY))
 }
 
 const REFUSED: Text = Text::new(
@@ -26,14 +35,9 @@ const REFUSED: Text = Text::new(
     "The program cannot be kept in the browser (storage full or blocked)",
 );
 
-/// Saves the small state (cursor, machine, language); a blocked storage is reported.
-pub fn save_state(json: &str) -> Result<(), Text> {
-    storage().ok_or(REFUSED)?.set_item(STATE_KEY, json).map_err(|_| REFUSED)
-}
-
-/// Saves the program text; a full storage (programs of several MB) is reported.
-pub fn save_program(text: &str) -> Result<(), Text> {
-    storage().ok_or(REFUSED)?.set_item(PROGRAM_KEY, text).map_err(|_| REFUSED)
+/// Keeps `value` under `key`; a full (programs of several MB) or blocked storage is reported.
+pub fn save(key: &str, value: &str) -> Result<(), Text> {
+    storage().ok_or(REFUSED)?.set_item(key, value).map_err(|_| REFUSED)
 }
 
 /// The URL fragment (`#…`), if any.
@@ -74,17 +78,6 @@ pub async fn read_file(file: File) -> Result<Vec<u8>, Text> {
         .await
         .map_err(|_| Text::new("Datei konnte nicht gelesen werden", "The file could not be read"))?;
     Ok(Uint8Array::new(&buffer).to_vec())
-}
-
-/// The saved course progress record, if there is one.
-#[must_use]
-pub fn load_course() -> Option<String> {
-    storage()?.get_item(crate::course::progress::KEY).ok().flatten()
-}
-
-/// Saves the course progress; a blocked storage is reported.
-pub fn save_course(text: &str) -> Result<(), Text> {
-    storage().ok_or(REFUSED)?.set_item(crate::course::progress::KEY, text).map_err(|_| REFUSED)
 }
 
 /// An event listener on the window, removed when the guard is dropped (a component's effect

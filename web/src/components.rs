@@ -5,7 +5,6 @@ pub mod dialog_area;
 pub mod exercise_card;
 pub mod gl_canvas;
 pub mod header;
-pub mod page3d;
 pub mod position;
 pub mod positioning;
 pub mod program_pane;

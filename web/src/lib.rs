@@ -4,27 +4,15 @@
 pub mod app;
 pub mod browser;
 pub mod components;
-pub mod course;
-pub mod dialog;
-pub mod document;
-pub mod i18n;
-pub mod keymap;
-pub mod persist;
-pub mod preview;
+pub mod effects;
 pub mod render;
-pub mod run;
-pub mod samples;
-pub mod softkeys;
-pub mod state;
-pub mod syntax;
-pub mod why;
 
 pub use app::App;
 
 use yew::prelude::*;
 
 use crate::components::course::CourseApp;
-use crate::course::Route;
+use schwenkbar_app::course::Route;
 
 /// The course page (`kurs.html`): the lesson the URL fragment names (`#kurs/3`), else the
 /// overview; follows the fragment as it changes.

@@ -23,10 +23,7 @@ pub mod draw_list;
 pub mod from_sim;
 pub mod machine_parts;
 pub mod mesh;
-pub mod plane_scene;
-pub mod pose;
 pub mod right_hand;
-pub mod scene;
 pub mod toolpath;
 pub mod triads;
 

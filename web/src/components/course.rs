@@ -1,6 +1,6 @@
 //! The course pages: the overview and a lesson (text, live view, exercises), the instructor
 //! view (projector type, presenter-remote keys, solutions only on request) and the progress
-//! kept in the browser. State in [`crate::course::state::CourseState`].
+//! kept in the browser. State in [`schwenkbar_app::course::state::CourseState`].
 
 use std::rc::Rc;
 
@@ -12,10 +12,11 @@ use super::right_hand_demo::RightHandDemo;
 use super::solve_lab::SolveLab;
 use crate::app::{App, Embed};
 use crate::browser;
-use crate::course::Route;
-use crate::course::lessons::{self, COUNT, Widget};
-use crate::course::state::{CourseAction, CourseState};
-use crate::course::texts::LESSONS;
+use crate::effects::{Course, Shell, use_effects};
+use schwenkbar_app::course::Route;
+use schwenkbar_app::course::lessons::{self, COUNT, Widget};
+use schwenkbar_app::course::state::{CourseAction, CourseState};
+use schwenkbar_app::course::texts::LESSONS;
 
 const STYLE: &str = include_str!("course.css");
 
@@ -32,25 +33,29 @@ fn go(route: Route) {
 #[function_component(CourseApp)]
 pub fn course_app(props: &CourseAppProps) -> Html {
     let route = props.route;
-    let state = use_reducer(|| CourseState::start(browser::load_course().as_deref(), route));
+    let state = use_reducer(|| {
+        let (progress, prefs) = browser::load_course();
+        Course::new(CourseState::start(progress.as_deref(), prefs.as_deref(), route))
+    });
     {
         let state = state.clone();
         use_effect_with(route, move |r| state.dispatch(CourseAction::Go(*r)));
     }
+    let root = use_node_ref();
     {
-        let state = state.clone();
-        use_effect_with(state.progress.clone(), move |p| {
-            if let Err(t) = browser::save_course(&p.to_text()) {
-                state.dispatch(CourseAction::Notice(t));
-            }
-        });
+        let notice = {
+            let state = state.clone();
+            Callback::from(move |t| state.dispatch(CourseAction::Notice(t)))
+        };
+        // The course asks only for saving; the trainer's other effects do not arise here.
+        let shell = Shell { notice, tick: Callback::noop(), root: root.clone(), tell_course: None };
+        use_effects(&state.pending, shell);
     }
     // The page's keys from the load on, wherever the focus is; keys pressed inside a lesson's
     // embedded trainer stay with the trainer (PageDown there does not leave the lesson). The
     // listener reads the state of the latest render.
     let current = use_mut_ref(|| state.clone());
     *current.borrow_mut() = state.clone();
-    let root = use_node_ref();
     // Shown as `data-keys="on"` once the listener is there (the browser tests wait for it).
     let keys_on = use_state_eq(|| false);
     {
@@ -87,7 +92,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
         let state = state.clone();
         Callback::from(move |a: CourseAction| state.dispatch(a))
     };
-    let class = classes!("course", state.progress.instructor.then_some("projector"));
+    let class = classes!("course", state.instructor().then_some("projector"));
     let page = match state.lesson_index() {
         Some(i) => lesson_page(&state, i, &dispatch),
         None => overview(&state),
@@ -103,7 +108,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
                     Some(i) => format!("{} {}/{COUNT}", l.t("Lektion", "Lesson"), i + 1),
                     None => l.t("Übersicht", "Overview").to_owned(),
                 } }</span>
-                <button onclick={toggle_instructor} aria-pressed={state.progress.instructor.to_string()} data-testid="instructor">
+                <button onclick={toggle_instructor} aria-pressed={state.instructor().to_string()} data-testid="instructor">
                     { l.t("Lehreransicht (I)", "Instructor view (I)") }
                 </button>
                 <button onclick={toggle_lang} data-testid="course-lang">{ l.t("English", "Deutsch") }</button>
@@ -162,7 +167,7 @@ fn lesson_page(state: &CourseState, i: usize, dispatch: &Callback<CourseAction>)
             // changed on every render would remount it endlessly).
             // The instructor view shows the trainer in projector mode, with the classroom's
             // question before each swivel (a new key: the trainer starts again in that mode).
-            let classroom = state.progress.instructor;
+            let classroom = state.instructor();
             let key = format!("{i}-{}-{}-{classroom}", state.trainer_generation, l.code());
             let on_plane_block = dispatch.reform(CourseAction::TrainerBlock);
             let embed = Embed { program, machine, lang: l, classroom, on_plane_block };
@@ -189,7 +194,7 @@ fn lesson_page(state: &CourseState, i: usize, dispatch: &Callback<CourseAction>)
             <section class="lesson-exercises">
                 <h2>{ l.t("Aufgaben", "Exercises") }</h2>
                 { for state.exercises.iter().enumerate().map(|(n, e)| html! {
-                    <ExerciseCard index={n} exercise={e.clone()} lang={l} instructor={state.progress.instructor}
+                    <ExerciseCard index={n} exercise={e.clone()} lang={l} instructor={state.instructor()}
                         refusal={state.offers_refusal(n)} in_trainer={matches!(lesson.widget, Widget::Trainer { .. })}
                         on_action={dispatch.clone()} />
                 }) }

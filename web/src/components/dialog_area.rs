@@ -4,10 +4,10 @@
 use glam::DMat3;
 use yew::prelude::*;
 
-use crate::dialog::{Dialog, Key};
-use crate::i18n::Lang;
-use crate::preview::{orientation_of, strokes};
-use crate::state::Action;
+use schwenkbar_app::dialog::{Dialog, Key};
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::preview::{orientation_of, strokes};
+use schwenkbar_app::state::Action;
 
 #[derive(Properties, PartialEq)]
 pub struct DialogAreaProps {

@@ -4,8 +4,8 @@
 use schwenkbar_core::course::{AnswerKind, Verdict};
 use yew::prelude::*;
 
-use crate::course::state::{CourseAction, ExerciseState};
-use crate::i18n::Lang;
+use schwenkbar_app::course::state::{CourseAction, ExerciseState};
+use schwenkbar_app::i18n::Lang;
 
 #[derive(Properties)]
 pub struct ExerciseCardProps {

@@ -11,11 +11,11 @@ use web_sys::{HtmlCanvasElement, HtmlElement, KeyboardEvent, PointerEvent, Wheel
 use yew::prelude::*;
 
 use super::viewer::{FrameOutcome, Viewer};
-use crate::i18n::Lang;
 use crate::render::camera::Preset;
 use crate::render::context::ContextWatch;
 use crate::render::gpu::RenderError;
 use crate::render::renderer::Renderer;
+use schwenkbar_app::i18n::Lang;
 
 /// The canvas' and labels' CSS, shipped with the component (each component brings its own rules,
 /// so a page pays only for what it mounts; 3D labels are HTML so they stay crisp at any

@@ -2,7 +2,7 @@
 
 use yew::prelude::*;
 
-use crate::i18n::Lang;
+use schwenkbar_app::i18n::Lang;
 
 #[derive(Properties, PartialEq)]
 pub struct HeaderProps {

@@ -8,7 +8,7 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{ActiveTransform, Level, SpindleDir, State};
 use yew::prelude::*;
 
-use crate::i18n::Lang;
+use schwenkbar_app::i18n::Lang;
 
 #[derive(Properties, PartialEq)]
 pub struct PositionProps {

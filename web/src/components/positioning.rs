@@ -8,9 +8,9 @@ use schwenkbar_core::sim::{SimOptions, simulate};
 use yew::prelude::*;
 
 use super::scene_pane::ScenePane;
-use crate::document::Document;
-use crate::i18n::Lang;
-use crate::run::SimRef;
+use schwenkbar_app::document::Document;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::run::SimRef;
 
 #[derive(Properties, PartialEq)]
 pub struct PositioningProps {

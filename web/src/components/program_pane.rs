@@ -8,9 +8,9 @@ use std::rc::Rc;
 use web_sys::HtmlTextAreaElement;
 use yew::prelude::*;
 
-use crate::document::Document;
-use crate::i18n::Lang;
-use crate::syntax::highlight;
+use schwenkbar_app::document::Document;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::syntax::highlight;
 
 /// Lines shown above the cursor block and in all.
 const ABOVE: usize = 12;

@@ -10,13 +10,13 @@ use yew::prelude::*;
 
 use super::gl_canvas::{GlCanvas, SharedViewer};
 use super::viewer::{Content, Viewer};
-use crate::i18n::Lang;
 use crate::render::camera::Camera;
 use crate::render::right_hand::{
     DragTurn, TASKS, TurnAxis, Verdict, block_angles, block_text, check, draw_list, first_turn,
     pivot_on_screen, points_towards,
 };
 use glam::Vec3;
+use schwenkbar_app::i18n::Lang;
 use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::solve::fmt_deg;
 

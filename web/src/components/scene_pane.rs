@@ -15,11 +15,11 @@ use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
-use crate::document::Document;
-use crate::i18n::Lang;
 use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath};
-use crate::render::scene::SceneState;
-use crate::run::SimRef;
+use schwenkbar_app::document::Document;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::run::SimRef;
+use schwenkbar_app::scene::SceneState;
 
 #[derive(Properties, PartialEq)]
 pub struct ScenePaneProps {

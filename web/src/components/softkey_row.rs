@@ -4,8 +4,8 @@
 use web_sys::{File, HtmlInputElement};
 use yew::prelude::*;
 
-use crate::softkeys::Row;
-use crate::state::Action;
+use schwenkbar_app::softkeys::Row;
+use schwenkbar_app::state::Action;
 
 #[derive(Properties, PartialEq)]
 pub struct SoftkeyRowProps {

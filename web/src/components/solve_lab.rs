@@ -11,9 +11,9 @@ use schwenkbar_core::solve::axis_words;
 use yew::prelude::*;
 
 use super::view3d::View3d;
-use crate::course::bench::{Gauge, bench_scene, row_name};
-use crate::course::lab::{Bench, LabForm, OPTIONS};
-use crate::i18n::Lang;
+use schwenkbar_app::course::bench::{Gauge, bench_scene, row_name};
+use schwenkbar_app::course::lab::{Bench, LabForm, OPTIONS};
+use schwenkbar_app::i18n::Lang;
 
 /// The bench's CSS, shipped with the component.
 const STYLE: &str = include_str!("solve_lab.css");

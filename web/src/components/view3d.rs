@@ -12,11 +12,11 @@ use yew::prelude::*;
 
 use super::gl_canvas::{GlCanvas, SharedViewer};
 use super::viewer::{Content, Viewer};
-use crate::i18n::Lang;
 use crate::render::camera::{Camera, Preset};
-use crate::render::pose::poses;
-use crate::render::scene::{SceneState, Triads};
 use crate::render::toolpath::PathPoint;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::scene::pose::poses;
+use schwenkbar_app::scene::{SceneState, Triads};
 
 /// The toolpath, shared and compared by identity (a run's path has up to 100,000 segments;
 /// comparing it point by point on every render would cost more than drawing it).

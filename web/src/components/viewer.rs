@@ -12,8 +12,8 @@ use crate::render::camera::Camera;
 use crate::render::draw_list::DrawList;
 use crate::render::gpu::RenderError;
 use crate::render::renderer::{Renderer, ScreenLabel};
-use crate::render::scene::{Scene, SceneState, Triads};
 use crate::render::toolpath::PathPoint;
+use schwenkbar_app::scene::{Scene, SceneState, Triads};
 
 /// What the viewer draws each frame it is dirty.
 pub enum Content {

@@ -8,10 +8,10 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
-use crate::document::Document;
-use crate::i18n::Lang;
-use crate::run::SimRef;
-use crate::why::{describe, for_block};
+use schwenkbar_app::document::Document;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::run::SimRef;
+use schwenkbar_app::why::{describe, for_block};
 
 #[derive(Properties, PartialEq)]
 pub struct WhyPanelProps {

@@ -7,8 +7,8 @@ use schwenkbar_core::ast::Program;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{Kin, Segment, SegmentKind, SegmentPath, Simulation, State};
 
-use super::scene::{Blank, Frame, MachineAxes, SceneState, Tool};
 use super::toolpath::PathPoint;
+use schwenkbar_app::scene::{Blank, Frame, MachineAxes, SceneState, Tool};
 
 fn axes(a: &schwenkbar_core::sim::MachineAxes) -> MachineAxes {
     MachineAxes { linear: a.linear, rotary: a.rotary_values() }
@@ -94,8 +94,8 @@ pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::pose::poses;
     use glam::{DAffine3, DVec3};
+    use schwenkbar_app::scene::pose::poses;
     use schwenkbar_core::plane::RotaryAxis;
     use schwenkbar_core::sim::{SimOptions, simulate};
 

@@ -9,8 +9,8 @@ use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::{Carrier, Machine, RotaryJoint};
 
 use super::draw_list::{DrawList, Pass, Shape, beam, cuboid, rod};
-use super::pose::{Poses, head_pivot, poses};
-use super::scene::{Blank, Frame, SceneState, Tool};
+use schwenkbar_app::scene::pose::{Poses, head_pivot, poses};
+use schwenkbar_app::scene::{Blank, Frame, SceneState, Tool};
 
 pub const BED: [f32; 3] = [0.36, 0.39, 0.44];
 pub const FIXED: [f32; 3] = [0.52, 0.55, 0.60];
@@ -80,7 +80,7 @@ pub fn ghost(list: &mut DrawList, m: &Machine, s: &SceneState, rotary: &AxisValu
 
 /// Linear axes that put the tool tip, with the rotary axes at `rotary`, on the workpiece point
 /// where it is in the state `s`: L = W'(W⁻¹(tip)) − H'(0) (the inverse of tip = L + H(0) for
-/// fixed rotary axes, as `plane_scene::linear_for_tip`).
+/// fixed rotary axes).
 #[must_use]
 pub fn ghost_linear(m: &Machine, s: &SceneState, rotary: &AxisValues) -> DVec3 {
     let now = poses(m, &s.axes.rotary, s.axes.linear, s.tool.length);

@@ -10,9 +10,9 @@ use super::camera::{Camera, project_to_css};
 use super::draw_list::{DrawList, Pass, Shape};
 use super::gpu::{GpuLines, GpuMesh, Program, RenderError};
 use super::mesh::{self, Lines};
-use super::scene::Scene;
 use super::toolpath::{self, PathPoint};
 use super::triads;
+use schwenkbar_app::scene::Scene;
 
 /// Background of the view (the control's dark graphics area).
 pub const BACKGROUND: [f32; 3] = [0.11, 0.15, 0.20];
@@ -163,7 +163,8 @@ impl Renderer {
     pub fn paint(&mut self, scene: &Scene<'_>, camera: &Camera) -> Result<Vec<ScreenLabel>, RenderError> {
         let list = triads::scene(scene);
         let s = scene.state;
-        let p = super::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+        let p =
+            schwenkbar_app::scene::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
         let wcs = DAffine3::from_mat3_translation(scene.state.wcs.rot, scene.state.wcs.origin);
         let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
         self.paint_list(&list, camera, Some(path))

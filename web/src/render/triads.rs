@@ -5,7 +5,7 @@ use glam::{DAffine3, DMat3, DVec3};
 
 use super::draw_list::{DrawList, Label, Pass, Shape, rod};
 use super::machine_parts;
-use super::scene::{Frame, Scene};
+use schwenkbar_app::scene::{Frame, Scene};
 
 pub const X: [f32; 4] = [0.92, 0.16, 0.12, 1.0];
 pub const Y: [f32; 4] = [0.10, 0.72, 0.20, 1.0];
@@ -90,7 +90,7 @@ pub fn scene(s: &Scene<'_>) -> DrawList {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::scene::{SceneState, Triads};
+    use schwenkbar_app::scene::{SceneState, Triads};
     use schwenkbar_core::axes::AxisValues;
     use schwenkbar_core::machine::Machine;
     use schwenkbar_core::orientation::spatial;

@@ -9,7 +9,6 @@ use std::rc::Rc;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, simulate};
 use schwenkbar_core::{BlockBody, edit};
-use yew::Reducible;
 
 use crate::dialog::{Dialog, Function, Key, Outcome};
 use crate::document::Document;
@@ -17,13 +16,26 @@ use crate::i18n::{Lang, Text};
 use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
 
-mod effects;
 mod run_mode;
 mod start;
 #[cfg(test)]
 mod tests;
 
-pub use effects::{Effect, Effects};
+/// One transition with its effects dropped, for tests that follow the state (the effects are
+/// tested on their own).
+#[cfg(test)]
+pub(crate) trait Then {
+    fn then(&self, action: Action) -> AppState;
+}
+
+#[cfg(test)]
+impl Then for AppState {
+    fn then(&self, action: Action) -> AppState {
+        self.apply(action).0
+    }
+}
+
+pub use crate::effect::Effect;
 use run_mode::next_or_ask;
 pub use start::LinkPreview;
 
@@ -70,8 +82,8 @@ pub struct AppState {
     pub right_hand: bool,
     /// A share link shown as a preview: "Übernehmen?".
     pub link: Option<LinkPreview>,
-    /// Side effects asked for by the last transition.
-    pub effects: Effects,
+    /// A lesson's trainer: nothing is saved, the cursor's PLANE block is told to the course.
+    pub embedded: bool,
 }
 
 impl Default for AppState {
@@ -90,7 +102,7 @@ impl Default for AppState {
             run: None,
             right_hand: false,
             link: None,
-            effects: Effects::default(),
+            embedded: false,
         }
         .simulated()
     }
@@ -156,12 +168,19 @@ pub enum Action {
 }
 
 impl AppState {
-    /// The pure transition; `Reducible::reduce` only wraps it.
+    /// The pure transition: the next state and the side effects it asks for (saving what
+    /// changed, downloads, the Satzfolge timer, …), which the web shell carries out.
     #[must_use]
-    pub fn apply(&self, action: Action) -> AppState {
+    pub fn apply(&self, action: Action) -> (AppState, Vec<Effect>) {
+        let mut effects = Vec::new();
+        let next = self.transition(action, &mut effects);
+        next.follow_ups(Some(self), &mut effects);
+        (next, effects)
+    }
+
+    fn transition(&self, action: Action, fx: &mut Vec<Effect>) -> AppState {
         let mut next = self.clone();
         next.message = None;
-        next.effects.list = Rc::from([]);
         if self.link.is_some() && !action.allowed_in_link_preview() {
             next.message = Some(Text::new(
                 "Zuerst entscheiden: LINK ÜBERNEHMEN oder EIGENES BEHALTEN",
@@ -207,7 +226,7 @@ impl AppState {
             Action::ToggleTextEditing => {
                 next.text_editing = !self.text_editing;
                 if next.text_editing {
-                    next.emit(Effect::FocusEditor);
+                    fx.push(Effect::FocusEditor);
                 }
             }
             Action::ShowMachines => next.level = SoftkeyLevel::Machines,
@@ -222,12 +241,12 @@ impl AppState {
                 None => next.message = Some(Text::new("Beispiel unbekannt", "Unknown sample")),
             },
             Action::ShowFiles => next.level = SoftkeyLevel::Files,
-            Action::PickFile => next.emit(Effect::PickFile),
+            Action::PickFile => fx.push(Effect::PickFile),
             Action::Import(bytes) => next.import(bytes),
             Action::Download => {
-                next.emit(Effect::Download { name: self.file_name(), text: self.doc.text.clone() })
+                fx.push(Effect::Download { name: self.file_name(), text: self.doc.text.clone() })
             }
-            Action::Share => next.emit(Effect::Share { fragment: self.share_fragment() }),
+            Action::Share => fx.push(Effect::Share { fragment: self.share_fragment() }),
             Action::TakeLink => {
                 next.link = None;
                 next.message =
@@ -419,13 +438,5 @@ impl AppState {
                 "File: import, download, share a link",
             ),
         }
-    }
-}
-
-impl Reducible for AppState {
-    type Action = Action;
-
-    fn reduce(self: Rc<Self>, action: Action) -> Rc<Self> {
-        Rc::new(self.apply(action))
     }
 }

@@ -1,15 +1,17 @@
 //! The course's one reducer: the open lesson's exercises, the progress and the instructor view.
-//! Pure; the components render it and the browser keeps `progress` (see `components::course`).
+//! Pure; it asks for saving the progress and the preferences as [`Effect`]s, which the web
+//! shell carries out.
 
 use std::rc::Rc;
 
 use schwenkbar_core::course::{Answer, AnswerKind, Exercise, Spec, Verdict};
-use yew::Reducible;
 
 use super::Route;
 use super::lessons::{self, COUNT};
 use super::progress::Progress;
+use crate::effect::Effect;
 use crate::i18n::{Lang, Text};
+use crate::persist::{self, Prefs};
 
 /// One exercise as the trainee works on it.
 #[derive(Debug, Clone)]
@@ -46,6 +48,8 @@ impl ExerciseState {
 pub struct CourseState {
     pub route: Route,
     pub progress: Progress,
+    /// Language and instructor view (`classroom`), shared with the trainer.
+    pub prefs: Prefs,
     /// The open lesson's exercises (empty on the overview).
     pub exercises: Vec<ExerciseState>,
     /// A program an exercise opened in the lesson's trainer, instead of the lesson's own.
@@ -77,29 +81,68 @@ pub enum CourseAction {
 }
 
 impl CourseState {
-    /// The course at start-up from the saved progress record (a bad one is reported and replaced).
+    /// The course at start-up from the saved progress and preference records (a bad one is
+    /// reported and replaced).
     #[must_use]
-    pub fn start(saved: Option<&str>, route: Route) -> CourseState {
+    pub fn start(saved: Option<&str>, prefs: Option<&str>, route: Route) -> (CourseState, Vec<Effect>) {
+        let (prefs, prefs_notice) = Prefs::load(prefs);
         let (progress, notice) = match saved.map(Progress::from_text) {
-            None => (Progress::default(), None),
-            Some(Ok(p)) => (p, None),
+            None => (Progress::default(), prefs_notice),
+            Some(Ok(p)) => (p, prefs_notice),
             Some(Err(t)) => (Progress::default(), Some(t)),
         };
         let state = CourseState {
             route: Route::Overview,
             progress,
+            prefs,
             exercises: Vec::new(),
             trainer_program: None,
             trainer_generation: 0,
             trainer_block: None,
             notice,
         };
-        state.apply(CourseAction::Go(route))
+        let state = state.transition(CourseAction::Go(route));
+        let mut fx = Vec::new();
+        state.follow_ups(None, &mut fx);
+        (state, fx)
     }
 
     #[must_use]
     pub fn lang(&self) -> Lang {
-        self.progress.lang
+        self.prefs.lang
+    }
+
+    /// The instructor view (the classroom projector).
+    #[must_use]
+    pub fn instructor(&self) -> bool {
+        self.prefs.classroom
+    }
+
+    /// The pure transition: the next state and what to save.
+    #[must_use]
+    pub fn apply(&self, action: CourseAction) -> (CourseState, Vec<Effect>) {
+        let next = self.transition(action);
+        let mut fx = Vec::new();
+        next.follow_ups(Some(self), &mut fx);
+        (next, fx)
+    }
+
+    /// Whether `action` changes nothing, so the shell need not re-render the course: the
+    /// embedded trainer reports its cursor block after every render of its own.
+    #[must_use]
+    pub fn ignores(&self, action: &CourseAction) -> bool {
+        matches!(action, CourseAction::TrainerBlock(b) if *b == self.trainer_block)
+    }
+
+    /// Saving what changed since `before` (`None`: at start-up, where opening a lesson marks
+    /// it visited and a replaced record is written anew).
+    fn follow_ups(&self, before: Option<&CourseState>, fx: &mut Vec<Effect>) {
+        if before.is_none_or(|b| b.progress != self.progress) {
+            fx.push(Effect::Save { key: persist::COURSE_KEY, value: self.progress.to_text() });
+        }
+        if before.is_none_or(|b| b.prefs != self.prefs) {
+            fx.push(Effect::Save { key: persist::PREFS_KEY, value: self.prefs.to_record() });
+        }
     }
 
     #[must_use]
@@ -110,14 +153,13 @@ impl CourseState {
         }
     }
 
-    #[must_use]
-    pub fn apply(&self, action: CourseAction) -> CourseState {
+    fn transition(&self, action: CourseAction) -> CourseState {
         let mut s = self.clone();
         match action {
             CourseAction::Go(route) if route != s.route || s.exercises.is_empty() => s.open(route),
             CourseAction::Go(_) => {}
-            CourseAction::ToggleInstructor => s.progress.instructor = !s.progress.instructor,
-            CourseAction::ToggleLang => s.progress.lang = s.progress.lang.other(),
+            CourseAction::ToggleInstructor => s.prefs.classroom = !s.prefs.classroom,
+            CourseAction::ToggleLang => s.prefs.lang = s.prefs.lang.other(),
             CourseAction::Input(i, text) => {
                 // Editing the answer clears the old verdict: it spoke of the old text.
                 if let Some(e) = s.exercises.get_mut(i) {
@@ -133,7 +175,7 @@ impl CourseState {
             }
             CourseAction::Refuse(i) => s.check(i, &Answer::ControlError),
             CourseAction::ShowSolution(i) => {
-                let instructor = s.progress.instructor;
+                let instructor = s.prefs.classroom;
                 if let Some(e) = s.exercises.get_mut(i).filter(|e| e.solution_offered(instructor)) {
                     e.solution_shown = true;
                 }
@@ -200,35 +242,30 @@ impl CourseState {
     }
 }
 
-impl Reducible for CourseState {
-    type Action = CourseAction;
-
-    fn reduce(self: Rc<Self>, action: CourseAction) -> Rc<Self> {
-        // The trainer reports its cursor block after every render of its own; an unchanged one
-        // must not re-render the course.
-        if let CourseAction::TrainerBlock(b) = &action
-            && *b == self.trainer_block
-        {
-            return self;
-        }
-        Rc::new(self.apply(action))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use schwenkbar_core::course::{Answer, Hint};
 
     use super::*;
 
+    /// One transition, its effects dropped (they are tested on their own).
+    trait Then {
+        fn then(&self, a: CourseAction) -> CourseState;
+    }
+    impl Then for CourseState {
+        fn then(&self, a: CourseAction) -> CourseState {
+            self.apply(a).0
+        }
+    }
+
     fn lesson(i: usize) -> CourseState {
-        CourseState::start(None, Route::Lesson(i))
+        CourseState::start(None, None, Route::Lesson(i)).0
     }
 
     fn answer(s: &CourseState, i: usize, a: &Answer) -> CourseState {
         match a {
-            Answer::Text(t) => s.apply(CourseAction::Input(i, t.clone())).apply(CourseAction::Check(i)),
-            Answer::ControlError => s.apply(CourseAction::Refuse(i)),
+            Answer::Text(t) => s.then(CourseAction::Input(i, t.clone())).then(CourseAction::Check(i)),
+            Answer::ControlError => s.then(CourseAction::Refuse(i)),
         }
     }
 
@@ -264,25 +301,25 @@ mod tests {
 
     #[test]
     fn a_wrong_answer_keeps_the_input_and_the_solution_waits_until_asked() {
-        let s = lesson(1).apply(CourseAction::Input(0, "PLANE SPATIAL SPA-20 SPB+0 SPC+0".into()));
+        let s = lesson(1).then(CourseAction::Input(0, "PLANE SPATIAL SPA-20 SPB+0 SPC+0".into()));
         // A trainee has no solution button before a first try.
         assert!(!s.exercises[0].solution_offered(false));
-        assert!(!s.apply(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
-        let s = s.apply(CourseAction::Check(0));
+        assert!(!s.then(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
+        let s = s.then(CourseAction::Check(0));
         assert!(matches!(s.exercises[0].verdict, Some(Verdict::Wrong { hint: Hint::RightHand, .. })));
         assert_eq!(s.exercises[0].input, "PLANE SPATIAL SPA-20 SPB+0 SPC+0");
         assert!(!s.exercises[0].solution_shown);
-        assert!(s.apply(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
+        assert!(s.then(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
         // The instructor may reveal at once, but only when asked.
-        let i = lesson(1).apply(CourseAction::ToggleInstructor);
+        let i = lesson(1).then(CourseAction::ToggleInstructor);
         assert!(!i.exercises[0].solution_shown);
-        assert!(i.apply(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
+        assert!(i.then(CourseAction::ShowSolution(0)).exercises[0].solution_shown);
     }
 
     #[test]
     fn fresh_variant_changes_the_exercise_and_clears_the_answer() {
-        let s = lesson(4).apply(CourseAction::Input(0, "A+1 C+1".into()));
-        let f = s.apply(CourseAction::Fresh(0));
+        let s = lesson(4).then(CourseAction::Input(0, "A+1 C+1".into()));
+        let f = s.then(CourseAction::Fresh(0));
         assert_eq!(f.exercises[0].exercise.variant, 1);
         assert_ne!(f.exercises[0].exercise.prompt, s.exercises[0].exercise.prompt);
         assert!(f.exercises[0].input.is_empty());
@@ -292,28 +329,46 @@ mod tests {
     fn progress_survives_a_reload_and_a_corrupt_record_is_reported() {
         let s = lesson(0);
         let sol = s.exercises[0].exercise.solution.de.clone();
-        let s = answer(&s, 0, &Answer::typed(&sol)).apply(CourseAction::ToggleLang);
+        let s = answer(&s, 0, &Answer::typed(&sol)).then(CourseAction::ToggleLang);
         let saved = s.progress.to_text();
-        let back = CourseState::start(Some(&saved), Route::Overview);
+        let back = CourseState::start(Some(&saved), Some(&s.prefs.to_record()), Route::Overview).0;
         assert_eq!(back.progress, s.progress);
         assert_eq!(back.lang(), Lang::En);
-        let bad = CourseState::start(Some("{not progress"), Route::Lesson(2));
+        let (bad, _) = CourseState::start(Some("{not progress"), None, Route::Lesson(2));
         assert_eq!(bad.notice, Some(super::super::progress::UNREADABLE));
         assert_eq!(bad.route, Route::Lesson(2));
     }
 
     #[test]
     fn exercise_programs_open_in_the_trainer_and_the_block_can_be_taken_over() {
-        let s = lesson(3).apply(CourseAction::OpenInTrainer(0));
+        let s = lesson(3).then(CourseAction::OpenInTrainer(0));
         assert!(
             s.trainer_program.as_ref().is_some_and(|(p, m)| p.contains("PLANE SPATIAL") && *m == "ac-table")
         );
-        let s = lesson(2).apply(CourseAction::TakeBlock(0));
+        let s = lesson(2).then(CourseAction::TakeBlock(0));
         assert!(s.notice.is_some());
         let s = s
-            .apply(CourseAction::TrainerBlock(Some("5 PLANE SPATIAL SPA+0 SPB+25 SPC+0 TURN FMAX".into())))
-            .apply(CourseAction::TakeBlock(0))
-            .apply(CourseAction::Check(0));
+            .then(CourseAction::TrainerBlock(Some("5 PLANE SPATIAL SPA+0 SPB+25 SPC+0 TURN FMAX".into())))
+            .then(CourseAction::TakeBlock(0))
+            .then(CourseAction::Check(0));
         assert!(s.exercises[0].verdict.as_ref().is_some_and(Verdict::is_correct));
+    }
+
+    #[test]
+    fn progress_and_preferences_are_saved_when_they_change_and_only_then() {
+        let s = lesson(0);
+        let (same, fx) = s.apply(CourseAction::Input(0, "x".into()));
+        assert!(fx.is_empty(), "typing saves nothing: {fx:?}");
+        let sol = same.exercises[0].exercise.solution.de.clone();
+        let (solved, fx) = same.then(CourseAction::Input(0, sol)).apply(CourseAction::Check(0));
+        assert_eq!(fx, [Effect::Save { key: persist::COURSE_KEY, value: solved.progress.to_text() }]);
+        let (_, fx) = solved.apply(CourseAction::ToggleInstructor);
+        assert_eq!(
+            fx,
+            [Effect::Save { key: persist::PREFS_KEY, value: "p1;lang=de;classroom=1".into() }],
+            "the instructor view is the shared classroom preference"
+        );
+        assert!(solved.ignores(&CourseAction::TrainerBlock(None)));
+        assert!(!solved.ignores(&CourseAction::TrainerBlock(Some("1 PLANE RESET STAY".into()))));
     }
 }

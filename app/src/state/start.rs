@@ -9,7 +9,7 @@ use schwenkbar_core::machine::Machine;
 use super::{Action, AppState, DEFAULT_MACHINE, Effect};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
-use crate::persist::{self, Saved, Shared};
+use crate::persist::{self, Prefs, Saved, Shared, Stored};
 
 /// A share link opened over the trainee's own program: the link's program is shown (and can be
 /// run), the own one is kept aside and nothing is saved until the trainee decides.
@@ -49,35 +49,75 @@ impl Action {
 }
 
 impl AppState {
-    /// What survives a reload.
+    /// What survives a reload beside the program and the preferences.
     #[must_use]
     pub fn saved(&self) -> Saved {
         Saved {
-            version: persist::VERSION,
             cursor: self.cursor,
             machine: self.machine.as_ref().map_or_else(|| DEFAULT_MACHINE.to_owned(), |m| m.id.clone()),
-            lang: self.lang,
-            projector: self.projector,
         }
     }
 
-    /// The state at start-up from the saved state JSON and program text: a share link wins over
-    /// them; a saved state that cannot be used is reported in the dialog line and replaced by
-    /// the default.
+    /// The preferences the course page shares.
     #[must_use]
-    pub fn start(saved: Option<&str>, program: Option<String>, fragment: Option<&str>) -> AppState {
+    pub fn prefs(&self) -> Prefs {
+        Prefs { lang: self.lang, classroom: self.projector }
+    }
+
+    /// What to keep after a transition from `before` (`None`: at start-up): the program when
+    /// its text changed, the small state and the preferences when they changed, nothing of a
+    /// lesson's trainer (it tells the course its cursor's PLANE block instead) or while a share
+    /// link is only previewed; and the Satzfolge timer when the shown step, playing or speed
+    /// changed.
+    pub(super) fn follow_ups(&self, before: Option<&AppState>, fx: &mut Vec<Effect>) {
+        let doc_changed = before.is_none_or(|b| !Rc::ptr_eq(&b.doc, &self.doc));
+        let link_closed = before.is_some_and(|b| b.link.is_some()) && self.link.is_none();
+        if self.embedded {
+            if doc_changed || before.is_some_and(|b| b.cursor != self.cursor) {
+                fx.push(Effect::TellCourse(self.cursor_plane_text()));
+            }
+        } else if self.link.is_none() {
+            if doc_changed || link_closed {
+                fx.push(Effect::Save { key: persist::PROGRAM_KEY, value: self.doc.text.clone() });
+            }
+            let saved = self.saved();
+            if link_closed || before.is_none_or(|b| b.saved() != saved) {
+                fx.push(Effect::Save { key: persist::STATE_KEY, value: saved.to_record() });
+            }
+            let prefs = self.prefs();
+            if link_closed || before.is_none_or(|b| b.prefs() != prefs) {
+                fx.push(Effect::Save { key: persist::PREFS_KEY, value: prefs.to_record() });
+            }
+        }
+        let tick = |s: &AppState| s.run.as_ref().map(|r| (r.step, r.playing, r.tick_ms()));
+        if let Some((step, true, ms)) = tick(self)
+            && before.is_none_or(|b| tick(b) != tick(self))
+        {
+            fx.push(Effect::Tick { step, ms });
+        }
+    }
+
+    /// The state at start-up from the saved records and program text (see [`Stored`]): a share
+    /// link wins over them; a saved record that cannot be used is reported in the dialog line
+    /// and replaced by the default.
+    #[must_use]
+    pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
+        let Stored { state: saved, prefs, program } = stored;
         let mut state = AppState::default();
+        let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
+        state.lang = prefs.lang;
+        state.projector = prefs.classroom;
+        state.message = prefs_notice;
         // The program is what the trainee typed: it is kept even when the small state beside
         // it cannot be read.
         let own_work = program.is_some();
         if let Some(text) = program {
             state.doc = Rc::new(Document::new(text));
         }
-        match saved.map(persist::restore) {
+        let mut fx = Vec::new();
+        match saved.as_deref().map(Saved::from_record) {
             None => {}
             Some(Ok(s)) => {
-                state.lang = s.lang;
-                state.projector = s.projector;
                 state.cursor = s.cursor.min(state.doc.last_index());
                 state.select_machine(&s.machine);
             }
@@ -85,7 +125,7 @@ impl AppState {
         }
         if fragment.is_some() {
             // Read once: a reload must not apply the link again over what was done since.
-            state.emit(Effect::ConsumeFragment);
+            fx.push(Effect::ConsumeFragment);
         }
         let shared = fragment.and_then(persist::parse_fragment);
         let run = shared.as_ref().is_some_and(|s| s.run);
@@ -116,20 +156,24 @@ impl AppState {
         if run {
             state.start_run();
         }
-        state
+        state.follow_ups(None, &mut fx);
+        (state, fx)
     }
 
     /// A lesson's trainer: its own program and machine, the cursor on the first PLANE block,
     /// in projector mode in the instructor view (`classroom`); nothing of the trainee's saved
     /// work is read or written.
     #[must_use]
-    pub fn embedded(program: &str, machine: &str, lang: Lang, classroom: bool) -> AppState {
-        let mut state = AppState { lang, projector: classroom, ..AppState::default() };
+    pub fn embedded(program: &str, machine: &str, lang: Lang, classroom: bool) -> (AppState, Vec<Effect>) {
+        let mut state = AppState { lang, projector: classroom, embedded: true, ..AppState::default() };
         state.doc = Rc::new(Document::new(program.to_owned()));
         state.cursor =
             state.doc.program.blocks.iter().position(|b| matches!(b.body, BlockBody::Plane(_))).unwrap_or(0);
         state.select_machine(machine);
-        state.simulated()
+        let state = state.simulated();
+        let mut fx = Vec::new();
+        state.follow_ups(None, &mut fx);
+        (state, fx)
     }
 
     /// The cursor block's text when it is a PLANE block (the course takes it as an answer).

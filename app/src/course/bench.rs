@@ -13,7 +13,7 @@ use schwenkbar_core::solve::{
 
 use super::lab::{Bench, LabForm, option_word};
 use crate::i18n::Lang;
-use crate::render::scene::SceneState;
+use crate::scene::SceneState;
 
 /// Paths differ when they differ by more than this (degrees).
 const PATH_TOL: f64 = 1e-6;
@@ -422,7 +422,7 @@ mod tests {
     use schwenkbar_core::course::seed_rows;
 
     use super::*;
-    use crate::render::pose::poses;
+    use crate::scene::pose::poses;
 
     #[test]
     fn every_seed_row_has_its_own_name_that_says_its_option() {

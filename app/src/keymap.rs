@@ -58,6 +58,7 @@ pub fn action(state: &AppState, press: &KeyPress<'_>) -> Option<Action> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::state::Then;
 
     fn press(key: &str) -> KeyPress<'_> {
         KeyPress { key, shift: false, ctrl_or_alt: false }
@@ -67,14 +68,14 @@ mod tests {
     fn function_keys_press_the_softkeys() {
         let s = AppState::default();
         assert_eq!(action(&s, &press("F1")), Some(Action::SpecFct));
-        let s = s.apply(Action::SpecFct);
+        let s = s.then(Action::SpecFct);
         assert_eq!(action(&s, &press("F3")), Some(Action::TiltPlane));
         assert_eq!(action(&s, &press("F1")), None, "blank softkey");
     }
 
     #[test]
     fn dialog_keys_and_browser_shortcuts() {
-        let s = AppState::default().apply(Action::Function(crate::dialog::Function::Spatial));
+        let s = AppState::default().then(Action::Function(crate::dialog::Function::Spatial));
         assert_eq!(action(&s, &press("5")), Some(Action::DialogKey(Key::Char('5'))));
         assert_eq!(
             action(&s, &KeyPress { key: "Enter", shift: true, ctrl_or_alt: false }),

@@ -6,6 +6,8 @@
 //! the toolpath are given **on the table at home** (all rotary axes at 0°); the renderer moves
 //! them with the table axes.
 
+pub mod pose;
+
 use glam::{DMat3, DQuat, DVec3};
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
@@ -191,7 +193,7 @@ impl SceneState {
     }
 }
 
-/// Everything [`crate::render::renderer::Renderer::paint`] needs besides the camera.
+/// Everything the renderer paints besides the camera.
 #[derive(Debug, Clone, Copy)]
 pub struct Scene<'a> {
     pub machine: &'a Machine,

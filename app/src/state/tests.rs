@@ -1,0 +1,285 @@
+//! The trainer's reducer, action by action.
+
+use super::*;
+use crate::dialog::PosKind;
+use crate::persist::{self, Prefs, Stored};
+
+fn keys(mut s: AppState, text: &str) -> AppState {
+    for c in text.chars() {
+        s = s.then(Action::DialogKey(Key::Char(c)));
+    }
+    s.then(Action::DialogKey(Key::Ent))
+}
+
+#[test]
+fn spatial_dialog_inserts_the_block_after_the_cursor_with_the_next_number() {
+    let mut s = AppState::default()
+        .then(Action::SetText("0 BEGIN PGM T MM\n1 L Z+0 R0 FMAX M91\n2 END PGM T MM\n".into()));
+    s = s.then(Action::CursorTo(1));
+    s = s.then(Action::SpecFct).then(Action::TiltPlane).then(Action::Function(Function::Spatial));
+    s = keys(keys(keys(s, "0"), "15"), "0");
+    s = s.then(Action::DialogKey(Key::Positioning(PosKind::Turn)));
+    s = s.then(Action::DialogKey(Key::NoEnt)).then(Action::DialogKey(Key::FMax));
+    s = s.then(Action::DialogKey(Key::NoEnt)).then(Action::DialogKey(Key::NoEnt));
+    assert!(s.dialog.is_none());
+    assert_eq!(
+        s.doc.text,
+        "0 BEGIN PGM T MM\n1 L Z+0 R0 FMAX M91\n2 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX\n3 END PGM T MM\n"
+    );
+    assert_eq!(s.cursor, 2);
+    assert!(s.doc.diagnostics.is_empty());
+}
+
+#[test]
+fn abort_keeps_the_program_and_ent_reopens_a_plane_block() {
+    let s = AppState::default();
+    let before = s.doc.text.clone();
+    let s = s.then(Action::Function(Function::Euler));
+    let s = keys(s, "45").then(Action::Abort);
+    assert!(s.dialog.is_none());
+    assert_eq!(s.doc.text, before);
+    // Musterprogramm 1, block 10 is the PLANE SPATIAL block.
+    let s = s.then(Action::CursorTo(10)).then(Action::Open);
+    let (d, editing) = s.dialog.as_ref().expect("dialog reopened");
+    assert_eq!((d.function, *editing), (Function::Spatial, Some(10)));
+    let s = s.then(Action::CursorTo(9));
+    assert_eq!(s.cursor, 10, "the cursor stays while the dialog is open");
+    let s = s.then(Action::Abort).then(Action::CursorTo(9)).then(Action::Open);
+    assert!(s.dialog.is_none());
+    assert!(s.message.is_some(), "ENT on a non-PLANE block says why nothing opens");
+}
+
+#[test]
+fn samples_select_their_machine_and_unknown_ids_are_reported() {
+    let s = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into()));
+    assert_eq!(s.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+    let t = s.then(Action::SelectMachine("no-such".into()));
+    assert_eq!(t.machine, s.machine);
+    assert!(t.message.is_some());
+}
+
+#[test]
+fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
+    let s = AppState::default()
+        .then(Action::LoadSample("stay_q120".into()))
+        .then(Action::CursorTo(7))
+        .then(Action::ToggleLang);
+    let stored = Stored {
+        state: Some(s.saved().to_record()),
+        prefs: Some(s.prefs().to_record()),
+        program: Some(s.doc.text.clone()),
+    };
+    let (back, _) = AppState::start(stored, None);
+    assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
+    assert_eq!(back.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+    assert_eq!(back.message, None);
+    let sim = back.sim.as_ref().expect("simulated");
+    assert_eq!(
+        sim.0.first_step.len(),
+        back.doc.program.blocks.len(),
+        "the restored program is the one simulated"
+    );
+
+    let stored = Stored { state: Some("s2;cursor=".into()), prefs: None, program: Some("0 L X+1".into()) };
+    let (broken, fx) = AppState::start(stored, None);
+    assert_eq!(broken.doc.text, "0 L X+1", "the program typed is kept");
+    assert_eq!(
+        broken.message.map(|m| m.en),
+        Some("The saved state was corrupt: cursor and machine reset, program kept")
+    );
+    assert!(
+        fx.contains(&Effect::Save { key: persist::STATE_KEY, value: broken.saved().to_record() }),
+        "the corrupt record is replaced"
+    );
+    let stored = Stored {
+        state: Some(r#"{"version":1,"cursor":3,"machine":"ac-table","lang":"En","projector":false}"#.into()),
+        prefs: Some("p1;lang=xx".into()),
+        program: None,
+    };
+    let (old, _) = AppState::start(stored, None);
+    assert_eq!(
+        old.message.map(|m| m.en),
+        Some("The saved state is from an older version: cursor and machine reset, program kept")
+    );
+    assert_eq!(old.prefs(), Prefs::default(), "unreadable preferences are the defaults");
+}
+
+#[test]
+fn share_link_opens_the_same_program_at_the_same_block_and_machine() {
+    let s =
+        AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).then(Action::CursorTo(8));
+    let (opened, _) = AppState::start(Stored::default(), Some(&format!("#{}", s.share_fragment())));
+    assert_eq!(opened.doc.text, s.doc.text);
+    assert_eq!(opened.cursor, 8);
+    assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+    assert_eq!(s.file_name(), "WINKEL.h");
+    assert!(opened.run.is_none());
+    let running = AppState::default().then(Action::CursorTo(10)).then(Action::StartRun);
+    let (opened, _) = AppState::start(Stored::default(), Some(&running.share_fragment()));
+    let shown = opened.run.as_ref().and_then(|r| r.state.as_ref()).map(|s| s.block);
+    assert_eq!(shown, Some(10), "the link opens the run at block 10");
+}
+
+#[test]
+fn run_steps_to_the_swivel_and_stops_on_the_refused_block() {
+    let mut s = AppState::default().then(Action::StartRun);
+    assert_eq!(s.cursor, 0);
+    while s.cursor < 10 {
+        s = s.then(Action::RunNext);
+    }
+    let shown = s.run.as_ref().and_then(|r| r.state.clone()).expect("state");
+    let (axis, a) = shown.axes.named()[3];
+    assert!(axis == 'A' && (a - 15.0).abs() < 1e-9, "{axis}{a}");
+    assert_eq!(s.then(Action::CursorTo(25)).cursor, 25, "a click jumps there");
+    let s = s.then(Action::Back);
+    assert!(s.run.is_none());
+
+    let mut s =
+        AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).then(Action::StartRun);
+    s = s.then(Action::RunPlay);
+    for step in 0..20 {
+        s = s.then(Action::RunTick(s.run.as_ref().map_or(step, |r| r.step)));
+    }
+    let run = s.run.as_ref().expect("run");
+    assert!(run.stopped_by_error && !run.playing);
+    assert_eq!(s.cursor, 8, "the cursor stands on the refused block");
+    assert_eq!(s.dialog_line(), "Winkel nicht erlaubt");
+}
+
+#[test]
+fn language_switch_changes_the_dialog_line_and_keeps_the_program() {
+    let s = AppState::default().then(Action::SpecFct);
+    assert_eq!(s.dialog_text().get(s.lang), "Sonderfunktionen: Bereich wählen");
+    let en = s.then(Action::ToggleLang);
+    assert_eq!(en.dialog_text().get(en.lang), "Special functions: select an area");
+    assert_eq!(en.doc, s.doc);
+}
+
+#[test]
+fn a_link_over_own_work_is_a_preview_until_the_trainee_decides() {
+    let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n".to_owned();
+    let saved = Some(AppState::default().saved().to_record());
+    let link = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
+    let stored =
+        |program: &str| Stored { state: saved.clone(), prefs: None, program: Some(program.to_owned()) };
+    let (s, fx) = AppState::start(stored(&own), Some(&link));
+    assert!(s.link.is_some());
+    assert_ne!(s.doc.text, own, "the link's program is shown");
+    assert_eq!(fx, [Effect::ConsumeFragment], "the fragment is read once, nothing is saved in the preview");
+    assert!(s.dialog_text().de.contains("übernehmen?"));
+    // Editing is held back; looking and running are not.
+    let held = s.then(Action::SetText("0 L X+1".into()));
+    assert_eq!(held.doc, s.doc);
+    assert!(held.message.is_some_and(|m| m.de.contains("LINK ÜBERNEHMEN")));
+    assert!(s.then(Action::StartRun).run.is_some());
+    let (kept, fx) = s.then(Action::StartRun).apply(Action::KeepOwn);
+    assert!(fx.contains(&Effect::Save { key: persist::PROGRAM_KEY, value: own.clone() }), "{fx:?}");
+    assert_eq!((kept.doc.text.as_str(), kept.link.is_none(), kept.run.is_none()), (own.as_str(), true, true));
+    assert_eq!(kept.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+    assert_eq!(kept.sim.as_ref().map(|s| s.0.first_step.len()), Some(3), "the own program is simulated");
+    let taken = s.then(Action::TakeLink);
+    assert_eq!((taken.doc.text.as_str(), taken.link.is_none()), (s.doc.text.as_str(), true));
+    assert_eq!(taken.machine.as_ref().map(|m| m.id.as_str()), Some("ba-table"));
+
+    // No own work, or the same program: nothing to ask.
+    assert!(AppState::start(Stored::default(), Some(&link)).0.link.is_none());
+    let (same, _) = AppState::start(stored(&s.doc.text), Some(&link));
+    assert!(same.link.is_none());
+}
+
+#[test]
+fn a_binary_file_is_not_imported_and_the_program_stays() {
+    let s = AppState::default().then(Action::ShowFiles);
+    let png = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\x01\0\0\0\x01\0".to_vec();
+    let refused = s.then(Action::Import(png));
+    assert_eq!(refused.doc, s.doc);
+    assert!(refused.message.is_some_and(|m| m.de.contains("kein NC-Programm")));
+    let imported = s.then(Action::Import(b"0 BEGIN PGM I MM\r\n1 END PGM I MM\r\n".to_vec()));
+    assert_eq!(imported.doc.program.blocks.len(), 2);
+    assert_eq!(imported.message.map(|m| m.en), Some("File imported"));
+}
+
+#[test]
+fn text_editing_asks_for_the_focus_in_the_editor() {
+    let (s, fx) = AppState::default().apply(Action::ToggleTextEditing);
+    assert_eq!(fx, [Effect::FocusEditor]);
+    assert!(s.apply(Action::ToggleTextEditing).1.is_empty());
+}
+
+#[test]
+fn the_classroom_run_asks_before_a_swivel_and_reveals_on_nc_start() {
+    let to_block_9 = |projector: bool| {
+        let mut s = AppState { projector, ..AppState::default() }.then(Action::StartRun);
+        while s.cursor < 9 {
+            s = s.then(Action::RunNext);
+        }
+        s
+    };
+    // Musterprogramm 1, block 10: PLANE SPATIAL … TURN on the A/C table.
+    let s = to_block_9(true).then(Action::RunNext);
+    let run = s.run.as_ref().expect("run");
+    assert!(run.asking);
+    assert_eq!(run.state.as_ref().map(|st| st.block), Some(9), "block 10 has not run yet");
+    assert_eq!(
+        s.dialog_line(),
+        "Vorhersage: Wohin schwenkt der Tisch? Welche Werte haben A und C? NC-Start zeigt es."
+    );
+    let revealed = s.then(Action::RunNext);
+    let run = revealed.run.as_ref().expect("run");
+    assert!(!run.asking);
+    assert_eq!(run.state.as_ref().map(|st| st.block), Some(10), "NC start reveals block 10");
+    // The other solution is there to be shown as the ghost.
+    assert!(
+        run.state.as_ref().and_then(|st| st.explanation.as_ref()).is_some_and(|e| e.candidates.len() == 2)
+    );
+    // Outside the classroom the run does not stop to ask.
+    let plain = to_block_9(false).then(Action::RunNext);
+    assert_eq!(plain.run.as_ref().and_then(|r| r.state.as_ref()).map(|st| st.block), Some(10));
+    // In a full sequence the run stops at the question and NC start goes on after it.
+    let mut playing = to_block_9(true).then(Action::RunPlay);
+    let step = playing.run.as_ref().map_or(0, |r| r.step);
+    playing = playing.then(Action::RunTick(step));
+    let run = playing.run.as_ref().expect("run");
+    assert!(run.asking && !run.playing);
+    let on = playing.then(Action::RunPlay);
+    let run = on.run.as_ref().expect("run");
+    assert!(run.playing && !run.asking);
+    assert_eq!(run.state.as_ref().map(|st| st.block), Some(10));
+}
+
+#[test]
+fn what_changed_is_saved_and_a_lessons_trainer_saves_nothing() {
+    let s = AppState::default();
+    let (s, fx) = s.apply(Action::CursorTo(10));
+    assert_eq!(fx, [Effect::Save { key: persist::STATE_KEY, value: "s2;cursor=10;machine=ac-table".into() }]);
+    let (s, fx) = s.apply(Action::ToggleProjector);
+    assert_eq!(fx, [Effect::Save { key: persist::PREFS_KEY, value: "p1;lang=de;classroom=1".into() }]);
+    let (s, fx) = s.apply(Action::SetText("0 BEGIN PGM X MM\n1 END PGM X MM\n".into()));
+    assert_eq!(
+        fx,
+        [
+            Effect::Save { key: persist::PROGRAM_KEY, value: s.doc.text.clone() },
+            Effect::Save { key: persist::STATE_KEY, value: "s2;cursor=1;machine=ac-table".into() },
+        ]
+    );
+    assert!(s.apply(Action::ShowFiles).1.is_empty(), "a softkey level is not saved");
+
+    let (lesson, fx) = AppState::embedded(samples::DEFAULT.text, "ac-table", Lang::De, false);
+    assert_eq!(fx, [Effect::TellCourse(lesson.cursor_plane_text())]);
+    assert!(lesson.cursor_plane_text().is_some_and(|t| t.contains("PLANE")));
+    let (_, fx) = lesson.apply(Action::CursorTo(0));
+    assert_eq!(fx, [Effect::TellCourse(None)], "a lesson's trainer saves nothing");
+}
+
+#[test]
+fn satzfolge_asks_for_a_tick_per_step_and_none_when_paused() {
+    let (s, fx) = AppState::default().then(Action::StartRun).apply(Action::RunPlay);
+    let run = s.run.as_ref().expect("run");
+    assert_eq!(fx, [Effect::Tick { step: run.step, ms: run.tick_ms() }]);
+    let (s, fx) = s.apply(Action::RunTick(run.step));
+    let next = s.run.as_ref().expect("run");
+    assert!(fx.contains(&Effect::Tick { step: next.step, ms: next.tick_ms() }), "{fx:?}");
+    assert_eq!(next.step, run.step + 1);
+    let (_, fx) = s.apply(Action::RunPlay);
+    assert!(fx.is_empty(), "paused: no timer");
+}

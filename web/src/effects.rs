@@ -1,0 +1,183 @@
+//! The reducers of `schwenkbar-app` as yew state, and the one place their side effects are
+//! carried out. `apply` returns the next state and its [`Effect`]s; the newtypes keep the last
+//! list with a sequence number, and [`use_effects`] runs each list once after the render (so the
+//! file input and the text area exist), reporting outcomes back as notices.
+
+use std::ops::Deref;
+use std::rc::Rc;
+
+use schwenkbar_app::course::state::{CourseAction, CourseState};
+use schwenkbar_app::effect::Effect;
+use schwenkbar_app::i18n::Text;
+use schwenkbar_app::state::{Action, AppState};
+use yew::prelude::*;
+
+use crate::browser;
+
+/// The effects of the last transition; `seq` changes with every non-empty list, so each list
+/// runs once.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Pending {
+    seq: u64,
+    list: Rc<[Effect]>,
+}
+
+impl Pending {
+    fn next(&self, list: Vec<Effect>) -> Pending {
+        match list.is_empty() {
+            true => Pending { seq: self.seq, list: Rc::from([]) },
+            false => Pending { seq: self.seq + 1, list: list.into() },
+        }
+    }
+}
+
+/// The trainer's state in yew.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trainer {
+    pub state: AppState,
+    pub pending: Pending,
+}
+
+impl Trainer {
+    #[must_use]
+    pub fn new((state, effects): (AppState, Vec<Effect>)) -> Trainer {
+        Trainer { state, pending: Pending::default().next(effects) }
+    }
+}
+
+impl Deref for Trainer {
+    type Target = AppState;
+    fn deref(&self) -> &AppState {
+        &self.state
+    }
+}
+
+impl Reducible for Trainer {
+    type Action = Action;
+    fn reduce(self: Rc<Self>, action: Action) -> Rc<Self> {
+        let (state, effects) = self.state.apply(action);
+        Rc::new(Trainer { state, pending: self.pending.next(effects) })
+    }
+}
+
+/// The course's state in yew.
+#[derive(Debug, Clone)]
+pub struct Course {
+    pub state: CourseState,
+    pub pending: Pending,
+}
+
+impl Course {
+    #[must_use]
+    pub fn new((state, effects): (CourseState, Vec<Effect>)) -> Course {
+        Course { state, pending: Pending::default().next(effects) }
+    }
+}
+
+impl Deref for Course {
+    type Target = CourseState;
+    fn deref(&self) -> &CourseState {
+        &self.state
+    }
+}
+
+impl Reducible for Course {
+    type Action = CourseAction;
+    fn reduce(self: Rc<Self>, action: CourseAction) -> Rc<Self> {
+        if self.state.ignores(&action) {
+            return self;
+        }
+        let (state, effects) = self.state.apply(action);
+        Rc::new(Course { state, pending: self.pending.next(effects) })
+    }
+}
+
+/// Where an effect's outcome goes and what the trainer's effects need of the page.
+pub struct Shell {
+    /// Reports an outcome (a failed save, "link copied") in the UI's dialog line or notice.
+    pub notice: Callback<Text>,
+    /// Satzfolge's timer fires `RunTick(step)`.
+    pub tick: Callback<usize>,
+    /// The app's root element (file input, text area).
+    pub root: NodeRef,
+    /// A lesson's trainer: the course wants the cursor's PLANE block.
+    pub tell_course: Option<Callback<Option<String>>>,
+}
+
+/// Runs each list of effects once, after the render.
+#[hook]
+pub fn use_effects(pending: &Pending, shell: Shell) {
+    use_effect_with(pending.clone(), move |p| {
+        for effect in p.list.iter() {
+            run(effect, &shell);
+        }
+    });
+}
+
+fn run(effect: &Effect, shell: &Shell) {
+    let root = || shell.root.cast::<web_sys::Element>();
+    match effect {
+        Effect::Save { key, value } => {
+            if let Err(message) = browser::save(key, value) {
+                shell.notice.emit(message);
+            }
+        }
+        Effect::Download { name, text } => {
+            let bytes = schwenkbar_core::text::encode_latin1(text);
+            shell.notice.emit(match browser::download(name, &bytes) {
+                Ok(()) => Text::new(
+                    "Programm wird als .h-Datei heruntergeladen",
+                    "The program is downloaded as a .h file",
+                ),
+                Err(message) => message,
+            });
+        }
+        Effect::Share { fragment } => {
+            let notice = shell.notice.clone();
+            let fragment = fragment.clone();
+            yew::platform::spawn_local(async move {
+                let copied = match browser::share_url(&fragment) {
+                    Some(url) => browser::copy_to_clipboard(&url).await.is_ok(),
+                    None => false,
+                };
+                notice.emit(if copied {
+                    Text::new(
+                        "Link in die Zwischenablage kopiert: einfügen und weitergeben",
+                        "Link copied to the clipboard: paste it and pass it on",
+                    )
+                } else {
+                    match browser::set_fragment(&fragment) {
+                        Ok(()) => Text::new(
+                            "Link steht in der Adresszeile: kopieren und weitergeben",
+                            "The link is in the address bar: copy and pass it on",
+                        ),
+                        Err(message) => message,
+                    }
+                });
+            });
+        }
+        Effect::PickFile => {
+            if let Some(root) = root() {
+                browser::pick_file(&root);
+            }
+        }
+        Effect::FocusEditor => {
+            if let Some(root) = root() {
+                browser::focus(&root, "textarea.program-text");
+            }
+        }
+        Effect::ConsumeFragment => browser::consume_fragment(),
+        Effect::Tick { step, ms } => {
+            let (tick, step, ms) = (shell.tick.clone(), *step, *ms);
+            yew::platform::spawn_local(async move {
+                yew::platform::time::sleep(std::time::Duration::from_millis(ms)).await;
+                tick.emit(step);
+            });
+        }
+        Effect::TellCourse(block) => {
+            if let Some(tell) = &shell.tell_course {
+                tell.emit(block.clone());
+            }
+        }
+    }
+}
