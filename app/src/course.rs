@@ -5,6 +5,7 @@
 pub mod bench;
 pub mod lab;
 pub mod lessons;
+pub mod positioning;
 pub mod progress;
 pub mod state;
 pub mod texts;

@@ -4,12 +4,21 @@
 use std::rc::Rc;
 
 use schwenkbar_core::Program;
-use schwenkbar_core::sim::{Simulation, State};
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 
 /// The simulation of the current program on the current machine, compared by identity (it is
 /// recomputed, never edited).
 #[derive(Debug, Clone)]
 pub struct SimRef(pub Rc<Simulation>);
+
+impl SimRef {
+    /// The program simulated on the machine with the control's defaults.
+    #[must_use]
+    pub fn of(program: &Program, machine: &Machine) -> SimRef {
+        SimRef(Rc::new(simulate(program, machine, &SimOptions::default())))
+    }
+}
 
 impl PartialEq for SimRef {
     fn eq(&self, other: &Self) -> bool {

@@ -7,7 +7,6 @@
 use std::rc::Rc;
 
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{SimOptions, simulate};
 use schwenkbar_core::{BlockBody, edit};
 
 use crate::dialog::{Dialog, Function, Key, Outcome};
@@ -316,10 +315,7 @@ impl AppState {
     /// at the same step where it still exists.
     #[must_use]
     fn simulated(mut self) -> AppState {
-        self.sim = self
-            .machine
-            .as_ref()
-            .map(|m| SimRef(Rc::new(simulate(&self.doc.program, m, &SimOptions::default()))));
+        self.sim = self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m));
         match (&self.sim, self.run.as_mut()) {
             (Some(sim), Some(run)) => run.go_to(&sim.0, &self.doc.program, run.step),
             (None, Some(_)) => self.run = None,

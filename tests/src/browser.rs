@@ -29,9 +29,9 @@ pub fn clear_storage() {
 }
 
 /// Sets the saved state a "reload" will find.
-pub fn set_saved(json: &str) {
+pub fn set_saved(record: &str) {
     let s = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
-    s.set_item("schwenkbar.state", json).expect("set item");
+    s.set_item(schwenkbar_app::persist::STATE_KEY, record).expect("set item");
     s.set_item("schwenkbar.program", "0 BEGIN PGM X MM\n1 END PGM X MM\n").expect("set item");
 }
 

@@ -122,14 +122,20 @@ async fn state_survives_a_reload_and_a_corrupt_saved_state_falls_back() {
         query(&again, ".program-pane .line.cursor").and_then(|l| l.text_content()).unwrap_or_default();
     assert!(cursor.starts_with("7 PLANE SPATIAL SPA+0 SPB+45 SPC+0 STAY"), "{cursor}");
 
-    set_saved("{\"version\":1,\"cursor\":");
+    // The language is a preference of its own (shared with the course): it survives a broken
+    // state record.
+    set_saved("s2;cursor=");
     let broken = mount().await;
-    assert_eq!(
-        text(&broken, ".dialog-line"),
-        "Gespeicherter Zustand war beschädigt: Cursor, Maschine und Sprache zurückgesetzt, Programm behalten"
-    );
+    assert_eq!(text(&broken, ".dialog-line"), "The saved state was corrupt: cursor and machine reset, program kept");
     assert!(
         program_lines(&broken).first().is_some_and(|l| l.contains("BEGIN PGM X MM")),
         "the saved program is kept beside a corrupt state"
+    );
+    // The JSON the builds before records wrote is recognised as old, not as corrupt.
+    set_saved("{\"version\":1,\"cursor\":3,\"machine\":\"ac-table\",\"lang\":\"De\",\"projector\":false}");
+    let old = mount().await;
+    assert_eq!(
+        text(&old, ".dialog-line"),
+        "The saved state is from an older version: cursor and machine reset, program kept"
     );
 }

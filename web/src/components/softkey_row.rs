@@ -27,7 +27,7 @@ pub fn softkey_row(props: &SoftkeyRowProps) -> Html {
                 }
             });
             html! {
-                <label class="softkey" data-key="import" title={format!("F{}", i + 1)}>
+                <label class="softkey" data-key={key.id.clone()} title={format!("F{}", i + 1)}>
                     { for key.label.split('\n').map(|part| html! { <span>{ part.to_owned() }</span> }) }
                     <input type="file" accept=".h,.H,.nc,text/plain" class="file-input" {onchange} />
                 </label>

@@ -1,0 +1,65 @@
+//! Lesson 4's comparison: the same PLANE block with MOVE, TURN and STAY, each program simulated
+//! on the A/C table, and the state just before that block (from where its swivel is animated).
+
+use std::rc::Rc;
+
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::State;
+
+use crate::document::Document;
+use crate::run::SimRef;
+
+/// The machine the three panes share.
+pub const MACHINE: &str = "ac-table";
+
+/// One pane: its program, simulation and the state after the PLANE block.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pane {
+    pub name: &'static str,
+    pub doc: Rc<Document>,
+    pub sim: Option<SimRef>,
+    pub state: Option<Rc<State>>,
+}
+
+/// The three panes for `programs` (MOVE, TURN, STAY) at the block numbered `block`.
+#[must_use]
+pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>) {
+    let machine = Machine::builtin(MACHINE).ok().map(Rc::new);
+    let panes = programs
+        .iter()
+        .zip(["MOVE", "TURN", "STAY"])
+        .map(|(text, name)| {
+            let doc = Rc::new(Document::new((*text).to_owned()));
+            let sim = machine.as_ref().map(|m| SimRef::of(&doc.program, m));
+            let index = doc.program.blocks.iter().position(|b| b.number == Some(block));
+            let state = sim.as_ref().zip(index).and_then(|(s, i)| {
+                let step = s.0.first_step.get(i).copied().flatten()?;
+                s.0.state_at(&doc.program, step as usize).map(Rc::new)
+            });
+            Pane { name, doc, sim, state }
+        })
+        .collect();
+    (machine, panes)
+}
+
+#[cfg(test)]
+mod tests {
+    use schwenkbar_core::axes::AxisValues;
+
+    use super::*;
+    use crate::course::lessons::{self, Widget};
+
+    #[test]
+    fn lesson_4s_panes_swivel_move_and_turn_but_stay_keeps_the_axes() {
+        let lesson = lessons::lesson(3).expect("lesson 4");
+        let Widget::Positioning { programs, block } = lesson.widget else { panic!("lesson 4 compares MOVE/TURN/STAY") };
+        let (machine, panes) = panes(programs, block);
+        assert!(machine.is_some());
+        let rotary = |p: &Pane| p.state.as_ref().map(|s| s.axes.rotary).expect("state after the PLANE block");
+        let names: Vec<_> = panes.iter().map(|p| p.name).collect();
+        assert_eq!(names, ["MOVE", "TURN", "STAY"]);
+        assert_eq!(rotary(&panes[0]), rotary(&panes[1]), "MOVE and TURN end on the same axes");
+        assert_ne!(rotary(&panes[0]), rotary(&panes[2]));
+        assert_eq!(rotary(&panes[2]).a.unwrap_or(0.0), AxisValues::default().a.unwrap_or(0.0), "STAY does not swivel");
+    }
+}

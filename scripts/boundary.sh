@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The crate boundaries ARCHITECTURE.md promises, checked (run by scripts/test.sh):
+# - core and app have no browser in them: no yew, web-sys, js-sys, wasm-bindgen, gloo among
+#   their dependencies (cargo tree, normal dependencies);
+# - web renders and carries out effects only: it never parses, solves or simulates (those
+#   calls belong to core, driven by app).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+fail=0
+for crate in schwenkbar-core schwenkbar-app; do
+  browser=$(cargo tree --offline -q -p "$crate" -e normal --prefix none 2>/dev/null \
+    | grep -E '^(yew|web-sys|js-sys|wasm-bindgen|gloo)[ -]' | sort -u || true)
+  if [ -n "$browser" ]; then
+    echo "boundary: $crate depends on the browser: $browser"
+    fail=1
+  fi
+done
+# Calls of the core's parser, solver or simulator (not other functions of those modules, such
+# as the formatters solve::axis_words or solve::fmt_deg).
+calls=$(grep -rnE 'schwenkbar_core::parse\s*\(|schwenkbar_core::(parse|parse_value)\b\s*[,;}]|\b(simulate|solve|solve_block)\s*\(|schwenkbar_core::(sim::simulate|solve::(solve|solve_block))\b' web/src || true)
+if [ -n "$calls" ]; then
+  echo "boundary: web calls parse, solve or simulate (app's job):"
+  echo "$calls"
+  fail=1
+fi
+[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate"
+exit "$fail"
