@@ -138,18 +138,8 @@ fixtures! {
 
 #[test]
 fn every_sim_fixture_has_a_snapshot_test() {
-    let mut files: Vec<String> = std::fs::read_dir(sim_dir())
-        .expect("tests/fixtures/sim")
-        .filter_map(|e| {
-            let path = e.expect("readable entry").path();
-            let stem = path.file_stem()?.to_str()?.to_owned();
-            path.extension().is_some_and(|x| x == "h").then_some(stem)
-        })
-        .collect();
-    files.sort();
-    let mut names: Vec<&str> = NAMES.to_vec();
-    names.sort_unstable();
-    assert_eq!(files, names, "add the new fixture to `fixtures!` (with its machine)");
+    // A new fixture goes into `fixtures!` with its machine.
+    schwenkbar_testkit::assert_one_test_per_program(&sim_dir(), NAMES);
 }
 
 #[test]

@@ -8,6 +8,28 @@
 
 pub mod seq_sym;
 
+use std::path::Path;
+
+/// Asserts that the NC programs in `dir` (`*.h`) are exactly `names` (file stems, any order):
+/// the per-file harnesses list their fixtures by name, so a new file without a test fails here.
+///
+/// # Panics
+/// When `dir` cannot be read or the two lists differ.
+pub fn assert_one_test_per_program(dir: &Path, names: &[&str]) {
+    let mut files: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .filter_map(|e| {
+            let path = e.expect("readable entry").path();
+            let stem = path.file_stem()?.to_str()?.to_owned();
+            path.extension().is_some_and(|x| x == "h").then_some(stem)
+        })
+        .collect();
+    files.sort();
+    let mut names = names.to_vec();
+    names.sort_unstable();
+    assert_eq!(files, names, "{}: every program needs its test (and only those)", dir.display());
+}
+
 /// Asserts |actual − expected| ≤ tol element-wise for f64, arrays, vectors or glam's `DVec3` /
 /// `DMat3` (anything [`Flat`]); on failure prints both values, the largest difference and the
 /// context, which takes `format!` arguments.
@@ -113,6 +135,20 @@ mod tests {
     #[should_panic(expected = "not close")]
     fn nan_fails_whatever_the_tolerance() {
         assert_close!([f64::NAN, 1.0], [0.0, 1.0], f64::INFINITY);
+    }
+
+    #[test]
+    fn every_program_needs_its_test() {
+        let dir = std::env::temp_dir().join(format!("schwenkbar-testkit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for file in ["b.h", "a.h", "notes.txt"] {
+            std::fs::write(dir.join(file), "").unwrap();
+        }
+        assert_one_test_per_program(&dir, &["a", "b"]);
+        let missing = std::panic::catch_unwind(|| assert_one_test_per_program(&dir, &["a"]));
+        let extra = std::panic::catch_unwind(|| assert_one_test_per_program(&dir, &["a", "b", "c"]));
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert!(missing.is_err() && extra.is_err());
     }
 
     #[test]

@@ -161,20 +161,9 @@ fixtures!(err, check_err:
 
 #[test]
 fn every_fixture_file_has_a_test() {
-    for (dir, names) in [("ok", ok::NAMES), ("err", err::NAMES)] {
-        let mut files: Vec<String> = fs::read_dir(fixtures_dir().join(dir))
-            .expect("fixture folder exists")
-            .filter_map(|e| {
-                let path = e.expect("readable entry").path();
-                let stem = path.file_stem()?.to_str()?.to_owned();
-                path.extension().is_some_and(|x| x == "h").then_some(stem)
-            })
-            .collect();
-        files.sort();
-        let mut names = names.to_vec();
-        names.sort_unstable();
-        assert_eq!(files, names, "add the new fixture in {dir}/ to `fixtures!`");
-    }
+    // A new fixture goes into `fixtures!` of its folder.
+    schwenkbar_testkit::assert_one_test_per_program(&fixtures_dir().join("ok"), ok::NAMES);
+    schwenkbar_testkit::assert_one_test_per_program(&fixtures_dir().join("err"), err::NAMES);
 }
 
 #[test]
