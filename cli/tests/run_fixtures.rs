@@ -1,7 +1,8 @@
 //! Every simulator fixture (`tests/fixtures/sim/*.h`) through `schwenkbar run --json`: one test
 //! and one insta snapshot per file (`tests/snapshots/run_fixtures__NAME.snap`), so a change in
 //! what the simulator computes for any block shows up as a reviewed diff. The detailed
-//! assertions on the same programs are in core/tests/sim.rs; these catch everything else.
+//! assertions on the same programs are in core/tests/sim.rs; these also catch changes to the
+//! numbers no assertion names.
 //!
 //! The snapshot is the CLI's JSON as printed (key order kept), one executed block per line, with
 //! every floating-point number written with at most 6 decimals: f64 maths may differ in the last
