@@ -10,6 +10,10 @@ bash scripts/setup.sh
 source scripts/env.sh
 mkdir -p target
 log=target/test-output.log
+# The snapshot tests (insta) fail on a changed or missing snapshot and write nothing: accepting one
+# is a reviewed step (`cargo insta review`), never a side effect of running the tests.
+export INSTA_UPDATE=no
+unset INSTA_FORCE_PASS
 : >"$log"
 
 echo; echo "==> rustfmt --check"

@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use schwenkbar_testkit::assert_close;
+
 fn repo(rel: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join(rel).to_string_lossy().into_owned()
 }
@@ -19,8 +21,9 @@ fn json(o: &Output) -> serde_json::Value {
 /// Tolerance for numbers printed by the CLI (rounded to 1e-9 there).
 const TOL: f64 = 1e-6;
 
-fn close(v: &serde_json::Value, want: f64) -> bool {
-    v.as_f64().is_some_and(|x| (x - want).abs() <= TOL)
+/// The JSON numbers at these places (NaN where there is none, which no tolerance accepts).
+fn nums<const N: usize>(vs: [&serde_json::Value; N]) -> [f64; N] {
+    vs.map(|v| v.as_f64().unwrap_or(f64::NAN))
 }
 
 #[test]
@@ -49,15 +52,20 @@ fn run_json_has_the_issue_shape() {
     assert_eq!(states.len(), 38);
     let s10 = states.iter().find(|s| s["number"] == 10).expect("block 10");
     assert_eq!(s10["block"], "10 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX ; Einschwenken");
-    assert!(close(&s10["axes"]["A"], 15.0) && close(&s10["axes"]["C"], 90.0), "{s10}");
-    assert!(close(&s10["axes"]["X"], -600.0) && close(&s10["axes"]["Z"], 0.0));
-    assert!(close(&s10["plane"]["spatial"][1], 15.0));
-    assert!(close(&s10["plane"]["tool_axis"][0], 15f64.to_radians().sin()));
-    assert!(close(&s10["q"]["120"], 15.0) && close(&s10["q"]["122"], 90.0));
+    let axes = &s10["axes"];
+    assert_close!(
+        nums([&axes["A"], &axes["C"], &axes["X"], &axes["Z"]]),
+        [15.0, 90.0, -600.0, 0.0],
+        TOL,
+        "{s10}"
+    );
+    assert_close!(nums([&s10["plane"]["spatial"][1]]), [15.0], TOL);
+    assert_close!(nums([&s10["plane"]["tool_axis"][0]]), [15f64.to_radians().sin()], TOL);
+    assert_close!(nums([&s10["q"]["120"], &s10["q"]["122"]]), [15.0, 90.0], TOL);
     assert_eq!(s10["tool_tip_wcs"].as_array().map(Vec::len), Some(3));
     let s18 = states.iter().find(|s| s["number"] == 18).expect("block 18");
     assert!(s18["plane"].is_null());
-    assert!(close(&s18["axes"]["A"], 0.0) && close(&s18["axes"]["C"], 0.0));
+    assert_close!(nums([&s18["axes"]["A"], &s18["axes"]["C"]]), [0.0, 0.0], TOL, "{s18}");
     let s13 = states.iter().find(|s| s["number"] == 13).expect("block 13");
     assert!(s13["message"].as_str().is_some_and(|m| m.contains("Cycle 232 executed")), "{s13}");
 }

@@ -1,8 +1,11 @@
 //! `schwenkbar solve` end to end: the seed's two SYM/SEQ tables row by row (DOMAIN.md §10,
-//! oracles 13–27), plus oracles 28–30, the JSON shape of issue 4 and `schwenkbar machines`.
+//! oracles 13–27, from tests/fixtures/oracles/seq_sym.tsv), plus oracles 28–30, the JSON shape
+//! of issue 4 and `schwenkbar machines`.
 
 use std::process::{Command, Output};
 
+use schwenkbar_testkit::assert_close;
+use schwenkbar_testkit::seq_sym::{self, Expect};
 use serde_json::Value;
 
 fn run(args: &[&str]) -> Output {
@@ -28,74 +31,49 @@ fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
 }
 
-/// Expected `chosen` as (axis, value) pairs, or `None` for "Winkel nicht erlaubt".
-type Expect = Option<&'static [(&'static str, f64)]>;
-
-fn check_row(id: u8, machine: &str, start: &str, limit: Option<&str>, block: &str, expect: Expect) {
+/// Runs `solve` and checks the control's answer: the chosen axes within 1e-4 (the oracles'
+/// 4 decimals), or exit code 1 with the refusal's message.
+fn check_row(id: &str, machine: &str, start: &str, limit: Option<&str>, block: &str, expect: &Expect) {
     let (code, j) = solve(machine, start, limit, block);
     match expect {
-        Some(axes) => {
-            assert_eq!(code, 0, "row {id}: {j}");
-            assert_eq!(j["error"], Value::Null, "row {id}");
-            for (axis, value) in axes {
-                let got = num(&j["chosen"][axis]);
-                assert!(
-                    (got - value).abs() < 1e-4,
-                    "row {id}: {axis} = {got}, expected {value} (diff {:e}): {j}",
-                    got - value
-                );
-            }
+        Expect::Chosen(axes) => {
+            assert_eq!(code, 0, "{id}: {j}");
+            assert_eq!(j["error"], Value::Null, "{id}");
+            let got: Vec<f64> = axes.iter().map(|(axis, _)| num(&j["chosen"][axis.to_string()])).collect();
+            let want: Vec<f64> = axes.iter().map(|&(_, v)| v).collect();
+            assert_close!(got, want, 1e-4, "{id}: {axes:?}: {j}");
         }
-        None => {
-            assert_eq!(code, 1, "row {id}: {j}");
-            assert_eq!(j["chosen"], Value::Null, "row {id}");
-            assert_eq!(j["error"], "Winkel nicht erlaubt", "row {id}");
+        Expect::Refused(message) => {
+            assert_eq!(code, 1, "{id}: {j}");
+            assert_eq!(j["chosen"], Value::Null, "{id}");
+            assert_eq!(j["error"], message.as_str(), "{id}");
         }
     }
 }
 
-const POS: Expect = Some(&[("A", 45.0), ("C", 90.0)]);
-const NEG: Expect = Some(&[("A", -45.0), ("C", -90.0)]);
+/// Every row of seq_sym.tsv on `machine`, each of its blocks (the "SYM=SEQ" rows both as SYM
+/// and as SEQ); `count` guards against a table that lost rows.
+fn check_table(machine: &str, count: usize) {
+    let rows: Vec<_> = seq_sym::rows().into_iter().filter(|r| r.machine == machine).collect();
+    assert_eq!(rows.len(), count, "{machine} rows in seq_sym.tsv");
+    for row in rows {
+        for block in row.blocks() {
+            let id = format!("oracle {} ({}): {block}", row.oracle, row.source);
+            check_row(&id, &row.machine, &row.start, row.limit.as_deref(), &block, &row.expect);
+        }
+    }
+}
 
 #[test]
 fn seed_table_c_rotary_table_on_a_tilting_table() {
-    // Seed S2, first example: PLANE SPATIAL SPA+0 SPB+45 SPC+0; the "SYM = SEQ" column is run
-    // both as SEQ and as SYM (symmetry point A0 on this machine).
-    let base = "PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX";
-    let lim = Some("A=-90..10");
-    let rows: [(u8, &str, Option<&str>, &str, Expect); 10] = [
-        (13, "A+0 C+0", None, "", POS),
-        (14, "A+0 C+0", None, "+", POS),
-        (15, "A+0 C+0", None, "-", NEG),
-        (16, "A+0 C-105", None, "", NEG),
-        (17, "A+0 C-105", None, "+", POS),
-        (18, "A+0 C-105", None, "-", NEG),
-        (19, "A+0 C+0", lim, "", NEG),
-        (20, "A+0 C+0", lim, "+", None),
-        (21, "A+0 C+0", lim, "-", NEG),
-        (22, "A+0 C-135", None, "+", POS),
-    ];
-    for (id, start, limit, sign, expect) in rows {
-        if sign.is_empty() {
-            check_row(id, "ac-table", start, limit, base, expect);
-        } else {
-            for word in ["SEQ", "SYM"] {
-                check_row(id, "ac-table", start, limit, &format!("{base} {word}{sign}"), expect);
-            }
-        }
-    }
+    // Seed S2, first example: PLANE SPATIAL SPA+0 SPB+45 SPC+0 from A0 C0 / C−105 / C−135.
+    check_table("ac-table", 10);
 }
 
 #[test]
 fn seed_table_b_rotary_table_on_a_tilting_table() {
     // Seed S2, second example: limits A −100…+180 are the machine's own.
-    let base = "PLANE SPATIAL SPA-45 SPB+0 SPC+0 TURN FMAX";
-    let good: Expect = Some(&[("A", -45.0), ("B", 0.0)]);
-    let rows: [(u8, &str, Expect); 5] =
-        [(23, " SYM+", good), (24, " SYM-", None), (25, " SEQ+", None), (26, " SEQ-", good), (27, "", good)];
-    for (id, opt, expect) in rows {
-        check_row(id, "ba-table", "", None, &format!("{base}{opt}"), expect);
-    }
+    check_table("ba-table", 5);
 }
 
 #[test]
@@ -111,24 +89,14 @@ fn other_kinematics_oracles_28_to_30() {
     c.sort_by(|a, b| b.0.total_cmp(&a.0));
     assert_eq!(c, vec![(45.0, 0.0), (-45.0, 180.0)]);
     // 29: A/C, SPA+45 SPC+90 → A+45 C+90.
-    check_row(29, "ac-table", "", None, "PLANE SPATIAL SPA+45 SPB+0 SPC+90 TURN FMAX SEQ+", POS);
+    let pos = Expect::Chosen(vec![('A', 45.0), ('C', 90.0)]);
+    check_row("oracle 29", "ac-table", "", None, "PLANE SPATIAL SPA+45 SPB+0 SPC+90 TURN FMAX SEQ+", &pos);
     // 30: SPC only: COORD ROT leaves C where it is, TABLE ROT turns C to +45.
-    check_row(
-        30,
-        "ac-table",
-        "A+0 C+10",
-        None,
-        "PLANE SPATIAL SPA+0 SPB+0 SPC+45 STAY COORD ROT",
-        Some(&[("A", 0.0), ("C", 10.0)]),
-    );
-    check_row(
-        30,
-        "ac-table",
-        "A+0 C+10",
-        None,
-        "PLANE SPATIAL SPA+0 SPB+0 SPC+45 STAY TABLE ROT",
-        Some(&[("A", 0.0), ("C", 45.0)]),
-    );
+    for (mode, c) in [("COORD ROT", 10.0), ("TABLE ROT", 45.0)] {
+        let block = format!("PLANE SPATIAL SPA+0 SPB+0 SPC+45 STAY {mode}");
+        let expect = Expect::Chosen(vec![('A', 0.0), ('C', c)]);
+        check_row("oracle 30", "ac-table", "A+0 C+10", None, &block, &expect);
+    }
 }
 
 #[test]

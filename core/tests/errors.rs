@@ -1,7 +1,6 @@
 //! Bad input gives a typed error carrying the numbers (DOMAIN.md §10 oracle 33 and the issue's
 //! list: NaN/inf, zero-length vectors, collinear POINTS, EULNU outside 0…180), never a panic.
 
-#[macro_use]
 mod support;
 
 use glam::DMat3;
@@ -10,6 +9,7 @@ use schwenkbar_core::machine::{Limits, Machine, MachineError};
 use schwenkbar_core::orientation::{self, Context, PlaneError, VectorName};
 use schwenkbar_core::plane::{AxialAngle, PlaneDef, RotaryAxis};
 use schwenkbar_core::solve::{self, SolveError, SolveOptions};
+use schwenkbar_testkit::assert_close;
 use support::{block, spatial};
 
 fn err(def: PlaneDef<f64>) -> PlaneError {

@@ -1,7 +1,6 @@
 //! Machine-specific behaviour beyond the seed oracles: the nutating head, a free head axis with
 //! TABLE ROT, SEQ with both solutions on one side, and the unconfirmed-decision catalogue.
 
-#[macro_use]
 mod support;
 
 use glam::{DMat3, DVec3};
@@ -12,6 +11,7 @@ use schwenkbar_core::orientation;
 use schwenkbar_core::plane::{RotaryAxis, Selection, Sign, TransformMode};
 use schwenkbar_core::solve::{self, KinematicCase, Realisation, Rule, SolveOptions};
 use schwenkbar_core::unconfirmed::Decision;
+use schwenkbar_testkit::assert_close;
 use support::{block, spatial};
 
 #[test]

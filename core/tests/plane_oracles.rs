@@ -4,16 +4,17 @@
 // The oracle numbers are DOMAIN.md's 4-decimal values (0.7071 etc.), kept as printed there.
 #![allow(clippy::approx_constant)]
 
-#[macro_use]
 mod support;
 
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;
-use schwenkbar_core::machine::{Limits, Machine};
+use schwenkbar_core::machine::Machine;
 use schwenkbar_core::orientation::{self, Context};
-use schwenkbar_core::plane::{PlaneDef, RelAxis, RotaryAxis, Selection, Sign, TransformMode};
+use schwenkbar_core::plane::{PlaneDef, RelAxis, RotaryAxis, TransformMode};
 use schwenkbar_core::solve::{self, Exclusion, Explanation, KinematicCase, Realisation, Rule, SolveOptions};
-use support::{block, spatial};
+use schwenkbar_testkit::assert_close;
+use schwenkbar_testkit::seq_sym::{self, Expect};
+use support::{axis_values, block, limits, plane_block, rotary, spatial};
 
 const ORACLE: f64 = 1e-4;
 const EXACT: f64 = 1e-9;
@@ -134,169 +135,107 @@ fn oracles_09_to_12_points_vector_projected() {
 }
 
 // ------------------------------------------------------------------------------------------
-// Oracles 13–27: the seed's two SYM/SEQ tables
+// Oracles 13–27: the seed's two SYM/SEQ tables, read from tests/fixtures/oracles/seq_sym.tsv
 // ------------------------------------------------------------------------------------------
 
-/// Expected outcome of a solve: axis values, or the control's German error message.
-#[derive(Debug)]
-enum Expect {
-    Axes(&'static [(RotaryAxis, f64)]),
-    Error(&'static str),
+/// The table's row of this oracle.
+fn seed_row(oracle: u8) -> seq_sym::Row {
+    seq_sym::rows().into_iter().find(|r| r.oracle == oracle).unwrap_or_else(|| panic!("oracle {oracle}"))
 }
 
-struct Row {
-    id: u8,
-    machine: &'static str,
-    def: PlaneDef<f64>,
-    start: &'static [(RotaryAxis, f64)],
-    limit: Option<(RotaryAxis, f64, f64)>,
-    selection: Option<Selection>,
-    expect: Expect,
-}
-
-fn run(row: &Row) -> Explanation {
-    let machine = Machine::builtin(row.machine).unwrap();
-    let start = row.start.iter().fold(AxisValues::default(), |v, &(a, x)| v.with(a, x));
-    let limits = row.limit.map(|(a, min, max)| vec![(a, Limits { min, max })]).unwrap_or_default();
+/// Solves one of the row's blocks (`row.blocks()`) on the row's machine, start and limit.
+fn solve_row(row: &seq_sym::Row, block_text: &str) -> Explanation {
+    let machine = Machine::builtin(&row.machine).unwrap();
+    let start = axis_values(&row.start_axes());
+    let limits = row.limit_range().map(limits).into_iter().collect();
     let opts = SolveOptions { start, limits, ..SolveOptions::default() };
-    solve::solve_block(&machine, &block(row.def.clone(), row.selection, None), DMat3::IDENTITY, &opts)
-        .unwrap()
+    solve::solve_block(&machine, &plane_block(block_text), DMat3::IDENTITY, &opts).unwrap()
 }
 
-fn check(row: &Row) {
-    let e = run(row);
-    match &row.expect {
-        Expect::Axes(axes) => {
-            let chosen =
-                e.chosen_axes().unwrap_or_else(|| panic!("oracle {}: no solution: {:#?}", row.id, e));
-            assert!(e.error.is_none(), "oracle {}: {:?}", row.id, e.error);
-            for &(axis, value) in *axes {
-                let got = chosen.get(axis).unwrap_or(f64::NAN);
-                assert_close!(got, value, ORACLE, "oracle {} axis {axis}; rule {:?}", row.id, e.rule);
+/// The explanation of oracle `n` with this selection word (`None`: the row has none).
+fn explain(n: u8, selection: Option<&str>) -> Explanation {
+    let row = seed_row(n);
+    let text = row
+        .blocks()
+        .into_iter()
+        .find(|b| selection.is_none_or(|s| b.ends_with(&format!(" {s}"))))
+        .unwrap_or_else(|| panic!("oracle {n} has no block with {selection:?}"));
+    assert_eq!(selection.is_none(), row.selections.is_empty(), "oracle {n}: {text}");
+    solve_row(&row, &text)
+}
+
+/// Every block of the row gives the table's result; the "SYM=SEQ" rows are run with both words.
+fn check(row: &seq_sym::Row) {
+    for text in row.blocks() {
+        let e = solve_row(row, &text);
+        let id = format!("oracle {} ({}): {text}", row.oracle, row.source);
+        match &row.expect {
+            Expect::Chosen(axes) => {
+                let chosen = e.chosen_axes().unwrap_or_else(|| panic!("{id}: no solution: {e:#?}"));
+                assert!(e.error.is_none(), "{id}: {:?}", e.error);
+                for &(letter, value) in axes {
+                    let got = chosen.get(rotary(letter)).unwrap_or(f64::NAN);
+                    assert_close!(got, value, ORACLE, "{id}, axis {letter}; rule {:?}", e.rule);
+                }
             }
-        }
-        Expect::Error(msg) => {
-            assert!(e.chosen.is_none(), "oracle {}: expected error, chose {:?}", row.id, e.chosen_axes());
-            let err = e.error.unwrap_or_else(|| panic!("oracle {}: no error", row.id));
-            assert_eq!(err.message_de(), *msg, "oracle {}", row.id);
-            assert_eq!(e.error_message.map(|t| t.en()), Some("Entered angle not permitted"));
+            Expect::Refused(msg) => {
+                assert!(e.chosen.is_none(), "{id}: expected a refusal, chose {:?}", e.chosen_axes());
+                let err = e.error.unwrap_or_else(|| panic!("{id}: no error"));
+                assert_eq!(err.message_de(), *msg, "{id}");
+                assert_eq!(e.error_message.map(|t| t.en()), Some("Entered angle not permitted"), "{id}");
+            }
         }
     }
 }
 
-use RotaryAxis::{A, B, C};
-const PLUS: Sign = Sign::Plus;
-const MINUS: Sign = Sign::Minus;
-const ANP: &str = "Winkel nicht erlaubt";
-
-fn ac_rows() -> Vec<Row> {
-    let def = spatial(0.0, 45.0, 0.0);
-    let pos = Expect::Axes(&[(A, 45.0), (C, 90.0)]);
-    let neg = || Expect::Axes(&[(A, -45.0), (C, -90.0)]);
-    let lim = Some((A, -90.0, 10.0));
-    let r = |id, start, limit, selection, expect| Row {
-        id,
-        machine: "ac-table",
-        def: def.clone(),
-        start,
-        limit,
-        selection,
-        expect,
-    };
-    let z: &'static [(RotaryAxis, f64)] = &[(A, 0.0), (C, 0.0)];
-    let c105: &'static [(RotaryAxis, f64)] = &[(A, 0.0), (C, -105.0)];
-    // SYM = SEQ on this machine (symmetry point A0); the seed's column means either.
-    vec![
-        r(13, z, None, None, pos),
-        r(14, z, None, Some(Selection::Seq(PLUS)), Expect::Axes(&[(A, 45.0), (C, 90.0)])),
-        r(14, z, None, Some(Selection::Sym(PLUS)), Expect::Axes(&[(A, 45.0), (C, 90.0)])),
-        r(15, z, None, Some(Selection::Seq(MINUS)), neg()),
-        r(15, z, None, Some(Selection::Sym(MINUS)), neg()),
-        r(16, c105, None, None, neg()),
-        r(17, c105, None, Some(Selection::Seq(PLUS)), Expect::Axes(&[(A, 45.0), (C, 90.0)])),
-        r(17, c105, None, Some(Selection::Sym(PLUS)), Expect::Axes(&[(A, 45.0), (C, 90.0)])),
-        r(18, c105, None, Some(Selection::Seq(MINUS)), neg()),
-        r(18, c105, None, Some(Selection::Sym(MINUS)), neg()),
-        r(19, z, lim, None, neg()),
-        r(20, z, lim, Some(Selection::Seq(PLUS)), Expect::Error(ANP)),
-        r(20, z, lim, Some(Selection::Sym(PLUS)), Expect::Error(ANP)),
-        r(21, z, lim, Some(Selection::Seq(MINUS)), neg()),
-        r(21, z, lim, Some(Selection::Sym(MINUS)), neg()),
-        r(
-            22,
-            &[(A, 0.0), (C, -135.0)],
-            None,
-            Some(Selection::Seq(PLUS)),
-            Expect::Axes(&[(A, 45.0), (C, 90.0)]),
-        ),
-    ]
+/// Checks every row of the table on `machine`; `count` guards against a table that lost rows.
+fn check_table(machine: &str, count: usize) {
+    let rows: Vec<_> = seq_sym::rows().into_iter().filter(|r| r.machine == machine).collect();
+    assert_eq!(rows.len(), count, "{machine} rows in seq_sym.tsv");
+    rows.iter().for_each(check);
 }
 
-fn ba_rows() -> Vec<Row> {
-    let def = spatial(-45.0, 0.0, 0.0);
-    let r = |id, selection, expect| Row {
-        id,
-        machine: "ba-table",
-        def: def.clone(),
-        start: &[],
-        limit: None,
-        selection,
-        expect,
-    };
-    let good = || Expect::Axes(&[(A, -45.0), (B, 0.0)]);
-    vec![
-        r(23, Some(Selection::Sym(PLUS)), good()),
-        r(24, Some(Selection::Sym(MINUS)), Expect::Error(ANP)),
-        r(25, Some(Selection::Seq(PLUS)), Expect::Error(ANP)),
-        r(26, Some(Selection::Seq(MINUS)), good()),
-        r(27, None, good()),
-    ]
-}
+use RotaryAxis::{A, C};
 
 #[test]
 fn oracles_13_to_22_c_table_on_a_tilting_table() {
-    for row in ac_rows() {
-        check(&row);
-    }
+    check_table("ac-table", 10);
 }
 
 #[test]
 fn oracles_13_to_22_explanations() {
-    let rows = ac_rows();
-    let by_id = |id: u8| rows.iter().find(|r| r.id == id).unwrap();
     // Both solutions, checked with forward kinematics (DOMAIN.md §10 heading).
-    let e = run(by_id(13));
+    let e = explain(13, None);
     assert_eq!(e.case, KinematicCase::Two);
     assert_close!(e.tool_axis, [0.7071, 0.0, 0.7071], ORACLE);
     assert_close!(e.symmetry_point, 0.0, EXACT, "A/C symmetry point");
     assert_eq!(e.master, A);
-    let masters: Vec<f64> = e.candidates.iter().map(|c| c.master).collect();
-    assert!(
-        masters.iter().any(|m| (m - 45.0).abs() < ORACLE)
-            && masters.iter().any(|m| (m + 45.0).abs() < ORACLE)
-    );
+    let mut masters: Vec<f64> = e.candidates.iter().map(|c| c.master).collect();
+    masters.sort_by(f64::total_cmp);
+    assert_close!(masters, [-45.0, 45.0], ORACLE, "the two masters");
     let machine = Machine::builtin("ac-table").unwrap();
     for c in &e.candidates {
         assert_close!(machine.forward(&c.axes).z_axis, e.tool_axis, EXACT, "forward of {:?}", c.axes);
     }
     // 13: tie 45+90 each, decided by the tie rule.
     assert!(matches!(e.rule, Rule::Tie { master: A }), "{:?}", e.rule);
-    assert!(e.candidates.iter().all(|c| (c.path - 135.0).abs() < ORACLE));
+    let paths: Vec<f64> = e.candidates.iter().map(|c| c.path).collect();
+    assert_close!(paths, [135.0, 135.0], ORACLE, "both paths");
     // 16: C travel 15 vs 195.
-    let e = run(by_id(16));
+    let e = explain(16, None);
     assert_eq!(e.rule, Rule::ShortestPath);
     let mut paths: Vec<f64> = e.candidates.iter().map(|c| c.path).collect();
     paths.sort_by(f64::total_cmp);
     assert_close!([paths[0], paths[1]], [45.0 + 15.0, 45.0 + 195.0], ORACLE);
     // 19: A+45 outside the limits.
-    let e = run(by_id(19));
+    let e = explain(19, None);
     assert_eq!(e.rule, Rule::OnlyInLimits);
     let out = e.candidates.iter().find(|c| !c.in_limits).unwrap();
-    assert!(
-        matches!(out.excluded, Some(Exclusion::OutOfLimits(v)) if v.axis == A && (v.value - 45.0).abs() < ORACLE && v.max == 10.0)
-    );
+    let Some(Exclusion::OutOfLimits(v)) = &out.excluded else { panic!("{:?}", out.excluded) };
+    assert_eq!((v.axis, v.max), (A, 10.0));
+    assert_close!(v.value, 45.0, ORACLE, "A of the excluded candidate");
     // 15: SEQ− text as the UI shows it.
-    let e = run(by_id(15));
+    let e = explain(15, Some("SEQ-"));
     assert_eq!(e.reason.de(), "SEQ−: Master-Achse A muss negativ sein (bezogen auf die Grundstellung 0°)");
     assert_eq!(e.q.q120.map(|a| a.round()), Some(-45.0));
     assert_eq!(e.q.q122.map(|c| c.round()), Some(-90.0));
@@ -305,10 +244,8 @@ fn oracles_13_to_22_explanations() {
 
 #[test]
 fn oracles_23_to_27_b_table_on_a_tilting_table() {
-    for row in ba_rows() {
-        check(&row);
-    }
-    let e = run(&ba_rows()[4]);
+    check_table("ba-table", 5);
+    let e = explain(27, None);
     assert_close!(e.tool_axis, [0.0, 0.7071, 0.7071], ORACLE);
     assert_close!(e.symmetry_point, -90.0, EXACT, "B/A symmetry point");
     let mut sols: Vec<[f64; 2]> = e.candidates.iter().map(|c| [c.master, c.slave.abs()]).collect();

@@ -1,7 +1,6 @@
 //! Property tests per machine: inverse kinematics against forward kinematics, angle round trips,
 //! the mirror symmetry of the two solutions, and "bad input never panics".
 
-#[macro_use]
 mod support;
 
 use glam::DMat3;
@@ -13,6 +12,7 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::orientation::{self, Context};
 use schwenkbar_core::plane::{AxialAngle, PlaneDef, RelAxis, RotaryAxis, Selection, Sign, TransformMode};
 use schwenkbar_core::solve::{self, KinematicCase, SolveOptions};
+use schwenkbar_testkit::assert_close;
 use support::block;
 
 const EXACT: f64 = 1e-9;

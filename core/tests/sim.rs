@@ -5,7 +5,6 @@
 // The oracle numbers are DOMAIN.md's 4-decimal values (0.7071), kept as printed there.
 #![allow(clippy::approx_constant)]
 
-#[macro_use]
 mod support;
 
 use glam::{DMat3, DVec3};
@@ -19,6 +18,7 @@ use schwenkbar_core::sim::{
 };
 use schwenkbar_core::solve::{self, SolveOptions};
 use schwenkbar_core::{Program, parse};
+use schwenkbar_testkit::assert_close;
 use support::{block, spatial};
 
 const EXACT: f64 = 1e-9;

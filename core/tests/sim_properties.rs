@@ -2,14 +2,12 @@
 //! kinematics' forward orientation, the W-CS ↔ linear-axis map round-trips, a MOVE swivel keeps
 //! the tool tip on the workpiece, and no program text makes the simulator panic.
 
-#[macro_use]
-mod support;
-
 use glam::DVec3;
 use proptest::prelude::*;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{Kin, MachineAxes, SegmentKind, SimOptions, simulate};
 use schwenkbar_core::{parse, sample};
+use schwenkbar_testkit::assert_close;
 
 const EXACT: f64 = 1e-9;
 /// The tool tip along a MOVE swivel (issue 5).

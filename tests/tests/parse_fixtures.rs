@@ -1,42 +1,52 @@
-//! Every fixture program under `tests/fixtures/{ok,err}` is a snapshot test (gcode-rs style):
-//! the parse result (blocks, diagnostics) and the formatted text are written to `NAME.snap`
-//! next to the fixture and compared on every run. `UPDATE_SNAPSHOTS=1 cargo test` rewrites them;
-//! a missing snapshot fails the test.
+//! Every fixture program under `tests/fixtures/{ok,err}` is its own test with an insta snapshot
+//! (`tests/snapshots/parse_fixtures__{ok,err}__NAME.snap`) of what the parser makes of it:
+//! the diagnostics as `line:column severity: German | English`, then each block as
+//! `line:column [number as written] canonical text` (the formatter's text without the number it
+//! would give). `cargo insta review` accepts a change; a missing snapshot fails.
 //!
-//! `ok/` programs must give no diagnostics (the as-printed Musterprogramm 1 only its elision
-//! warnings); each `err/NAME.h` has a sidecar `NAME.expect` with `LINE SEVERITY MESSAGE` lines
-//! that must all be among its diagnostics.
+//! Besides the snapshot: `ok/` programs give no diagnostics (the as-printed Musterprogramm 1
+//! only its elision warnings); each `err/NAME.h` has a sidecar `NAME.expect` with
+//! `LINE SEVERITY MESSAGE` lines that must all be among its diagnostics (MESSAGE a part of the
+//! German text); and formatting every fixture is stable.
+//!
+//! Native only: the browser suite compiles this folder for wasm32 too, where there are no files.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::fmt::Write as _;
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use schwenkbar_core::diag::DiagCode;
-use schwenkbar_core::{Lang, format_program, parse};
+use schwenkbar_core::{Block, Lang, Program, format_program, parse};
 use schwenkbar_tests::fixtures_dir;
 
-fn programs(dir: &str) -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = fs::read_dir(fixtures_dir().join(dir))
-        .expect("fixture folder exists")
-        .map(|e| e.expect("readable entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "h"))
-        .collect();
-    v.sort();
-    assert!(!v.is_empty(), "no fixtures in {dir}");
-    v
+fn path(dir: &str, name: &str) -> PathBuf {
+    fixtures_dir().join(dir).join(format!("{name}.h"))
 }
 
-fn snapshot_text(src: &str) -> String {
+fn source(dir: &str, name: &str) -> String {
+    let path = path(dir, name);
+    fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// One block's canonical text without its block number (`format_program` numbers it 0).
+fn canonical(b: &Block) -> String {
+    let text = format_program(&Program { blocks: vec![b.clone()] });
+    let unnumbered = text.strip_prefix('/').unwrap_or(&text).strip_prefix('0');
+    unnumbered.unwrap_or_else(|| panic!("format_program numbers a lone block 0: {text}")).trim().to_owned()
+}
+
+/// The readable snapshot text of a program (see the module docs).
+fn render(src: &str) -> String {
     let (program, diags) = parse(src);
-    let mut s = String::from("--- blocks\n");
-    for b in &program.blocks {
-        let _ = writeln!(s, "{}:{} {:?} {:?} comment={:?}", b.line, b.column, b.number, b.body, b.comment);
+    let mut s = String::from("diagnostics:\n");
+    if diags.is_empty() {
+        s.push_str("  (none)\n");
     }
-    s.push_str("--- diagnostics\n");
     for d in &diags {
         let _ = writeln!(
             s,
-            "{}:{} {}: {} | {}",
+            "  {}:{} {}: {} | {}",
             d.line,
             d.column,
             d.severity.as_str(),
@@ -44,50 +54,121 @@ fn snapshot_text(src: &str) -> String {
             d.message_en
         );
     }
-    s.push_str("--- fmt\n");
-    s.push_str(&format_program(&program));
+    s.push_str("blocks:\n");
+    for b in &program.blocks {
+        let number = b.number.map_or_else(|| "-".to_owned(), |n| n.to_string());
+        let skip = if b.skip { "/" } else { "" };
+        // A cycle definition's `~` lines indented under their block.
+        let text = canonical(b).replace('\n', "\n      ");
+        let _ = writeln!(s, "  {}:{} [{skip}{number}] {text}", b.line, b.column);
+    }
     s
 }
 
-/// Compares with (or, with UPDATE_SNAPSHOTS=1, writes) `NAME.snap`; returns a failure text.
-fn check_snapshot(path: &Path, src: &str) -> Option<String> {
-    let snap = path.with_extension("snap");
-    let actual = snapshot_text(src);
-    if std::env::var_os("UPDATE_SNAPSHOTS").is_some() {
-        fs::write(&snap, &actual).expect("snapshot writable");
-        return None;
-    }
-    match fs::read_to_string(&snap) {
-        Err(_) => Some(format!("{}: snapshot missing (run with UPDATE_SNAPSHOTS=1)", snap.display())),
-        Ok(expected) if expected != actual => Some(format!(
-            "{}: snapshot differs\n--- expected\n{expected}\n--- actual\n{actual}",
-            snap.display()
-        )),
-        Ok(_) => None,
+fn assert_snapshot(dir: &str, name: &str, src: &str) {
+    insta::with_settings!({ description => format!("tests/fixtures/{dir}/{name}.h"), omit_expression => true }, {
+        insta::assert_snapshot!(format!("{dir}__{name}"), render(src));
+    });
+}
+
+/// Formatting twice gives the same text; for `ok/` programs the reformatted program is the
+/// same program up to the renumbering.
+fn assert_formatting_stable(dir: &str, name: &str, src: &str) {
+    let once = format_program(&parse(src).0);
+    let (again, _) = parse(&once);
+    assert_eq!(format_program(&again), once, "{dir}/{name}");
+    if dir == "ok" {
+        let strip =
+            |p: Program| p.blocks.into_iter().map(|b| (b.skip, b.body, b.comment)).collect::<Vec<_>>();
+        assert!(strip(again) == strip(parse(src).0), "{name}: reformatted program differs");
     }
 }
 
-#[test]
-fn ok_fixtures_parse_cleanly_and_match_snapshots() {
-    let mut failures = Vec::new();
-    for path in programs("ok") {
-        let src = fs::read_to_string(&path).expect("fixture readable");
-        let (_, diags) = parse(&src);
-        let as_printed = path.to_string_lossy().contains("as_printed");
-        for d in &diags {
-            let allowed = as_printed && matches!(d.code, DiagCode::CycleParamsElided { .. });
-            if !allowed {
-                failures.push(format!("{}:{}: {}", path.display(), d.line, d.message(Lang::De)));
-            }
-        }
-        failures.extend(check_snapshot(&path, &src));
+fn check_ok(name: &str) {
+    let src = source("ok", name);
+    let (_, diags) = parse(&src);
+    let as_printed = name.contains("as_printed");
+    let unexpected: Vec<String> = diags
+        .iter()
+        .filter(|d| !(as_printed && matches!(d.code, DiagCode::CycleParamsElided { .. })))
+        .map(|d| format!("{}: {}", d.line, d.message(Lang::De)))
+        .collect();
+    assert!(unexpected.is_empty(), "ok/{name}.h:\n{}", unexpected.join("\n"));
+    assert_formatting_stable("ok", name, &src);
+    assert_snapshot("ok", name, &src);
+}
+
+fn check_err(name: &str) {
+    let src = source("err", name);
+    let expect_path = path("err", name).with_extension("expect");
+    let expect =
+        fs::read_to_string(&expect_path).unwrap_or_else(|e| panic!("{}: {e}", expect_path.display()));
+    let (_, diags) = parse(&src);
+    let wanted: Vec<&str> = expect.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert!(!wanted.is_empty(), "err/{name}.expect states no diagnostic");
+    for want in wanted {
+        let mut parts = want.splitn(3, ' ');
+        let (line, sev, msg) = (parts.next(), parts.next(), parts.next().unwrap_or(""));
+        let line: u32 = line.and_then(|l| l.parse().ok()).expect("LINE SEVERITY MESSAGE");
+        let found = diags
+            .iter()
+            .any(|d| d.line == line && Some(d.severity.as_str()) == sev && d.message_de.contains(msg));
+        assert!(found, "err/{name}.h: expected `{want}`, got {diags:#?}");
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_formatting_stable("err", name, &src);
+    assert_snapshot("err", name, &src);
+}
+
+/// One `#[test]` per fixture file, in a module per folder (`ok::paths`, `err::garbage`).
+macro_rules! fixtures {
+    ($dir:ident, $check:ident: $($name:ident),+ $(,)?) => {
+        mod $dir {
+            $(
+                #[test]
+                fn $name() {
+                    super::$check(stringify!($name));
+                }
+            )+
+            /// The fixtures that have a test, for the completeness check.
+            pub const NAMES: &[&str] = &[$(stringify!($name)),+];
+        }
+    };
+}
+
+fixtures!(ok, check_ok:
+    cam_hypermill,
+    cycles_continuation,
+    euler_example,
+    musterprogramm1,
+    musterprogramm1_as_printed,
+    paths,
+    plane_all,
+);
+
+fixtures!(err, check_err:
+    block_numbers,
+    cycle_param_without_value,
+    duplicate_axis,
+    end_pgm_name,
+    eulnu_negative,
+    garbage,
+    propr_90,
+    seq_with_sym,
+    spa_360,
+    spatial_without_spc,
+    word_in_wrong_block,
+);
+
+#[test]
+fn every_fixture_file_has_a_test() {
+    // A new fixture goes into `fixtures!` of its folder.
+    schwenkbar_testkit::assert_one_test_per_program(&fixtures_dir().join("ok"), ok::NAMES);
+    schwenkbar_testkit::assert_one_test_per_program(&fixtures_dir().join("err"), err::NAMES);
 }
 
 #[test]
 fn as_printed_musterprogramm_warns_exactly_about_both_elided_cycles() {
-    let src = fs::read_to_string(fixtures_dir().join("ok/musterprogramm1_as_printed.h")).expect("fixture");
+    let src = source("ok", "musterprogramm1_as_printed");
     let (p, diags) = parse(&src);
     let lines: Vec<(u32, &DiagCode)> = diags.iter().map(|d| (d.line, &d.code)).collect();
     assert_eq!(
@@ -104,7 +185,7 @@ fn as_printed_musterprogramm_warns_exactly_about_both_elided_cycles() {
 #[test]
 fn completed_musterprogramm_has_all_cycle_parameters() {
     use schwenkbar_core::BlockBody;
-    let src = fs::read_to_string(fixtures_dir().join("ok/musterprogramm1.h")).expect("fixture");
+    let src = source("ok", "musterprogramm1");
     let (p, diags) = parse(&src);
     assert!(diags.is_empty(), "{diags:?}");
     let numbers: Vec<Option<u32>> = p.blocks.iter().map(|b| b.number).collect();
@@ -118,50 +199,4 @@ fn completed_musterprogramm_has_all_cycle_parameters() {
     // The shipped copy is the same program.
     let shipped = fixtures_dir().join("../../static/programs/musterprogramm1.h");
     assert_eq!(fs::read_to_string(shipped).expect("static copy"), src);
-}
-
-#[test]
-fn err_fixtures_report_the_stated_diagnostics() {
-    let mut failures = Vec::new();
-    for path in programs("err") {
-        let src = fs::read_to_string(&path).expect("fixture readable");
-        let expect = fs::read_to_string(path.with_extension("expect")).expect("sidecar .expect exists");
-        let (_, diags) = parse(&src);
-        for want in expect.lines().filter(|l| !l.trim().is_empty()) {
-            let mut parts = want.splitn(3, ' ');
-            let (line, sev, msg) = (parts.next(), parts.next(), parts.next().unwrap_or(""));
-            let line: u32 = line.and_then(|l| l.parse().ok()).expect("LINE SEVERITY MESSAGE");
-            let found = diags
-                .iter()
-                .any(|d| d.line == line && Some(d.severity.as_str()) == sev && d.message_de.contains(msg));
-            if !found {
-                failures.push(format!("{}: expected `{want}`, got {:#?}", path.display(), diags));
-            }
-        }
-        failures.extend(check_snapshot(&path, &src));
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
-}
-
-#[test]
-fn formatting_is_stable_for_every_fixture() {
-    for dir in ["ok", "err"] {
-        for path in programs(dir) {
-            let src = fs::read_to_string(&path).expect("fixture readable");
-            let once = format_program(&parse(&src).0);
-            let (again, _) = parse(&once);
-            assert_eq!(format_program(&again), once, "{}", path.display());
-            if dir == "ok" {
-                // Equal up to the renumbering.
-                let strip = |p: schwenkbar_core::Program| {
-                    p.blocks.into_iter().map(|b| (b.skip, b.body, b.comment)).collect::<Vec<_>>()
-                };
-                assert!(
-                    strip(again) == strip(parse(&src).0),
-                    "{}: reformatted program differs",
-                    path.display()
-                );
-            }
-        }
-    }
 }

@@ -1,61 +1,11 @@
-//! Shared test helpers: approx-equality that prints the difference, and block builders.
+//! Block builders shared by core's integration tests. (The approx assertion `assert_close!` and
+//! the SEQ/SYM oracle table are in the workspace's dev crate, `schwenkbar-testkit`.)
 #![allow(dead_code)]
 
-use schwenkbar_core::plane::{PlaneBlock, PlaneDef, Selection, TransformMode};
-
-/// Asserts |actual − expected| ≤ tol element-wise for f64, arrays or nested arrays; on failure
-/// prints both values, the largest difference and the context.
-#[macro_export]
-macro_rules! assert_close {
-    ($actual:expr, $expected:expr, $tol:expr $(, $($ctx:tt)+)?) => {{
-        let a = $crate::support::flat(&$actual);
-        let e = $crate::support::flat(&$expected);
-        assert_eq!(a.len(), e.len(), "shape differs: {:?} vs {:?}", a, e);
-        let diff = a.iter().zip(&e).map(|(x, y)| (x - y).abs()).fold(0.0_f64, |m, d| if d.is_nan() { f64::NAN } else { m.max(d) });
-        assert!(
-            diff <= $tol,
-            "not close{}:\n  actual   {:?}\n  expected {:?}\n  max diff {:e} > tol {:e}",
-            { let _s = String::new(); $( let _s = format!(" ({})", format!($($ctx)+)); )? _s },
-            $actual, $expected, diff, $tol
-        );
-    }};
-}
-
-/// Flattens numbers for [`assert_close!`].
-pub trait Flat {
-    fn flat_into(&self, out: &mut Vec<f64>);
-}
-impl Flat for f64 {
-    fn flat_into(&self, out: &mut Vec<f64>) {
-        out.push(*self);
-    }
-}
-impl<T: Flat, const N: usize> Flat for [T; N] {
-    fn flat_into(&self, out: &mut Vec<f64>) {
-        self.iter().for_each(|x| x.flat_into(out));
-    }
-}
-impl<T: Flat> Flat for Vec<T> {
-    fn flat_into(&self, out: &mut Vec<f64>) {
-        self.iter().for_each(|x| x.flat_into(out));
-    }
-}
-impl Flat for glam::DVec3 {
-    fn flat_into(&self, out: &mut Vec<f64>) {
-        out.extend(self.to_array());
-    }
-}
-impl Flat for glam::DMat3 {
-    /// Row by row, as DOMAIN.md lists matrices.
-    fn flat_into(&self, out: &mut Vec<f64>) {
-        out.extend(self.transpose().to_cols_array());
-    }
-}
-pub fn flat<T: Flat>(x: &T) -> Vec<f64> {
-    let mut v = Vec::new();
-    x.flat_into(&mut v);
-    v
-}
+use schwenkbar_core::axes::AxisValues;
+use schwenkbar_core::machine::Limits;
+use schwenkbar_core::plane::{PlaneBlock, PlaneDef, RotaryAxis, Selection, TransformMode, Value};
+use schwenkbar_core::{BlockBody, parse};
 
 pub fn block(
     def: PlaneDef<f64>,
@@ -67,4 +17,37 @@ pub fn block(
 
 pub fn spatial(spa: f64, spb: f64, spc: f64) -> PlaneDef<f64> {
     PlaneDef::Spatial { spa, spb, spc }
+}
+
+/// The single PLANE block of `src` (a typed block: no block number, which only warns), which
+/// must parse without errors and hold numbers only.
+pub fn plane_block(src: &str) -> PlaneBlock<f64> {
+    let (program, diags) = parse(src);
+    assert!(!diags.iter().any(|d| d.is_error()), "{src}: {diags:?}");
+    match program.blocks.as_slice() {
+        [b] => match &b.body {
+            BlockBody::Plane(p) => p
+                .try_map(|v| match v {
+                    Value::Number(x) => Ok(*x),
+                    Value::Param { index, .. } => Err(*index),
+                })
+                .unwrap_or_else(|q| panic!("{src}: Q{q} has no value here")),
+            other => panic!("{src}: not a PLANE block: {other:?}"),
+        },
+        blocks => panic!("{src}: {} blocks", blocks.len()),
+    }
+}
+
+/// Axis words from the testkit's tables (`('A', 45.0)`) as axis values.
+pub fn axis_values(words: &[(char, f64)]) -> AxisValues {
+    words.iter().fold(AxisValues::default(), |v, &(letter, x)| v.with(rotary(letter), x))
+}
+
+/// A limit from the testkit's tables (`('A', -90.0, 10.0)`).
+pub fn limits((letter, min, max): (char, f64, f64)) -> (RotaryAxis, Limits) {
+    (rotary(letter), Limits { min, max })
+}
+
+pub fn rotary(letter: char) -> RotaryAxis {
+    RotaryAxis::from_letter(&letter.to_string()).unwrap_or_else(|| panic!("{letter}: not a rotary axis"))
 }
