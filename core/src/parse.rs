@@ -4,7 +4,9 @@
 //!
 //! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
 //! continuation lines): the driver splits lines and block headers by hand, the block families
-//! below read the words with nom. No backtracking across lines, so time is linear in the input.
+//! below read their keyword ladders with the small word readers of `words.rs` ([`words::Step`],
+//! [`words::Stop`]; no parser-combinator library, see ARCHITECTURE.md "Parser"). No backtracking
+//! across lines, so time is linear in the input.
 
 mod cycles;
 mod frame;
@@ -21,7 +23,7 @@ use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Severity};
 use crate::plane::Value;
 
-pub(crate) use words::PErr;
+pub(crate) use words::Stop;
 
 /// A finding inside one block, with offsets relative to the block text being read.
 #[derive(Debug)]
@@ -80,21 +82,11 @@ impl Cx {
         None
     }
 
-    /// Converts a nom error into an issue.
-    pub(crate) fn fail<T>(&mut self, e: nom::Err<PErr<'_>>) -> Option<T> {
-        match e {
-            nom::Err::Error(e) | nom::Err::Failure(e) => self.invalid(e.input, e.expected),
-            nom::Err::Incomplete(_) => {
-                let end = self.len;
-                self.issues.push(Issue {
-                    start: end,
-                    end,
-                    severity: Severity::Error,
-                    code: DiagCode::InvalidInput,
-                    expected: None,
-                });
-                None
-            }
+    /// The one conversion of a word reader's stop into the block's diagnostic: the word at
+    /// the stop is labelled, what was expected there becomes the help.
+    pub(crate) fn fail<T>(&mut self, stop: Stop<'_>) -> Option<T> {
+        match stop {
+            Stop::Expected { at, what } | Stop::Cut { at, what } => self.invalid(at, what),
         }
     }
 
