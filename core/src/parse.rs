@@ -467,3 +467,54 @@ pub fn parse_value(text: &str) -> Option<Value> {
         _ => None,
     }
 }
+
+/// Why a text is not one PLANE block (see [`plane_block`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlaneTextError {
+    /// The first error the parser found in the text.
+    Invalid(Box<Diagnostic>),
+    /// No PLANE block in the text.
+    NoPlane,
+    /// More than one PLANE block.
+    SeveralPlanes,
+}
+
+impl PlaneTextError {
+    /// The message in `lang`.
+    #[must_use]
+    pub fn message(&self, lang: crate::Lang) -> &str {
+        match self {
+            PlaneTextError::Invalid(d) => d.message(lang),
+            PlaneTextError::NoPlane => lang.t(
+                "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
+                "No PLANE block found (it starts with PLANE)",
+            ),
+            PlaneTextError::SeveralPlanes => lang.t(
+                "Mehr als ein PLANE-Satz: bitte genau einen",
+                "More than one PLANE block: please exactly one",
+            ),
+        }
+    }
+}
+
+/// The one PLANE block of `text` (a typed answer, a command-line argument, one line of a
+/// program): the first parse error, or no PLANE block, or more than one, is an error. Other
+/// blocks around it are allowed.
+///
+/// # Errors
+/// See [`PlaneTextError`].
+pub fn plane_block(text: &str) -> Result<crate::plane::PlaneBlock, PlaneTextError> {
+    let (program, diags) = parse(text);
+    if let Some(d) = diags.into_iter().find(Diagnostic::is_error) {
+        return Err(PlaneTextError::Invalid(Box::new(d)));
+    }
+    let mut planes = program.blocks.into_iter().filter_map(|b| match b.body {
+        BlockBody::Plane(p) => Some(p),
+        _ => None,
+    });
+    match (planes.next(), planes.next()) {
+        (Some(p), None) => Ok(*p),
+        (None, _) => Err(PlaneTextError::NoPlane),
+        (Some(_), Some(_)) => Err(PlaneTextError::SeveralPlanes),
+    }
+}
