@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use schwenkbar_core::machine::{Machine, Texts};
+use schwenkbar_core::number::tidy;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{Program, parse};
 use serde::Serialize;
@@ -32,8 +33,7 @@ pub(crate) struct Args {
 
 /// Rounds away float noise (1e-9) and `-0` for printing.
 fn num(x: f64) -> f64 {
-    let r = (x * 1e9).round() / 1e9;
-    if r == 0.0 { 0.0 } else { r }
+    tidy(x, 9)
 }
 
 fn pick(t: &Texts, lang: LangArg) -> &str {

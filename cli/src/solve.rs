@@ -7,11 +7,13 @@
 use std::process::ExitCode;
 
 use glam::DMat3;
+use schwenkbar_core::Lang;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::{Limits, Machine};
-use schwenkbar_core::plane::{PlaneBlock, RotaryAxis, Value};
+use schwenkbar_core::number::tidy;
+use schwenkbar_core::parse::{self, PlaneTextError};
+use schwenkbar_core::plane::{PlaneBlock, RotaryAxis};
 use schwenkbar_core::solve::{Explanation, SolveOptions, solve_block};
-use schwenkbar_core::{BlockBody, Lang, parse};
 use serde::Serialize;
 
 use crate::LangArg;
@@ -57,8 +59,7 @@ struct CandidateOut {
 
 /// Rounds away float noise (44.99999999999999 → 45) while keeping 10 decimals.
 fn r(x: f64) -> f64 {
-    let y = (x * 1e10).round() / 1e10;
-    if y == 0.0 { 0.0 } else { y }
+    tidy(x, 10)
 }
 
 fn r_axes(a: AxisValues) -> AxisValues {
@@ -127,21 +128,11 @@ fn machine(id: &str) -> Result<Machine, String> {
 
 /// The single PLANE block of `src`, numbers only.
 fn plane_block(src: &str, lang: Lang) -> Result<PlaneBlock<f64>, String> {
-    let (program, diags) = parse(src);
-    if let Some(d) = diags.iter().find(|d| d.is_error()) {
-        return Err(format!("{}:{}: {}", d.line, d.column, d.message(lang)));
-    }
-    let mut planes = program.blocks.iter().filter_map(|b| match &b.body {
-        BlockBody::Plane(p) => Some(p),
-        _ => None,
-    });
-    let (Some(p), None) = (planes.next(), planes.next()) else {
-        return Err("expected exactly one PLANE block".into());
-    };
-    p.try_map(|v| match v {
-        Value::Number(x) => Ok(*x),
-        Value::Param { index, .. } => Err(format!("Q{index}: Q parameters have no value here")),
-    })
+    let block = parse::plane_block(src).map_err(|e| match e {
+        PlaneTextError::Invalid(d) => format!("{}:{}: {}", d.line, d.column, d.message(lang)),
+        PlaneTextError::NoPlane | PlaneTextError::SeveralPlanes => "expected exactly one PLANE block".into(),
+    })?;
+    block.numbers().map_err(|index| format!("Q{index}: Q parameters have no value here"))
 }
 
 fn fail(msg: &str) -> ExitCode {

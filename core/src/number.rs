@@ -11,6 +11,36 @@
 
 use std::cmp::Ordering;
 
+/// A number as the control writes it in an NC word (`SPB+45`, `A-12.5`, `X+0.001`): the sign
+/// always, at most `decimals` places, trailing zeros dropped, never `-0`. Angles take 4
+/// places ([`crate::solve::fmt_deg`]), course values 3. The canonical program formatter
+/// ([`crate::format`]) writes the shortest exact form instead, so a program reads back
+/// unchanged.
+#[must_use]
+pub fn signed(value: f64, decimals: usize) -> String {
+    let scale = 10f64.powi(i32::try_from(decimals).unwrap_or(i32::MAX));
+    // `+ 0.0` turns a rounded `-0` into `+0`.
+    let s = format!("{:+.*}", decimals, (value * scale).round() / scale + 0.0);
+    let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.') } else { &s };
+    if s == "-0" { "+0".to_owned() } else { s.to_owned() }
+}
+
+/// A signed number with exactly `decimals` places (`+12.500`, `-0.100`), for columns of
+/// figures (the position display); rounds first, so never `-0.000`.
+#[must_use]
+pub fn signed_fixed(value: f64, decimals: usize) -> String {
+    let scale = 10f64.powi(i32::try_from(decimals).unwrap_or(i32::MAX));
+    format!("{:+.*}", decimals, (value * scale).round() / scale + 0.0)
+}
+
+/// `value` rounded to `decimals` places, `-0` as `+0`: takes float noise (44.99999999999999)
+/// out of figures written to JSON or compared as text.
+#[must_use]
+pub fn tidy(value: f64, decimals: i32) -> f64 {
+    let scale = 10f64.powi(decimals);
+    (value * scale).round() / scale + 0.0
+}
+
 /// A number in running text (a message, the why panel), not in an NC word: with a decimal
 /// comma in German ("Weg 105,0°") and a point in English. `decimals` fixes the places; `None`
 /// writes the shortest form that reads back exactly (`359.9999`, `-180`). NC words keep the
@@ -312,6 +342,21 @@ impl Big {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn signed_numbers_are_written_as_the_control_writes_them() {
+        assert_eq!(signed(45.0, 4), "+45");
+        assert_eq!(signed(-12.5, 4), "-12.5");
+        assert_eq!(signed(-0.00001, 4), "+0");
+        assert_eq!(signed(0.0001, 3), "+0");
+        assert_eq!(signed(359.99999, 4), "+360");
+        assert_eq!(signed(1.23456, 3), "+1.235");
+        assert_eq!(signed(7.0, 0), "+7");
+        assert_eq!(signed_fixed(-0.0004, 3), "+0.000");
+        assert_eq!(signed_fixed(12.5, 3), "+12.500");
+        assert_eq!(tidy(44.999_999_999_999_99, 10), 45.0);
+        assert!(tidy(-1e-12, 9).is_sign_positive());
+    }
 
     #[test]
     fn prose_numbers_take_a_decimal_comma_in_german() {

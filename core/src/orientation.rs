@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::angle::{acosd, atan2d, clean, wrap180, wrap360};
 use crate::axes::AxisValues;
 use crate::machine::Machine;
-use crate::plane::{PROJECTED_LIMIT, PlaneDef, RelAxis, RotaryAxis, input_range};
+use crate::plane::{PROJECTED_LIMIT, PlaneDef, RelAxis, RotaryAxis};
 use crate::unconfirmed;
 
 /// Below this (relative) length a vector counts as zero, and below this sine two directions
@@ -305,16 +305,16 @@ pub fn orientation(def: &PlaneDef<f64>, ctx: &Context<'_>) -> Result<DMat3, Plan
 }
 
 /// Checks every word of a PLANE definition: finite, and inside its input range
-/// ([`crate::plane::input_range`], the one table the parser and the dialog use too).
+/// ([`crate::plane::Word::range`], the one table the parser and the dialog use too).
 pub fn validate(def: &PlaneDef<f64>) -> Result<(), PlaneError> {
-    for (word, &value) in def.words() {
+    for (word, &value) in def.values() {
+        let word_text = word.as_str();
         if !value.is_finite() {
-            return Err(PlaneError::NotFinite { word, value });
+            return Err(PlaneError::NotFinite { word: word_text, value });
         }
-        if let Some(r) = input_range(word)
-            && !r.contains(value)
-        {
-            return Err(PlaneError::OutOfRange { word, value, min: r.min, max: r.max });
+        let r = word.range();
+        if !r.contains(value) {
+            return Err(PlaneError::OutOfRange { word: word_text, value, min: r.min, max: r.max });
         }
     }
     Ok(())

@@ -4,7 +4,9 @@
 //!
 //! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
 //! continuation lines): the driver splits lines and block headers by hand, the block families
-//! below read the words with nom. No backtracking across lines, so time is linear in the input.
+//! below read their keyword ladders with the small word readers of `words.rs` ([`words::Step`],
+//! [`words::Stop`]; no parser-combinator library, see ARCHITECTURE.md "Parser"). No backtracking
+//! across lines, so time is linear in the input.
 
 mod cycles;
 mod frame;
@@ -21,7 +23,7 @@ use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Severity};
 use crate::plane::Value;
 
-pub(crate) use words::PErr;
+pub(crate) use words::Stop;
 
 /// A finding inside one block, with offsets relative to the block text being read.
 #[derive(Debug)]
@@ -80,21 +82,11 @@ impl Cx {
         None
     }
 
-    /// Converts a nom error into an issue.
-    pub(crate) fn fail<T>(&mut self, e: nom::Err<PErr<'_>>) -> Option<T> {
-        match e {
-            nom::Err::Error(e) | nom::Err::Failure(e) => self.invalid(e.input, e.expected),
-            nom::Err::Incomplete(_) => {
-                let end = self.len;
-                self.issues.push(Issue {
-                    start: end,
-                    end,
-                    severity: Severity::Error,
-                    code: DiagCode::InvalidInput,
-                    expected: None,
-                });
-                None
-            }
+    /// The one conversion of a word reader's stop into the block's diagnostic: the word at
+    /// the stop is labelled, what was expected there becomes the help.
+    pub(crate) fn fail<T>(&mut self, stop: Stop<'_>) -> Option<T> {
+        match stop {
+            Stop::Expected { at, what } | Stop::Cut { at, what } => self.invalid(at, what),
         }
     }
 
@@ -473,5 +465,56 @@ pub fn parse_value(text: &str) -> Option<Value> {
     match words::value(text) {
         Ok(("", v)) => Some(v),
         _ => None,
+    }
+}
+
+/// Why a text is not one PLANE block (see [`plane_block`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlaneTextError {
+    /// The first error the parser found in the text.
+    Invalid(Box<Diagnostic>),
+    /// No PLANE block in the text.
+    NoPlane,
+    /// More than one PLANE block.
+    SeveralPlanes,
+}
+
+impl PlaneTextError {
+    /// The message in `lang`.
+    #[must_use]
+    pub fn message(&self, lang: crate::Lang) -> &str {
+        match self {
+            PlaneTextError::Invalid(d) => d.message(lang),
+            PlaneTextError::NoPlane => lang.t(
+                "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
+                "No PLANE block found (it starts with PLANE)",
+            ),
+            PlaneTextError::SeveralPlanes => lang.t(
+                "Mehr als ein PLANE-Satz: bitte genau einen",
+                "More than one PLANE block: please exactly one",
+            ),
+        }
+    }
+}
+
+/// The one PLANE block of `text` (a typed answer, a command-line argument, one line of a
+/// program): the first parse error, or no PLANE block, or more than one, is an error. Other
+/// blocks around it are allowed.
+///
+/// # Errors
+/// See [`PlaneTextError`].
+pub fn plane_block(text: &str) -> Result<crate::plane::PlaneBlock, PlaneTextError> {
+    let (program, diags) = parse(text);
+    if let Some(d) = diags.into_iter().find(Diagnostic::is_error) {
+        return Err(PlaneTextError::Invalid(Box::new(d)));
+    }
+    let mut planes = program.blocks.into_iter().filter_map(|b| match b.body {
+        BlockBody::Plane(p) => Some(p),
+        _ => None,
+    });
+    match (planes.next(), planes.next()) {
+        (Some(p), None) => Ok(*p),
+        (None, _) => Err(PlaneTextError::NoPlane),
+        (Some(_), Some(_)) => Err(PlaneTextError::SeveralPlanes),
     }
 }

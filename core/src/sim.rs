@@ -390,6 +390,12 @@ impl Simulation {
         self.records.is_empty()
     }
 
+    /// The first step that executed block `block` (its index in the program), if it ran.
+    #[must_use]
+    pub fn step_of_block(&self, block: usize) -> Option<usize> {
+        self.first_step.get(block).copied().flatten().and_then(|s| usize::try_from(s).ok())
+    }
+
     /// The full state after step `step`, re-simulated from the nearest checkpoint. `program`
     /// must be the program that was simulated (`None` if the block count differs or the step
     /// does not exist).
@@ -433,5 +439,24 @@ impl Simulation {
     #[must_use]
     pub fn segments_at(&self, program: &Program, step: usize) -> Vec<Segment> {
         self.state_at(program, step).map(|s| s.segments).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod step_tests {
+    use super::*;
+
+    #[test]
+    fn step_of_block_is_the_first_step_that_ran_it() {
+        let (program, _) =
+            crate::parse("1 L X+0 R0 FMAX\n2 LBL 1\n3 L X+1 R0 FMAX\n4 CALL LBL 1 REP 1\n5 M30\n");
+        let machine = Machine::builtin("ac-table").expect("shipped");
+        let sim = simulate(&program, &machine, &SimOptions::default());
+        assert_eq!(sim.step_of_block(0), Some(0));
+        assert_eq!(sim.step_of_block(2), Some(2));
+        assert_eq!(sim.step_of_block(99), None);
+        for b in 0..program.blocks.len() {
+            assert_eq!(sim.step_of_block(b), sim.first_step[b].map(|s| s as usize));
+        }
     }
 }

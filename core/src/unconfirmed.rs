@@ -47,7 +47,8 @@ pub enum Decision {
     ResetTarget,
     /// [`UNREACHABLE_IS_SEPARATE_ERROR`]: German text of "Angle cannot be calculated".
     UnreachableMessage,
-    /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`]; RELATIV uses
+    /// [`EULPR_LIMIT`], [`VECTOR_COMPONENT_LIMIT`], [`POINTS_COORD_LIMIT`], [`AXIAL_LIMIT`],
+    /// [`POSITIONING_LENGTH_LIMIT`]; RELATIV uses
     /// the spatial range.
     InputRanges,
     /// Simulator: [`SIM_MESSAGES_UNCONFIRMED`].
@@ -191,8 +192,8 @@ impl Decision {
                 "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
             ),
             Decision::InputRanges => (
-                "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999.",
-                "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999.",
+                "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999; DIST und MB 0…99999,9999 (nicht negativ).",
+                "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999; DIST and MB 0…99999.9999 (not negative).",
             ),
             Decision::SimMessages => (
                 "Meldungstexte des Simulators außer „Winkel nicht erlaubt“ (z. B. „Q-Parameter nicht definiert“, „Endschalter X+“) sind im Stil der Steuerung formuliert, nicht belegt.",
@@ -392,6 +393,14 @@ pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
 /// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
 /// coordinate range ±99999.9999.
 pub const POINTS_COORD_LIMIT: f64 = 99_999.999_9;
+
+/// `DIST` (MOVE) and `MB` (TURN): 0…99999.9999 mm. The manuals call DIST the distance between
+/// the centre of rotation and the tool tip and MB the retraction path in the active tool-axis
+/// direction (TNC 620 user's manual p. 556, DOMAIN.md §4; seed S0 §2.3.3 "Abstand",
+/// "Rückzug"), and the PLANE dialog refuses a negative value; no source prints their input
+/// range or says whether a sign is allowed. **UNCONFIRMED**: not negative, at most the usual
+/// Klartext length ±99999.9999 (TNC 426/430 manual, technical information).
+pub const POSITIONING_LENGTH_LIMIT: f64 = 99_999.999_9;
 
 /// PLANE AXIAL angle limit. **UNCONFIRMED** (DOMAIN.md §5); the machine's limit switches apply
 /// on top of it when the solver positions the axes.

@@ -242,8 +242,8 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
     let is = |w: f64| (v - w).abs() <= VALUE_TOL;
     if is(value) {
         return Verdict::Correct(texts(
-            format!("Richtig: {shown} = {}", super::expected::fmt_value(value)),
-            format!("Correct: {shown} = {}", super::expected::fmt_value(value)),
+            format!("Richtig: {shown} = {}", crate::number::signed(value, 3)),
+            format!("Correct: {shown} = {}", crate::number::signed(value, 3)),
         ));
     }
     if let (Some(e), Some(other)) = (c.decider.as_deref(), c.other_solution())

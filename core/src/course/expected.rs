@@ -139,7 +139,7 @@ pub(super) fn value_exercise(
     let (value, decider) = run_value(&program, machine, number, letter).unwrap_or((f64::NAN, None));
     let sign_flipped = flipped.and_then(|p| run_value(p, machine, number, letter)).map(|(v, _)| v);
     let check = ValueCheck { value, letter, kind, decider: decider.map(Box::new), sign_flipped };
-    let word = |v: f64| format!("{letter}{}", fmt_value(v));
+    let word = |v: f64| format!("{letter}{}", crate::number::signed(v, 3));
     let differs = |v: &f64| (v - value).abs() > super::VALUE_TOL;
     let mistake = if check.is_stay() {
         // The position the block computed, taken for one the axes moved to; or (Q120, RESET
@@ -159,18 +159,11 @@ pub(super) fn value_exercise(
         prompt,
         answer_kind: AnswerKind::Number,
         solution: nc(word(value)),
-        equivalent: nc(fmt_value(value).replace('.', ",")),
+        equivalent: nc(crate::number::signed(value, 3).replace('.', ",")),
         typical_mistake: mistake,
         program: Some((program, machine)),
         check: Check::Value(check),
     }
-}
-
-/// `+12.5`, `-0.001` (three decimals at most, trailing zeros dropped).
-pub(super) fn fmt_value(v: f64) -> String {
-    let s = format!("{:+.3}", (v * 1e3).round() / 1e3 + 0.0);
-    let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_owned() } else { s };
-    if s == "-0" { "+0".to_owned() } else { s }
 }
 
 /// Runs `program` on `machine` and reads `letter` after the first execution of block `number`:
@@ -182,10 +175,7 @@ fn run_value(program: &str, machine: &str, number: u32, letter: char) -> Option<
     let (program, _) = parse(program);
     let sim = simulate(&program, &machine, &SimOptions::default());
     let index = program.blocks.iter().position(|b| b.number == Some(number))?;
-    let state_of = |i: usize| {
-        let step = sim.first_step.get(i).copied().flatten()?;
-        sim.state_at(&program, usize::try_from(step).ok()?)
-    };
+    let state_of = |i: usize| sim.state_at(&program, sim.step_of_block(i)?);
     let decider = (0..=index)
         .rev()
         .filter(|&i| matches!(program.blocks.get(i).map(|b| &b.body), Some(BlockBody::Plane(_))))

@@ -12,7 +12,6 @@ use crate::machine::Texts;
 use crate::orientation::{self, Context};
 use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning};
 use crate::solve::fmt_deg;
-use crate::{BlockBody, parse};
 
 /// What an orientation answer must also get right.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -253,26 +252,13 @@ fn answer_block(answer: &Answer) -> Result<PlaneBlock<f64>, Texts> {
     let Answer::Text(text) = answer else {
         return Err(texts("Hier ist ein PLANE-Satz gefragt", "A PLANE block is asked for here"));
     };
-    let (program, diags) = parse(text.trim());
-    if let Some(d) = diags.iter().find(|d| d.is_error()) {
-        return Err(texts(d.message(crate::Lang::De), d.message(crate::Lang::En)));
-    }
-    let plane = program.blocks.iter().find_map(|b| match &b.body {
-        BlockBody::Plane(p) => Some(p),
-        _ => None,
-    });
-    let Some(plane) = plane else {
-        return Err(texts(
-            "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
-            "No PLANE block found (it starts with PLANE)",
-        ));
-    };
-    plane.try_map(|v| match v {
-        crate::plane::Value::Number(x) => Ok(*x),
-        crate::plane::Value::Param { index, .. } => Err(texts(
+    let block = crate::parse::plane_block(text.trim())
+        .map_err(|e| texts(e.message(crate::Lang::De), e.message(crate::Lang::En)))?;
+    block.numbers().map_err(|index| {
+        texts(
             format!("Q{index} hat hier keinen Wert: bitte Zahlen eingeben"),
             format!("Q{index} has no value here: please enter numbers"),
-        )),
+        )
     })
 }
 

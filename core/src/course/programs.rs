@@ -4,11 +4,12 @@
 
 use glam::DMat3;
 
-use super::expected::{axes_exercise, fmt_value, value_exercise};
+use super::expected::{axes_exercise, value_exercise};
 use super::orientation::TILTS;
 use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def, texts};
 use crate::axes::AxisValues;
 use crate::machine::{Limits, Machine};
+use crate::number::signed;
 use crate::plane::{PlaneBlock, RotaryAxis, Selection, Sign, TransformMode};
 use crate::solve::{SolveError, SolveOptions, axis_words, fmt_deg, solve_block};
 
@@ -292,9 +293,9 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
             let b = if fixed { 30.0 } else { b };
             let with_tilt = |b: f64| {
                 program(&[
-                    format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
+                    format!("TRANS DATUM AXIS X{} Y+50 Z+0", signed(dx, 3)),
                     format!("PLANE SPATIAL SPA+0 SPB{} SPC+0 TURN FMAX", fmt_deg(b)),
-                    format!("L X+0 Y+0 Z{} R0 FMAX", fmt_value(z)),
+                    format!("L X+0 Y+0 Z{} R0 FMAX", signed(z, 3)),
                 ])
             };
             let (text, flipped) = (with_tilt(b), with_tilt(-b));
@@ -316,9 +317,9 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 (rng.pick(&[30.0, 40.0, 50.0, 60.0]), rng.pick(&[10.0, 15.0, 20.0, 25.0]))
             };
             let text = program(&[
-                format!("TRANS DATUM AXIS X{} Y+50 Z+0", fmt_value(dx)),
+                format!("TRANS DATUM AXIS X{} Y+50 Z+0", signed(dx, 3)),
                 "TRANS MIRROR AXIS X".to_owned(),
-                format!("L X{} Y+10 Z+10 R0 FMAX", fmt_value(x)),
+                format!("L X{} Y+10 Z+10 R0 FMAX", signed(x, 3)),
             ]);
             let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
             let prompt = texts(

@@ -4,14 +4,14 @@
 //!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
 
 use super::Cx;
-use super::words::{PResult, failure, keyword, number, quoted, sp, token, uint};
+use super::words::{Step, failure, keyword, number, quoted, sp, token, uint};
 use crate::ast::{BinOp, BlockBody, Expr, Func, Label};
 use crate::diag::DiagCode;
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
 const MAX_DEPTH: u32 = 64;
 
-fn label(i: &str) -> PResult<'_, Label> {
+fn label(i: &str) -> Step<'_, Label> {
     if i.starts_with('"') {
         let (r, name) = quoted(i)?;
         return Ok((r, Label::Name(name.to_owned())));
@@ -111,7 +111,7 @@ struct Budget {
 const MAX_OPS: u32 = 256;
 
 impl Budget {
-    fn bin<'a>(&mut self, at: &'a str, op: BinOp, a: Expr, b: Expr) -> PResult<'a, Expr> {
+    fn bin<'a>(&mut self, at: &'a str, op: BinOp, a: Expr, b: Expr) -> Step<'a, Expr> {
         self.ops += 1;
         if self.ops > MAX_OPS {
             return failure(at, "kürzere Formel");
@@ -120,11 +120,11 @@ impl Budget {
     }
 }
 
-fn expr(i: &str, depth: u32) -> PResult<'_, Expr> {
+fn expr(i: &str, depth: u32) -> Step<'_, Expr> {
     expr_in(i, depth, &mut Budget { ops: 0 })
 }
 
-fn expr_in<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+fn expr_in<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
     let (mut i, mut acc) = term(i, depth, b)?;
     loop {
         let s = sp(i);
@@ -139,7 +139,7 @@ fn expr_in<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
     }
 }
 
-fn term<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+fn term<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
     let (mut i, mut acc) = unary(i, depth, b)?;
     loop {
         let s = sp(i);
@@ -154,7 +154,7 @@ fn term<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
     }
 }
 
-fn unary<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+fn unary<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
     if depth > MAX_DEPTH {
         return failure(i, "weniger Verschachtelung");
     }
@@ -183,7 +183,7 @@ fn unary<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
     Ok((r, base))
 }
 
-fn atom<'a>(i: &'a str, depth: u32, b: &mut Budget) -> PResult<'a, Expr> {
+fn atom<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
     match i.as_bytes().first() {
         Some(b'0'..=b'9' | b'.') => {
             let (r, v) = number(i)?;

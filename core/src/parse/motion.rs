@@ -3,7 +3,7 @@
 //!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
 
 use super::Cx;
-use super::words::{PResult, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
+use super::words::{Step, Stop, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
 use crate::ast::{BlockBody, Line, Motion, PolarWord, RadiusComp};
 use crate::diag::DiagCode;
 use crate::plane::{Feed, Sign, Value};
@@ -22,7 +22,7 @@ struct Words<'a> {
     first_m: Option<&'a str>,
 }
 
-fn polar<'a>(i: &'a str, key: &'static str) -> Option<PResult<'a, PolarWord>> {
+fn polar<'a>(i: &'a str, key: &'static str) -> Option<Step<'a, PolarWord>> {
     let (incremental, rest) = match i.strip_prefix('I') {
         Some(r) => (true, r),
         None => (false, i),
@@ -77,7 +77,7 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
                 i = sp(r);
                 continue;
             }
-            Err(nom::Err::Error(_)) => {}
+            Err(Stop::Expected { .. }) => {}
             Err(e) => return cx.fail(e),
         }
         let (r, ok) = if i.starts_with('F') {

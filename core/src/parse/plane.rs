@@ -2,45 +2,45 @@
 //!   plane := PLANE def [MOVE [DIST v] [feed] | TURN [MB v|MB MAX] [feed] | STAY] [SEQ±|SYM±] [COORD ROT|TABLE ROT]
 //!   def   := SPATIAL SPA SPB SPC | PROJECTED PROPR PROMIN ROT | EULER EULPR EULNU EULROT | VECTOR BX…NZ | POINTS P1X…P3Z | RELATIV SPA|SPB|SPC | AXIAL {[I]A|B|C} | RESET
 
-use super::Cx;
 use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
+use super::{Cx, Stop};
 use crate::ast::{Axis, BlockBody};
 use crate::diag::DiagCode;
 use crate::plane::{
-    AxialAngle, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, TransformMode,
-    Value, input_range,
+    AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection,
+    TransformMode, Value, Word, check,
 };
 
-/// `KEY value` that must be there; checks a written number against [`input_range`].
-fn mandatory<'a>(cx: &mut Cx, i: &'a str, key: &'static str) -> Option<(&'a str, Value)> {
+/// `KEY value` that must be there; checks a written number with [`check`].
+fn mandatory<'a>(cx: &mut Cx, i: &'a str, word: Word) -> Option<(&'a str, Value)> {
     let i = sp(i);
-    let Some(after) = i.strip_prefix(key) else {
+    let Some(after) = i.strip_prefix(word.as_str()) else {
         let len = i.find([' ', '\t']).unwrap_or(i.len());
-        cx.error(i, len, DiagCode::MissingWord { word: key });
+        cx.error(i, len, DiagCode::MissingWord { word: word.as_str() });
         return None;
     };
     let (rest, v) = match word_value(sp(after)) {
         Ok(ok) => ok,
         Err(e) => return cx.fail(e),
     };
-    if let (Some(r), Value::Number(x)) = (input_range(key), v)
-        && !r.contains(x)
-    {
-        let (word, value, min, max) = (key, x, r.min, r.max);
-        let code = if r.angle {
-            DiagCode::AngleNotPermitted { word, value, min, max }
-        } else {
-            DiagCode::ValueOutOfRange { word, value, min, max }
-        };
-        cx.error(i, i.len() - rest.len(), code);
-    }
+    checked(cx, word, v, i, rest);
     Some((rest, v))
 }
 
-fn triple<'a>(cx: &mut Cx, i: &'a str, keys: [&'static str; 3]) -> Option<(&'a str, [Value; 3])> {
-    let (i, a) = mandatory(cx, i, keys[0])?;
-    let (i, b) = mandatory(cx, i, keys[1])?;
-    let (i, c) = mandatory(cx, i, keys[2])?;
+/// Reports a written number outside the input range of `word`; the span runs from the word at
+/// `at` to `rest`, where its value ends. Q parameters are checked when the program runs.
+fn checked(cx: &mut Cx, word: Word, v: Value, at: &str, rest: &str) {
+    if let Value::Number(x) = v
+        && let Err(code) = check(word, x)
+    {
+        cx.error(at, at.len() - rest.len(), code);
+    }
+}
+
+fn triple<'a>(cx: &mut Cx, i: &'a str, words: [Word; 3]) -> Option<(&'a str, [Value; 3])> {
+    let (i, a) = mandatory(cx, i, words[0])?;
+    let (i, b) = mandatory(cx, i, words[1])?;
+    let (i, c) = mandatory(cx, i, words[2])?;
     Some((i, [a, b, c]))
 }
 
@@ -49,23 +49,23 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
     let i = sp(rest);
     const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
     let (i, def) = if let Some(r) = keyword(i, "SPATIAL") {
-        let (r, [spa, spb, spc]) = triple(cx, r, ["SPA", "SPB", "SPC"])?;
+        let (r, [spa, spb, spc]) = triple(cx, r, [Word::Spa, Word::Spb, Word::Spc])?;
         (r, PlaneDef::Spatial { spa, spb, spc })
     } else if let Some(r) = keyword(i, "PROJECTED") {
-        let (r, propr) = mandatory(cx, r, "PROPR")?;
-        let (r, promin) = mandatory(cx, r, "PROMIN")?;
-        let (r, rot) = mandatory(cx, r, "ROT")?;
+        let (r, propr) = mandatory(cx, r, Word::Propr)?;
+        let (r, promin) = mandatory(cx, r, Word::Promin)?;
+        let (r, rot) = mandatory(cx, r, Word::Rot)?;
         (r, PlaneDef::Projected { propr, promin, rot })
     } else if let Some(r) = keyword(i, "EULER") {
-        let (r, eulpr) = mandatory(cx, r, "EULPR")?;
-        let (r, eulnu) = mandatory(cx, r, "EULNU")?;
-        let (r, eulrot) = mandatory(cx, r, "EULROT")?;
+        let (r, eulpr) = mandatory(cx, r, Word::Eulpr)?;
+        let (r, eulnu) = mandatory(cx, r, Word::Eulnu)?;
+        let (r, eulrot) = mandatory(cx, r, Word::Eulrot)?;
         (r, PlaneDef::Euler { eulpr, eulnu, eulrot })
     } else if let Some(r) = keyword(i, "VECTOR") {
         let at = sp(r);
-        let (r, base) = triple(cx, r, ["BX", "BY", "BZ"])?;
+        let (r, base) = triple(cx, r, [Word::Bx, Word::By, Word::Bz])?;
         let at_n = sp(r);
-        let (r, normal) = triple(cx, r, ["NX", "NY", "NZ"])?;
+        let (r, normal) = triple(cx, r, [Word::Nx, Word::Ny, Word::Nz])?;
         for (word, v, at) in [("B", base, at), ("N", normal, at_n)] {
             if v.iter().all(|x| matches!(x, Value::Number(n) if *n == 0.0)) {
                 cx.error(at, 2, DiagCode::ZeroVector { word });
@@ -73,16 +73,16 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
         }
         (r, PlaneDef::Vector { base, normal })
     } else if let Some(r) = keyword(i, "POINTS") {
-        let (r, p1) = triple(cx, r, ["P1X", "P1Y", "P1Z"])?;
-        let (r, p2) = triple(cx, r, ["P2X", "P2Y", "P2Z"])?;
-        let (r, p3) = triple(cx, r, ["P3X", "P3Y", "P3Z"])?;
+        let (r, p1) = triple(cx, r, [Word::P1x, Word::P1y, Word::P1z])?;
+        let (r, p2) = triple(cx, r, [Word::P2x, Word::P2y, Word::P2z])?;
+        let (r, p3) = triple(cx, r, [Word::P3x, Word::P3y, Word::P3z])?;
         (r, PlaneDef::Points { p1, p2, p3 })
     } else if let Some(r) = keyword(i, "RELATIV") {
         let r = sp(r);
         let (key, axis) = match r.get(..3) {
-            Some("SPA") => ("SPA", RelAxis::Spa),
-            Some("SPB") => ("SPB", RelAxis::Spb),
-            Some("SPC") => ("SPC", RelAxis::Spc),
+            Some("SPA") => (Word::Spa, RelAxis::Spa),
+            Some("SPB") => (Word::Spb, RelAxis::Spb),
+            Some("SPC") => (Word::Spc, RelAxis::Spc),
             _ => {
                 cx.error(r, r.find(' ').unwrap_or(r.len()), DiagCode::MissingWord { word: "SPA|SPB|SPC" });
                 return None;
@@ -112,7 +112,7 @@ fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
                 i = sp(rest);
                 w
             }
-            Err(nom::Err::Error(_)) => break,
+            Err(Stop::Expected { .. }) => break,
             Err(e) => return cx.fail(e),
         };
         let axis = match w.axis {
@@ -150,6 +150,7 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             if let Some(after) = r.strip_prefix("DIST") {
                 match word_value(sp(after)) {
                     Ok((rr, v)) => {
+                        checked(cx, Word::Dist, v, r, rr);
                         dist = Some(v);
                         r = sp(rr);
                     }
@@ -169,6 +170,7 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
                 } else {
                     match word_value(after) {
                         Ok((rr, v)) => {
+                            checked(cx, Word::Mb, v, r, rr);
                             move_back = Some(MoveBack::Dist(v));
                             r = sp(rr);
                         }
@@ -244,10 +246,15 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
 }
 
 /// An optional feed after MOVE/TURN.
-fn opt_feed<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, Option<crate::plane::Feed>)> {
+fn opt_feed<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, Option<Feed>)> {
     match feed(r) {
-        Ok((rest, f)) => Some((rest, Some(f))),
-        Err(nom::Err::Error(_)) => Some((r, None)),
+        Ok((rest, f)) => {
+            if let Feed::Value(v) = f {
+                checked(cx, Word::F, v, r, rest);
+            }
+            Some((rest, Some(f)))
+        }
+        Err(Stop::Expected { .. }) => Some((r, None)),
         Err(e) => cx.fail(e),
     }
 }

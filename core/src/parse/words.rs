@@ -2,49 +2,49 @@
 //!   value  := [+|-] ( Q<digits> | <digits>[.<digits>] | .<digits> )
 //!   feed   := FMAX | F MAX | F AUTO | F value
 
-use nom::bytes::complete::{tag, take_while, take_while1};
-use nom::error::{ContextError, ErrorKind, ParseError};
-use nom::{IResult, Parser};
-
 use crate::plane::{Feed, Sign, Value};
 
-/// The parser error: where it stopped and, if known, what it wanted there.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct PErr<'a> {
-    pub input: &'a str,
-    pub expected: Option<&'static str>,
+/// Why a word reader stopped: where, and what it wanted there (if it can say).
+///
+/// `Expected` is recoverable: the word is not there, the caller may try another one.
+/// `Cut` is hard: the word started but is malformed, no alternative can help.
+/// [`super::Cx::fail`] turns either into the block's one diagnostic.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Stop<'a> {
+    Expected { at: &'a str, what: Option<&'static str> },
+    Cut { at: &'a str, what: Option<&'static str> },
 }
 
-impl<'a> ParseError<&'a str> for PErr<'a> {
-    fn from_error_kind(input: &'a str, _kind: ErrorKind) -> Self {
-        PErr { input, expected: None }
-    }
-
-    fn append(_input: &'a str, _kind: ErrorKind, other: Self) -> Self {
-        other
-    }
-}
-
-impl<'a> ContextError<&'a str> for PErr<'a> {
-    fn add_context(_input: &'a str, ctx: &'static str, mut other: Self) -> Self {
-        // The innermost context is the most precise one.
-        if other.expected.is_none() {
-            other.expected = Some(ctx);
+impl<'a> Stop<'a> {
+    /// The same stop as a hard one (the word has begun, so its absence is an error).
+    pub(crate) fn cut(self) -> Self {
+        match self {
+            Stop::Expected { at, what } | Stop::Cut { at, what } => Stop::Cut { at, what },
         }
-        other
     }
 }
 
-pub(crate) type PResult<'a, T> = IResult<&'a str, T, PErr<'a>>;
+/// One step of a word reader: the rest of the input and what was read, or where it stopped.
+pub(crate) type Step<'a, T> = Result<(&'a str, T), Stop<'a>>;
 
-/// A recoverable error at `input` naming what was expected.
-pub(crate) fn expected<'a, T>(input: &'a str, what: &'static str) -> PResult<'a, T> {
-    Err(nom::Err::Error(PErr { input, expected: Some(what) }))
+/// A recoverable stop at `at` naming what was expected.
+pub(crate) fn expected<'a, T>(at: &'a str, what: &'static str) -> Step<'a, T> {
+    Err(Stop::Expected { at, what: Some(what) })
 }
 
-/// A hard error (no alternative can help) at `input`.
-pub(crate) fn failure<'a, T>(input: &'a str, what: &'static str) -> PResult<'a, T> {
-    Err(nom::Err::Failure(PErr { input, expected: Some(what) }))
+/// A hard stop (no alternative can help) at `at`.
+pub(crate) fn failure<'a, T>(at: &'a str, what: &'static str) -> Step<'a, T> {
+    Err(Stop::Cut { at, what: Some(what) })
+}
+
+/// The longest non-empty prefix of ASCII bytes matching `f`; a nameless recoverable stop if
+/// there is none.
+fn ascii_run(i: &str, f: impl Fn(&u8) -> bool) -> Step<'_, &str> {
+    match i.bytes().position(|b| !f(&b)).unwrap_or(i.len()) {
+        0 => Err(Stop::Expected { at: i, what: None }),
+        // Only ASCII bytes matched, so `n` is a char boundary.
+        n => Ok((&i[n..], &i[..n])),
+    }
 }
 
 fn is_blank(c: char) -> bool {
@@ -68,8 +68,8 @@ pub(crate) fn keyword<'a>(i: &'a str, kw: &'static str) -> Option<&'a str> {
 }
 
 /// Unsigned decimal integer (block numbers, M functions, cycle numbers).
-pub(crate) fn uint(i: &str) -> PResult<'_, u32> {
-    let (rest, digits) = take_while1(|c: char| c.is_ascii_digit()).parse(i)?;
+pub(crate) fn uint(i: &str) -> Step<'_, u32> {
+    let (rest, digits) = ascii_run(i, u8::is_ascii_digit)?;
     match digits.parse::<u32>() {
         Ok(v) => Ok((rest, v)),
         Err(_) => failure(i, "Zahl 0…4294967295"),
@@ -77,7 +77,7 @@ pub(crate) fn uint(i: &str) -> PResult<'_, u32> {
 }
 
 /// A number as the control writes it: optional sign, optional leading or trailing dot.
-pub(crate) fn number(i: &str) -> PResult<'_, f64> {
+pub(crate) fn number(i: &str) -> Step<'_, f64> {
     let b = i.as_bytes();
     let mut n = usize::from(matches!(b.first(), Some(b'+' | b'-')));
     let start = n;
@@ -104,7 +104,7 @@ pub(crate) fn number(i: &str) -> PResult<'_, f64> {
 }
 
 /// A number or a Q parameter (`+Q27`, `-Q120`).
-pub(crate) fn value(i: &str) -> PResult<'_, Value> {
+pub(crate) fn value(i: &str) -> Step<'_, Value> {
     let (after_sign, negate) = match i.as_bytes().first() {
         Some(b'-') => (&i[1..], true),
         Some(b'+') => (&i[1..], false),
@@ -121,17 +121,17 @@ pub(crate) fn value(i: &str) -> PResult<'_, Value> {
 }
 
 /// A value that must end its word (`SPA+0 ` but not `SPA+0X`).
-pub(crate) fn word_value(i: &str) -> PResult<'_, Value> {
+pub(crate) fn word_value(i: &str) -> Step<'_, Value> {
     let (rest, v) = value(i)?;
     if at_boundary(rest) { Ok((rest, v)) } else { failure(rest, "Leerzeichen") }
 }
 
-/// `FMAX`, `F MAX`, `F AUTO` or `F` value. Returns `Error` (not `Failure`) if no `F` is there.
-pub(crate) fn feed(i: &str) -> PResult<'_, Feed> {
+/// `FMAX`, `F MAX`, `F AUTO` or `F` value. Stops with `Expected` (not `Cut`) if no `F` is there.
+pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
     if let Some(rest) = keyword(i, "FMAX") {
         return Ok((rest, Feed::Max));
     }
-    let Ok((after_f, _)) = tag::<_, _, PErr<'_>>("F").parse(i) else {
+    let Some(after_f) = i.strip_prefix('F') else {
         return expected(i, "F");
     };
     let spaced = sp(after_f);
@@ -143,22 +143,20 @@ pub(crate) fn feed(i: &str) -> PResult<'_, Feed> {
     }
     match word_value(after_f) {
         Ok((rest, v)) => Ok((rest, Feed::Value(v))),
-        Err(nom::Err::Error(e)) => {
-            Err(nom::Err::Failure(PErr { input: e.input, expected: Some("F…|FMAX|F AUTO") }))
-        }
+        Err(Stop::Expected { at, .. }) => Err(Stop::Cut { at, what: Some("F…|FMAX|F AUTO") }),
         Err(e) => Err(e),
     }
 }
 
 /// `M` followed by digits, as one word.
-pub(crate) fn m_function(i: &str) -> PResult<'_, u32> {
-    let (rest, _) = tag("M").parse(i)?;
+pub(crate) fn m_function(i: &str) -> Step<'_, u32> {
+    let Some(rest) = i.strip_prefix('M') else { return Err(Stop::Expected { at: i, what: None }) };
     let (rest, m) = uint(rest)?;
     if at_boundary(rest) { Ok((rest, m)) } else { failure(rest, "Leerzeichen") }
 }
 
 /// `+` or `-` directly after a word (`DR+`, `SEQ-`).
-pub(crate) fn sign(i: &str) -> PResult<'_, Sign> {
+pub(crate) fn sign(i: &str) -> Step<'_, Sign> {
     match i.as_bytes().first() {
         Some(b'+') => Ok((&i[1..], Sign::Plus)),
         Some(b'-') => Ok((&i[1..], Sign::Minus)),
@@ -167,18 +165,18 @@ pub(crate) fn sign(i: &str) -> PResult<'_, Sign> {
 }
 
 /// A run of upper-case letters (the key of a word).
-pub(crate) fn letters(i: &str) -> PResult<'_, &str> {
-    take_while1(|c: char| c.is_ascii_uppercase()).parse(i)
+pub(crate) fn letters(i: &str) -> Step<'_, &str> {
+    ascii_run(i, u8::is_ascii_uppercase)
 }
 
 /// Everything up to the next blank (a name, a path).
-pub(crate) fn token(i: &str) -> PResult<'_, &str> {
-    let (rest, t) = take_while(|c: char| !is_blank(c)).parse(i)?;
-    if t.is_empty() { expected(i, "Name") } else { Ok((rest, t)) }
+pub(crate) fn token(i: &str) -> Step<'_, &str> {
+    let n = i.find([' ', '\t']).unwrap_or(i.len());
+    if n == 0 { expected(i, "Name") } else { Ok((&i[n..], &i[..n])) }
 }
 
 /// A `"quoted"` name.
-pub(crate) fn quoted(i: &str) -> PResult<'_, &str> {
+pub(crate) fn quoted(i: &str) -> Step<'_, &str> {
     let Some(inner) = i.strip_prefix('"') else { return expected(i, "\"Name\"") };
     match inner.find('"') {
         Some(end) => Ok((&inner[end + 1..], &inner[..end])),
@@ -186,8 +184,8 @@ pub(crate) fn quoted(i: &str) -> PResult<'_, &str> {
     }
 }
 
-/// An axis word `[I]X±v`; `Error` if the input does not start with an axis letter.
-pub(crate) fn axis_word(i: &str) -> PResult<'_, crate::ast::AxisWord> {
+/// An axis word `[I]X±v`; `Expected` if the input does not start with an axis letter.
+pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
     let (incremental, rest) = match i.strip_prefix('I') {
         Some(r) => (true, r),
         None => (false, i),
@@ -200,10 +198,6 @@ pub(crate) fn axis_word(i: &str) -> PResult<'_, crate::ast::AxisWord> {
     if after.as_bytes().first().is_none_or(|b| b.is_ascii_alphabetic()) {
         return expected(i, "Achse");
     }
-    let (rest, value) = match word_value(after) {
-        Ok(ok) => ok,
-        Err(nom::Err::Error(e)) => return Err(nom::Err::Failure(e)),
-        Err(e) => return Err(e),
-    };
+    let (rest, value) = word_value(after).map_err(Stop::cut)?;
     Ok((rest, crate::ast::AxisWord { axis, value, incremental }))
 }

@@ -1,6 +1,5 @@
 //! Axis values and options written as the control writes them (`A-45`, `C+90`, `SEQ−`).
 
-use crate::angle::clean;
 use crate::axes::AxisValues;
 use crate::plane::{RotaryAxis, Selection, Sign};
 
@@ -19,9 +18,7 @@ pub fn axis_words(axes: &AxisValues) -> String {
 /// A signed angle with up to 4 decimals, trailing zeros dropped: `+90`, `-45`, `+12.5`.
 #[must_use]
 pub fn fmt_deg(value: f64) -> String {
-    let s = format!("{:+.4}", clean((value * 1e4).round() / 1e4));
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "+0".to_string() } else { s.to_string() }
+    crate::number::signed(value, 4)
 }
 
 pub(super) fn selection_word(sel: Selection) -> String {
