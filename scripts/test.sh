@@ -19,6 +19,9 @@ unset INSTA_FORCE_PASS
 echo; echo "==> rustfmt --check"
 cargo fmt --all -- --check
 
+echo; echo "==> crate boundaries (scripts/boundary.sh)"
+bash scripts/boundary.sh
+
 echo; echo "==> clippy (warnings are errors)"
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 

@@ -6,24 +6,14 @@
 //! Values are checked with the core's own rules (`plane::input_range`, `parse::parse_value`), so
 //! the dialog and the parser can never disagree about what is allowed.
 
+use schwenkbar_core::diag::DiagCode;
 use schwenkbar_core::format::plane_text;
 use schwenkbar_core::parse::parse_value;
-use schwenkbar_core::plane::{Feed, MoveBack, RelAxis, Selection, Sign, TransformMode, Value, input_range};
+use schwenkbar_core::plane::{
+    self, Feed, MoveBack, PlaneKind, RelAxis, Selection, Sign, TransformMode, Value, Word,
+};
 
 use crate::i18n::Text;
-
-/// The eight PLANE functions of the softkey row.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Function {
-    Spatial,
-    Projected,
-    Euler,
-    Vector,
-    Points,
-    Relativ,
-    Axial,
-    Reset,
-}
 
 mod block;
 mod fields;
@@ -33,38 +23,26 @@ mod tests;
 pub use fields::Field;
 use fields::{AXIAL, EULER, POINTS, PROJECTED, RELATIV, SPATIAL, VECTOR, t};
 
-impl Function {
-    pub const ALL: [Function; 8] = [
-        Function::Spatial,
-        Function::Projected,
-        Function::Euler,
-        Function::Vector,
-        Function::Points,
-        Function::Relativ,
-        Function::Axial,
-        Function::Reset,
-    ];
-
-    /// The values asked before the positioning behaviour, in the control's order.
-    #[must_use]
-    pub fn fields(self) -> &'static [Field] {
-        match self {
-            Function::Spatial => &SPATIAL,
-            Function::Projected => &PROJECTED,
-            Function::Euler => &EULER,
-            Function::Vector => &VECTOR,
-            Function::Points => &POINTS,
-            Function::Relativ => &RELATIV,
-            Function::Axial => &AXIAL,
-            Function::Reset => &[],
-        }
+/// The values a PLANE function asks before the positioning behaviour, in the control's order
+/// (the prompts of [`PlaneKind::words`]; RELATIV's one angle is written with the chosen axis).
+#[must_use]
+pub fn fields(function: PlaneKind) -> &'static [Field] {
+    match function {
+        PlaneKind::Spatial => &SPATIAL,
+        PlaneKind::Projected => &PROJECTED,
+        PlaneKind::Euler => &EULER,
+        PlaneKind::Vector => &VECTOR,
+        PlaneKind::Points => &POINTS,
+        PlaneKind::Relativ => &RELATIV,
+        PlaneKind::Axial => &AXIAL,
+        PlaneKind::Reset => &[],
     }
+}
 
-    /// SEQ/SYM and COORD ROT/TABLE ROT: not for AXIAL (unambiguous, DOMAIN.md §2.7) nor RESET.
-    #[must_use]
-    pub fn has_solution_options(self) -> bool {
-        !matches!(self, Function::Axial | Function::Reset)
-    }
+/// SEQ/SYM and COORD ROT/TABLE ROT: not for AXIAL (unambiguous, DOMAIN.md §2.7) nor RESET.
+#[must_use]
+pub fn has_solution_options(function: PlaneKind) -> bool {
+    !matches!(function, PlaneKind::Axial | PlaneKind::Reset)
 }
 
 /// Where the dialog stands.
@@ -131,12 +109,12 @@ pub type Message = Text;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Dialog {
-    pub function: Function,
+    pub function: PlaneKind,
     pub step: Step,
     /// What is being typed at the current prompt.
     pub input: String,
     pub rel_axis: RelAxis,
-    /// Entered values of `function.fields()`, `None` = skipped with NO ENT (optional ones only).
+    /// Entered values of [`fields`]`(function)`, `None` = skipped with NO ENT (optional ones only).
     pub values: Vec<Option<Value>>,
     /// PLANE AXIAL: which of A, B, C is incremental (`IA…`, typed with a leading `I`).
     pub incremental: [bool; 3],
@@ -160,10 +138,10 @@ const MSG_SEQ_SYM: Text = t("SEQ und SYM schließen sich aus", "SEQ and SYM excl
 impl Dialog {
     /// Opens the dialog for `function` (the function softkey).
     #[must_use]
-    pub fn new(function: Function) -> Dialog {
+    pub fn new(function: PlaneKind) -> Dialog {
         let step = match function {
-            Function::Relativ => Step::RelAxis,
-            Function::Reset => Step::Positioning,
+            PlaneKind::Relativ => Step::RelAxis,
+            PlaneKind::Reset => Step::Positioning,
             _ => Step::Value(0),
         };
         Dialog {
@@ -187,21 +165,22 @@ impl Dialog {
     #[must_use]
     pub fn field(&self) -> Option<&'static Field> {
         match self.step {
-            Step::Value(i) => self.function.fields().get(i),
+            Step::Value(i) => fields(self.function).get(i),
             _ => None,
         }
     }
 
-    /// The NC word of the current prompt (`SPB`, `DIST`, `MB`, `F`), for the dialog line.
+    /// The NC word of the current prompt (`SPB`, `DIST`, `MB`, `F`), for the dialog line and
+    /// the input range.
     #[must_use]
-    pub fn word(&self) -> &'static str {
+    pub fn word(&self) -> Option<Word> {
         match self.step {
-            Step::Value(_) if self.function == Function::Relativ => rel_word(self.rel_axis),
-            Step::Value(_) => self.field().map_or("", |f| f.word),
-            Step::Dist => "DIST",
-            Step::MoveBack => "MB",
-            Step::Feed => "F",
-            Step::RelAxis | Step::Positioning | Step::Selection | Step::Transform => "",
+            Step::Value(_) if self.function == PlaneKind::Relativ => Some(rel_word(self.rel_axis)),
+            Step::Value(_) => self.field().map(|f| f.word),
+            Step::Dist => Some(Word::Dist),
+            Step::MoveBack => Some(Word::Mb),
+            Step::Feed => Some(Word::F),
+            Step::RelAxis | Step::Positioning | Step::Selection | Step::Transform => None,
         }
     }
 
@@ -432,7 +411,8 @@ impl Dialog {
     /// name: the softkey itself. Without this a reopened `MB MAX` or `FMAX` would be dropped.
     fn softkey_word(&self) -> Option<Key> {
         let typed = self.input.trim().to_ascii_uppercase();
-        let word = typed.strip_prefix(self.word()).unwrap_or(&typed).trim_start();
+        let prefix = self.word().map_or("", Word::as_str);
+        let word = typed.strip_prefix(prefix).unwrap_or(&typed).trim_start();
         match (self.step, word) {
             (Step::MoveBack, "MAX") => Some(Key::MbMax),
             (Step::Feed, "MAX") => Some(Key::FMax),
@@ -446,30 +426,25 @@ impl Dialog {
     fn typed(&self) -> (String, bool) {
         let text = self.input.trim().replace(',', ".");
         match text.strip_prefix(['I', 'i']) {
-            Some(rest) if self.function == Function::Axial && matches!(self.step, Step::Value(_)) => {
+            Some(rest) if self.function == PlaneKind::Axial && matches!(self.step, Step::Value(_)) => {
                 (rest.trim_start().to_owned(), true)
             }
             _ => (text, false),
         }
     }
 
-    /// Reads the typed value and checks it against the word's input range.
+    /// Reads the typed value and checks it as the parser does (`plane::check`: the one input
+    /// range table); the dialog line says it in the control's short words.
     fn checked_value(&self) -> Result<Value, Message> {
         let (typed, _) = self.typed();
         let value = parse_value(&typed).ok_or(MSG_INVALID)?;
-        if let (Value::Number(x), Some(range)) = (value, input_range(self.word())) {
-            if !range.contains(x) {
-                return Err(if range.angle {
+        if let (Value::Number(x), Some(word)) = (value, self.word()) {
+            plane::check(word, x).map_err(|code| match code {
+                DiagCode::AngleNotPermitted { .. } => {
                     t("Winkel nicht erlaubt", "Entered angle not permitted")
-                } else {
-                    t("Eingabewert außerhalb des Bereichs", "Input value out of range")
-                });
-            }
-        }
-        if matches!(self.step, Step::Dist | Step::MoveBack | Step::Feed)
-            && matches!(value, Value::Number(x) if x < 0.0)
-        {
-            return Err(t("Eingabewert falsch: nicht negativ", "Invalid input: must not be negative"));
+                }
+                _ => t("Eingabewert außerhalb des Bereichs", "Input value out of range"),
+            })?;
         }
         Ok(value)
     }
@@ -495,9 +470,9 @@ impl Dialog {
 
     fn advance(&mut self) -> Outcome {
         let next = match self.step {
-            Step::Value(i) if i + 1 < self.function.fields().len() => Step::Value(i + 1),
+            Step::Value(i) if i + 1 < fields(self.function).len() => Step::Value(i + 1),
             Step::Value(_) => {
-                if self.function == Function::Axial && self.values.iter().all(Option::is_none) {
+                if self.function == PlaneKind::Axial && self.values.iter().all(Option::is_none) {
                     self.goto(Step::Value(0));
                     return self.fail(MSG_AXIAL_EMPTY);
                 }
@@ -513,11 +488,11 @@ impl Dialog {
 
     /// After the positioning values: SEQ/SYM if the function has them, else the block is done.
     fn after_positioning(&self) -> Step {
-        if self.function.has_solution_options() { Step::Selection } else { Step::Transform }
+        if has_solution_options(self.function) { Step::Selection } else { Step::Transform }
     }
 
     fn finish_if_done(&mut self) -> Outcome {
-        if self.step == Step::Transform && !self.function.has_solution_options() {
+        if self.step == Step::Transform && !has_solution_options(self.function) {
             return self.finish();
         }
         Outcome::Continue
@@ -597,12 +572,8 @@ impl Dialog {
     }
 }
 
-fn rel_word(axis: RelAxis) -> &'static str {
-    match axis {
-        RelAxis::Spa => "SPA",
-        RelAxis::Spb => "SPB",
-        RelAxis::Spc => "SPC",
-    }
+fn rel_word(axis: RelAxis) -> Word {
+    PlaneKind::Relativ.words(axis)[0]
 }
 
 /// A value as the trainee would type it again (no `+`).

@@ -75,7 +75,7 @@ mod tests {
 
     #[test]
     fn dialog_keys_and_browser_shortcuts() {
-        let s = AppState::default().then(Action::Function(crate::dialog::Function::Spatial));
+        let s = AppState::default().then(Action::Function(schwenkbar_core::plane::PlaneKind::Spatial));
         assert_eq!(action(&s, &press("5")), Some(Action::DialogKey(Key::Char('5'))));
         assert_eq!(
             action(&s, &KeyPress { key: "Enter", shift: true, ctrl_or_alt: false }),

@@ -2,7 +2,8 @@
 //! a fixed isometric view, as SVG line coordinates (pure; the component only draws them).
 
 use glam::{DMat3, DVec3};
-use schwenkbar_core::orientation::{Context, orientation};
+use schwenkbar_core::orientation::{Context, orientation, to_spatial};
+use schwenkbar_core::parse::plane_block;
 use schwenkbar_core::plane::PlaneDef;
 
 /// A line in SVG user space with its CSS class.
@@ -48,6 +49,16 @@ pub fn strokes(r: &DMat3) -> Vec<Stroke> {
 #[must_use]
 pub fn orientation_of(def: &PlaneDef<f64>, active: DMat3) -> Option<DMat3> {
     orientation(def, &Context { active, ..Context::default() }).ok()
+}
+
+/// The spatial angles `[SPA, SPB, SPC]` of the PLANE block in `text` (any form the orientation
+/// maths reads without a machine), rounded to the control's 4 decimals, or `None` when it has
+/// none (not one readable PLANE block, a Q parameter, PLANE AXIAL).
+#[must_use]
+pub fn block_angles(text: &str) -> Option<[f64; 3]> {
+    let block = plane_block(text).ok()?.numbers().ok()?;
+    let r = orientation(&block.def, &Context::default()).ok()?;
+    Some(to_spatial(&r).map(|a| (a * 1e4).round() / 1e4 + 0.0))
 }
 
 #[cfg(test)]

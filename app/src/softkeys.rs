@@ -3,7 +3,9 @@
 
 use schwenkbar_core::machine::Machine;
 
-use crate::dialog::{Function, Key};
+use schwenkbar_core::plane::PlaneKind;
+
+use crate::dialog::Key;
 use crate::i18n::{Lang, Text};
 use crate::samples::SAMPLES;
 use crate::state::{Action, AppState, SoftkeyLevel};
@@ -37,16 +39,16 @@ fn back(lang: Lang) -> Option<Softkey> {
 /// The label of a PLANE function softkey (DOMAIN.md §7; labels other than SPATIAL/RESET
 /// UNCONFIRMED).
 #[must_use]
-pub fn function_label(f: Function) -> &'static str {
+pub fn function_label(f: PlaneKind) -> &'static str {
     match f {
-        Function::Spatial => "SPATIAL",
-        Function::Projected => "PROJECTED",
-        Function::Euler => "EULER",
-        Function::Vector => "VECTOR",
-        Function::Points => "POINTS",
-        Function::Relativ => "REL. SPA.",
-        Function::Axial => "AXIAL",
-        Function::Reset => "RESET",
+        PlaneKind::Spatial => "SPATIAL",
+        PlaneKind::Projected => "PROJECTED",
+        PlaneKind::Euler => "EULER",
+        PlaneKind::Vector => "VECTOR",
+        PlaneKind::Points => "POINTS",
+        PlaneKind::Relativ => "REL. SPA.",
+        PlaneKind::Axial => "AXIAL",
+        PlaneKind::Reset => "RESET",
     }
 }
 
@@ -164,7 +166,7 @@ pub fn row(state: &AppState) -> Row {
             None,
             back(l),
         ],
-        SoftkeyLevel::TiltPlane => Function::ALL.map(|f| {
+        SoftkeyLevel::TiltPlane => PlaneKind::ALL.map(|f| {
             let label = function_label(f);
             key(
                 &format!("fn-{}", label.to_ascii_lowercase().replace([' ', '.'], "")),

@@ -9,7 +9,9 @@ use std::rc::Rc;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::{BlockBody, edit};
 
-use crate::dialog::{Dialog, Function, Key, Outcome};
+use schwenkbar_core::plane::PlaneKind;
+
+use crate::dialog::{Dialog, Key, Outcome};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::run::{Run, SPEEDS, SimRef};
@@ -117,7 +119,7 @@ pub enum Action {
     /// Softkey `BEARB.-EBENE SCHWENKEN`.
     TiltPlane,
     /// A PLANE function softkey: opens its dialog.
-    Function(Function),
+    Function(PlaneKind),
     /// A key while the dialog is open (ENT, NO ENT, END, digits, dialog softkeys).
     DialogKey(Key),
     /// `DEL`/Esc: aborts the dialog without inserting anything.

@@ -8,7 +8,7 @@ use schwenkbar_core::BlockBody;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{localise, prose, prose_vec};
-use schwenkbar_core::plane::{PlaneBlock, RotaryAxis, Value};
+use schwenkbar_core::plane::{PlaneBlock, RotaryAxis};
 use schwenkbar_core::sim::{Simulation, State};
 use schwenkbar_core::solve::{Explanation, SolveOptions, axis_words, fmt_deg, solve_block};
 
@@ -35,16 +35,6 @@ pub struct PlaneWhy {
     pub assumptions: Vec<String>,
 }
 
-/// A PLANE block whose values are all numbers (Q parameters are known only while running).
-fn numeric(block: &PlaneBlock) -> Option<PlaneBlock<f64>> {
-    block
-        .try_map(|v| match v {
-            Value::Number(x) => Ok(*x),
-            Value::Param { .. } => Err(()),
-        })
-        .ok()
-}
-
 /// Explains a PLANE block on `machine`, with the rotary axes starting at `opts.start` and the
 /// tilt active before it `active` (identity when nothing is tilted).
 #[must_use]
@@ -55,7 +45,7 @@ pub fn explain_plane(
     opts: &SolveOptions,
     l: Lang,
 ) -> PlaneWhy {
-    let Some(block) = numeric(block) else {
+    let Ok(block) = block.numbers() else {
         return PlaneWhy {
             error: Some(
                 l.t(
@@ -114,8 +104,8 @@ pub fn for_block(
     }
     let from_sim = shown.filter(|s| s.block == index).cloned().or_else(|| {
         let sim = sim?;
-        let step = sim.first_step.get(index).copied().flatten()?;
-        sim.state_at(program, step as usize)
+        let step = sim.step_of_block(index)?;
+        sim.state_at(program, step)
     });
     match from_sim.and_then(|s| s.explanation) {
         Some(e) => Some(from_explanation(&e, l)),
@@ -268,13 +258,9 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use schwenkbar_core::parse;
 
     fn plane(text: &str) -> PlaneBlock {
-        match parse(text).0.blocks.into_iter().next().map(|b| b.body) {
-            Some(BlockBody::Plane(p)) => *p,
-            other => panic!("not a PLANE block: {other:?}"),
-        }
+        schwenkbar_core::parse::plane_block(text).expect("a PLANE block")
     }
 
     #[test]

@@ -445,6 +445,18 @@ pub enum PlaneKind {
 }
 
 impl PlaneKind {
+    /// The eight functions in the order of the control's softkey row.
+    pub const ALL: [PlaneKind; 8] = [
+        PlaneKind::Spatial,
+        PlaneKind::Projected,
+        PlaneKind::Euler,
+        PlaneKind::Vector,
+        PlaneKind::Points,
+        PlaneKind::Relativ,
+        PlaneKind::Axial,
+        PlaneKind::Reset,
+    ];
+
     /// The word after `PLANE` (`SPATIAL`, `RELATIV`).
     #[must_use]
     pub fn as_str(self) -> &'static str {
@@ -599,6 +611,30 @@ impl<V: Clone> PlaneDef<V> {
 }
 
 impl RelAxis {
+    /// The three in the order A, B, C (about X, Y, Z).
+    pub const ALL: [RelAxis; 3] = [RelAxis::Spa, RelAxis::Spb, RelAxis::Spc];
+
+    /// The W-CS axis the spatial angle turns about (SPA about X, SPB about Y, SPC about Z;
+    /// DOMAIN.md §2.1): `X`, `Y` or `Z`.
+    #[must_use]
+    pub fn about(self) -> &'static str {
+        match self {
+            RelAxis::Spa => "X",
+            RelAxis::Spb => "Y",
+            RelAxis::Spc => "Z",
+        }
+    }
+
+    /// The unit vector of [`RelAxis::about`].
+    #[must_use]
+    pub fn unit(self) -> glam::DVec3 {
+        match self {
+            RelAxis::Spa => glam::DVec3::X,
+            RelAxis::Spb => glam::DVec3::Y,
+            RelAxis::Spc => glam::DVec3::Z,
+        }
+    }
+
     /// `SPA`, `SPB` or `SPC`.
     #[must_use]
     pub fn word(self) -> &'static str {

@@ -126,7 +126,10 @@ async fn state_survives_a_reload_and_a_corrupt_saved_state_falls_back() {
     // state record.
     set_saved("s2;cursor=");
     let broken = mount().await;
-    assert_eq!(text(&broken, ".dialog-line"), "The saved state was corrupt: cursor and machine reset, program kept");
+    assert_eq!(
+        text(&broken, ".dialog-line"),
+        "The saved state was corrupt: cursor and machine reset, program kept"
+    );
     assert!(
         program_lines(&broken).first().is_some_and(|l| l.contains("BEGIN PGM X MM")),
         "the saved program is kept beside a corrupt state"

@@ -6,7 +6,7 @@
 //! Feeding the view from the simulator (`components::view3d::View3d` takes `machine`, `state`,
 //! `toolpath`; every prop has a default):
 //! ```text
-//! let sim = simulate(&program, &machine, &SimOptions::default());
+//! let sim = schwenkbar_app::run::SimRef::of(&program, &machine).0;  // app simulates
 //! let run = from_sim::toolpath(&sim, &program);                  // once per run
 //! let st = sim.state_at(&program, step)?;                         // the block shown
 //! let mut state = from_sim::scene_state(&machine, &st);           // or, while animating a

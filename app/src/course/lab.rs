@@ -6,10 +6,10 @@ use glam::DMat3;
 use schwenkbar_core::course::SeedRow;
 use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::number::parse_input;
+use schwenkbar_core::parse::{PlaneTextError, plane_block};
 use schwenkbar_core::plane::PlaneBlock;
 use schwenkbar_core::plane::{Selection, Sign, Value};
 use schwenkbar_core::solve::{Explanation, SolveOptions, fmt_deg, solve_block};
-use schwenkbar_core::{BlockBody, parse};
 
 use crate::i18n::{Lang, Text};
 use crate::why::{PlaneWhy, explain_plane};
@@ -94,18 +94,12 @@ impl LabForm {
             |what: &str| format!("{}: {what}", l.t("Eingabe nicht lesbar", "Cannot read the entry"));
         let machine = Machine::builtin(&self.machine).map_err(|_| unreadable(&self.machine))?;
         let text = format!("{} {}", self.block.trim(), self.option);
-        let (program, diags) = parse(text.trim());
-        if let Some(d) = diags.iter().find(|d| d.is_error()) {
-            return Err(d.message(l).to_owned());
-        }
-        let block = program
-            .blocks
-            .iter()
-            .find_map(|b| match &b.body {
-                BlockBody::Plane(p) => Some(p.clone()),
-                _ => None,
-            })
-            .ok_or_else(|| l.t("Bitte einen PLANE-Satz eingeben", "Please enter a PLANE block").to_owned())?;
+        let block = plane_block(text.trim()).map_err(|e| match e {
+            PlaneTextError::NoPlane => {
+                l.t("Bitte einen PLANE-Satz eingeben", "Please enter a PLANE block").to_owned()
+            }
+            e => e.message(l).to_owned(),
+        })?;
         let mut opts = SolveOptions::default();
         for (joint, value) in machine.joints().iter().zip(&self.start) {
             opts.start.set(joint.axis, parse_input(value).ok_or_else(|| unreadable(value))?);
@@ -126,7 +120,7 @@ impl LabForm {
                 }
             }
         }
-        Ok((machine, *block, opts))
+        Ok((machine, block, opts))
     }
 
     /// Everything the bench shows for this set-up: the "why" texts, and for the 3D view and the
@@ -135,13 +129,8 @@ impl LabForm {
     pub fn bench(&self, l: Lang) -> Result<Bench, String> {
         let (machine, block, opts) = self.setup(l)?;
         let why = explain_plane(&block, &machine, DMat3::IDENTITY, &opts, l);
-        let explanation = block
-            .try_map(|v| match v {
-                Value::Number(x) => Ok(*x),
-                Value::Param { .. } => Err(()),
-            })
-            .ok()
-            .and_then(|b| solve_block(&machine, &b, DMat3::IDENTITY, &opts).ok());
+        let explanation =
+            block.numbers().ok().and_then(|b| solve_block(&machine, &b, DMat3::IDENTITY, &opts).ok());
         Ok(Bench { why, machine, explanation, opts })
     }
 }

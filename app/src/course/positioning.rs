@@ -32,10 +32,10 @@ pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>
             let doc = Rc::new(Document::new((*text).to_owned()));
             let sim = machine.as_ref().map(|m| SimRef::of(&doc.program, m));
             let index = doc.program.blocks.iter().position(|b| b.number == Some(block));
-            let state = sim.as_ref().zip(index).and_then(|(s, i)| {
-                let step = s.0.first_step.get(i).copied().flatten()?;
-                s.0.state_at(&doc.program, step as usize).map(Rc::new)
-            });
+            let state = sim
+                .as_ref()
+                .zip(index)
+                .and_then(|(s, i)| s.0.state_at(&doc.program, s.0.step_of_block(i)?).map(Rc::new));
             Pane { name, doc, sim, state }
         })
         .collect();
@@ -44,22 +44,22 @@ pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>
 
 #[cfg(test)]
 mod tests {
-    use schwenkbar_core::axes::AxisValues;
-
     use super::*;
     use crate::course::lessons::{self, Widget};
 
     #[test]
     fn lesson_4s_panes_swivel_move_and_turn_but_stay_keeps_the_axes() {
         let lesson = lessons::lesson(3).expect("lesson 4");
-        let Widget::Positioning { programs, block } = lesson.widget else { panic!("lesson 4 compares MOVE/TURN/STAY") };
+        let Widget::Positioning { programs, block } = lesson.widget else {
+            panic!("lesson 4 compares MOVE/TURN/STAY")
+        };
         let (machine, panes) = panes(programs, block);
         assert!(machine.is_some());
         let rotary = |p: &Pane| p.state.as_ref().map(|s| s.axes.rotary).expect("state after the PLANE block");
         let names: Vec<_> = panes.iter().map(|p| p.name).collect();
         assert_eq!(names, ["MOVE", "TURN", "STAY"]);
         assert_eq!(rotary(&panes[0]), rotary(&panes[1]), "MOVE and TURN end on the same axes");
-        assert_ne!(rotary(&panes[0]), rotary(&panes[2]));
-        assert_eq!(rotary(&panes[2]).a.unwrap_or(0.0), AxisValues::default().a.unwrap_or(0.0), "STAY does not swivel");
+        assert_ne!(rotary(&panes[0]), [0.0, 0.0], "MOVE swivels");
+        assert_eq!(rotary(&panes[2]), [0.0, 0.0], "STAY does not swivel");
     }
 }

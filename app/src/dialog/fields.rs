@@ -3,19 +3,21 @@
 //! iTNC 530 German user manual's (PLANE EULER, input parameters) and confirmed; the other German
 //! prompts are ours, UNCONFIRMED.
 
+use schwenkbar_core::plane::Word;
+
 use crate::i18n::Text;
 
 /// One value the dialog asks for.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Field {
     /// The NC word (`SPA`), also the key for the input range.
-    pub word: &'static str,
+    pub word: Word,
     pub prompt: Text,
     pub help: Text,
     pub required: bool,
 }
 
-const fn field(word: &'static str, prompt: Text, help: Text) -> Field {
+const fn field(word: Word, prompt: Text, help: Text) -> Field {
     Field { word, prompt, help, required: true }
 }
 
@@ -25,7 +27,7 @@ pub(super) const fn t(de: &'static str, en: &'static str) -> Text {
 
 pub(super) const SPATIAL: [Field; 3] = [
     field(
-        "SPA",
+        Word::Spa,
         t("Raumwinkel A?", "Spatial angle A?"),
         t(
             "Drehung um die maschinenfeste X-Achse, −359,9999…+359,9999°. Positiv: Daumen der rechten Hand in +X, die Finger zeigen die Drehrichtung.",
@@ -33,7 +35,7 @@ pub(super) const SPATIAL: [Field; 3] = [
         ),
     ),
     field(
-        "SPB",
+        Word::Spb,
         t("Raumwinkel B?", "Spatial angle B?"),
         t(
             "Drehung um die maschinenfeste Y-Achse, −359,9999…+359,9999°. Positiv kippt die Werkzeugachse von +Z nach +X.",
@@ -41,7 +43,7 @@ pub(super) const SPATIAL: [Field; 3] = [
         ),
     ),
     field(
-        "SPC",
+        Word::Spc,
         t("Raumwinkel C?", "Spatial angle C?"),
         t(
             "Drehung um die maschinenfeste Z-Achse, −359,9999…+359,9999°. Alle drei Raumwinkel sind Pflicht, auch wenn sie 0 sind.",
@@ -52,7 +54,7 @@ pub(super) const SPATIAL: [Field; 3] = [
 
 pub(super) const PROJECTED: [Field; 3] = [
     field(
-        "PROPR",
+        Word::Propr,
         t("Proj.-Winkel 1. Koordinatenebene?", "Proj. angle 1st coordinate plane?"),
         t(
             "Winkel der Ebene in der Z/X-Ebene (0°-Achse = X), −89,9999…+89,9999°.",
@@ -60,7 +62,7 @@ pub(super) const PROJECTED: [Field; 3] = [
         ),
     ),
     field(
-        "PROMIN",
+        Word::Promin,
         t("Proj.-Winkel 2. Koordinatenebene?", "Proj. angle 2nd coordinate plane?"),
         t(
             "Winkel der Ebene in der Y/Z-Ebene (0°-Achse = Y), −89,9999…+89,9999°.",
@@ -68,7 +70,7 @@ pub(super) const PROJECTED: [Field; 3] = [
         ),
     ),
     field(
-        "ROT",
+        Word::Rot,
         t("ROT-Winkel der geschwenkten Ebene?", "ROT angle of the tilted plane?"),
         t(
             "Drehung um die geschwenkte Werkzeugachse, 0…360°.",
@@ -79,7 +81,7 @@ pub(super) const PROJECTED: [Field; 3] = [
 
 pub(super) const EULER: [Field; 3] = [
     field(
-        "EULPR",
+        Word::Eulpr,
         t("Drehw. Haupt-Koordinatenebene?", "Rot. angle main coordinate plane?"),
         t(
             "Präzession: Drehung um die ungeschwenkte Z-Achse, −180…+180°.",
@@ -87,7 +89,7 @@ pub(super) const EULER: [Field; 3] = [
         ),
     ),
     field(
-        "EULNU",
+        Word::Eulnu,
         t("Schwenkwinkel Werkzeug-Achse?", "Tilting angle tool axis?"),
         t(
             "Nutation: Drehung um die gedrehte X-Achse, 0…180°.",
@@ -95,7 +97,7 @@ pub(super) const EULER: [Field; 3] = [
         ),
     ),
     field(
-        "EULROT",
+        Word::Eulrot,
         t("ROT-Winkel der geschw. Ebene?", "ROT angle of the tilted plane?"),
         t(
             "Rotation: Drehung um die geschwenkte Z-Achse, richtet die geschwenkte X-Achse aus, 0…360°.",
@@ -104,7 +106,7 @@ pub(super) const EULER: [Field; 3] = [
     ),
 ];
 
-const fn vec_field(word: &'static str, prompt: Text) -> Field {
+const fn vec_field(word: Word, prompt: Text) -> Field {
     field(
         word,
         prompt,
@@ -116,15 +118,15 @@ const fn vec_field(word: &'static str, prompt: Text) -> Field {
 }
 
 pub(super) const VECTOR: [Field; 6] = [
-    vec_field("BX", t("X-Komponente Basisvektor?", "X component of base vector?")),
-    vec_field("BY", t("Y-Komponente Basisvektor?", "Y component of base vector?")),
-    vec_field("BZ", t("Z-Komponente Basisvektor?", "Z component of base vector?")),
-    vec_field("NX", t("X-Komponente Normalenvektor?", "X component of normal vector?")),
-    vec_field("NY", t("Y-Komponente Normalenvektor?", "Y component of normal vector?")),
-    vec_field("NZ", t("Z-Komponente Normalenvektor?", "Z component of normal vector?")),
+    vec_field(Word::Bx, t("X-Komponente Basisvektor?", "X component of base vector?")),
+    vec_field(Word::By, t("Y-Komponente Basisvektor?", "Y component of base vector?")),
+    vec_field(Word::Bz, t("Z-Komponente Basisvektor?", "Z component of base vector?")),
+    vec_field(Word::Nx, t("X-Komponente Normalenvektor?", "X component of normal vector?")),
+    vec_field(Word::Ny, t("Y-Komponente Normalenvektor?", "Y component of normal vector?")),
+    vec_field(Word::Nz, t("Z-Komponente Normalenvektor?", "Z component of normal vector?")),
 ];
 
-const fn point_field(word: &'static str, prompt: Text) -> Field {
+const fn point_field(word: Word, prompt: Text) -> Field {
     field(
         word,
         prompt,
@@ -136,19 +138,19 @@ const fn point_field(word: &'static str, prompt: Text) -> Field {
 }
 
 pub(super) const POINTS: [Field; 9] = [
-    point_field("P1X", t("X-Koordinate 1. Ebenenpunkt?", "X coordinate 1st plane point?")),
-    point_field("P1Y", t("Y-Koordinate 1. Ebenenpunkt?", "Y coordinate 1st plane point?")),
-    point_field("P1Z", t("Z-Koordinate 1. Ebenenpunkt?", "Z coordinate 1st plane point?")),
-    point_field("P2X", t("X-Koordinate 2. Ebenenpunkt?", "X coordinate 2nd plane point?")),
-    point_field("P2Y", t("Y-Koordinate 2. Ebenenpunkt?", "Y coordinate 2nd plane point?")),
-    point_field("P2Z", t("Z-Koordinate 2. Ebenenpunkt?", "Z coordinate 2nd plane point?")),
-    point_field("P3X", t("X-Koordinate 3. Ebenenpunkt?", "X coordinate 3rd plane point?")),
-    point_field("P3Y", t("Y-Koordinate 3. Ebenenpunkt?", "Y coordinate 3rd plane point?")),
-    point_field("P3Z", t("Z-Koordinate 3. Ebenenpunkt?", "Z coordinate 3rd plane point?")),
+    point_field(Word::P1x, t("X-Koordinate 1. Ebenenpunkt?", "X coordinate 1st plane point?")),
+    point_field(Word::P1y, t("Y-Koordinate 1. Ebenenpunkt?", "Y coordinate 1st plane point?")),
+    point_field(Word::P1z, t("Z-Koordinate 1. Ebenenpunkt?", "Z coordinate 1st plane point?")),
+    point_field(Word::P2x, t("X-Koordinate 2. Ebenenpunkt?", "X coordinate 2nd plane point?")),
+    point_field(Word::P2y, t("Y-Koordinate 2. Ebenenpunkt?", "Y coordinate 2nd plane point?")),
+    point_field(Word::P2z, t("Z-Koordinate 2. Ebenenpunkt?", "Z coordinate 2nd plane point?")),
+    point_field(Word::P3x, t("X-Koordinate 3. Ebenenpunkt?", "X coordinate 3rd plane point?")),
+    point_field(Word::P3y, t("Y-Koordinate 3. Ebenenpunkt?", "Y coordinate 3rd plane point?")),
+    point_field(Word::P3z, t("Z-Koordinate 3. Ebenenpunkt?", "Z coordinate 3rd plane point?")),
 ];
 
 pub(super) const RELATIV: [Field; 1] = [field(
-    "SPA",
+    Word::Spa,
     t("Inkrementaler Raumwinkel?", "Incremental spatial angle?"),
     t(
         "Dreht um die Achse der aktiven geschwenkten Ebene; mehrere RELATIV-Sätze bauen aufeinander auf.",
@@ -156,7 +158,7 @@ pub(super) const RELATIV: [Field; 1] = [field(
     ),
 )];
 
-const fn axial_field(word: &'static str, prompt: Text) -> Field {
+const fn axial_field(word: Word, prompt: Text) -> Field {
     Field {
         word,
         prompt,
@@ -169,7 +171,7 @@ const fn axial_field(word: &'static str, prompt: Text) -> Field {
 }
 
 pub(super) const AXIAL: [Field; 3] = [
-    axial_field("A", t("Achswinkel A?", "Axis angle A?")),
-    axial_field("B", t("Achswinkel B?", "Axis angle B?")),
-    axial_field("C", t("Achswinkel C?", "Axis angle C?")),
+    axial_field(Word::A, t("Achswinkel A?", "Axis angle A?")),
+    axial_field(Word::B, t("Achswinkel B?", "Axis angle B?")),
+    axial_field(Word::C, t("Achswinkel C?", "Axis angle C?")),
 ];

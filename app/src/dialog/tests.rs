@@ -21,7 +21,7 @@ fn finished(o: Outcome) -> String {
 
 /// SPATIAL with the given angles up to the positioning softkeys.
 fn spatial(a: &str, b: &str, c: &str) -> Dialog {
-    let mut d = Dialog::new(Function::Spatial);
+    let mut d = Dialog::new(PlaneKind::Spatial);
     for v in [a, b, c] {
         assert_eq!(enter(&mut d, v), Outcome::Continue);
         assert_eq!(d.message, None, "{v}");
@@ -48,9 +48,9 @@ fn spatial_turn_fmax_as_in_musterprogramm_1() {
 fn spatial_variants_move_dist_f_mb_max_seq_table_rot() {
     let mut d = spatial("0", "15", "0");
     d.key(Key::Positioning(PosKind::Move));
-    assert_eq!(d.word(), "DIST");
+    assert_eq!(d.word(), Some(Word::Dist));
     enter(&mut d, "50");
-    assert_eq!(d.word(), "F");
+    assert_eq!(d.word(), Some(Word::F));
     enter(&mut d, "500");
     d.key(Key::Selection(Selection::Seq(Sign::Minus)));
     d.key(Key::Ent);
@@ -68,7 +68,7 @@ fn spatial_variants_move_dist_f_mb_max_seq_table_rot() {
 
 #[test]
 fn euler_as_in_the_manual_example() {
-    let mut d = Dialog::new(Function::Euler);
+    let mut d = Dialog::new(PlaneKind::Euler);
     enter(&mut d, "0");
     enter(&mut d, "45");
     enter(&mut d, "0");
@@ -85,10 +85,10 @@ fn euler_as_in_the_manual_example() {
 
 #[test]
 fn reset_asks_only_for_positioning() {
-    let mut d = Dialog::new(Function::Reset);
+    let mut d = Dialog::new(PlaneKind::Reset);
     assert_eq!(d.step, Step::Positioning);
     assert_eq!(finished(d.key(Key::Positioning(PosKind::Stay))), "PLANE RESET STAY");
-    let mut d = Dialog::new(Function::Reset);
+    let mut d = Dialog::new(PlaneKind::Reset);
     d.key(Key::Positioning(PosKind::Turn));
     d.key(Key::NoEnt);
     assert_eq!(finished(d.key(Key::FMax)), "PLANE RESET TURN FMAX");
@@ -96,7 +96,7 @@ fn reset_asks_only_for_positioning() {
 
 #[test]
 fn wrong_entries_are_answered_and_kept_for_correction() {
-    let mut d = Dialog::new(Function::Spatial);
+    let mut d = Dialog::new(PlaneKind::Spatial);
     enter(&mut d, "1a5");
     assert_eq!(d.message, Some(MSG_INVALID));
     assert_eq!(d.input, "1a5", "nothing typed is lost");
@@ -133,7 +133,7 @@ fn seq_together_with_sym_is_refused() {
 
 #[test]
 fn negative_and_q_values_and_sign_key() {
-    let mut d = Dialog::new(Function::Spatial);
+    let mut d = Dialog::new(PlaneKind::Spatial);
     d.key(Key::Char('4'));
     d.key(Key::Char('5'));
     d.key(Key::ToggleSign);
@@ -152,14 +152,14 @@ fn negative_and_q_values_and_sign_key() {
 
 #[test]
 fn relativ_and_axial_and_points() {
-    let mut d = Dialog::new(Function::Relativ);
+    let mut d = Dialog::new(PlaneKind::Relativ);
     d.key(Key::RelAxis(RelAxis::Spb));
-    assert_eq!(d.word(), "SPB");
+    assert_eq!(d.word(), Some(Word::Spb));
     enter(&mut d, "30");
     d.key(Key::Positioning(PosKind::Stay));
     assert_eq!(finished(d.key(Key::End)), "PLANE RELATIV SPB+30 STAY");
 
-    let mut d = Dialog::new(Function::Axial);
+    let mut d = Dialog::new(PlaneKind::Axial);
     d.key(Key::NoEnt);
     d.key(Key::NoEnt);
     d.key(Key::NoEnt);
@@ -169,7 +169,7 @@ fn relativ_and_axial_and_points() {
     d.key(Key::NoEnt);
     assert_eq!(finished(d.key(Key::Positioning(PosKind::Stay))), "PLANE AXIAL B-45 STAY");
 
-    let mut d = Dialog::new(Function::Points);
+    let mut d = Dialog::new(PlaneKind::Points);
     for v in ["0", "0", "0", "100", "0", "0", "0", "100", "100"] {
         enter(&mut d, v);
     }
@@ -196,7 +196,7 @@ fn reopened_block_shows_its_values_and_finishes_unchanged() {
 
 #[test]
 fn preview_follows_the_value_being_typed() {
-    let mut d = Dialog::new(Function::Spatial);
+    let mut d = Dialog::new(PlaneKind::Spatial);
     d.key(Key::Ent); // required: refused, nothing changes
     enter(&mut d, "0");
     d.key(Key::Char('3'));
@@ -259,7 +259,7 @@ fn softkey_choices_can_be_typed_and_are_shown_by_name() {
 
 #[test]
 fn decimal_comma_is_accepted_like_a_point() {
-    let mut d = Dialog::new(Function::Spatial);
+    let mut d = Dialog::new(PlaneKind::Spatial);
     enter(&mut d, "12,5");
     assert_eq!(d.message, None);
     assert_eq!(d.values.first().copied().flatten(), Some(Value::Number(12.5)));
@@ -389,7 +389,7 @@ mod round_trip {
 #[test]
 fn euler_prompts_are_the_manuals() {
     // iTNC 530 user manual, PLANE EULER, input parameters (German and English editions).
-    let mut d = Dialog::new(Function::Euler);
+    let mut d = Dialog::new(PlaneKind::Euler);
     let mut prompts = Vec::new();
     for v in ["0", "45", "0"] {
         prompts.push(d.prompt());
@@ -403,4 +403,27 @@ fn euler_prompts_are_the_manuals() {
         prompts.iter().map(|p| p.en).collect::<Vec<_>>(),
         ["Rot. angle main coordinate plane?", "Tilting angle tool axis?", "ROT angle of the tilted plane?"]
     );
+}
+
+/// The dialog and the parser read a value by the same rule (`plane::check`): whatever the
+/// dialog refuses at a prompt, the parser refuses in a block, and the other way round.
+#[test]
+fn the_dialog_refuses_exactly_what_the_parser_refuses() {
+    for (typed, dist_ok) in [("-5", false), ("0", true), ("50", true), ("100000", false)] {
+        let mut d = spatial("0", "15", "0");
+        d.key(Key::Positioning(PosKind::Move));
+        enter(&mut d, typed);
+        let dialog_ok = d.step != Step::Dist;
+        let (_, diags) =
+            schwenkbar_core::parse(&format!("1 PLANE SPATIAL SPA+0 SPB+15 SPC+0 MOVE DIST{typed} F500\n"));
+        assert_eq!(dialog_ok, dist_ok, "dialog, DIST {typed}: {:?}", d.message);
+        assert_eq!(diags.is_empty(), dist_ok, "parser, DIST {typed}: {diags:?}");
+    }
+    let mut d = spatial("0", "15", "0");
+    d.key(Key::Positioning(PosKind::Move));
+    enter(&mut d, "-5");
+    assert_eq!(d.message.map(|m| m.de), Some("Eingabewert außerhalb des Bereichs"));
+    let mut d = Dialog::new(PlaneKind::Spatial);
+    enter(&mut d, "400");
+    assert_eq!(d.message.map(|m| m.de), Some("Winkel nicht erlaubt"));
 }

@@ -37,7 +37,7 @@ impl AppState {
         self.text_editing = false;
         match &self.sim {
             Some(sim) if !sim.0.is_empty() => {
-                let step = sim.0.first_step.get(self.cursor).copied().flatten().unwrap_or(0) as usize;
+                let step = sim.0.step_of_block(self.cursor).unwrap_or(0);
                 self.run = Some(Run::new(&sim.0, &self.doc.program, step));
                 self.sync_cursor_to_run();
             }
@@ -62,8 +62,8 @@ impl AppState {
             return run.state.clone();
         }
         let sim = &self.sim.as_ref()?.0;
-        let step = sim.first_step.get(self.cursor).copied().flatten()?;
-        sim.state_at(&self.doc.program, step as usize).map(Rc::new)
+        let step = sim.step_of_block(self.cursor)?;
+        sim.state_at(&self.doc.program, step).map(Rc::new)
     }
 
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.
@@ -82,11 +82,11 @@ impl AppState {
             Action::CursorTo(i) => i,
             _ => return,
         };
-        let step = self.sim.as_ref().and_then(|s| s.0.first_step.get(target).copied().flatten());
+        let step = self.sim.as_ref().and_then(|s| s.0.step_of_block(target));
         match step {
             Some(step) => self.run_step(|run, sim, p| {
                 run.playing = false;
-                run.go_to(sim, p, step as usize);
+                run.go_to(sim, p, step);
             }),
             None => {
                 self.message = Some(Text::new(

@@ -16,7 +16,7 @@ fn spatial_dialog_inserts_the_block_after_the_cursor_with_the_next_number() {
     let mut s = AppState::default()
         .then(Action::SetText("0 BEGIN PGM T MM\n1 L Z+0 R0 FMAX M91\n2 END PGM T MM\n".into()));
     s = s.then(Action::CursorTo(1));
-    s = s.then(Action::SpecFct).then(Action::TiltPlane).then(Action::Function(Function::Spatial));
+    s = s.then(Action::SpecFct).then(Action::TiltPlane).then(Action::Function(PlaneKind::Spatial));
     s = keys(keys(keys(s, "0"), "15"), "0");
     s = s.then(Action::DialogKey(Key::Positioning(PosKind::Turn)));
     s = s.then(Action::DialogKey(Key::NoEnt)).then(Action::DialogKey(Key::FMax));
@@ -34,14 +34,14 @@ fn spatial_dialog_inserts_the_block_after_the_cursor_with_the_next_number() {
 fn abort_keeps_the_program_and_ent_reopens_a_plane_block() {
     let s = AppState::default();
     let before = s.doc.text.clone();
-    let s = s.then(Action::Function(Function::Euler));
+    let s = s.then(Action::Function(PlaneKind::Euler));
     let s = keys(s, "45").then(Action::Abort);
     assert!(s.dialog.is_none());
     assert_eq!(s.doc.text, before);
     // Musterprogramm 1, block 10 is the PLANE SPATIAL block.
     let s = s.then(Action::CursorTo(10)).then(Action::Open);
     let (d, editing) = s.dialog.as_ref().expect("dialog reopened");
-    assert_eq!((d.function, *editing), (Function::Spatial, Some(10)));
+    assert_eq!((d.function, *editing), (PlaneKind::Spatial, Some(10)));
     let s = s.then(Action::CursorTo(9));
     assert_eq!(s.cursor, 10, "the cursor stays while the dialog is open");
     let s = s.then(Action::Abort).then(Action::CursorTo(9)).then(Action::Open);

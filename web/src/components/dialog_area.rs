@@ -8,6 +8,7 @@ use schwenkbar_app::dialog::{Dialog, Key};
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::preview::{orientation_of, strokes};
 use schwenkbar_app::state::Action;
+use schwenkbar_core::plane::Word;
 
 #[derive(Properties, PartialEq)]
 pub struct DialogAreaProps {
@@ -65,7 +66,7 @@ pub fn dialog_area(props: &DialogAreaProps) -> Html {
                 </div>
                 if d.takes_value() {
                     <div class="dialog-input">
-                        <span class="word">{ d.word() }</span>
+                        <span class="word">{ d.word().map_or("", Word::as_str) }</span>
                         <span class="value" data-testid="dialog-input">{ d.input.clone() }</span>
                         <span class="caret" aria-hidden="true">{ "▏" }</span>
                     </div>

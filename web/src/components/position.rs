@@ -22,8 +22,7 @@ pub struct PositionProps {
 }
 
 fn signed(x: f64) -> String {
-    let x = if x.abs() < 5e-5 { 0.0 } else { x };
-    format!("{x:+.3}")
+    schwenkbar_core::number::signed_fixed(x, 3)
 }
 
 /// The status line's entries.

@@ -1,8 +1,6 @@
 //! Lesson 4: the same PLANE block with MOVE, TURN and STAY in three 3D views side by side,
 //! each animating that block's motion from the simulator.
 
-use std::rc::Rc;
-
 use yew::prelude::*;
 
 use super::scene_pane::ScenePane;

@@ -12,12 +12,13 @@ use super::gl_canvas::{GlCanvas, SharedViewer};
 use super::viewer::{Content, Viewer};
 use crate::render::camera::Camera;
 use crate::render::right_hand::{
-    DragTurn, TASKS, TurnAxis, Verdict, block_angles, block_text, check, draw_list, first_turn,
-    pivot_on_screen, points_towards,
+    DragTurn, TASKS, Verdict, block_text, check, draw_list, first_turn, pivot_on_screen, points_towards,
 };
 use glam::Vec3;
 use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::preview::block_angles;
 use schwenkbar_core::number::parse_f64;
+use schwenkbar_core::plane::RelAxis;
 use schwenkbar_core::solve::fmt_deg;
 
 /// The demo's CSS, shipped with the component (in the bundle only where the demo is mounted).
@@ -52,11 +53,11 @@ struct Drag {
 
 /// The task prompt ("Drehen Sie die Ebene um +30° um Y").
 #[must_use]
-pub fn task_text(lang: Lang, task: (TurnAxis, f64)) -> String {
+pub fn task_text(lang: Lang, task: (RelAxis, f64)) -> String {
     let angle = fmt_deg(task.1);
     match lang {
-        Lang::De => format!("Drehen Sie die Ebene um {angle}° um {}", task.0.letter()),
-        Lang::En => format!("Turn the plane by {angle}° about {}", task.0.letter()),
+        Lang::De => format!("Drehen Sie die Ebene um {angle}° um {}", task.0.about()),
+        Lang::En => format!("Turn the plane by {angle}° about {}", task.0.about()),
     }
 }
 
@@ -64,7 +65,7 @@ pub fn task_text(lang: Lang, task: (TurnAxis, f64)) -> String {
 pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let l = props.lang;
     let viewer = use_mut_ref(|| Viewer::new(demo_camera()));
-    let axis = use_state(TurnAxis::default);
+    let axis = use_state(|| RelAxis::Spb);
     let angle = use_state(|| 15.0_f64);
     let task = use_state(|| None::<usize>);
     let verdict = use_state(|| None::<Verdict>);
@@ -130,7 +131,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
             }
         })
     };
-    let pick = |a: TurnAxis| {
+    let pick = |a: RelAxis| {
         let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
         // With a block, each axis shows that block's turn about it; without, the plane starts flat.
         let start = block_turns.map_or(0.0, |t| t[a as usize]);
@@ -155,7 +156,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
             task.set(Some(next));
             // The trainee picks the axis; start from the untilted plane.
             angle.set(0.0);
-            axis.set(TurnAxis::Y);
+            axis.set(RelAxis::Spb);
             verdict.set(None);
         })
     };
@@ -186,9 +187,9 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
             </div>
             <div class="rh-controls">
                 <div role="group" aria-label={l.t("Drehachse", "Axis")}>
-                    { for TurnAxis::ALL.iter().map(|a| html! {
-                        <button type="button" class="rh-axis" data-axis={a.letter()} aria-pressed={(*axis == *a).to_string()}
-                            onclick={pick(*a)}>{ a.letter() }</button>
+                    { for RelAxis::ALL.iter().map(|a| html! {
+                        <button type="button" class="rh-axis" data-axis={a.about()} aria-pressed={(*axis == *a).to_string()}
+                            onclick={pick(*a)}>{ a.about() }</button>
                     }) }
                 </div>
                 <label class="rh-slider">{ l.t("Winkel", "Angle") }
@@ -231,7 +232,7 @@ mod tests {
 
     #[test]
     fn the_task_asks_for_a_signed_turn_in_german_first() {
-        assert_eq!(task_text(Lang::De, (TurnAxis::Y, 30.0)), "Drehen Sie die Ebene um +30° um Y");
-        assert_eq!(task_text(Lang::En, (TurnAxis::X, -45.0)), "Turn the plane by -45° about X");
+        assert_eq!(task_text(Lang::De, (RelAxis::Spb, 30.0)), "Drehen Sie die Ebene um +30° um Y");
+        assert_eq!(task_text(Lang::En, (RelAxis::Spa, -45.0)), "Turn the plane by -45° about X");
     }
 }

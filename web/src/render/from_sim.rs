@@ -95,21 +95,22 @@ pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
 mod tests {
     use super::*;
     use glam::{DAffine3, DVec3};
+    use schwenkbar_app::document::Document;
+    use schwenkbar_app::run::SimRef;
     use schwenkbar_app::scene::pose::poses;
     use schwenkbar_core::plane::RotaryAxis;
-    use schwenkbar_core::sim::{SimOptions, simulate};
 
     fn musterprogramm1() -> (Program, Machine, Simulation) {
-        let (program, _) = schwenkbar_core::parse(include_str!("../../../static/programs/musterprogramm1.h"));
+        let doc = Document::new(include_str!("../../../static/programs/musterprogramm1.h").to_owned());
         let machine = Machine::builtin("ac-table").expect("machine");
-        let sim = simulate(&program, &machine, &SimOptions::default());
+        let sim = SimRef::of(&doc.program, &machine).0.as_ref().clone();
         assert!(sim.error.is_none(), "{:?}", sim.error);
-        (program, machine, sim)
+        (doc.program.clone(), machine, sim)
     }
 
     fn step_of_block(sim: &Simulation, program: &Program, number: u32) -> usize {
         let block = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
-        sim.first_step[block].expect("executed") as usize
+        sim.step_of_block(block).expect("executed")
     }
 
     #[test]

@@ -4,66 +4,26 @@
 //! `components/right_hand_demo.rs` draws it.
 
 use glam::{DAffine3, DMat3, DVec3, Vec3};
-use schwenkbar_core::orientation::{spatial, to_spatial};
+use schwenkbar_core::orientation::spatial;
+use schwenkbar_core::plane::RelAxis;
 use schwenkbar_core::solve::fmt_deg;
 
 use super::camera::project_to_css;
 use super::draw_list::{DrawList, Label, Pass, Shape, rod, z_to};
 use super::triads::{PLANE, X, Y, Z, arrow, triad};
 
-/// The axis the plane turns about.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum TurnAxis {
-    X,
-    #[default]
-    Y,
-    Z,
-}
-
-impl TurnAxis {
-    pub const ALL: [TurnAxis; 3] = [TurnAxis::X, TurnAxis::Y, TurnAxis::Z];
-
-    #[must_use]
-    pub fn letter(self) -> &'static str {
-        match self {
-            TurnAxis::X => "X",
-            TurnAxis::Y => "Y",
-            TurnAxis::Z => "Z",
-        }
-    }
-
-    #[must_use]
-    pub fn unit(self) -> DVec3 {
-        match self {
-            TurnAxis::X => DVec3::X,
-            TurnAxis::Y => DVec3::Y,
-            TurnAxis::Z => DVec3::Z,
-        }
-    }
-
-    /// The spatial angle word that turns about this axis (SPA about X, SPB about Y, SPC about Z;
-    /// DOMAIN.md §2.1).
-    #[must_use]
-    pub fn word(self) -> &'static str {
-        match self {
-            TurnAxis::X => "SPA",
-            TurnAxis::Y => "SPB",
-            TurnAxis::Z => "SPC",
-        }
-    }
-
-    fn colour(self) -> [f32; 4] {
-        match self {
-            TurnAxis::X => X,
-            TurnAxis::Y => Y,
-            TurnAxis::Z => Z,
-        }
+/// The colour of the axis a spatial angle turns about (the triads' X, Y, Z).
+fn colour(axis: RelAxis) -> [f32; 4] {
+    match axis {
+        RelAxis::Spa => X,
+        RelAxis::Spb => Y,
+        RelAxis::Spc => Z,
     }
 }
 
 /// `(SPA, SPB, SPC)` for a single turn.
 #[must_use]
-pub fn spatial_angles(axis: TurnAxis, angle: f64) -> [f64; 3] {
+pub fn spatial_angles(axis: RelAxis, angle: f64) -> [f64; 3] {
     let mut a = [0.0; 3];
     a[axis as usize] = angle;
     a
@@ -72,14 +32,14 @@ pub fn spatial_angles(axis: TurnAxis, angle: f64) -> [f64; 3] {
 /// The block as the control writes it: every angle with its sign (`PLANE SPATIAL SPA+0 SPB+15
 /// SPC+0`; seed 000, Musterprogramm 1 block 10).
 #[must_use]
-pub fn block_text(axis: TurnAxis, angle: f64) -> String {
+pub fn block_text(axis: RelAxis, angle: f64) -> String {
     let [a, b, c] = spatial_angles(axis, angle);
     format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c))
 }
 
 /// The plane's orientation after the turn: the same matrix `core` computes for the block.
 #[must_use]
-pub fn orientation(axis: TurnAxis, angle: f64) -> DMat3 {
+pub fn orientation(axis: RelAxis, angle: f64) -> DMat3 {
     let [a, b, c] = spatial_angles(axis, angle);
     spatial(a, b, c)
 }
@@ -128,36 +88,16 @@ impl DragTurn {
     }
 }
 
-/// The spatial angles `[SPA, SPB, SPC]` of the PLANE block in `text` (any form the orientation
-/// maths reads without a machine), or `None` when it has none (not a PLANE block, a Q parameter,
-/// PLANE AXIAL).
-#[must_use]
-pub fn block_angles(text: &str) -> Option<[f64; 3]> {
-    let (program, _) = schwenkbar_core::parse(text);
-    let block = program.blocks.iter().find_map(|b| match &b.body {
-        schwenkbar_core::BlockBody::Plane(p) => Some(p),
-        _ => None,
-    })?;
-    let block = block
-        .try_map(|v| match v {
-            schwenkbar_core::plane::Value::Number(x) => Ok(*x),
-            schwenkbar_core::plane::Value::Param { .. } => Err(()),
-        })
-        .ok()?;
-    let r = schwenkbar_core::orientation::orientation(&block.def, &Default::default()).ok()?;
-    Some(to_spatial(&r).map(|a| (a * 1e4).round() / 1e4 + 0.0))
-}
-
 /// The first turn the control makes for `angles` (about X, then Y, then Z): the axis the demo
 /// opens on for a block.
 #[must_use]
-pub fn first_turn(angles: [f64; 3]) -> TurnAxis {
-    TurnAxis::ALL.into_iter().zip(angles).find(|(_, a)| a.abs() > 1e-9).map_or(TurnAxis::Z, |(t, _)| t)
+pub fn first_turn(angles: [f64; 3]) -> RelAxis {
+    RelAxis::ALL.into_iter().zip(angles).find(|(_, a)| a.abs() > 1e-9).map_or(RelAxis::Spc, |(t, _)| t)
 }
 
 /// Whether the axis (through the origin) points towards the eye at `eye`.
 #[must_use]
-pub fn points_towards(axis: TurnAxis, eye: Vec3) -> bool {
+pub fn points_towards(axis: RelAxis, eye: Vec3) -> bool {
     eye.as_dvec3().dot(axis.unit()) > 0.0
 }
 
@@ -168,13 +108,13 @@ pub fn pivot_on_screen(view_proj: &glam::Mat4, width: f32, height: f32) -> (f32,
 }
 
 /// The practice tasks of "try it": axis and signed angle, both signs on every axis.
-pub const TASKS: [(TurnAxis, f64); 6] = [
-    (TurnAxis::Y, 30.0),
-    (TurnAxis::X, -45.0),
-    (TurnAxis::Z, 60.0),
-    (TurnAxis::Y, -20.0),
-    (TurnAxis::X, 30.0),
-    (TurnAxis::Z, -90.0),
+pub const TASKS: [(RelAxis, f64); 6] = [
+    (RelAxis::Spb, 30.0),
+    (RelAxis::Spa, -45.0),
+    (RelAxis::Spc, 60.0),
+    (RelAxis::Spb, -20.0),
+    (RelAxis::Spa, 30.0),
+    (RelAxis::Spc, -90.0),
 ];
 
 /// Tolerance of a trainee's turn, degrees (a drag cannot be exact).
@@ -191,7 +131,7 @@ pub enum Verdict {
 }
 
 #[must_use]
-pub fn check(task: (TurnAxis, f64), axis: TurnAxis, angle: f64) -> Verdict {
+pub fn check(task: (RelAxis, f64), axis: RelAxis, angle: f64) -> Verdict {
     if axis == task.0 && (angle - task.1).abs() <= TOLERANCE {
         Verdict::Right
     } else if axis == task.0 && (angle + task.1).abs() <= TOLERANCE {
@@ -208,7 +148,7 @@ const PLANE_SIDE: f64 = 200.0;
 /// The demo scene (seen from `eye`): the turned plane and its triad, the fixed reference triad, the thumb arrow,
 /// the curled arrow and a stylised right hand gripping the axis.
 #[must_use]
-pub fn draw_list(axis: TurnAxis, angle: f64, eye: DVec3) -> DrawList {
+pub fn draw_list(axis: RelAxis, angle: f64, eye: DVec3) -> DrawList {
     let mut list = DrawList::default();
     let r = orientation(axis, angle);
     let m = DAffine3::from_mat3_translation(
@@ -226,7 +166,7 @@ pub fn draw_list(axis: TurnAxis, angle: f64, eye: DVec3) -> DrawList {
     // Thumb along +axis, the curl around it (rotation about the thumb = positive direction).
     let u = axis.unit();
     let frame = z_to(u);
-    arrow(&mut list, DVec3::ZERO, u, 250.0, 3.5, axis.colour(), Pass::Opaque);
+    arrow(&mut list, DVec3::ZERO, u, 250.0, 3.5, colour(axis), Pass::Opaque);
     let curl_at = u * 205.0;
     let radius = 34.0;
     list.push(
@@ -251,7 +191,7 @@ pub fn draw_list(axis: TurnAxis, angle: f64, eye: DVec3) -> DrawList {
     let e = frame.transpose() * eye;
     let facing = e.y.atan2(e.x) + std::f64::consts::PI;
     hand(&mut list, frame * DMat3::from_rotation_z(facing), u * 125.0);
-    list.labels.push(Label { text: axis.letter(), at: u * 268.0, kind: "axis" });
+    list.labels.push(Label { text: axis.about(), at: u * 268.0, kind: "axis" });
     list
 }
 
@@ -302,20 +242,21 @@ fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use schwenkbar_app::preview::block_angles;
 
     #[test]
     fn block_text_writes_every_sign_like_the_control() {
-        assert_eq!(block_text(TurnAxis::Y, 15.0), "PLANE SPATIAL SPA+0 SPB+15 SPC+0");
-        assert_eq!(block_text(TurnAxis::X, -30.0), "PLANE SPATIAL SPA-30 SPB+0 SPC+0");
-        assert_eq!(block_text(TurnAxis::Z, 12.5), "PLANE SPATIAL SPA+0 SPB+0 SPC+12.5");
+        assert_eq!(block_text(RelAxis::Spb, 15.0), "PLANE SPATIAL SPA+0 SPB+15 SPC+0");
+        assert_eq!(block_text(RelAxis::Spa, -30.0), "PLANE SPATIAL SPA-30 SPB+0 SPC+0");
+        assert_eq!(block_text(RelAxis::Spc, 12.5), "PLANE SPATIAL SPA+0 SPB+0 SPC+12.5");
     }
 
     #[test]
     fn positive_spb_tips_the_plane_normal_towards_plus_x() {
         // DOMAIN.md §2: Ry(b)·ez = (sin b, 0, cos b).
-        let t = orientation(TurnAxis::Y, 15.0).col(2);
+        let t = orientation(RelAxis::Spb, 15.0).col(2);
         assert!(t.x > 0.25 && t.y.abs() < 1e-12, "{t}");
-        let t = orientation(TurnAxis::X, 15.0).col(2);
+        let t = orientation(RelAxis::Spa, 15.0).col(2);
         assert!(t.y < -0.25, "positive SPA tips the normal towards −Y: {t}");
     }
 
@@ -368,12 +309,12 @@ mod tests {
     fn a_plane_block_gives_its_spatial_angles_and_the_first_turn() {
         let a = block_angles("7 PLANE SPATIAL SPA+0 SPB+30 SPC+90 TURN FMAX").unwrap();
         assert!((a[1] - 30.0).abs() < 1e-9 && (a[2] - 90.0).abs() < 1e-9 && a[0].abs() < 1e-9, "{a:?}");
-        assert_eq!(first_turn(a), TurnAxis::Y);
+        assert_eq!(first_turn(a), RelAxis::Spb);
         // EULER (90, 45, 0) = SPATIAL (45, 0, 90) (DOMAIN.md oracle 3): the same orientation.
         let e = block_angles("PLANE EULER EULPR+90 EULNU+45 EULROT+0 STAY").unwrap();
         let (r, s) = (spatial(e[0], e[1], e[2]), spatial(45.0, 0.0, 90.0));
         assert!(r.abs_diff_eq(s, 1e-6), "{e:?}");
-        assert_eq!(first_turn(e), TurnAxis::X);
+        assert_eq!(first_turn(e), RelAxis::Spa);
         assert_eq!(block_angles("PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 TURN FMAX"), None);
         assert_eq!(block_angles("L X+10 R0 FMAX"), None);
     }
@@ -402,20 +343,20 @@ mod tests {
 
     #[test]
     fn try_it_tells_a_wrong_sign_from_a_wrong_turn() {
-        let task = (TurnAxis::Y, 30.0);
-        assert_eq!(check(task, TurnAxis::Y, 28.0), Verdict::Right);
-        assert_eq!(check(task, TurnAxis::Y, -31.0), Verdict::WrongSign);
-        assert_eq!(check(task, TurnAxis::X, 30.0), Verdict::Off);
-        assert_eq!(check(task, TurnAxis::Y, 60.0), Verdict::Off);
+        let task = (RelAxis::Spb, 30.0);
+        assert_eq!(check(task, RelAxis::Spb, 28.0), Verdict::Right);
+        assert_eq!(check(task, RelAxis::Spb, -31.0), Verdict::WrongSign);
+        assert_eq!(check(task, RelAxis::Spa, 30.0), Verdict::Off);
+        assert_eq!(check(task, RelAxis::Spb, 60.0), Verdict::Off);
         assert!(TASKS.iter().any(|t| t.1 < 0.0) && TASKS.iter().any(|t| t.1 > 0.0));
     }
 
     #[test]
     fn the_demo_scene_shows_the_block_turn() {
-        let list = draw_list(TurnAxis::Y, 15.0, DVec3::new(500.0, -500.0, 300.0));
+        let list = draw_list(RelAxis::Spb, 15.0, DVec3::new(500.0, -500.0, 300.0));
         let plane = list.instances.iter().find(|i| i.shape == Shape::Square).expect("plane");
         let n = plane.model.matrix3.col(2).normalize();
-        assert!((n - orientation(TurnAxis::Y, 15.0).col(2)).length() < 1e-12);
+        assert!((n - orientation(RelAxis::Spb, 15.0).col(2)).length() < 1e-12);
         assert!(list.labels.iter().any(|l| l.text == "Y" && l.kind == "axis"));
     }
 
@@ -423,7 +364,7 @@ mod tests {
     fn the_fingers_and_the_curl_arrow_turn_positively_about_the_thumb_from_any_eye() {
         // The arc meshes run counter-clockwise about their own +Z (mesh test above); they show
         // the positive direction only if their +Z is the +axis and nothing mirrors them.
-        for axis in TurnAxis::ALL {
+        for axis in RelAxis::ALL {
             for eye in [DVec3::new(500.0, -500.0, 300.0), DVec3::new(-300.0, 200.0, -400.0)] {
                 let list = draw_list(axis, -40.0, eye);
                 let arcs: Vec<_> = list
