@@ -80,7 +80,28 @@ pub enum CourseAction {
     Notice(Text),
 }
 
+/// What a key does on the course page: the presenter remote's keys and the instructor view.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CourseKey {
+    /// Open this route (through the URL fragment, so the browser's Back works too).
+    Go(Route),
+    Act(CourseAction),
+}
+
 impl CourseState {
+    /// The course's keymap: → / Bild↓ next lesson, ← / Bild↑ previous, Pos1 the overview, I the
+    /// instructor view; `None` for any other key (left to the page).
+    #[must_use]
+    pub fn key(&self, key: &str) -> Option<CourseKey> {
+        Some(match key {
+            "ArrowRight" | "PageDown" => CourseKey::Go(self.route.next()),
+            "ArrowLeft" | "PageUp" => CourseKey::Go(self.route.prev()),
+            "Home" => CourseKey::Go(Route::Overview),
+            "i" | "I" => CourseKey::Act(CourseAction::ToggleInstructor),
+            _ => return None,
+        })
+    }
+
     /// The course at start-up from the saved progress and preference records (a bad one is
     /// reported and replaced).
     #[must_use]
@@ -352,6 +373,16 @@ mod tests {
             .then(CourseAction::TakeBlock(0))
             .then(CourseAction::Check(0));
         assert!(s.exercises[0].verdict.as_ref().is_some_and(Verdict::is_correct));
+    }
+
+    #[test]
+    fn the_presenter_remotes_keys_page_through_the_lessons() {
+        let s = lesson(0);
+        assert_eq!(s.key("PageDown"), Some(CourseKey::Go(Route::Lesson(1))));
+        assert_eq!(s.key("ArrowLeft"), Some(CourseKey::Go(Route::Overview)));
+        assert_eq!(s.key("Home"), Some(CourseKey::Go(Route::Overview)));
+        assert_eq!(s.key("I"), Some(CourseKey::Act(CourseAction::ToggleInstructor)));
+        assert_eq!(s.key("x"), None);
     }
 
     #[test]

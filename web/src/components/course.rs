@@ -15,7 +15,7 @@ use crate::browser;
 use crate::effects::{Course, Shell, use_effects};
 use schwenkbar_app::course::Route;
 use schwenkbar_app::course::lessons::{self, COUNT, Widget};
-use schwenkbar_app::course::state::{CourseAction, CourseState};
+use schwenkbar_app::course::state::{CourseAction, CourseKey, CourseState};
 use schwenkbar_app::course::texts::LESSONS;
 
 const STYLE: &str = include_str!("course.css");
@@ -68,18 +68,10 @@ pub fn course_app(props: &CourseAppProps) -> Html {
                 false,
                 move |e| {
                     let state = current.borrow().clone();
-                    let target = match e.key().as_str() {
-                        "ArrowRight" | "PageDown" => Some(state.route.next()),
-                        "ArrowLeft" | "PageUp" => Some(state.route.prev()),
-                        "Home" => Some(Route::Overview),
-                        "i" | "I" => {
-                            state.dispatch(CourseAction::ToggleInstructor);
-                            None
-                        }
-                        _ => return false,
-                    };
-                    if let Some(r) = target {
-                        go(r);
+                    match state.key(&e.key()) {
+                        Some(CourseKey::Go(r)) => go(r),
+                        Some(CourseKey::Act(a)) => state.dispatch(a),
+                        None => return false,
                     }
                     true
                 },
