@@ -26,3 +26,17 @@ pub enum Effect {
     /// A lesson's trainer tells the course which PLANE block its cursor is on (`None`: none).
     TellCourse(Option<String>),
 }
+
+/// A page's state: one pure transition that returns the effects it asks for. The web shell
+/// holds either page's state the same way.
+pub trait Reducer: Sized {
+    type Action;
+
+    /// The next state and the effects it asks for.
+    fn apply(&self, action: Self::Action) -> (Self, Vec<Effect>);
+
+    /// Whether `action` changes nothing, so the shell need not re-render.
+    fn ignores(&self, _action: &Self::Action) -> bool {
+        false
+    }
+}

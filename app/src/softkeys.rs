@@ -217,7 +217,7 @@ pub fn row(state: &AppState) -> Row {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::state::Then;
+    use crate::state::{Reducer, Then};
 
     fn ids(state: &AppState) -> Vec<String> {
         row(state).iter().flatten().map(|k| k.id.clone()).collect()

@@ -36,7 +36,7 @@ impl Then for AppState {
     }
 }
 
-pub use crate::effect::Effect;
+pub use crate::effect::{Effect, Reducer};
 use run_mode::next_or_ask;
 pub use start::LinkPreview;
 
@@ -168,17 +168,20 @@ pub enum Action {
     ToggleProjector,
 }
 
-impl AppState {
+impl Reducer for AppState {
+    type Action = Action;
+
     /// The pure transition: the next state and the side effects it asks for (saving what
     /// changed, downloads, the Satzfolge timer, …), which the web shell carries out.
-    #[must_use]
-    pub fn apply(&self, action: Action) -> (AppState, Vec<Effect>) {
+    fn apply(&self, action: Action) -> (AppState, Vec<Effect>) {
         let mut effects = Vec::new();
         let next = self.transition(action, &mut effects);
         next.follow_ups(Some(self), &mut effects);
         (next, effects)
     }
+}
 
+impl AppState {
     fn transition(&self, action: Action, fx: &mut Vec<Effect>) -> AppState {
         let mut next = self.clone();
         next.message = None;

@@ -6,7 +6,7 @@
 use std::cell::Cell;
 use std::rc::Rc;
 
-use schwenkbar_app::state::{Action, AppState};
+use schwenkbar_app::state::{Action, AppState, Reducer};
 use schwenkbar_tests::browser::{
     clear_storage, click, document, eventually, key_on, key_on_body, mount, mount_at, paste_program,
     program_lines, query, settle, text, unmount, wait_for,

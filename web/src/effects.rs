@@ -6,10 +6,10 @@
 use std::ops::Deref;
 use std::rc::Rc;
 
-use schwenkbar_app::course::state::{CourseAction, CourseState};
-use schwenkbar_app::effect::Effect;
+use schwenkbar_app::course::state::CourseState;
+use schwenkbar_app::effect::{Effect, Reducer};
 use schwenkbar_app::i18n::Text;
-use schwenkbar_app::state::{Action, AppState};
+use schwenkbar_app::state::AppState;
 use yew::prelude::*;
 
 use crate::browser;
@@ -31,64 +31,41 @@ impl Pending {
     }
 }
 
-/// The trainer's state in yew.
+/// A page's state in yew (the trainer's [`AppState`] or the course's [`CourseState`]) with the
+/// effects of its last transition.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Trainer {
-    pub state: AppState,
+pub struct Shelled<S> {
+    pub state: S,
     pub pending: Pending,
 }
 
-impl Trainer {
+/// The trainer in yew.
+pub type Trainer = Shelled<AppState>;
+/// The course in yew.
+pub type Course = Shelled<CourseState>;
+
+impl<S> Shelled<S> {
     #[must_use]
-    pub fn new((state, effects): (AppState, Vec<Effect>)) -> Trainer {
-        Trainer { state, pending: Pending::default().next(effects) }
+    pub fn new((state, effects): (S, Vec<Effect>)) -> Shelled<S> {
+        Shelled { state, pending: Pending::default().next(effects) }
     }
 }
 
-impl Deref for Trainer {
-    type Target = AppState;
-    fn deref(&self) -> &AppState {
+impl<S> Deref for Shelled<S> {
+    type Target = S;
+    fn deref(&self) -> &S {
         &self.state
     }
 }
 
-impl Reducible for Trainer {
-    type Action = Action;
-    fn reduce(self: Rc<Self>, action: Action) -> Rc<Self> {
-        let (state, effects) = self.state.apply(action);
-        Rc::new(Trainer { state, pending: self.pending.next(effects) })
-    }
-}
-
-/// The course's state in yew.
-#[derive(Debug, Clone)]
-pub struct Course {
-    pub state: CourseState,
-    pub pending: Pending,
-}
-
-impl Course {
-    #[must_use]
-    pub fn new((state, effects): (CourseState, Vec<Effect>)) -> Course {
-        Course { state, pending: Pending::default().next(effects) }
-    }
-}
-
-impl Deref for Course {
-    type Target = CourseState;
-    fn deref(&self) -> &CourseState {
-        &self.state
-    }
-}
-
-impl Reducible for Course {
-    type Action = CourseAction;
-    fn reduce(self: Rc<Self>, action: CourseAction) -> Rc<Self> {
+impl<S: Reducer> Reducible for Shelled<S> {
+    type Action = S::Action;
+    fn reduce(self: Rc<Self>, action: S::Action) -> Rc<Self> {
         if self.state.ignores(&action) {
             return self;
         }
         let (state, effects) = self.state.apply(action);
-        Rc::new(Course { state, pending: self.pending.next(effects) })
+        Rc::new(Shelled { state, pending: self.pending.next(effects) })
     }
 }
 

@@ -9,7 +9,7 @@ use schwenkbar_core::course::{Answer, AnswerKind, Exercise, Spec, Verdict};
 use super::Route;
 use super::lessons::{self, COUNT};
 use super::progress::Progress;
-use crate::effect::Effect;
+use crate::effect::{Effect, Reducer};
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Prefs};
 
@@ -80,6 +80,24 @@ pub enum CourseAction {
     Notice(Text),
 }
 
+impl Reducer for CourseState {
+    type Action = CourseAction;
+
+    /// The pure transition: the next state and what to save.
+    fn apply(&self, action: CourseAction) -> (CourseState, Vec<Effect>) {
+        let next = self.transition(action);
+        let mut fx = Vec::new();
+        next.follow_ups(Some(self), &mut fx);
+        (next, fx)
+    }
+
+    /// The embedded trainer reports its cursor block after every render of its own; an
+    /// unchanged one changes nothing.
+    fn ignores(&self, action: &CourseAction) -> bool {
+        matches!(action, CourseAction::TrainerBlock(b) if *b == self.trainer_block)
+    }
+}
+
 /// What a key does on the course page: the presenter remote's keys and the instructor view.
 #[derive(Debug, Clone, PartialEq)]
 pub enum CourseKey {
@@ -137,22 +155,6 @@ impl CourseState {
     #[must_use]
     pub fn instructor(&self) -> bool {
         self.prefs.classroom
-    }
-
-    /// The pure transition: the next state and what to save.
-    #[must_use]
-    pub fn apply(&self, action: CourseAction) -> (CourseState, Vec<Effect>) {
-        let next = self.transition(action);
-        let mut fx = Vec::new();
-        next.follow_ups(Some(self), &mut fx);
-        (next, fx)
-    }
-
-    /// Whether `action` changes nothing, so the shell need not re-render the course: the
-    /// embedded trainer reports its cursor block after every render of its own.
-    #[must_use]
-    pub fn ignores(&self, action: &CourseAction) -> bool {
-        matches!(action, CourseAction::TrainerBlock(b) if *b == self.trainer_block)
     }
 
     /// Saving what changed since `before` (`None`: at start-up, where opening a lesson marks
