@@ -257,3 +257,19 @@ impl DiagCode {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn expected_words_are_translated_nc_words_are_not() {
+        let d = Diagnostic::new(Severity::Error, DiagCode::InvalidInput, Span::new(0, 1), 1, 1)
+            .with_expected(Some(Expected::BlockNumber));
+        assert_eq!(d.message(Lang::De), "Eingabewert falsch (erwartet: Satznummer)");
+        assert_eq!(d.message(Lang::En), "Invalid input (expected: block number)");
+        let d = d.with_expected(Some(Expected::Nc("MOVE|TURN|STAY")));
+        assert_eq!(d.help(Lang::En).as_deref(), Some("MOVE|TURN|STAY"));
+        assert_eq!(d.message(Lang::De), "Eingabewert falsch (erwartet: MOVE|TURN|STAY)");
+    }
+}

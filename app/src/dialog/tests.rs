@@ -422,8 +422,8 @@ fn the_dialog_refuses_exactly_what_the_parser_refuses() {
     let mut d = spatial("0", "15", "0");
     d.key(Key::Positioning(PosKind::Move));
     enter(&mut d, "-5");
-    assert_eq!(d.message.map(|m| m.de), Some("Eingabewert außerhalb des Bereichs"));
+    assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Eingabewert außerhalb des Bereichs"));
     let mut d = Dialog::new(PlaneKind::Spatial);
     enter(&mut d, "400");
-    assert_eq!(d.message.map(|m| m.de), Some("Winkel nicht erlaubt"));
+    assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Winkel nicht erlaubt"));
 }
