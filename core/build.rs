@@ -67,10 +67,7 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
     for key in ["name", "description"] {
         let t = object(ctx, required(ctx, m, key), &["de", "en"]);
         let (de, en) = (string(ctx, required(ctx, t, "de")), string(ctx, required(ctx, t, "en")));
-        let _ = writeln!(
-            s,
-            "        {key}: RawTexts {{ de: Cow::Borrowed({de:?}), en: Cow::Borrowed({en:?}) }},"
-        );
+        let _ = writeln!(s, "        {key}: Text::new({de:?}, {en:?}),");
     }
     s.push_str("        chain: Cow::Borrowed(&[\n");
     for j in array(ctx, required(ctx, m, "chain")) {

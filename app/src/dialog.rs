@@ -191,7 +191,7 @@ impl Dialog {
             Step::RelAxis => {
                 t("Raumwinkel wählen: SPA, SPB oder SPC", "Select the spatial angle: SPA, SPB or SPC")
             }
-            Step::Value(_) => self.field().map_or(t("", ""), |f| f.prompt),
+            Step::Value(_) => self.field().map_or(t("", ""), |f| f.prompt.clone()),
             Step::Positioning => t("Positionierverhalten?", "Positioning behaviour?"),
             Step::Dist => t("Abst. Drehpunkt von WZ-Spitze?", "Dist. tool tip – center of rot.?"),
             Step::MoveBack => t("Rückzuglänge in der Werkzeugachse?", "Retraction length in the tool axis?"),
@@ -211,7 +211,7 @@ impl Dialog {
                 "SPA dreht um die aktive X-Achse, SPB um Y, SPC um Z.",
                 "SPA turns about the active X axis, SPB about Y, SPC about Z.",
             ),
-            Step::Value(_) => self.field().map_or(t("", ""), |f| f.help),
+            Step::Value(_) => self.field().map_or(t("", ""), |f| f.help.clone()),
             Step::Positioning => t(
                 "MOVE: Linearachsen gleichen aus, die WZ-Spitze bleibt. TURN: nur Drehachsen. STAY: nur das Koordinatensystem.",
                 "MOVE: linear axes compensate, the tool tip stays. TURN: rotary axes only. STAY: coordinate system only.",

@@ -131,6 +131,6 @@ mod tests {
         run.playing = true;
         while run.next(&sim, &p) {}
         assert!(run.stopped_by_error && !run.playing);
-        assert_eq!(sim.error.as_ref().map(|e| e.message.de.as_str()), Some("Winkel nicht erlaubt"));
+        assert_eq!(sim.error.as_ref().map(|e| &*e.message.de), Some("Winkel nicht erlaubt"));
     }
 }

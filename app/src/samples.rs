@@ -2,7 +2,7 @@
 
 use crate::i18n::Text;
 
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Sample {
     pub id: &'static str,
     pub title: Text,
@@ -18,7 +18,7 @@ pub const MUSTERPROGRAMM_1: Sample = Sample {
     text: include_str!("../../static/programs/musterprogramm1.h"),
 };
 
-pub const SAMPLES: [Sample; 5] = [
+pub static SAMPLES: [Sample; 5] = [
     MUSTERPROGRAMM_1,
     Sample {
         id: "euler_fasen",
@@ -63,7 +63,7 @@ mod tests {
 
     #[test]
     fn every_sample_parses_without_diagnostics_and_names_a_shipped_machine() {
-        for s in SAMPLES {
+        for s in &SAMPLES {
             let (_, diags) = schwenkbar_core::parse(s.text);
             assert!(diags.is_empty(), "{}: {diags:?}", s.id);
             assert!(schwenkbar_core::machine::Machine::builtin(s.machine).is_ok(), "{}", s.machine);

@@ -205,7 +205,7 @@ pub fn row(state: &AppState) -> Row {
         ],
         SoftkeyLevel::Samples => {
             let mut row: Row = Default::default();
-            for (slot, s) in row.iter_mut().zip(SAMPLES) {
+            for (slot, s) in row.iter_mut().zip(&SAMPLES) {
                 *slot = key(&format!("sample-{}", s.id), s.title.get(l), Action::LoadSample(s.id.to_owned()));
             }
             row[7] = back(l);

@@ -392,7 +392,7 @@ impl AppState {
             .as_ref()
             .filter(|r| r.stopped_by_error && self.dialog.is_none() && self.message.is_none());
         if let Some(e) = error.and(self.sim.as_ref()).and_then(|s| s.0.error.as_ref()) {
-            return self.lang.t(&e.message.de, &e.message.en).to_owned();
+            return e.message.get(self.lang).to_owned();
         }
         if let (Some(machine), true) = (&self.machine, self.run.as_ref().is_some_and(|r| r.asking)) {
             return self.prediction_question(machine);
@@ -404,10 +404,10 @@ impl AppState {
     #[must_use]
     pub fn dialog_text(&self) -> Text {
         if let Some((d, _)) = &self.dialog {
-            return d.message.unwrap_or_else(|| d.prompt());
+            return d.message.clone().unwrap_or_else(|| d.prompt());
         }
-        if let Some(m) = self.message {
-            return m;
+        if let Some(m) = &self.message {
+            return m.clone();
         }
         if let Some(run) = &self.run {
             return if run.playing {

@@ -59,10 +59,7 @@ pub fn explain_plane(
     };
     match solve_block(machine, &block, active, opts) {
         Ok(e) => from_explanation(&e, l),
-        Err(err) => PlaneWhy {
-            error: Some(l.t(&err.message_de(), &err.message_en()).to_owned()),
-            ..PlaneWhy::empty()
-        },
+        Err(err) => PlaneWhy { error: Some(err.message().get(l).to_owned()), ..PlaneWhy::empty() },
     }
 }
 
@@ -96,9 +93,8 @@ pub fn for_block(
 ) -> Option<PlaneWhy> {
     let BlockBody::Plane(block) = &program.blocks.get(index)?.body else { return None };
     if let Some(e) = sim.and_then(|s| s.error.as_ref()).filter(|e| e.block == index) {
-        let detail = l.t(&e.detail.de, &e.detail.en);
         return Some(PlaneWhy {
-            error: Some(format!("{} — {detail}", l.t(&e.message.de, &e.message.en))),
+            error: Some(format!("{} — {}", e.message.get(l), e.detail.get(l))),
             ..PlaneWhy::empty()
         });
     }
@@ -135,7 +131,6 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
             (format!("{} · {limits} · {} {path}° · {verdict}", axes, l.t("Weg", "path")), chosen)
         })
         .collect();
-    let (rule_de, rule_en) = e.rule.texts();
     PlaneWhy {
         plain: plain_words(e, l),
         candidate_axes: e.candidates.iter().map(|c| c.axes).collect(),
@@ -143,15 +138,15 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
         euler: format!("PLANE EULER EULPR{} EULNU{} EULROT{}", fmt_deg(pr), fmt_deg(nu), fmt_deg(rot)),
         tool_axis: prose_vec([tx, ty, tz], 4, l),
         candidates,
-        rule: l.t(&rule_de, &rule_en).to_owned(),
+        rule: e.rule.text().get(l).to_owned(),
         symmetry: format!(
             "{} {}: {}",
             l.t("Symmetriepunkt der Master-Achse", "Symmetry point of the master axis"),
             e.master.letter(),
             fmt_deg(e.symmetry_point)
         ),
-        error: e.error_message.map(|m| l.t(m.de(), m.en()).to_owned()),
-        assumptions: e.decisions.iter().map(|d| l.t(d.text_de(), d.text_en()).to_owned()).collect(),
+        error: e.error_message.map(|m| m.0.message().get(l).to_owned()),
+        assumptions: e.decisions.iter().map(|d| d.text().get(l).to_owned()).collect(),
     }
 }
 

@@ -21,17 +21,17 @@ pub(crate) struct Args {
 }
 
 #[derive(Serialize)]
-struct JsonDiag<'a> {
+struct JsonDiag {
     line: u32,
     column: u32,
     severity: &'static str,
-    message: &'a str,
+    message: String,
 }
 
 #[derive(Serialize)]
-struct JsonReport<'a> {
+struct JsonReport {
     blocks: usize,
-    diagnostics: Vec<JsonDiag<'a>>,
+    diagnostics: Vec<JsonDiag>,
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {

@@ -5,7 +5,8 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use schwenkbar_core::machine::{Machine, Texts};
+use schwenkbar_core::Lang;
+use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::tidy;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 use schwenkbar_core::{Program, parse};
@@ -34,13 +35,6 @@ pub(crate) struct Args {
 /// Rounds away float noise (1e-9) and `-0` for printing.
 fn num(x: f64) -> f64 {
     tidy(x, 9)
-}
-
-fn pick(t: &Texts, lang: LangArg) -> &str {
-    match lang {
-        LangArg::De => &t.de,
-        LangArg::En => &t.en,
-    }
 }
 
 /// The first line of a block's source text.
@@ -112,7 +106,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     let (program, _) = parse(&src);
     let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
     let sim = simulate(&program, &machine, &opts);
-    let lang = args.lang;
+    let lang = Lang::from(args.lang);
 
     let out = std::io::stdout();
     let mut out = std::io::BufWriter::new(out.lock());
@@ -128,7 +122,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 
-fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: LangArg) -> JsonState<'a> {
+fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: Lang) -> JsonState<'a> {
     JsonState {
         line: s.line,
         number: program.blocks.get(s.block).and_then(|b| b.number),
@@ -140,7 +134,7 @@ fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: LangArg) 
             .as_ref()
             .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
         q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
-        message: s.message.as_ref().map(|m| pick(m, lang)),
+        message: s.message.as_ref().map(|m| m.get(lang)),
     }
 }
 
@@ -151,7 +145,7 @@ fn write_json(
     program: &Program,
     machine: &Machine,
     sim: &Simulation,
-    lang: LangArg,
+    lang: Lang,
 ) -> std::io::Result<()> {
     write!(out, "{{\"machine\":{},\"states\":[", serde_json::to_string(&machine.id)?)?;
     for (i, s) in sim.states(program).enumerate() {
@@ -162,8 +156,8 @@ fn write_json(
     }
     let error = sim.error.as_ref().map(|e| JsonError {
         line: e.line,
-        message: pick(&e.message, lang),
-        detail: pick(&e.detail, lang),
+        message: e.message.get(lang),
+        detail: e.detail.get(lang),
     });
     writeln!(out, "],\"error\":{}}}", serde_json::to_string(&error)?)
 }
@@ -174,7 +168,7 @@ fn write_table(
     src: &str,
     program: &Program,
     sim: &Simulation,
-    lang: LangArg,
+    lang: Lang,
     file: &std::path::Path,
 ) -> std::io::Result<()> {
     let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
@@ -197,19 +191,12 @@ fn write_table(
         row.push_str(&format!("  {plane:<26}"));
         if let Some(m) = &s.message {
             row.push_str("  ");
-            row.push_str(pick(m, lang));
+            row.push_str(m.get(lang));
         }
         writeln!(out, "{}", row.trim_end())?;
     }
     if let Some(e) = &sim.error {
-        writeln!(
-            out,
-            "{}:{}: {}: {}",
-            file.display(),
-            e.line,
-            pick(&e.message, lang),
-            pick(&e.detail, lang)
-        )?;
+        writeln!(out, "{}:{}: {}: {}", file.display(), e.line, e.message.get(lang), e.detail.get(lang))?;
     }
     Ok(())
 }

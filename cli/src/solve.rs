@@ -46,7 +46,7 @@ struct Output {
     euler: [f64; 3],
     candidates: Vec<CandidateOut>,
     chosen: Option<AxisValues>,
-    error: Option<&'static str>,
+    error: Option<String>,
     reason: String,
 }
 
@@ -67,7 +67,6 @@ fn r_axes(a: AxisValues) -> AxisValues {
 }
 
 fn output(e: &Explanation, lang: Lang) -> Output {
-    let de = matches!(lang, Lang::De);
     Output {
         machine: e.machine.clone(),
         orientation: e.orientation.map(|row| row.map(r)),
@@ -80,8 +79,8 @@ fn output(e: &Explanation, lang: Lang) -> Output {
             .map(|c| CandidateOut { axes: r_axes(c.axes), in_limits: c.in_limits, path: r(c.path) })
             .collect(),
         chosen: e.chosen_axes().map(r_axes),
-        error: e.error_message.map(|m| if de { m.de() } else { m.en() }),
-        reason: if de { e.reason.de() } else { e.reason.en() },
+        error: e.error_message.map(|m| m.0.message().get(lang).to_owned()),
+        reason: e.rule.text().get(lang).to_owned(),
     }
 }
 
@@ -161,7 +160,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     let opts = SolveOptions { start, limits, ..SolveOptions::default() };
     let e = match solve_block(&machine, &block, DMat3::IDENTITY, &opts) {
         Ok(e) => e,
-        Err(pe) => return fail(&if matches!(lang, Lang::De) { pe.message_de() } else { pe.message_en() }),
+        Err(pe) => return fail(pe.message().get(lang)),
     };
     match serde_json::to_string(&output(&e, lang)) {
         Ok(json) => println!("{json}"),

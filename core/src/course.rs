@@ -22,7 +22,8 @@ use glam::DMat3;
 
 use crate::axes::AxisValues;
 use crate::format::plane_text;
-use crate::machine::{Machine, Texts};
+use crate::lang::Text;
+use crate::machine::Machine;
 use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning, Value};
 use crate::solve::Explanation;
 
@@ -139,13 +140,13 @@ pub enum Hint {
 /// The result of checking an answer.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Verdict {
-    Correct(Texts),
+    Correct(Text),
     Wrong {
         hint: Hint,
-        text: Texts,
+        text: Text,
     },
     /// The answer cannot be read (a broken block, a letter in a number): the control's message.
-    Unreadable(Texts),
+    Unreadable(Text),
 }
 
 impl Verdict {
@@ -160,13 +161,13 @@ impl Verdict {
 pub struct Exercise {
     pub spec: Spec,
     pub variant: u32,
-    pub prompt: Texts,
+    pub prompt: Text,
     pub answer_kind: AnswerKind,
     /// The answer the solution shows, per UI language: NC words read the same in both, the
     /// control's refusal is its message in that language.
-    pub solution: Texts,
+    pub solution: Text,
     /// The same answer in another form (another PLANE form, or another way to write it).
-    pub equivalent: Texts,
+    pub equivalent: Text,
     /// A wrong answer and the hint it gets (for the tests, and as "typical mistake").
     pub typical_mistake: (Answer, Hint),
     /// The program this exercise is about, to open in the lesson's trainer, and its machine.
@@ -215,15 +216,6 @@ impl Rng {
     fn pick<T: Copy, const N: usize>(&mut self, items: &[T; N]) -> T {
         items[usize::try_from(self.next() % N as u64).unwrap_or(0)]
     }
-}
-
-fn texts(de: impl Into<String>, en: impl Into<String>) -> Texts {
-    Texts { de: de.into(), en: en.into() }
-}
-
-/// NC words (a block, axis words, a number): the same in both languages.
-fn nc(words: String) -> Texts {
-    Texts { de: words.clone(), en: words }
 }
 
 /// `TURN FMAX`: how the exercises' blocks position unless the task asks otherwise.

@@ -3,11 +3,11 @@
 //! The parser records a [`Diagnostic`] and carries on with the next block (rust-analyzer's
 //! `(T, Vec<Error>)` shape), so a broken program still shows everything that could be read.
 
-use std::fmt::Write as _;
-
 use serde::Serialize;
 
 use crate::ast::Span;
+pub use crate::lang::Lang;
+use crate::lang::Text;
 
 /// Error: the control would refuse the block. Warning: it would run, but look again.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
@@ -24,40 +24,6 @@ impl Severity {
             Severity::Error => "error",
             Severity::Warning => "warning",
         }
-    }
-}
-
-/// Language of a message and of the UI. German is the default: the trainees are mostly
-/// German-speaking machinists.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, serde::Deserialize)]
-pub enum Lang {
-    #[default]
-    De,
-    En,
-}
-
-impl Lang {
-    /// Picks the text for this language.
-    #[must_use]
-    pub fn t<'a>(self, de: &'a str, en: &'a str) -> &'a str {
-        match self {
-            Lang::De => de,
-            Lang::En => en,
-        }
-    }
-
-    #[must_use]
-    pub fn other(self) -> Lang {
-        match self {
-            Lang::De => Lang::En,
-            Lang::En => Lang::De,
-        }
-    }
-
-    /// The HTML `lang` code.
-    #[must_use]
-    pub fn code(self) -> &'static str {
-        self.t("de", "en")
     }
 }
 
@@ -121,7 +87,56 @@ pub enum DiagCode {
     MissingPositioning,
 }
 
+/// What the parser would have accepted where it stopped: NC words, the same in both languages
+/// (`SPC`, `MOVE|TURN|STAY`), or a description of the word in German and English.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Expected {
+    /// NC words as written in the program (alternatives separated by `|`).
+    Nc(&'static str),
+    /// A blank between two words.
+    Blank,
+    BlockNumber,
+    Number,
+    /// A whole number in the range of a label or cycle number.
+    NumberU32,
+    Name,
+    /// A name in double quotes.
+    QuotedName,
+    Axis,
+    /// A label: its number or its quoted name.
+    LabelNumberOrName,
+    /// An operand of a Q formula.
+    Operand,
+    /// A formula with fewer terms.
+    ShorterFormula,
+    /// A formula with fewer nested parentheses.
+    LessNesting,
+}
+
+impl Expected {
+    /// The text shown after "erwartet:" / "expected:".
+    #[must_use]
+    pub fn text(self) -> Text {
+        match self {
+            Expected::Nc(words) => Text::new(words, words),
+            Expected::Blank => Text::new("Leerzeichen", "blank"),
+            Expected::BlockNumber => Text::new("Satznummer", "block number"),
+            Expected::Number => Text::new("Zahl", "number"),
+            Expected::NumberU32 => Text::new("Zahl 0…4294967295", "number 0…4294967295"),
+            Expected::Name => Text::new("Name", "name"),
+            Expected::QuotedName => Text::new("\"Name\"", "\"name\""),
+            Expected::Axis => Text::new("Achse", "axis"),
+            Expected::LabelNumberOrName => Text::new("Nummer|\"Name\"", "number|\"name\""),
+            Expected::Operand => Text::new("Zahl|Q|(|Funktion", "number|Q|(|function"),
+            Expected::ShorterFormula => Text::new("kürzere Formel", "shorter formula"),
+            Expected::LessNesting => Text::new("weniger Verschachtelung", "less nesting"),
+        }
+    }
+}
+
 /// One finding, located by line, column (both 1-based, columns count characters) and byte span.
+/// It keeps what was found ([`DiagCode`]) and what was expected; the message is rendered in the
+/// language asked for when it is shown ([`Diagnostic::message`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Diagnostic {
     pub severity: Severity,
@@ -129,36 +144,38 @@ pub struct Diagnostic {
     pub line: u32,
     pub column: u32,
     pub span: Span,
-    pub message_de: String,
-    pub message_en: String,
-    /// What the parser would have accepted at that point (`SPC`, `MOVE|TURN|STAY`).
-    pub expected: Option<String>,
+    /// What the parser would have accepted at that point (`SPC`, `MOVE|TURN|STAY`): the help.
+    pub expected: Option<Expected>,
 }
 
 impl Diagnostic {
-    /// Builds the messages from the code.
     #[must_use]
     pub fn new(severity: Severity, code: DiagCode, span: Span, line: u32, column: u32) -> Self {
-        let (message_de, message_en) = messages(&code);
-        Diagnostic { severity, code, line, column, span, message_de, message_en, expected: None }
+        Diagnostic { severity, code, line, column, span, expected: None }
     }
 
     #[must_use]
-    pub fn with_expected(mut self, expected: Option<&str>) -> Self {
-        if let Some(e) = expected {
-            let _ = write!(self.message_de, " (erwartet: {e})");
-            let _ = write!(self.message_en, " (expected: {e})");
-            self.expected = Some(e.to_owned());
-        }
+    pub fn with_expected(mut self, expected: Option<Expected>) -> Self {
+        self.expected = expected;
         self
     }
 
+    /// The message in `lang`, with what was expected (German as the control words it).
     #[must_use]
-    pub fn message(&self, lang: Lang) -> &str {
-        match lang {
-            Lang::De => &self.message_de,
-            Lang::En => &self.message_en,
+    pub fn message(&self, lang: Lang) -> String {
+        let mut m = self.code.message().get(lang).to_owned();
+        if let Some(help) = self.help(lang) {
+            m.push_str(lang.t(" (erwartet: ", " (expected: "));
+            m.push_str(&help);
+            m.push(')');
         }
+        m
+    }
+
+    /// What would have been accepted, in `lang` (`None` where the parser cannot say).
+    #[must_use]
+    pub fn help(&self, lang: Lang) -> Option<String> {
+        self.expected.map(|e| e.text().get(lang).to_owned())
     }
 
     #[must_use]
@@ -173,65 +190,86 @@ fn n(v: f64, lang: Lang) -> String {
     crate::number::prose(v, None, lang)
 }
 
-fn messages(code: &DiagCode) -> (String, String) {
-    use Lang::{De, En};
-    match code {
-        DiagCode::InvalidInput => ("Eingabewert falsch".into(), "Invalid input".into()),
-        DiagCode::MissingWord { word } => {
-            (format!("Eingabe fehlt: {word}"), format!("Missing input: {word}"))
-        }
-        DiagCode::AngleNotPermitted { word, value, min, max } => (
-            format!("Winkel nicht erlaubt: {word} {} ({}…{})", n(*value, De), n(*min, De), n(*max, De)),
-            format!(
-                "Entered angle not permitted: {word} {} ({}…{})",
-                n(*value, En),
-                n(*min, En),
-                n(*max, En)
+impl DiagCode {
+    /// The message, German as the control words it.
+    #[must_use]
+    pub fn message(&self) -> Text {
+        use Lang::{De, En};
+        let t = Text::owned;
+        match self {
+            DiagCode::InvalidInput => Text::new("Eingabewert falsch", "Invalid input"),
+            DiagCode::MissingWord { word } => {
+                t(format!("Eingabe fehlt: {word}"), format!("Missing input: {word}"))
+            }
+            DiagCode::AngleNotPermitted { word, value, min, max } => t(
+                format!("Winkel nicht erlaubt: {word} {} ({}…{})", n(*value, De), n(*min, De), n(*max, De)),
+                format!(
+                    "Entered angle not permitted: {word} {} ({}…{})",
+                    n(*value, En),
+                    n(*min, En),
+                    n(*max, En)
+                ),
             ),
-        ),
-        DiagCode::ValueOutOfRange { word, value, min, max } => (
-            format!(
-                "Eingabebereich überschritten: {word} {} ({}…{})",
-                n(*value, De),
-                n(*min, De),
-                n(*max, De)
+            DiagCode::ValueOutOfRange { word, value, min, max } => t(
+                format!(
+                    "Eingabebereich überschritten: {word} {} ({}…{})",
+                    n(*value, De),
+                    n(*min, De),
+                    n(*max, De)
+                ),
+                format!("Value out of range: {word} {} ({}…{})", n(*value, En), n(*min, En), n(*max, En)),
             ),
-            format!("Value out of range: {word} {} ({}…{})", n(*value, En), n(*min, En), n(*max, En)),
-        ),
-        DiagCode::Duplicate { word } => {
-            (format!("Doppelt programmiert: {word}"), format!("Programmed twice: {word}"))
+            DiagCode::Duplicate { word } => {
+                t(format!("Doppelt programmiert: {word}"), format!("Programmed twice: {word}"))
+            }
+            DiagCode::NotAllowed { word } => {
+                t(format!("{word} hier nicht erlaubt"), format!("{word} not permitted in this block"))
+            }
+            DiagCode::SeqWithSym => {
+                Text::new("SEQ und SYM nicht gleichzeitig erlaubt", "SEQ and SYM cannot be combined")
+            }
+            DiagCode::ZeroVector { word } => t(
+                format!("Eingabewert falsch: {word} ist Nullvektor"),
+                format!("Invalid input: {word} is a zero vector"),
+            ),
+            DiagCode::BlockNumberNotAscending { previous, number } => t(
+                format!("Satznummer nicht aufsteigend: {number} nach {previous}"),
+                format!("Block number not ascending: {number} after {previous}"),
+            ),
+            DiagCode::MissingBlockNumber => Text::new("Satznummer fehlt", "Block number missing"),
+            DiagCode::PgmNameMismatch { begin, end } => t(
+                format!("Programmname falsch: END PGM {end} zu BEGIN PGM {begin}"),
+                format!("Wrong program name: END PGM {end} for BEGIN PGM {begin}"),
+            ),
+            DiagCode::MissingEndPgm => Text::new("END PGM fehlt", "END PGM missing"),
+            DiagCode::UnknownBlock => Text::new("Unbekannter NC-Satz", "Unknown NC block"),
+            DiagCode::CycleParamsElided { cycle } => t(
+                format!("Zyklusparameter ausgelassen: CYCL DEF {cycle}"),
+                format!("Cycle parameters left out: CYCL DEF {cycle}"),
+            ),
+            DiagCode::ContinuationMissing => {
+                Text::new("Fortsetzungszeile fehlt", "Continuation line missing")
+            }
+            DiagCode::MissingPositioning => Text::new(
+                "Positionierverhalten fehlt (MOVE/TURN/STAY)",
+                "Positioning missing (MOVE/TURN/STAY)",
+            ),
         }
-        DiagCode::NotAllowed { word } => {
-            (format!("{word} hier nicht erlaubt"), format!("{word} not permitted in this block"))
-        }
-        DiagCode::SeqWithSym => {
-            ("SEQ und SYM nicht gleichzeitig erlaubt".into(), "SEQ and SYM cannot be combined".into())
-        }
-        DiagCode::ZeroVector { word } => (
-            format!("Eingabewert falsch: {word} ist Nullvektor"),
-            format!("Invalid input: {word} is a zero vector"),
-        ),
-        DiagCode::BlockNumberNotAscending { previous, number } => (
-            format!("Satznummer nicht aufsteigend: {number} nach {previous}"),
-            format!("Block number not ascending: {number} after {previous}"),
-        ),
-        DiagCode::MissingBlockNumber => ("Satznummer fehlt".into(), "Block number missing".into()),
-        DiagCode::PgmNameMismatch { begin, end } => (
-            format!("Programmname falsch: END PGM {end} zu BEGIN PGM {begin}"),
-            format!("Wrong program name: END PGM {end} for BEGIN PGM {begin}"),
-        ),
-        DiagCode::MissingEndPgm => ("END PGM fehlt".into(), "END PGM missing".into()),
-        DiagCode::UnknownBlock => ("Unbekannter NC-Satz".into(), "Unknown NC block".into()),
-        DiagCode::CycleParamsElided { cycle } => (
-            format!("Zyklusparameter ausgelassen: CYCL DEF {cycle}"),
-            format!("Cycle parameters left out: CYCL DEF {cycle}"),
-        ),
-        DiagCode::ContinuationMissing => {
-            ("Fortsetzungszeile fehlt".into(), "Continuation line missing".into())
-        }
-        DiagCode::MissingPositioning => (
-            "Positionierverhalten fehlt (MOVE/TURN/STAY)".into(),
-            "Positioning missing (MOVE/TURN/STAY)".into(),
-        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn expected_words_are_translated_nc_words_are_not() {
+        let d = Diagnostic::new(Severity::Error, DiagCode::InvalidInput, Span::new(0, 1), 1, 1)
+            .with_expected(Some(Expected::BlockNumber));
+        assert_eq!(d.message(Lang::De), "Eingabewert falsch (erwartet: Satznummer)");
+        assert_eq!(d.message(Lang::En), "Invalid input (expected: block number)");
+        let d = d.with_expected(Some(Expected::Nc("MOVE|TURN|STAY")));
+        assert_eq!(d.help(Lang::En).as_deref(), Some("MOVE|TURN|STAY"));
+        assert_eq!(d.message(Lang::De), "Eingabewert falsch (erwartet: MOVE|TURN|STAY)");
     }
 }

@@ -12,6 +12,7 @@ pub mod diag;
 pub mod edit;
 pub mod format;
 pub mod kinematics;
+pub mod lang;
 pub mod machine;
 pub mod number;
 pub mod orientation;
@@ -24,6 +25,7 @@ pub mod text;
 pub mod unconfirmed;
 
 pub use ast::{Block, BlockBody, Program};
-pub use diag::{Diagnostic, Lang, Severity};
+pub use diag::{Diagnostic, Severity};
 pub use format::format_program;
+pub use lang::{Lang, Text};
 pub use parse::parse;

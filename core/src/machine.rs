@@ -25,14 +25,8 @@ use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
 use crate::axes::AxisValues;
+use crate::lang::Text;
 use crate::plane::RotaryAxis;
-
-/// A German and an English text.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
-pub struct Texts {
-    pub de: String,
-    pub en: String,
-}
 
 /// Whether a rotary axis turns the workpiece (table) or the tool (head).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -78,8 +72,8 @@ pub struct RotaryJoint {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Machine {
     pub id: String,
-    pub name: Texts,
-    pub description: Texts,
+    pub name: Text,
+    pub description: Text,
     /// Chain order workpiece → tool: `[slave, master]` (DOMAIN.md §3.1: the master is the first
     /// rotary axis seen from the tool, i.e. the last seen from the workpiece).
     chain: [RotaryJoint; 2],
@@ -207,18 +201,11 @@ impl std::error::Error for MachineError {}
 #[serde(deny_unknown_fields)]
 struct RawMachine {
     id: Cow<'static, str>,
-    name: RawTexts,
-    description: RawTexts,
+    name: Text,
+    description: Text,
     chain: Cow<'static, [RawJoint]>,
     #[serde(default)]
     geometry: Option<RawGeometry>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawTexts {
-    de: Cow<'static, str>,
-    en: Cow<'static, str>,
 }
 
 #[derive(Clone, Copy, Deserialize)]
@@ -322,11 +309,10 @@ impl Machine {
         }
         let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
         let geometry = validate_geometry(raw.geometry)?;
-        let texts = |t: &RawTexts| Texts { de: t.de.to_string(), en: t.en.to_string() };
         Ok(Machine {
             id: raw.id.to_string(),
-            name: texts(&raw.name),
-            description: texts(&raw.description),
+            name: raw.name.clone(),
+            description: raw.description.clone(),
             chain,
             symmetry,
             geometry,

@@ -9,6 +9,7 @@ use serde::Serialize;
 
 use crate::angle::{acosd, atan2d, clean, wrap180, wrap360};
 use crate::axes::AxisValues;
+use crate::lang::Text;
 use crate::machine::Machine;
 use crate::plane::{PROJECTED_LIMIT, PlaneDef, RelAxis, RotaryAxis};
 use crate::unconfirmed;
@@ -29,18 +30,11 @@ pub enum VectorName {
 }
 
 impl VectorName {
-    fn de(self) -> &'static str {
+    fn name(self) -> Text {
         match self {
-            VectorName::Base => "Basisvektor (BX, BY, BZ)",
-            VectorName::Normal => "Normalenvektor (NX, NY, NZ)",
-            VectorName::P1P2 => "Strecke P1→P2",
-        }
-    }
-    fn en(self) -> &'static str {
-        match self {
-            VectorName::Base => "base vector (BX, BY, BZ)",
-            VectorName::Normal => "normal vector (NX, NY, NZ)",
-            VectorName::P1P2 => "segment P1→P2",
+            VectorName::Base => Text::new("Basisvektor (BX, BY, BZ)", "base vector (BX, BY, BZ)"),
+            VectorName::Normal => Text::new("Normalenvektor (NX, NY, NZ)", "normal vector (NX, NY, NZ)"),
+            VectorName::P1P2 => Text::new("Strecke P1→P2", "segment P1→P2"),
         }
     }
 }
@@ -68,13 +62,14 @@ pub enum PlaneError {
 }
 
 impl PlaneError {
-    /// `(German, English)` message with the numbers. A range error on an angle says what the
-    /// control says, "Winkel nicht erlaubt" / "Entered angle not permitted" [S2]; on other values
+    /// The message with the numbers. A range error on an angle says what the control says,
+    /// "Winkel nicht erlaubt" / "Entered angle not permitted" [S2]; on other values
     /// "Eingabewert falsch" / "Invalid input" (the parser's wording for the same check).
     #[must_use]
-    pub fn messages(&self) -> (String, String) {
+    pub fn message(&self) -> Text {
+        let t = Text::owned;
         match self {
-            PlaneError::NotFinite { word, value } => (
+            PlaneError::NotFinite { word, value } => t(
                 format!("Ungültiger Zahlenwert: {word} = {value}"),
                 format!("Invalid number: {word} = {value}"),
             ),
@@ -86,53 +81,44 @@ impl PlaneError {
                 } else {
                     ("Eingabewert falsch", "Invalid input")
                 };
-                (
+                t(
                     format!("{de}: {word} = {value} (erlaubt {min} … {max})"),
                     format!("{en}: {word} = {value} (allowed {min} … {max})"),
                 )
             }
-            PlaneError::ZeroVector { vector, length } => (
-                format!("{} hat die Länge null ({length})", vector.de()),
-                format!("The {} has zero length ({length})", vector.en()),
-            ),
-            PlaneError::BaseParallelToNormal { angle, .. } => (
+            PlaneError::ZeroVector { vector, length } => {
+                let name = vector.name();
+                t(
+                    format!("{} hat die Länge null ({length})", name.de),
+                    format!("The {} has zero length ({length})", name.en),
+                )
+            }
+            PlaneError::BaseParallelToNormal { angle, .. } => t(
                 format!("Basisvektor parallel zum Normalenvektor (Winkel {angle}°)"),
                 format!("Base vector parallel to the normal vector (angle {angle}°)"),
             ),
-            PlaneError::CollinearPoints { sine, .. } => (
+            PlaneError::CollinearPoints { sine, .. } => t(
                 format!("Die drei Punkte liegen auf einer Geraden (sin Winkel bei P1 = {sine})"),
                 format!("The three points lie on one line (sine of the angle at P1 = {sine})"),
             ),
-            PlaneError::MachineRequired => (
-                "PLANE AXIAL: keine Maschinenkinematik gewählt".into(),
-                "PLANE AXIAL: no machine kinematics selected".into(),
+            PlaneError::MachineRequired => Text::new(
+                "PLANE AXIAL: keine Maschinenkinematik gewählt",
+                "PLANE AXIAL: no machine kinematics selected",
             ),
-            PlaneError::AxisNotOnMachine { axis, machine } => (
+            PlaneError::AxisNotOnMachine { axis, machine } => t(
                 format!("Achse {axis} nicht vorhanden (Maschine {machine})"),
                 format!("Axis {axis} does not exist (machine {machine})"),
             ),
             PlaneError::DuplicateAxis { axis } => {
-                (format!("Achse {axis} mehrfach programmiert"), format!("Axis {axis} programmed twice"))
+                t(format!("Achse {axis} mehrfach programmiert"), format!("Axis {axis} programmed twice"))
             }
         }
-    }
-
-    /// The message in German, with the numbers.
-    #[must_use]
-    pub fn message_de(&self) -> String {
-        self.messages().0
-    }
-
-    /// The message in English, with the numbers.
-    #[must_use]
-    pub fn message_en(&self) -> String {
-        self.messages().1
     }
 }
 
 impl std::fmt::Display for PlaneError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message_en())
+        f.write_str(&self.message().en)
     }
 }
 

@@ -20,7 +20,7 @@ mod words;
 use std::borrow::Cow;
 
 use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
-use crate::diag::{DiagCode, Diagnostic, Severity};
+use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
 use crate::plane::Value;
 
 pub(crate) use words::Stop;
@@ -32,7 +32,7 @@ pub(crate) struct Issue {
     end: usize,
     severity: Severity,
     code: DiagCode,
-    expected: Option<&'static str>,
+    expected: Option<Expected>,
 }
 
 /// Per-block context handed to the family parsers: collects issues and lends scratch buffers
@@ -69,7 +69,7 @@ impl Cx {
     }
 
     /// Records a syntax error at `at` and returns `None` so a family parser can `return cx.fail(..)`.
-    pub(crate) fn invalid<T>(&mut self, at: &str, expected: Option<&'static str>) -> Option<T> {
+    pub(crate) fn invalid<T>(&mut self, at: &str, expected: Option<Expected>) -> Option<T> {
         let start = self.off(at);
         let word = at.find([' ', '\t']).unwrap_or(at.len()).max(1);
         self.issues.push(Issue {
@@ -265,7 +265,14 @@ impl Parser<'_> {
         (line.number, prefix.chars().count() as u32 + 1)
     }
 
-    fn diag_at(&mut self, sev: Severity, code: DiagCode, start: usize, end: usize, expected: Option<&str>) {
+    fn diag_at(
+        &mut self,
+        sev: Severity,
+        code: DiagCode,
+        start: usize,
+        end: usize,
+        expected: Option<Expected>,
+    ) {
         let (line, column) = self.locate(start);
         self.diags
             .push(Diagnostic::new(sev, code, Span::new(start, end), line, column).with_expected(expected));
@@ -294,15 +301,19 @@ impl Parser<'_> {
             let at = first.start + (line_text.len() - rest.len());
             match rest[..digits].parse::<u32>() {
                 Ok(n) => number = Some(n),
-                Err(_) => {
-                    self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + digits, Some("Satznummer"))
-                }
+                Err(_) => self.diag_at(
+                    Severity::Error,
+                    DiagCode::InvalidInput,
+                    at,
+                    at + digits,
+                    Some(Expected::BlockNumber),
+                ),
             }
             rest = &rest[digits..];
             if !rest.is_empty() && !rest.starts_with([' ', '\t']) {
                 // `12X` is neither a block number nor a word.
                 let at = first.start + (line_text.len() - rest.len());
-                self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some("Leerzeichen"));
+                self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some(Expected::Blank));
             }
             rest = rest.trim_start();
             if let Some(r) = rest.strip_prefix('/') {
@@ -482,17 +493,21 @@ pub enum PlaneTextError {
 impl PlaneTextError {
     /// The message in `lang`.
     #[must_use]
-    pub fn message(&self, lang: crate::Lang) -> &str {
+    pub fn message(&self, lang: crate::Lang) -> String {
         match self {
             PlaneTextError::Invalid(d) => d.message(lang),
-            PlaneTextError::NoPlane => lang.t(
-                "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
-                "No PLANE block found (it starts with PLANE)",
-            ),
-            PlaneTextError::SeveralPlanes => lang.t(
-                "Mehr als ein PLANE-Satz: bitte genau einen",
-                "More than one PLANE block: please exactly one",
-            ),
+            PlaneTextError::NoPlane => lang
+                .t(
+                    "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
+                    "No PLANE block found (it starts with PLANE)",
+                )
+                .to_owned(),
+            PlaneTextError::SeveralPlanes => lang
+                .t(
+                    "Mehr als ein PLANE-Satz: bitte genau einen",
+                    "More than one PLANE block: please exactly one",
+                )
+                .to_owned(),
         }
     }
 }

@@ -72,7 +72,8 @@ use glam::{DMat3, DVec3};
 use serde::Serialize;
 
 use crate::ast::{BlockBody, Label, Program};
-use crate::machine::{Machine, Texts};
+use crate::lang::Text;
+use crate::machine::Machine;
 use crate::solve::Explanation;
 
 pub use error::{SimError, SimErrorCode};
@@ -223,7 +224,7 @@ pub struct State {
     pub plane: Option<Arc<ActivePlane>>,
     /// The solve explanation of this block (PLANE, cycle 19).
     pub explanation: Option<Arc<Explanation>>,
-    pub message: Option<Texts>,
+    pub message: Option<Text>,
     pub segments: Vec<Segment>,
     /// M30/M2 or END PGM reached.
     pub ended: bool,

@@ -9,6 +9,7 @@
 use glam::DVec3;
 use serde::Serialize;
 
+use crate::lang::Text;
 use crate::plane::TransformMode;
 
 /// A decision made here, as the UI and the explanation record cite it.
@@ -123,154 +124,143 @@ impl Decision {
         Decision::Q120OnlySpatial,
     ];
 
-    /// `(German, English)` text for the trainee.
+    /// The text for the trainee.
     #[must_use]
-    pub fn texts(self) -> (&'static str, &'static str) {
+    pub fn text(self) -> Text {
         match self {
-            Decision::ProjectedSign => (
+            Decision::ProjectedSign => Text::new(
                 "PROJECTED: Vorzeichen so gewählt, dass ein einzelner Winkel SPATIAL entspricht (PROPR ≙ SPB, PROMIN ≙ SPA).",
                 "PROJECTED: sign chosen so that a single angle matches SPATIAL (PROPR ≙ SPB, PROMIN ≙ SPA).",
             ),
-            Decision::VectorGramSchmidt => (
+            Decision::VectorGramSchmidt => Text::new(
                 "VECTOR: Normalenvektor N bleibt, der Basisvektor B wird senkrecht dazu korrigiert.",
                 "VECTOR: the normal vector N is kept, the base vector B is made perpendicular to it.",
             ),
-            Decision::RelativUntilted => (
+            Decision::RelativUntilted => Text::new(
                 "PLANE RELATIV ohne aktive Schwenkung bezieht sich auf das ungeschwenkte W-CS.",
                 "PLANE RELATIV without an active tilt refers to the untilted W-CS.",
             ),
-            Decision::PathMetric => (
+            Decision::PathMetric => Text::new(
                 "Weglänge = Summe der Verfahrwege aller Drehachsen (Endlosachsen auf kurzem Weg).",
                 "Path length = sum of the travel of all rotary axes (endless axes the short way round).",
             ),
-            Decision::TieRule => (
+            Decision::TieRule => Text::new(
                 "Gleich lange Wege: die Lösung mit dem größeren Wert der Master-Achse.",
                 "Equal paths: the solution with the larger master axis value.",
             ),
-            Decision::CoordRotFreeAxis => (
+            Decision::CoordRotFreeAxis => Text::new(
                 "COORD ROT: die freie Drehachse bleibt auf ihrer aktuellen Position.",
                 "COORD ROT: the free rotary axis stays at its current position.",
             ),
-            Decision::TableRotSign => (
+            Decision::TableRotSign => Text::new(
                 "TABLE ROT: die freie Tischachse dreht um +γ (SPC+45 → C+45).",
                 "TABLE ROT: the free table axis turns by +γ (SPC+45 → C+45).",
             ),
-            Decision::TableRotHeadAxis => (
+            Decision::TableRotHeadAxis => Text::new(
                 "TABLE ROT wirkt nur auf eine freie Tischachse; eine freie Kopfachse bleibt stehen.",
                 "TABLE ROT acts on a free table axis only; a free head axis stays where it is.",
             ),
-            Decision::DefaultTransform => (
+            Decision::DefaultTransform => Text::new(
                 "Ohne COORD ROT/TABLE ROT rechnet die Steuerung wie mit COORD ROT.",
                 "Without COORD ROT/TABLE ROT the control computes as with COORD ROT.",
             ),
-            Decision::ZeroIsPlus => (
+            Decision::ZeroIsPlus => Text::new(
                 "SEQ/SYM: Master-Achse genau auf dem Bezug (0° bzw. Symmetriepunkt) zählt als positiv.",
                 "SEQ/SYM: a master axis exactly on the reference (0° or symmetry point) counts as positive.",
             ),
-            Decision::SeqSameSide => (
+            Decision::SeqSameSide => Text::new(
                 "SEQ mit beiden Lösungen auf der gewählten Seite: erst die nähere Lösung, dann die Endschalterprüfung.",
                 "SEQ with both solutions on the requested side: the nearer one first, then the limit check.",
             ),
-            Decision::SymmetryPoint => (
+            Decision::SymmetryPoint => Text::new(
                 "Symmetriepunkt: die Stellung der Master-Achse, in der die Werkzeugachse in +Richtung der Slave-Achse zeigt.",
                 "Symmetry point: the master position where the tool axis points along +slave axis direction.",
             ),
-            Decision::AxisRepresentation => (
+            Decision::AxisRepresentation => Text::new(
                 "Achswert einer begrenzten Achse: zuerst im Bereich −180…+180°, sonst ±360° innerhalb der Endschalter.",
                 "Value of a limited axis: within −180…+180° first, else ±360° inside the limit switches.",
             ),
-            Decision::AxialMissingAxis => (
+            Decision::AxialMissingAxis => Text::new(
                 "PLANE AXIAL: nicht programmierte Drehachsen bleiben auf ihrer aktuellen Position.",
                 "PLANE AXIAL: rotary axes not programmed stay at their current position.",
             ),
-            Decision::ResetTarget => (
+            Decision::ResetTarget => Text::new(
                 "PLANE RESET MOVE/TURN fährt alle Drehachsen auf 0°.",
                 "PLANE RESET MOVE/TURN moves every rotary axis to 0°.",
             ),
-            Decision::UnreachableMessage => (
+            Decision::UnreachableMessage => Text::new(
                 "Werkzeugachse mit der Kinematik nicht erreichbar: eigene Meldung „Winkel nicht berechenbar“.",
                 "Tool axis not reachable by the kinematics: separate message \"Angle cannot be calculated\".",
             ),
-            Decision::InputRanges => (
+            Decision::InputRanges => Text::new(
                 "Eingabebereiche: EULPR −180…+180 wie angegeben (EULPR+270 aus dem Tipp wird abgewiesen), RELATIV wie SPATIAL ±359,9999, VECTOR ±99,9999999, POINTS und AXIAL ±99999,9999; DIST und MB 0…99999,9999 (nicht negativ).",
                 "Input ranges: EULPR −180…+180 as stated (EULPR+270 from the tip is refused), RELATIV like SPATIAL ±359.9999, VECTOR ±99.9999999, POINTS and AXIAL ±99999.9999; DIST and MB 0…99999.9999 (not negative).",
             ),
-            Decision::SimMessages => (
+            Decision::SimMessages => Text::new(
                 "Meldungstexte des Simulators außer „Winkel nicht erlaubt“ (z. B. „Q-Parameter nicht definiert“, „Endschalter X+“) sind im Stil der Steuerung formuliert, nicht belegt.",
                 "The simulator's messages other than \"Entered angle not permitted\" (e.g. \"Q parameter not defined\", \"Limit switch X+\") are worded in the control's style, not confirmed.",
             ),
-            Decision::TransformLevels => (
+            Decision::TransformLevels => Text::new(
                 "Nullpunkt und Spiegelung vor dem Schwenken wirken im W-CS, danach im WPL-CS; Drehung immer im WPL-CS; Reihenfolge Verschiebung, Spiegelung, Drehung; RESET löscht beide Ebenen.",
                 "Datum shift and mirror before the tilt act in the W-CS, after it in the WPL-CS; rotation always in the WPL-CS; order shift, mirror, rotation; RESET clears both levels.",
             ),
-            Decision::CompensationOnlyWhenTilted => (
+            Decision::CompensationOnlyWhenTilted => Text::new(
                 "Ohne aktive Schwenkung ignoriert die Steuerung die Stellung der Drehachsen (3-Achs-Verhalten), auch nach PLANE RESET STAY.",
                 "Without an active tilt the control ignores the rotary axis positions (3-axis behaviour), also after PLANE RESET STAY.",
             ),
-            Decision::MoveDefaultDist => (
+            Decision::MoveDefaultDist => Text::new(
                 "MOVE ohne DIST: Drehpunkt = Werkzeugspitze (DIST 0), die Spitze bleibt auf dem Werkstück stehen.",
                 "MOVE without DIST: centre of rotation = tool tip (DIST 0), the tip stays on the workpiece.",
             ),
-            Decision::MbRetractRapid => (
+            Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken.",
                 "MB/MB MAX: retract at rapid traverse before the swivel.",
             ),
-            Decision::RotaryFeed => (
+            Decision::RotaryFeed => Text::new(
                 "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",
                 "Feed F of swivels and rotary moves in °/min; F AUTO = feed of the TOOL CALL (animation duration only).",
             ),
-            Decision::Cycle19Spatial => (
+            Decision::Cycle19Spatial => Text::new(
                 "Zyklus 19: Eingaben als Raumwinkel (OEM-Parameter planeOrientation).",
                 "Cycle 19: inputs are spatial angles (OEM parameter planeOrientation).",
             ),
-            Decision::Cycle19NoMotion => (
+            Decision::Cycle19NoMotion => Text::new(
                 "Zyklus 19 fährt die Drehachsen nicht selbst; das Programm positioniert sie (L A+Q120 …). Alle Winkel 0 setzt zurück.",
                 "Cycle 19 does not move the rotary axes itself; the program positions them (L A+Q120 …). All angles 0 resets.",
             ),
-            Decision::CallDepth => {
-                ("Unterprogramme höchstens 19-fach verschachtelt.", "Subprograms nested at most 19 deep.")
-            }
-            Decision::RepSectionRepeat => (
+            Decision::CallDepth => Text::new(
+                "Unterprogramme höchstens 19-fach verschachtelt.",
+                "Subprograms nested at most 19 deep.",
+            ),
+            Decision::RepSectionRepeat => Text::new(
                 "CALL LBL n REP m wiederholt den Abschnitt ab LBL n m-mal (m+1 Durchläufe); ohne REP Unterprogramm bis LBL 0.",
                 "CALL LBL n REP m repeats the section from LBL n m times (m+1 passes); without REP a subprogram up to LBL 0.",
             ),
-            Decision::ListAfterEnd => (
+            Decision::ListAfterEnd => Text::new(
                 "Sätze nach M30/M2 werden als „nicht ausgeführt“ aufgelistet.",
                 "Blocks after M30/M2 are listed as \"not executed\".",
             ),
-            Decision::PositiveDepthError => (
+            Decision::PositiveDepthError => Text::new(
                 "Zyklus 200 mit positiver Tiefe Q201: Fehlermeldung (Maschinenparameter displayDepthErr).",
                 "Cycle 200 with a positive depth Q201: error message (machine parameter displayDepthErr).",
             ),
-            Decision::Cycle232Stepover => (
+            Decision::Cycle232Stepover => Text::new(
                 "Zyklus 232: maximale seitliche Zustellung = Q370 × Werkzeugradius.",
                 "Cycle 232: maximum stepover = Q370 × tool radius.",
             ),
-            Decision::Cycle232Strategy => (
+            Decision::Cycle232Strategy => Text::new(
                 "Zyklus 232: Strategien Q389=1 und 2 werden als Mäander simuliert.",
                 "Cycle 232: strategies Q389=1 and 2 are simulated as a meander.",
             ),
-            Decision::DatumAbsoluteReplaces => (
+            Decision::DatumAbsoluteReplaces => Text::new(
                 "Nullpunktverschiebung mit absoluten Werten ersetzt die ganze Verschiebung (nicht programmierte Achsen 0); nur inkrementale Werte addieren.",
                 "A datum shift with absolute values replaces the whole shift (axes not written 0); only incremental values add.",
             ),
-            Decision::Q120OnlySpatial => (
+            Decision::Q120OnlySpatial => Text::new(
                 "Q120–Q122 werden von Schwenkungen mit Raumwinkeln geschrieben, nicht von PLANE AXIAL und PLANE RESET.",
                 "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
             ),
         }
-    }
-
-    /// German text for the trainee.
-    #[must_use]
-    pub fn text_de(self) -> &'static str {
-        self.texts().0
-    }
-
-    /// English text for the trainee.
-    #[must_use]
-    pub fn text_en(self) -> &'static str {
-        self.texts().1
     }
 }
 

@@ -44,12 +44,12 @@ fn range_errors_carry_word_value_and_range() {
         PlaneError::OutOfRange { word: "EULPR", value: 270.0, min: -180.0, max: 180.0 }
     );
     let msg = PlaneError::OutOfRange { word: "EULNU", value: -5.0, min: 0.0, max: 180.0 };
-    assert_eq!(msg.message_de(), "Winkel nicht erlaubt: EULNU = -5 (erlaubt 0 … 180)");
-    assert_eq!(msg.message_en(), "Entered angle not permitted: EULNU = -5 (allowed 0 … 180)");
+    assert_eq!(msg.message().de, "Winkel nicht erlaubt: EULNU = -5 (erlaubt 0 … 180)");
+    assert_eq!(msg.message().en, "Entered angle not permitted: EULNU = -5 (allowed 0 … 180)");
     let msg = PlaneError::OutOfRange { word: "NX", value: 120.0, min: -99.9999999, max: 99.9999999 };
-    assert_eq!(msg.message_de(), "Eingabewert falsch: NX = 120 (erlaubt -99.9999999 … 99.9999999)");
+    assert_eq!(msg.message().de, "Eingabewert falsch: NX = 120 (erlaubt -99.9999999 … 99.9999999)");
     let msg = PlaneError::OutOfRange { word: "PROPR", value: 90.0, min: -89.9999, max: 89.9999 };
-    assert!(msg.message_de().starts_with("Winkel nicht erlaubt"));
+    assert!(msg.message().de.starts_with("Winkel nicht erlaubt"));
 }
 
 #[test]
@@ -128,8 +128,8 @@ fn axial_positions_directly_and_checks_limits() {
         e.error,
         Some(SolveError::AxisOutOfLimit { axis: RotaryAxis::A, value: -120.0, min: -100.0, max: 180.0 })
     );
-    assert_eq!(e.error.unwrap().message_de(), "Winkel nicht erlaubt");
-    assert_eq!(e.error.unwrap().detail_de(), "A-120 außerhalb des Verfahrbereichs -100 … +180");
+    assert_eq!(e.error.unwrap().message().de, "Winkel nicht erlaubt");
+    assert_eq!(e.error.unwrap().detail().de, "A-120 außerhalb des Verfahrbereichs -100 … +180");
 }
 
 #[test]

@@ -76,7 +76,7 @@ fn seq_with_both_solutions_on_the_same_side_takes_the_nearer() {
     let e = solve::solve(&m, &orientation::spatial(-45.0, 0.0, 0.0), &opts);
     assert_eq!(e.rule, Rule::SeqNearer { sign: Sign::Minus, master: RotaryAxis::A });
     // From A−95 B180: −135/180 is 40 away, −45/0 is 50+180 away, but −135 violates A ≥ −100.
-    assert_eq!(e.error.map(|x| x.message_de()), Some("Winkel nicht erlaubt"));
+    assert_eq!(e.error.map(|x| x.message().de), Some("Winkel nicht erlaubt".into()));
     assert!(e.decisions.contains(&Decision::SeqSameSide));
 }
 
@@ -103,8 +103,8 @@ fn relativ_blocks_compose_through_solve_block() {
 fn every_decision_has_distinct_texts() {
     let mut seen = std::collections::HashSet::new();
     for d in Decision::ALL {
-        let (de, en) = d.texts();
-        assert!(!de.is_empty() && !en.is_empty() && de != en, "{d:?}");
-        assert!(seen.insert(en), "duplicate text for {d:?}");
+        let t = d.text();
+        assert!(!t.de.is_empty() && !t.en.is_empty() && t.de != t.en, "{d:?}");
+        assert!(seen.insert(t.en), "duplicate text for {d:?}");
     }
 }

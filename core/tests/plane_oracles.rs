@@ -181,8 +181,12 @@ fn check(row: &seq_sym::Row) {
             Expect::Refused(msg) => {
                 assert!(e.chosen.is_none(), "{id}: expected a refusal, chose {:?}", e.chosen_axes());
                 let err = e.error.unwrap_or_else(|| panic!("{id}: no error"));
-                assert_eq!(err.message_de(), *msg, "{id}");
-                assert_eq!(e.error_message.map(|t| t.en()), Some("Entered angle not permitted"), "{id}");
+                assert_eq!(err.message().de, *msg, "{id}");
+                assert_eq!(
+                    e.error_message.map(|t| t.0.message().en),
+                    Some("Entered angle not permitted".into()),
+                    "{id}"
+                );
             }
         }
     }
@@ -236,7 +240,7 @@ fn oracles_13_to_22_explanations() {
     assert_close!(v.value, 45.0, ORACLE, "A of the excluded candidate");
     // 15: SEQ− text as the UI shows it.
     let e = explain(15, Some("SEQ-"));
-    assert_eq!(e.reason.de(), "SEQ−: Master-Achse A muss negativ sein (bezogen auf die Grundstellung 0°)");
+    assert_eq!(e.rule.text().de, "SEQ−: Master-Achse A muss negativ sein (bezogen auf die Grundstellung 0°)");
     assert_eq!(e.q.q120.map(|a| a.round()), Some(-45.0));
     assert_eq!(e.q.q122.map(|c| c.round()), Some(-90.0));
     assert_eq!(e.q.q121, None);

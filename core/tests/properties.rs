@@ -172,7 +172,8 @@ proptest! {
             if let Ok(e) = solve::solve_block(&m, &block(def.clone(), selection, transform), DMat3::IDENTITY, &opts) {
                 // Whatever happened is explained: a choice or an error, never both, never neither.
                 prop_assert!(e.chosen.is_some() != e.error.is_some(), "{e:#?}");
-                prop_assert!(!e.reason.de().is_empty() && !e.reason.en().is_empty());
+                let reason = e.rule.text();
+                prop_assert!(!reason.de.is_empty() && !reason.en.is_empty());
                 serde_json::to_string(&e).map_err(|x| TestCaseError::fail(x.to_string()))?;
             }
         }

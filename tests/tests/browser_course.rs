@@ -244,7 +244,7 @@ async fn progress_is_kept_and_a_corrupt_record_is_reported() {
     let root = mount_at("#kurs/1").await;
     wait_for(&root, "[data-lesson='1']", 5_000).await.expect("lesson 1");
     let ex = Exercise::generate(lessons::lesson(0).expect("lesson").exercises[0], 0);
-    answer(&root, 0, &Answer::Text(ex.solution.de.clone())).await;
+    answer(&root, 0, &Answer::Text(ex.solution.de.to_string())).await;
     unmount(&root);
     let root = mount_at("#kurs").await;
     let status = wait_for(&root, "[data-testid=lesson-status-1]", 3_000).await.expect("overview");

@@ -50,8 +50,8 @@ fn render(src: &str) -> String {
             d.line,
             d.column,
             d.severity.as_str(),
-            d.message_de,
-            d.message_en
+            d.message(Lang::De),
+            d.message(Lang::En)
         );
     }
     s.push_str("blocks:\n");
@@ -112,7 +112,7 @@ fn check_err(name: &str) {
         let line: u32 = line.and_then(|l| l.parse().ok()).expect("LINE SEVERITY MESSAGE");
         let found = diags
             .iter()
-            .any(|d| d.line == line && Some(d.severity.as_str()) == sev && d.message_de.contains(msg));
+            .any(|d| d.line == line && Some(d.severity.as_str()) == sev && d.message(Lang::De).contains(msg));
         assert!(found, "err/{name}.h: expected `{want}`, got {diags:#?}");
     }
     assert_formatting_stable("err", name, &src);

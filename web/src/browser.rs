@@ -48,22 +48,22 @@ pub fn fragment() -> Option<String> {
 
 /// Puts the share link into the address bar.
 pub fn set_fragment(fragment: &str) -> Result<(), Text> {
-    let failed = Text::new("Link konnte nicht gesetzt werden", "The link could not be set");
-    let location = web_sys::window().ok_or(failed)?.location();
-    location.set_hash(fragment).map_err(|_| failed)
+    const FAILED: Text = Text::new("Link konnte nicht gesetzt werden", "The link could not be set");
+    let location = web_sys::window().ok_or(FAILED)?.location();
+    location.set_hash(fragment).map_err(|_| FAILED)
 }
 
 /// Offers `bytes` as a file download named `name`.
 pub fn download(name: &str, bytes: &[u8]) -> Result<(), Text> {
-    let failed = Text::new("Herunterladen nicht möglich", "Download not possible");
+    const FAILED: Text = Text::new("Herunterladen nicht möglich", "Download not possible");
     let parts = Array::of1(&Uint8Array::from(bytes).into());
     let options = BlobPropertyBag::new();
     options.set_type("text/plain");
-    let blob = Blob::new_with_u8_array_sequence_and_options(&parts, &options).map_err(|_| failed)?;
-    let url = Url::create_object_url_with_blob(&blob).map_err(|_| failed)?;
-    let document = web_sys::window().and_then(|w| w.document()).ok_or(failed)?;
+    let blob = Blob::new_with_u8_array_sequence_and_options(&parts, &options).map_err(|_| FAILED)?;
+    let url = Url::create_object_url_with_blob(&blob).map_err(|_| FAILED)?;
+    let document = web_sys::window().and_then(|w| w.document()).ok_or(FAILED)?;
     let anchor: HtmlAnchorElement =
-        document.create_element("a").map_err(|_| failed)?.dyn_into().map_err(|_| failed)?;
+        document.create_element("a").map_err(|_| FAILED)?.dyn_into().map_err(|_| FAILED)?;
     anchor.set_href(&url);
     anchor.set_download(name);
     anchor.click();

@@ -58,7 +58,7 @@ pub fn row_name(row: &SeedRow, l: Lang) -> String {
     let opts = SolveOptions { start: row.start, limits: row.limits.clone(), ..SolveOptions::default() };
     let outcome = match solve_block(&machine, &row.block, DMat3::IDENTITY, &opts) {
         Ok(e) => outcome(&e, l),
-        Err(e) => l.t(&e.message_de(), &e.message_en()).to_owned(),
+        Err(e) => e.message().get(l).to_owned(),
     };
     format!("{head}: {outcome}")
 }
@@ -114,7 +114,8 @@ fn outcome(e: &Explanation, l: Lang) -> String {
             }
         },
     };
-    let refused = e.error_message.map_or("", |m| l.t(m.de(), m.en()));
+    let refused = e.error_message.map(|m| m.0.message());
+    let refused = refused.as_ref().map_or("", |m| m.get(l));
     l.t(template.0, template.1).replace("{c}", &c).replace("{o}", &o).replace("{r}", refused)
 }
 

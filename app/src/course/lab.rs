@@ -169,7 +169,12 @@ mod tests {
                 }
                 None => {
                     assert_eq!(chosen, None, "row {}", row.number);
-                    assert_eq!(why.error.as_deref(), e.error_message.map(|m| m.de()), "row {}", row.number);
+                    assert_eq!(
+                        why.error.as_deref(),
+                        e.error_message.map(|m| m.0.message().de.into_owned()).as_deref(),
+                        "row {}",
+                        row.number
+                    );
                 }
             }
         }

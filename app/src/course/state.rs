@@ -392,7 +392,7 @@ mod tests {
         let s = lesson(0);
         let (same, fx) = s.apply(CourseAction::Input(0, "x".into()));
         assert!(fx.is_empty(), "typing saves nothing: {fx:?}");
-        let sol = same.exercises[0].exercise.solution.de.clone();
+        let sol = same.exercises[0].exercise.solution.de.to_string();
         let (solved, fx) = same.then(CourseAction::Input(0, sol)).apply(CourseAction::Check(0));
         assert_eq!(fx, [Effect::Save { key: persist::COURSE_KEY, value: solved.progress.to_text() }]);
         let (_, fx) = solved.apply(CourseAction::ToggleInstructor);

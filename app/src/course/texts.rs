@@ -20,7 +20,7 @@ pub struct LessonText {
     pub summary: Text,
 }
 
-pub const LESSONS: [LessonText; 11] = [
+pub static LESSONS: [LessonText; 11] = [
     // 1 — seed 000 §2.1, §2.3.2; DOMAIN.md §2.1. Axis values: l01_raumwinkel.h block 7.
     LessonText {
         slug: "raumwinkel",

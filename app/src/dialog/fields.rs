@@ -8,7 +8,7 @@ use schwenkbar_core::plane::Word;
 use crate::i18n::Text;
 
 /// One value the dialog asks for.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Field {
     /// The NC word (`SPA`), also the key for the input range.
     pub word: Word,
@@ -22,10 +22,10 @@ const fn field(word: Word, prompt: Text, help: Text) -> Field {
 }
 
 pub(super) const fn t(de: &'static str, en: &'static str) -> Text {
-    Text { de, en }
+    Text::new(de, en)
 }
 
-pub(super) const SPATIAL: [Field; 3] = [
+pub(super) static SPATIAL: [Field; 3] = [
     field(
         Word::Spa,
         t("Raumwinkel A?", "Spatial angle A?"),
@@ -52,7 +52,7 @@ pub(super) const SPATIAL: [Field; 3] = [
     ),
 ];
 
-pub(super) const PROJECTED: [Field; 3] = [
+pub(super) static PROJECTED: [Field; 3] = [
     field(
         Word::Propr,
         t("Proj.-Winkel 1. Koordinatenebene?", "Proj. angle 1st coordinate plane?"),
@@ -79,7 +79,7 @@ pub(super) const PROJECTED: [Field; 3] = [
     ),
 ];
 
-pub(super) const EULER: [Field; 3] = [
+pub(super) static EULER: [Field; 3] = [
     field(
         Word::Eulpr,
         t("Drehw. Haupt-Koordinatenebene?", "Rot. angle main coordinate plane?"),
@@ -117,7 +117,7 @@ const fn vec_field(word: Word, prompt: Text) -> Field {
     )
 }
 
-pub(super) const VECTOR: [Field; 6] = [
+pub(super) static VECTOR: [Field; 6] = [
     vec_field(Word::Bx, t("X-Komponente Basisvektor?", "X component of base vector?")),
     vec_field(Word::By, t("Y-Komponente Basisvektor?", "Y component of base vector?")),
     vec_field(Word::Bz, t("Z-Komponente Basisvektor?", "Z component of base vector?")),
@@ -137,7 +137,7 @@ const fn point_field(word: Word, prompt: Text) -> Field {
     )
 }
 
-pub(super) const POINTS: [Field; 9] = [
+pub(super) static POINTS: [Field; 9] = [
     point_field(Word::P1x, t("X-Koordinate 1. Ebenenpunkt?", "X coordinate 1st plane point?")),
     point_field(Word::P1y, t("Y-Koordinate 1. Ebenenpunkt?", "Y coordinate 1st plane point?")),
     point_field(Word::P1z, t("Z-Koordinate 1. Ebenenpunkt?", "Z coordinate 1st plane point?")),
@@ -149,7 +149,7 @@ pub(super) const POINTS: [Field; 9] = [
     point_field(Word::P3z, t("Z-Koordinate 3. Ebenenpunkt?", "Z coordinate 3rd plane point?")),
 ];
 
-pub(super) const RELATIV: [Field; 1] = [field(
+pub(super) static RELATIV: [Field; 1] = [field(
     Word::Spa,
     t("Inkrementaler Raumwinkel?", "Incremental spatial angle?"),
     t(
@@ -170,7 +170,7 @@ const fn axial_field(word: Word, prompt: Text) -> Field {
     }
 }
 
-pub(super) const AXIAL: [Field; 3] = [
+pub(super) static AXIAL: [Field; 3] = [
     axial_field(Word::A, t("Achswinkel A?", "Axis angle A?")),
     axial_field(Word::B, t("Achswinkel B?", "Axis angle B?")),
     axial_field(Word::C, t("Achswinkel C?", "Axis angle C?")),

@@ -109,7 +109,7 @@ fn wrong_entries_are_answered_and_kept_for_correction() {
     assert_eq!(d.step, Step::Value(1));
 
     enter(&mut d, "400");
-    assert_eq!(d.message.map(|m| m.de), Some("Winkel nicht erlaubt"));
+    assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Winkel nicht erlaubt"));
     assert_eq!(d.input, "400");
     d.input.clear();
     d.key(Key::Ent);
@@ -396,11 +396,11 @@ fn euler_prompts_are_the_manuals() {
         enter(&mut d, v);
     }
     assert_eq!(
-        prompts.iter().map(|p| p.de).collect::<Vec<_>>(),
+        prompts.iter().map(|p| &*p.de).collect::<Vec<_>>(),
         ["Drehw. Haupt-Koordinatenebene?", "Schwenkwinkel Werkzeug-Achse?", "ROT-Winkel der geschw. Ebene?"]
     );
     assert_eq!(
-        prompts.iter().map(|p| p.en).collect::<Vec<_>>(),
+        prompts.iter().map(|p| &*p.en).collect::<Vec<_>>(),
         ["Rot. angle main coordinate plane?", "Tilting angle tool axis?", "ROT angle of the tilted plane?"]
     );
 }
@@ -422,8 +422,8 @@ fn the_dialog_refuses_exactly_what_the_parser_refuses() {
     let mut d = spatial("0", "15", "0");
     d.key(Key::Positioning(PosKind::Move));
     enter(&mut d, "-5");
-    assert_eq!(d.message.map(|m| m.de), Some("Eingabewert außerhalb des Bereichs"));
+    assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Eingabewert außerhalb des Bereichs"));
     let mut d = Dialog::new(PlaneKind::Spatial);
     enter(&mut d, "400");
-    assert_eq!(d.message.map(|m| m.de), Some("Winkel nicht erlaubt"));
+    assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Winkel nicht erlaubt"));
 }

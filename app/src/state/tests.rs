@@ -84,7 +84,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
     let (broken, fx) = AppState::start(stored, None);
     assert_eq!(broken.doc.text, "0 L X+1", "the program typed is kept");
     assert_eq!(
-        broken.message.map(|m| m.en),
+        broken.message.as_ref().map(|m| m.get(Lang::En)),
         Some("The saved state was corrupt: cursor and machine reset, program kept")
     );
     assert!(
@@ -98,7 +98,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
     };
     let (old, _) = AppState::start(stored, None);
     assert_eq!(
-        old.message.map(|m| m.en),
+        old.message.as_ref().map(|m| m.get(Lang::En)),
         Some("The saved state is from an older version: cursor and machine reset, program kept")
     );
     assert_eq!(old.prefs(), Prefs::default(), "unreadable preferences are the defaults");
@@ -196,7 +196,7 @@ fn a_binary_file_is_not_imported_and_the_program_stays() {
     assert!(refused.message.is_some_and(|m| m.de.contains("kein NC-Programm")));
     let imported = s.then(Action::Import(b"0 BEGIN PGM I MM\r\n1 END PGM I MM\r\n".to_vec()));
     assert_eq!(imported.doc.program.blocks.len(), 2);
-    assert_eq!(imported.message.map(|m| m.en), Some("File imported"));
+    assert_eq!(imported.message.as_ref().map(|m| m.get(Lang::En)), Some("File imported"));
 }
 
 #[test]

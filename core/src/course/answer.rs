@@ -3,9 +3,10 @@
 //! refuses" as its own answer.
 
 use super::expected::ValueCheck;
-use super::{Hint, RunKind, VALUE_TOL, Verdict, texts};
+use super::{Hint, RunKind, VALUE_TOL, Verdict};
 use crate::axes::AxisValues;
-use crate::machine::{Machine, Texts};
+use crate::lang::Text;
+use crate::machine::Machine;
 use crate::number::parse_input;
 use crate::plane::{RotaryAxis, TransformMode};
 use crate::solve::{Explanation, axis_words};
@@ -35,7 +36,7 @@ impl Answer {
 }
 
 /// The axis words of an answer; `Err` names the first word that looks like one but isn't.
-fn typed_axes(text: &str) -> Result<AxisValues, Texts> {
+fn typed_axes(text: &str) -> Result<AxisValues, Text> {
     let mut out = AxisValues::default();
     for word in text.split_whitespace() {
         let mut chars = word.chars();
@@ -46,7 +47,7 @@ fn typed_axes(text: &str) -> Result<AxisValues, Texts> {
             continue;
         }
         let Some(v) = parse_input(rest) else {
-            return Err(texts(
+            return Err(Text::owned(
                 format!("Eingabe nicht lesbar: {word}"),
                 format!("Cannot read the entry: {word}"),
             ));
@@ -66,20 +67,20 @@ pub(super) fn check_axes(
     e: &Explanation,
     other_mode: Option<&AxisValues>,
 ) -> Verdict {
-    let reason = texts(e.reason.de(), e.reason.en());
+    let reason = e.rule.text();
     let Some(chosen) = e.chosen_axes() else {
         return match answer {
             Answer::ControlError => {
-                let (de, en) = e.error.map_or((String::new(), String::new()), |err| err.details());
+                let detail = e.error.map_or_else(|| Text::new("", ""), |err| err.detail());
                 let m = super::expected::refusal(e);
-                Verdict::Correct(texts(
-                    format!("Richtig: die Steuerung meldet „{}“. {de}", m.0),
-                    format!("Correct: the control reports \"{}\". {en}", m.1),
+                Verdict::Correct(Text::owned(
+                    format!("Richtig: die Steuerung meldet „{}“. {}", m.de, detail.de),
+                    format!("Correct: the control reports \"{}\". {}", m.en, detail.en),
                 ))
             }
             Answer::Text(_) => Verdict::Wrong {
                 hint: Hint::ControlRefuses,
-                text: texts(
+                text: Text::new(
                     "Prüfen Sie jede Lösung gegen die Endschalter und die Option (SEQ/SYM): bleibt keine übrig, meldet die Steuerung einen Fehler",
                     "Check each solution against the limit switches and the option (SEQ/SYM): if none is left, the control reports an error",
                 ),
@@ -91,12 +92,12 @@ pub(super) fn check_axes(
         let text = match other_mode {
             Some(_) => {
                 let t = transform_hint(e, false);
-                texts(
+                Text::owned(
                     format!("Die Steuerung findet hier eine Stellung. {}", t.de),
                     format!("The control finds a position here. {}", t.en),
                 )
             }
-            None => texts(
+            None => Text::new(
                 "Die Steuerung findet hier eine erlaubte Lösung. Prüfen Sie beide Lösungen noch einmal gegen Endschalter und Option",
                 "The control finds a permitted solution here. Check both solutions against the limit switches and the option again",
             ),
@@ -111,13 +112,13 @@ pub(super) fn check_axes(
         machine.joints().iter().filter(|j| given.get(j.axis).is_none()).map(|j| j.axis.letter()).collect();
     if !missing.is_empty() {
         let list = missing.iter().map(char::to_string).collect::<Vec<_>>().join(", ");
-        return Verdict::Unreadable(texts(
+        return Verdict::Unreadable(Text::owned(
             format!("Bitte beide Drehachsen angeben, es fehlt: {list}"),
             format!("Please give both rotary axes, missing: {list}"),
         ));
     }
     if same(&chosen, &given) {
-        return Verdict::Correct(texts(
+        return Verdict::Correct(Text::owned(
             format!("Richtig: {}. Grund: {}", axis_words(&chosen), reason.de),
             format!("Correct: {}. Reason: {}", axis_words(&chosen), reason.en),
         ));
@@ -125,7 +126,7 @@ pub(super) fn check_axes(
     if e.candidates.iter().any(|c| same(&c.axes, &given)) {
         return Verdict::Wrong {
             hint: Hint::OtherSolution,
-            text: texts(
+            text: Text::owned(
                 format!(
                     "Das ist die andere der beiden Lösungen. Welche Regel gilt hier? {}",
                     rule_hint(e).de
@@ -143,7 +144,7 @@ pub(super) fn check_axes(
     }
     Verdict::Wrong {
         hint: Hint::Wrong,
-        text: texts(
+        text: Text::owned(
             format!(
                 "Das ist keine der beiden Lösungen für diese Lage. Die Master-Achse {m} stellt den Kippwinkel ein, die Slave-Achse {s} die Richtung; die zweite Lösung hat {m} gespiegelt am Symmetriepunkt und {s} um 180° versetzt."
             ),
@@ -158,7 +159,7 @@ pub(super) fn check_axes(
 /// §3.4): the tool stays vertical, so the master axis does not tilt and the free slave axis is
 /// either left standing (COORD ROT) or turned (TABLE ROT). `other_mode`: the answer is where the
 /// axes go with the other one.
-fn transform_hint(e: &Explanation, other_mode: bool) -> Texts {
+fn transform_hint(e: &Explanation, other_mode: bool) -> Text {
     let (m, s) = (e.master, e.slave);
     let (mixed_de, mixed_en, de, en) = match e.transform {
         TransformMode::TableRot => (
@@ -182,33 +183,38 @@ fn transform_hint(e: &Explanation, other_mode: bool) -> Texts {
             ),
         ),
     };
-    if other_mode { texts(format!("{mixed_de}{de}"), format!("{mixed_en}{en}")) } else { texts(de, en) }
+    if other_mode {
+        Text::owned(format!("{mixed_de}{de}"), format!("{mixed_en}{en}"))
+    } else {
+        Text::owned(de, en)
+    }
 }
 
 /// The hint for the other solution of the same orientation in a run: both axis positions give
 /// the same plane, and the rule the solver applied says why the control takes the other one.
-fn other_solution_hint(e: &Explanation) -> Texts {
-    texts(
+fn other_solution_hint(e: &Explanation) -> Text {
+    let reason = e.rule.text();
+    Text::owned(
         format!(
             "Das ist die andere Lösung derselben Lage: Beide Achsstellungen schwenken die Ebene gleich, die Maschine könnte beide anfahren. Die Steuerung wählt die andere. Grund: {}.",
-            e.reason.de()
+            reason.de
         ),
         format!(
             "That is the other solution of the same orientation: both axis positions tilt the plane alike, the machine could reach either. The control chooses the other one. Reason: {}.",
-            e.reason.en()
+            reason.en
         ),
     )
 }
 
 /// Which rule decides, without giving the numbers away.
-fn rule_hint(e: &Explanation) -> Texts {
+fn rule_hint(e: &Explanation) -> Text {
     if e.selection.is_some() {
-        texts(
+        Text::new(
             "Mit SEQ/SYM entscheidet das Vorzeichen der Master-Achse (SEQ: ab 0°, SYM: ab dem Symmetriepunkt).",
             "With SEQ/SYM the master axis' sign decides (SEQ: from 0°, SYM: from the symmetry point).",
         )
     } else {
-        texts(
+        Text::new(
             "Ohne SEQ/SYM nimmt die Steuerung die Lösung im Verfahrbereich mit dem kürzeren Weg von der Startposition.",
             "Without SEQ/SYM the control takes the solution inside the travel with the shorter path from the start position.",
         )
@@ -220,7 +226,7 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
     let Answer::Text(text) = answer else {
         return Verdict::Wrong {
             hint: Hint::ControlFinds,
-            text: texts("Die Steuerung arbeitet diesen Satz ab", "The control executes this block"),
+            text: Text::new("Die Steuerung arbeitet diesen Satz ab", "The control executes this block"),
         };
     };
     let compact: String = text.chars().filter(|c| !c.is_whitespace()).collect();
@@ -230,7 +236,7 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
     let rest = rest.strip_prefix(letter).unwrap_or(rest);
     let rest = rest.strip_prefix('=').unwrap_or(rest);
     let Some(v) = parse_input(rest) else {
-        return Verdict::Unreadable(texts(
+        return Verdict::Unreadable(Text::owned(
             format!(
                 "Eingabe nicht lesbar: „{}“ – bitte eine Zahl eingeben, z. B. +45 oder 12,5",
                 text.trim()
@@ -241,7 +247,7 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
     let shown = if letter == 'Q' { "Q120".to_owned() } else { letter.to_string() };
     let is = |w: f64| (v - w).abs() <= VALUE_TOL;
     if is(value) {
-        return Verdict::Correct(texts(
+        return Verdict::Correct(Text::owned(
             format!("Richtig: {shown} = {}", crate::number::signed(value, 3)),
             format!("Correct: {shown} = {}", crate::number::signed(value, 3)),
         ));
@@ -260,7 +266,7 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
     }
     Verdict::Wrong {
         hint: Hint::Wrong,
-        text: texts(
+        text: Text::new(
             "Noch nicht. Öffnen Sie das Programm im Trainer und lassen Sie es Satz für Satz bis zu diesem Satz laufen: die Positionsanzeige zeigt den Wert",
             "Not yet. Open the program in the trainer and run it block by block up to this block: the position display shows the value",
         ),
@@ -270,13 +276,13 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
 /// What STAY does (seed 000 §2.3.3, §2.3.4; DOMAIN.md §4): only the coordinate system is
 /// tilted, the axes do not move, the computed positions wait in Q120–Q122 for a later block.
 /// `computed`: the answer is the position the block computed.
-fn stay_hint(kind: RunKind, computed: bool) -> Texts {
+fn stay_hint(kind: RunKind, computed: bool) -> Text {
     match kind {
-        RunKind::StayQ120 => texts(
+        RunKind::StayQ120 => Text::new(
             "Auch mit STAY rechnet die Steuerung die Achsstellung aus, als ob sie schwenken würde, und legt sie in Q120 bis Q122 ab (Q120 = A). Sie fährt sie nur nicht an: Das macht ein späterer Satz wie L A+Q120 C+Q122 R0 FMAX.",
             "With STAY, too, the control computes the axis position as if it swivelled and stores it in Q120 to Q122 (Q120 = A). It just does not move there: a later block such as L A+Q120 C+Q122 R0 FMAX does.",
         ),
-        RunKind::ResetStay => texts(
+        RunKind::ResetStay => Text::new(
             "PLANE RESET STAY setzt nur die Rechnung zurück: Die Drehachsen fahren nicht und bleiben geschwenkt stehen, bis ein späterer Satz sie zurückfährt (z. B. L A+0 C+0 R0 FMAX).",
             "PLANE RESET STAY only resets the calculation: the rotary axes do not move and stay tilted until a later block moves them back (e.g. L A+0 C+0 R0 FMAX).",
         ),
@@ -289,7 +295,7 @@ fn stay_hint(kind: RunKind, computed: bool) -> Texts {
             } else {
                 ("", "")
             };
-            texts(
+            Text::owned(
                 format!(
                     "{de}STAY schwenkt nur das Koordinatensystem, keine Achse fährt: Die Drehachsen bleiben, wo sie vor dem Satz standen. Die berechneten Achswinkel stehen in Q120 bis Q122 für einen späteren Satz wie L A+Q120 C+Q122 R0 FMAX."
                 ),

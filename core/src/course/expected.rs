@@ -3,20 +3,21 @@
 
 use glam::DMat3;
 
-use super::{Answer, AnswerKind, Check, Exercise, Hint, RunKind, Spec, nc, texts};
+use super::{Answer, AnswerKind, Check, Exercise, Hint, RunKind, Spec};
 use crate::axes::AxisValues;
-use crate::machine::{Machine, Texts};
+use crate::lang::Text;
+use crate::machine::Machine;
 use crate::plane::{PlaneBlock, RotaryAxis};
 use crate::sim::{SimOptions, simulate};
 use crate::solve::{Explanation, SolveError, SolveOptions, axis_words, solve, solve_block};
 use crate::{BlockBody, parse};
 
-/// The control's refusal for an explanation without a chosen position, `(German, English)`: its
-/// own message, or the solver's "none inside the limits" wording when it names none.
-pub(super) fn refusal(e: &Explanation) -> (&'static str, &'static str) {
+/// The control's refusal for an explanation without a chosen position: its own message, or the
+/// solver's "none inside the limits" wording when it names none.
+pub(super) fn refusal(e: &Explanation) -> Text {
     e.error_message.map_or_else(
-        || SolveError::NoSolutionInLimits { candidates: e.candidates.len() }.messages(),
-        |m| (m.de(), m.en()),
+        || SolveError::NoSolutionInLimits { candidates: e.candidates.len() }.message(),
+        |m| m.0.message(),
     )
 }
 
@@ -27,7 +28,7 @@ pub(super) fn axes_exercise(
     machine: Machine,
     block: &PlaneBlock<f64>,
     opts: &SolveOptions,
-    prompt: Texts,
+    prompt: Text,
     other_mode: Option<AxisValues>,
 ) -> Exercise {
     let explanation = match solve_block(&machine, block, DMat3::IDENTITY, opts) {
@@ -45,8 +46,8 @@ pub(super) fn axes_exercise(
         .map(|(_, c)| c.axes);
     let (solution, equivalent, mistake) = match chosen {
         Some(a) => (
-            nc(axis_words(&a)),
-            nc(format!("PLANE AXIAL {}", axis_words(&a))),
+            Text::same(axis_words(&a)),
+            Text::same(format!("PLANE AXIAL {}", axis_words(&a))),
             // With COORD ROT/TABLE ROT the typical mistake is the other mode's position (unless
             // the table already stands where TABLE ROT turns it).
             match (other_mode.filter(|m| !super::answer::same(m, &a)), other) {
@@ -56,10 +57,10 @@ pub(super) fn axes_exercise(
             },
         ),
         None => {
-            let (de, en) = refusal(&explanation);
+            let refusal = refusal(&explanation);
             (
-                texts(de, en),
-                texts(de, en),
+                refusal.clone(),
+                refusal,
                 (Answer::Text(other.map_or_else(String::new, |o| axis_words(&o))), Hint::ControlRefuses),
             )
         }
@@ -134,7 +135,7 @@ pub(super) fn value_exercise(
     flipped: Option<&str>,
     machine: &'static str,
     (number, letter): (u32, char),
-    prompt: Texts,
+    prompt: Text,
 ) -> Exercise {
     let (value, decider) = run_value(&program, machine, number, letter).unwrap_or((f64::NAN, None));
     let sign_flipped = flipped.and_then(|p| run_value(p, machine, number, letter)).map(|(v, _)| v);
@@ -158,8 +159,8 @@ pub(super) fn value_exercise(
         variant,
         prompt,
         answer_kind: AnswerKind::Number,
-        solution: nc(word(value)),
-        equivalent: nc(crate::number::signed(value, 3).replace('.', ",")),
+        solution: Text::same(word(value)),
+        equivalent: Text::same(crate::number::signed(value, 3).replace('.', ",")),
         typical_mistake: mistake,
         program: Some((program, machine)),
         check: Check::Value(check),

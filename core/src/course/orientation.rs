@@ -6,9 +6,9 @@ use glam::DMat3;
 
 use super::{
     Answer, AnswerKind, Check, Exercise, Hint, ORIENTATION_TOL, Rng, Spec, TURN_FMAX, VALUE_TOL, Verdict,
-    block_text, euler_def, nc, plane, spatial_def, texts,
+    block_text, euler_def, plane, spatial_def,
 };
-use crate::machine::Texts;
+use crate::lang::Text;
 use crate::orientation::{self, Context};
 use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning};
 use crate::solve::fmt_deg;
@@ -70,7 +70,7 @@ pub(super) const TILTS: [f64; 10] = [10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 4
 fn orientation_exercise(
     spec: Spec,
     variant: u32,
-    prompt: Texts,
+    prompt: Text,
     spatial: [f64; 3],
     require: Require,
     not_euler: bool,
@@ -87,8 +87,8 @@ fn orientation_exercise(
         variant,
         prompt,
         answer_kind: AnswerKind::PlaneBlock,
-        solution: nc(block_text(&plane(spatial_def(spatial), positioning))),
-        equivalent: nc(block_text(&plane(euler_def(orientation::to_euler(&target)), positioning))),
+        solution: Text::same(block_text(&plane(spatial_def(spatial), positioning))),
+        equivalent: Text::same(block_text(&plane(euler_def(orientation::to_euler(&target)), positioning))),
         typical_mistake: (
             Answer::Text(block_text(&plane(spatial_def(flipped), positioning))),
             Hint::RightHand,
@@ -124,7 +124,7 @@ pub(super) fn lean(spec: Spec, variant: u32, rng: &mut Rng) -> Exercise {
         ),
         _ => (Require::Nothing, "", ""),
     };
-    let prompt = texts(
+    let prompt = Text::owned(
         format!(
             "Die Fläche ist so geneigt, dass das Werkzeug senkrecht auf ihr um {t}° in Richtung {d} gekippt steht (die Ebene wird nicht zusätzlich um Z gedreht). Geben Sie den PLANE-Satz ein.{de_tail}"
         ),
@@ -140,7 +140,7 @@ pub(super) fn turn_about_z(variant: u32, rng: &mut Rng) -> Exercise {
     let toward_plus_y = variant == 0 || rng.pick(&[true, false]);
     let (dir, spc) = if toward_plus_y { ("+Y", phi) } else { ("−Y", -phi) };
     let t = fmt_deg(phi).trim_start_matches('+').to_owned();
-    let prompt = texts(
+    let prompt = Text::owned(
         format!(
             "Das Werkzeug bleibt senkrecht (Z). Nur die Bearbeitungsebene soll um {t}° um die Z-Achse gedreht werden, so dass ihre X-Achse in Richtung {dir} dreht. Geben Sie den PLANE-Satz ein."
         ),
@@ -160,7 +160,7 @@ pub(super) fn lean_and_turn(variant: u32, rng: &mut Rng) -> Exercise {
     let spatial = [0.0, theta, phi];
     let r = orientation::spatial(0.0, theta, phi);
     let t = orientation::tool_axis(&r);
-    let prompt = texts(
+    let prompt = Text::owned(
         format!(
             "Erst um Y um {} kippen (SPB), dann um Z um {} drehen (SPC). Die Werkzeugachse zeigt danach in Richtung ({:.4}, {:.4}, {:.4}). Geben Sie den PLANE-Satz ein – SPATIAL oder eine andere Form.",
             fmt_deg(theta),
@@ -194,7 +194,7 @@ pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
     let r = orientation::euler(e[0], e[1], e[2]);
     let spatial = orientation::to_spatial(&r);
     let given = block_text(&plane(euler_def(e), None));
-    let prompt = texts(
+    let prompt = Text::owned(
         format!(
             "Gegeben: {given}. Geben Sie dieselbe Lage als anderen PLANE-Satz ein (z. B. PLANE SPATIAL)."
         ),
@@ -203,7 +203,7 @@ pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
     let mut ex = orientation_exercise(Spec::EulerToOther, variant, prompt, spatial, Require::Nothing, true);
     // The other equivalent form: VECTOR (base = tilted X, normal = tool axis).
     let vector = PlaneDef::Vector { base: r.x_axis.to_array(), normal: r.z_axis.to_array() };
-    ex.equivalent = nc(block_text(&plane(vector, Some(TURN_FMAX))));
+    ex.equivalent = Text::same(block_text(&plane(vector, Some(TURN_FMAX))));
     ex
 }
 
@@ -222,7 +222,7 @@ pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
     } else {
         "−X"
     };
-    let prompt = texts(
+    let prompt = Text::owned(
         format!(
             "Fase unter 45° an der Seite {side} des Rohteils: das Werkzeug steht senkrecht auf der Fase und kippt 45° in Richtung {side}. Die X-Achse der Bearbeitungsebene liegt entlang der Kante (EULROT 0). Geben Sie den PLANE-Satz ein – EULER oder eine andere Form."
         ),
@@ -233,8 +233,8 @@ pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
     let spatial = orientation::to_spatial(&r);
     let mut ex = orientation_exercise(Spec::Chamfer, variant, prompt, spatial, Require::Nothing, false);
     // Here the EULER block is the natural answer; SPATIAL the equivalent one.
-    ex.solution = nc(block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX))));
-    ex.equivalent = nc(block_text(&plane(spatial_def(spatial), Some(TURN_FMAX))));
+    ex.solution = Text::same(block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX))));
+    ex.equivalent = Text::same(block_text(&plane(spatial_def(spatial), Some(TURN_FMAX))));
     // The typical mistake: the chamfer on the opposite side (EULPR off by 180°). It tilts the
     // tool the other way, so it gets the right-hand hint.
     let wrong_pr = if pr > 0.0 { pr - 180.0 } else { pr + 180.0 };
@@ -248,14 +248,14 @@ fn close(a: &DMat3, b: &DMat3) -> bool {
 }
 
 /// The single PLANE block of an answer, with numbers only.
-fn answer_block(answer: &Answer) -> Result<PlaneBlock<f64>, Texts> {
+fn answer_block(answer: &Answer) -> Result<PlaneBlock<f64>, Text> {
     let Answer::Text(text) = answer else {
-        return Err(texts("Hier ist ein PLANE-Satz gefragt", "A PLANE block is asked for here"));
+        return Err(Text::new("Hier ist ein PLANE-Satz gefragt", "A PLANE block is asked for here"));
     };
     let block = crate::parse::plane_block(text.trim())
-        .map_err(|e| texts(e.message(crate::Lang::De), e.message(crate::Lang::En)))?;
+        .map_err(|e| Text::owned(e.message(crate::Lang::De), e.message(crate::Lang::En)))?;
     block.numbers().map_err(|index| {
-        texts(
+        Text::owned(
             format!("Q{index} hat hier keinen Wert: bitte Zahlen eingeben"),
             format!("Q{index} has no value here: please enter numbers"),
         )
@@ -276,7 +276,7 @@ pub(super) fn check(
     if matches!(block.def, PlaneDef::Reset | PlaneDef::Axial { .. } | PlaneDef::Relativ { .. }) {
         return Verdict::Wrong {
             hint: Hint::Wrong,
-            text: texts(
+            text: Text::new(
                 "Gefragt ist eine Lage im Raum: PLANE SPATIAL, EULER, PROJECTED, VECTOR oder POINTS",
                 "An orientation in space is asked for: PLANE SPATIAL, EULER, PROJECTED, VECTOR or POINTS",
             ),
@@ -285,7 +285,7 @@ pub(super) fn check(
     if not_euler && matches!(block.def, PlaneDef::Euler { .. }) {
         return Verdict::Wrong {
             hint: Hint::SameForm,
-            text: texts(
+            text: Text::new(
                 "Das ist wieder PLANE EULER – gefragt ist eine andere Form, z. B. PLANE SPATIAL",
                 "That is PLANE EULER again – another form is asked for, e.g. PLANE SPATIAL",
             ),
@@ -294,13 +294,12 @@ pub(super) fn check(
     let r = match orientation::orientation(&block.def, &Context::default()) {
         Ok(r) => r,
         Err(e) => {
-            let (de, en) = e.messages();
-            return Verdict::Unreadable(texts(de, en));
+            return Verdict::Unreadable(e.message());
         }
     };
     if close(&r, target) {
         return match positioning_problem(&block, require) {
-            None => Verdict::Correct(texts(
+            None => Verdict::Correct(Text::owned(
                 format!(
                     "Richtig. Dieselbe Lage als SPATIAL: {}",
                     block_text(&plane(spatial_def(spatial), None))
@@ -323,7 +322,7 @@ pub(super) fn check(
         let gamma = target.x_axis.angle_between(r.x_axis).to_degrees();
         return Verdict::Wrong {
             hint: Hint::TurnedAboutToolAxis,
-            text: texts(
+            text: Text::owned(
                 format!(
                     "Die Werkzeugachse stimmt, aber die Bearbeitungsebene ist um {gamma:.1}° um die Werkzeugachse verdreht"
                 ),
@@ -340,7 +339,7 @@ pub(super) fn check(
     }
     Verdict::Wrong {
         hint: Hint::Wrong,
-        text: texts(
+        text: Text::new(
             "Noch nicht: Stellen Sie sich die Fläche vor und kippen Sie die Ebene Schritt für Schritt – erst um X (SPA), dann um Y (SPB), dann um Z (SPC)",
             "Not yet: picture the face and tilt the plane step by step – first about X (SPA), then about Y (SPB), then about Z (SPC)",
         ),
@@ -395,7 +394,7 @@ pub(super) const SIGN_RULES: [SignRule; 3] = [
 
 /// The right-hand rule (seed 000 §2.2), with the sign rule of each angle in `about` (SPA, SPB,
 /// SPC): only the angles the answer got wrong, so an SPC task does not talk about SPB.
-pub(super) fn right_hand_hint(about: [bool; 3]) -> Texts {
+pub(super) fn right_hand_hint(about: [bool; 3]) -> Text {
     let (mut de, mut en) = (
         "Vorzeichen prüfen – Rechte-Hand-Regel: Der Daumen zeigt in die positive Achsrichtung, die gekrümmten Finger zeigen die positive Drehrichtung.".to_owned(),
         "Check the sign – right-hand rule: the thumb points along the positive axis, the curled fingers show the positive direction of rotation.".to_owned(),
@@ -410,7 +409,7 @@ pub(super) fn right_hand_hint(about: [bool; 3]) -> Texts {
             en.push_str(&format!(" {w}+ turns the plane's X axis from +X towards {to}."));
         }
     }
-    texts(de, en)
+    Text::owned(de, en)
 }
 
 /// The angles of `spatial` that are not zero (what a sign hint can be about).
@@ -418,11 +417,11 @@ pub(super) fn non_zero(spatial: [f64; 3]) -> [bool; 3] {
     spatial.map(|v| v.abs() > 1e-9)
 }
 
-fn positioning_problem(block: &PlaneBlock<f64>, require: Require) -> Option<Texts> {
+fn positioning_problem(block: &PlaneBlock<f64>, require: Require) -> Option<Text> {
     match (require, block.positioning) {
         (Require::Nothing, _) => None,
         (Require::TurnFmax, Some(Positioning::Turn { feed: Some(Feed::Max), .. })) => None,
-        (Require::TurnFmax, _) => Some(texts(
+        (Require::TurnFmax, _) => Some(Text::new(
             "Die Lage stimmt. Es fehlt das Positionierverhalten: TURN, und als Vorschub FMAX",
             "The orientation is right. The positioning is missing: TURN, with FMAX as the feed",
         )),
@@ -430,7 +429,7 @@ fn positioning_problem(block: &PlaneBlock<f64>, require: Require) -> Option<Text
             Require::Move { dist, feed },
             Some(Positioning::Move { dist: Some(d), feed: Some(Feed::Value(f)) }),
         ) if (d - dist).abs() < VALUE_TOL && (f - feed).abs() < VALUE_TOL => None,
-        (Require::Move { dist, feed }, _) => Some(texts(
+        (Require::Move { dist, feed }, _) => Some(Text::owned(
             format!(
                 "Die Lage stimmt. Positionierverhalten prüfen: MOVE mit DIST{} und F{}",
                 fmt_deg(dist),

@@ -6,8 +6,9 @@ use glam::DMat3;
 
 use super::expected::{axes_exercise, value_exercise};
 use super::orientation::TILTS;
-use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def, texts};
+use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def};
 use crate::axes::AxisValues;
+use crate::lang::Text;
 use crate::machine::{Limits, Machine};
 use crate::number::signed;
 use crate::plane::{PlaneBlock, RotaryAxis, Selection, Sign, TransformMode};
@@ -152,19 +153,21 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
     let limit_text_en = limit_text.replace("Endschalter", "limit switches");
     let text = block_text(&block);
     // The control's refusal as the solver words it, in each language.
-    let (refuse_de, refuse_en) = SolveError::NoSolutionInLimits { candidates: 0 }.messages();
-    let prompt = texts(
+    let refuse = SolveError::NoSolutionInLimits { candidates: 0 }.message();
+    let prompt = Text::owned(
         format!(
-            "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „{refuse_de}“)",
+            "Maschine: {}. Die Drehachsen stehen auf {}{limit_text}. Welche Achspositionen fährt die Steuerung bei „{text}“ an? (z. B. {}, oder „{}“)",
             machine.name.de,
             axis_words(&start),
-            example(&machine)
+            example(&machine),
+            refuse.de
         ),
         format!(
-            "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"{refuse_en}\")",
+            "Machine: {}. The rotary axes stand at {}{limit_text_en}. Which axis positions does the control move to for \"{text}\"? (e.g. {}, or \"{}\")",
             machine.name.en,
             axis_words(&start),
-            example(&machine)
+            example(&machine),
+            refuse.en
         ),
     );
     let opts = SolveOptions { start, limits, ..SolveOptions::default() };
@@ -227,7 +230,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
     // The prompt quotes the block asked about, so a fresh variant shows its new numbers.
     let ask = |text: &str, block: u32, what_de: &str, what_en: &str| {
         let line = block_line(text, block);
-        texts(
+        Text::owned(
             format!(
                 "Welchen Wert zeigt die Steuerung für {what_de} nach Satz {line}? (z. B. +45 oder -12,5)"
             ),
@@ -300,7 +303,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
             };
             let (text, flipped) = (with_tilt(b), with_tilt(-b));
             let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
-            let prompt = texts(
+            let prompt = Text::owned(
                 format!(
                     "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor der Verschiebung)? Geben Sie X ein (z. B. +45 oder 12,5)."
                 ),
@@ -322,7 +325,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
                 format!("L X{} Y+10 Z+10 R0 FMAX", signed(x, 3)),
             ]);
             let blocks = (6..=8).map(|n| block_line(&text, n)).collect::<Vec<_>>().join(", ");
-            let prompt = texts(
+            let prompt = Text::owned(
                 format!(
                     "Sätze {blocks}: Wo steht die Werkzeugspitze nach Satz 8 im Werkstück-Koordinatensystem (W-CS, vor Verschiebung und Spiegelung)? Geben Sie X ein."
                 ),

@@ -64,7 +64,7 @@ fn every_variant_accepts_its_solution_and_the_equivalent_and_rejects_the_typical
 fn fresh_variants_change_the_numbers() {
     for spec in ALL {
         let prompts: std::collections::BTreeSet<String> =
-            (0..30).map(|v| Exercise::generate(spec, v).prompt.de).collect();
+            (0..30).map(|v| Exercise::generate(spec, v).prompt.de.into_owned()).collect();
         assert!(prompts.len() >= 3, "{spec:?}: only {} different prompts", prompts.len());
     }
 }
@@ -256,7 +256,11 @@ fn seed_rows_give_the_seed_results() {
         let e = solve_block(&machine, &row.block, DMat3::IDENTITY, &opts).unwrap();
         match (e.chosen_axes(), &want.expect) {
             (None, Expect::Refused(msg)) => {
-                assert_eq!(e.error_message.map(|m| m.de()), Some(msg.as_str()), "row {number}")
+                assert_eq!(
+                    e.error_message.map(|m| m.0.message().de),
+                    Some(msg.as_str().into()),
+                    "row {number}"
+                )
             }
             (Some(got), Expect::Chosen(axes)) => {
                 let got: Vec<f64> =
@@ -341,11 +345,11 @@ fn the_refusal_is_shown_in_the_ui_language() {
     let row = seed_rows().into_iter().find(|r| r.number == 20).unwrap();
     let opts = SolveOptions { start: row.start, limits: row.limits.clone(), ..SolveOptions::default() };
     let e = solve_block(&machine, &row.block, DMat3::IDENTITY, &opts).unwrap();
-    let m = e.error_message.expect("the control refuses");
-    assert_eq!((ex.solution.de.as_str(), ex.solution.en.as_str()), (m.de(), m.en()));
+    let m = e.error_message.expect("the control refuses").0.message();
+    assert_eq!(ex.solution, m);
     assert_ne!(ex.solution.de, ex.solution.en);
-    assert!(ex.prompt.en.contains(m.en()), "{}", ex.prompt.en);
-    for typed in [m.de(), m.en()] {
+    assert!(ex.prompt.en.contains(&*m.en), "{}", ex.prompt.en);
+    for typed in [&m.de, &m.en] {
         assert!(ex.check(&Answer::typed(typed)).is_correct(), "{typed}");
     }
 }
@@ -403,7 +407,8 @@ fn the_other_solution_of_a_run_gets_the_other_solution_hint_with_the_rule() {
         assert!(ex.check(&Answer::typed(&right)).is_correct(), "{kind:?}: {right}");
         let Check::Value(c) = &ex.check else { panic!("a value exercise") };
         let e = c.decider.as_deref().expect("the PLANE block's explanation");
-        assert!(text.contains(&e.reason.de()) && text.contains(&e.reason.en()), "{text}");
+        let reason = e.rule.text();
+        assert!(text.contains(&*reason.de) && text.contains(&*reason.en), "{text}");
     }
 }
 

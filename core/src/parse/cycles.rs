@@ -5,12 +5,12 @@
 use super::Cx;
 use super::words::{axis_word, keyword, m_function, sp, uint, word_value};
 use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 
 /// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
 pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<BlockBody> {
     let Some(rest) = keyword(header, "CYCL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
-        return cx.invalid(header, Some("CYCL DEF"));
+        return cx.invalid(header, Some(Expected::Nc("CYCL DEF")));
     };
     let (rest, number) = match uint(rest) {
         Ok(ok) => ok,
@@ -23,14 +23,14 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<Bl
         let body = super::strip_tilde(body.trim());
         let label = label.map(|l| super::strip_tilde(l.trim()));
         let Some(q) = body.strip_prefix('Q') else {
-            return cx.invalid(body, Some("Q…="));
+            return cx.invalid(body, Some(Expected::Nc("Q…=")));
         };
         let (r, index) = match uint(q) {
             Ok(ok) => ok,
             Err(e) => return cx.fail(e),
         };
         let Some(r) = sp(r).strip_prefix('=') else {
-            return cx.invalid(sp(r), Some("="));
+            return cx.invalid(sp(r), Some(Expected::Nc("=")));
         };
         let (r, value) = match word_value(sp(r)) {
             Ok(ok) => ok,
@@ -70,7 +70,9 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         }
         return Some(BlockBody::CyclCall { m: cx.take_m() });
     }
-    let Some(rest) = keyword(rest, "DEF").map(sp) else { return cx.invalid(rest, Some("DEF|CALL")) };
+    let Some(rest) = keyword(rest, "DEF").map(sp) else {
+        return cx.invalid(rest, Some(Expected::Nc("DEF|CALL")));
+    };
     let (after, number) = match uint(rest) {
         Ok(ok) => ok,
         Err(e) => return cx.fail(e),

@@ -5,6 +5,7 @@
 use super::Cx;
 use super::words::{keyword, sp, token};
 use crate::ast::{BlockBody, Unit};
+use crate::diag::Expected;
 
 /// `BEGIN PGM …` or `END PGM …`.
 pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
@@ -14,7 +15,7 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         (None, None) => return super::unknown(cx, body),
     };
     let rest = sp(rest);
-    let Some(rest) = keyword(rest, "PGM") else { return cx.invalid(rest, Some("PGM")) };
+    let Some(rest) = keyword(rest, "PGM") else { return cx.invalid(rest, Some(Expected::Nc("PGM"))) };
     let rest = sp(rest);
     let (rest, name) = match token(rest) {
         Ok(ok) => ok,
@@ -26,7 +27,7 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     } else if let Some(r) = keyword(rest, "INCH") {
         (r, Unit::Inch)
     } else {
-        return cx.invalid(rest, Some("MM|INCH"));
+        return cx.invalid(rest, Some(Expected::Nc("MM|INCH")));
     };
     let rest = sp(rest);
     if !rest.is_empty() {

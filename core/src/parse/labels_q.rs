@@ -6,7 +6,7 @@
 use super::Cx;
 use super::words::{Step, failure, keyword, number, quoted, sp, token, uint};
 use crate::ast::{BinOp, BlockBody, Expr, Func, Label};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
 const MAX_DEPTH: u32 = 64;
@@ -20,7 +20,7 @@ fn label(i: &str) -> Step<'_, Label> {
         let (r, n) = uint(i)?;
         return Ok((r, Label::Number(n)));
     }
-    failure(i, "Nummer|\"Name\"")
+    failure(i, Expected::LabelNumberOrName)
 }
 
 /// `LBL …`, `CALL LBL …`, `CALL PGM …`.
@@ -71,7 +71,7 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     match uint(r) {
         Ok((rest, 0)) => match sp(rest).strip_prefix(':') {
             Some(q) => assign(cx, sp(q), true),
-            None => cx.invalid(sp(rest), Some(":")),
+            None => cx.invalid(sp(rest), Some(Expected::Nc(":"))),
         },
         _ => super::unknown(cx, body),
     }
@@ -79,12 +79,12 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 
 /// `Q<n> = expr`.
 pub(super) fn assign(cx: &mut Cx, body: &str, fn0: bool) -> Option<BlockBody> {
-    let Some(q) = body.strip_prefix('Q') else { return cx.invalid(body, Some("Q")) };
+    let Some(q) = body.strip_prefix('Q') else { return cx.invalid(body, Some(Expected::Nc("Q"))) };
     let (r, target) = match uint(q) {
         Ok(ok) => ok,
         Err(e) => return cx.fail(e),
     };
-    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some("=")) };
+    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
     match expr(sp(r), 0) {
         Ok((rest, e)) => end(cx, rest, BlockBody::QAssign { target, expr: e, fn0 }),
         Err(e) => cx.fail(e),
@@ -114,7 +114,7 @@ impl Budget {
     fn bin<'a>(&mut self, at: &'a str, op: BinOp, a: Expr, b: Expr) -> Step<'a, Expr> {
         self.ops += 1;
         if self.ops > MAX_OPS {
-            return failure(at, "kürzere Formel");
+            return failure(at, Expected::ShorterFormula);
         }
         Ok((at, Expr::Bin(op, Box::new(a), Box::new(b))))
     }
@@ -156,7 +156,7 @@ fn term<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
 
 fn unary<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
     if depth > MAX_DEPTH {
-        return failure(i, "weniger Verschachtelung");
+        return failure(i, Expected::LessNesting);
     }
     match i.as_bytes().first() {
         Some(b'+') => return unary(sp(&i[1..]), depth + 1, b),
@@ -197,12 +197,12 @@ fn atom<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
             let (r, e) = expr_in(sp(&i[1..]), depth + 1, b)?;
             match sp(r).strip_prefix(')') {
                 Some(r) => Ok((r, e)),
-                None => failure(sp(r), ")"),
+                None => failure(sp(r), Expected::Nc(")")),
             }
         }
         _ => match i.strip_prefix("PI") {
             Some(r) => Ok((r, Expr::Pi)),
-            None => failure(i, "Zahl|Q|(|Funktion"),
+            None => failure(i, Expected::Operand),
         },
     }
 }

@@ -5,7 +5,7 @@
 use super::Cx;
 use super::words::{Step, Stop, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
 use crate::ast::{BlockBody, Line, Motion, PolarWord, RadiusComp};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 use crate::plane::{Feed, Sign, Value};
 
 const EXPECTED: &str = "X|Y|Z|A|B|C|R0|RL|RR|F|M";
@@ -50,7 +50,7 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
     cx.axes.clear();
     cx.m.clear();
     if !at_boundary(rest) {
-        return cx.invalid(rest, Some("Leerzeichen"));
+        return cx.invalid(rest, Some(Expected::Blank));
     }
     match kw {
         "RND" | "CHF" => return rounding(cx, kw, sp(rest)),
@@ -94,7 +94,7 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
         } else if let Some(after) = i.strip_prefix("DR") {
             match sign(after) {
                 Ok((r, s)) if at_boundary(r) => (r, once(cx, &mut w.direction, s, at, 3)),
-                _ => return cx.invalid(at, Some("DR+|DR-")),
+                _ => return cx.invalid(at, Some(Expected::Nc("DR+|DR-"))),
             }
         } else if let Some(res) = polar(i, "PR") {
             match res {
@@ -112,7 +112,7 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
                 Err(e) => return cx.fail(e),
             }
         } else {
-            return cx.invalid(at, Some(EXPECTED));
+            return cx.invalid(at, Some(Expected::Nc(EXPECTED)));
         };
         if !ok {
             return None;
@@ -188,7 +188,7 @@ fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
     let v = if kw == "RND" {
         match i.strip_prefix('R') {
             Some(r) => word_value(r),
-            None => return cx.invalid(i, Some("R")),
+            None => return cx.invalid(i, Some(Expected::Nc("R"))),
         }
     } else {
         word_value(i)

@@ -5,7 +5,7 @@
 use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
 use super::{Cx, Stop};
 use crate::ast::{Axis, BlockBody};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 use crate::plane::{
     AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection,
     TransformMode, Value, Word, check,
@@ -95,7 +95,7 @@ pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
     } else if let Some(r) = keyword(i, "RESET") {
         (r, PlaneDef::Reset)
     } else {
-        return cx.invalid(i, Some(DEFS));
+        return cx.invalid(i, Some(Expected::Nc(DEFS)));
     };
     let block = options(cx, i, def)?;
     Some(BlockBody::Plane(Box::new(block)))
@@ -119,7 +119,7 @@ fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
             Axis::A => RotaryAxis::A,
             Axis::B => RotaryAxis::B,
             Axis::C => RotaryAxis::C,
-            _ => return cx.invalid(at, Some("A|B|C")),
+            _ => return cx.invalid(at, Some(Expected::Nc("A|B|C"))),
         };
         if axes.iter().any(|a| a.axis == axis) {
             cx.error(at, at.len() - i.len(), DiagCode::Duplicate { word: w.axis.as_str().to_owned() });
@@ -200,7 +200,7 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             let Ok((r, s)) =
                 sign(r).map_err(|_| ()).and_then(|(r, s)| if at_boundary(r) { Ok((r, s)) } else { Err(()) })
             else {
-                return cx.invalid(at, Some("SEQ+|SEQ-|SYM+|SYM-"));
+                return cx.invalid(at, Some(Expected::Nc("SEQ+|SEQ-|SYM+|SYM-")));
             };
             let sel = if is_seq { Selection::Seq(s) } else { Selection::Sym(s) };
             match block.selection {
@@ -227,7 +227,7 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             keyword(i, "TABLE").map(|r| (r, TransformMode::TableRot))
         };
         if let Some((r, t)) = transform {
-            let Some(r) = keyword(sp(r), "ROT") else { return cx.invalid(sp(r), Some("ROT")) };
+            let Some(r) = keyword(sp(r), "ROT") else { return cx.invalid(sp(r), Some(Expected::Nc("ROT"))) };
             if block.transform.is_some() {
                 let len = at.len() - r.len();
                 cx.error(at, len, DiagCode::Duplicate { word: at[..len].to_owned() });
@@ -237,7 +237,7 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             i = r;
             continue;
         }
-        return cx.invalid(at, Some("MOVE|TURN|STAY|SEQ±|SYM±|COORD ROT|TABLE ROT"));
+        return cx.invalid(at, Some(Expected::Nc("MOVE|TURN|STAY|SEQ±|SYM±|COORD ROT|TABLE ROT")));
     }
     if block.positioning.is_none() {
         cx.warn(i, 0, DiagCode::MissingPositioning);

@@ -5,7 +5,7 @@
 use super::Cx;
 use super::words::{axis_word, keyword, quoted, sp, uint, word_value};
 use crate::ast::{Axis, BlkForm, BlockBody, ToolCall, ToolRef};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 use crate::plane::Value;
 
 fn tool_axis(i: &str) -> Option<(&str, Axis)> {
@@ -33,7 +33,7 @@ pub(super) fn blk_form(cx: &mut Cx, body: &str) -> Option<BlockBody> {
                 axis = Some(a);
                 i = sp(r);
             }
-            None => return cx.invalid(i, Some("X|Y|Z")),
+            None => return cx.invalid(i, Some(Expected::Nc("X|Y|Z"))),
         }
     }
     cx.axes.clear();
@@ -45,7 +45,7 @@ pub(super) fn blk_form(cx: &mut Cx, body: &str) -> Option<BlockBody> {
                     return None;
                 }
                 if part == 1 && w.incremental {
-                    return cx.invalid(i, Some("X|Y|Z"));
+                    return cx.invalid(i, Some(Expected::Nc("X|Y|Z")));
                 }
                 cx.axes.push(w);
                 i = sp(r);
@@ -97,7 +97,7 @@ pub(super) fn tool_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         } else if i.starts_with('F') {
             ("F", &mut call.feed)
         } else {
-            return cx.invalid(at, Some("S|F|DL|DR|DR2"));
+            return cx.invalid(at, Some(Expected::Nc("S|F|DL|DR|DR2")));
         };
         match word_value(&i[key.len()..]) {
             Ok((r, v)) => {

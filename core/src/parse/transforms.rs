@@ -5,7 +5,7 @@
 use super::Cx;
 use super::words::{axis_word, keyword, sp, word_value};
 use crate::ast::{Axis, BlockBody};
-use crate::diag::DiagCode;
+use crate::diag::{DiagCode, Expected};
 
 /// `TRANS …` (`TRANS SCALE` and others are kept as unknown blocks).
 pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
@@ -14,7 +14,9 @@ pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         if let Some(r) = keyword(r, "RESET") {
             return end(cx, r, BlockBody::TransDatumReset);
         }
-        let Some(mut r) = keyword(r, "AXIS").map(sp) else { return cx.invalid(r, Some("AXIS|RESET")) };
+        let Some(mut r) = keyword(r, "AXIS").map(sp) else {
+            return cx.invalid(r, Some(Expected::Nc("AXIS|RESET")));
+        };
         cx.axes.clear();
         while !r.is_empty() {
             match axis_word(r) {
@@ -43,12 +45,14 @@ pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         if let Some(r) = keyword(r, "RESET") {
             return end(cx, r, BlockBody::TransMirrorReset);
         }
-        let Some(mut r) = keyword(r, "AXIS").map(sp) else { return cx.invalid(r, Some("AXIS|RESET")) };
+        let Some(mut r) = keyword(r, "AXIS").map(sp) else {
+            return cx.invalid(r, Some(Expected::Nc("AXIS|RESET")));
+        };
         let mut axes: Vec<Axis> = Vec::new();
         while !r.is_empty() {
             let Some((rest, a)) = Axis::ALL.iter().find_map(|&a| keyword(r, a.as_str()).map(|x| (x, a)))
             else {
-                return cx.invalid(r, Some("X|Y|Z"));
+                return cx.invalid(r, Some(Expected::Nc("X|Y|Z")));
             };
             if axes.contains(&a) {
                 cx.error(r, 1, DiagCode::Duplicate { word: a.as_str().to_owned() });

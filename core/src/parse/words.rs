@@ -2,6 +2,7 @@
 //!   value  := [+|-] ( Q<digits> | <digits>[.<digits>] | .<digits> )
 //!   feed   := FMAX | F MAX | F AUTO | F value
 
+use crate::diag::Expected;
 use crate::plane::{Feed, Sign, Value};
 
 /// Why a word reader stopped: where, and what it wanted there (if it can say).
@@ -11,8 +12,8 @@ use crate::plane::{Feed, Sign, Value};
 /// [`super::Cx::fail`] turns either into the block's one diagnostic.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Stop<'a> {
-    Expected { at: &'a str, what: Option<&'static str> },
-    Cut { at: &'a str, what: Option<&'static str> },
+    Expected { at: &'a str, what: Option<Expected> },
+    Cut { at: &'a str, what: Option<Expected> },
 }
 
 impl<'a> Stop<'a> {
@@ -28,12 +29,12 @@ impl<'a> Stop<'a> {
 pub(crate) type Step<'a, T> = Result<(&'a str, T), Stop<'a>>;
 
 /// A recoverable stop at `at` naming what was expected.
-pub(crate) fn expected<'a, T>(at: &'a str, what: &'static str) -> Step<'a, T> {
+pub(crate) fn expected<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
     Err(Stop::Expected { at, what: Some(what) })
 }
 
 /// A hard stop (no alternative can help) at `at`.
-pub(crate) fn failure<'a, T>(at: &'a str, what: &'static str) -> Step<'a, T> {
+pub(crate) fn failure<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
     Err(Stop::Cut { at, what: Some(what) })
 }
 
@@ -72,7 +73,7 @@ pub(crate) fn uint(i: &str) -> Step<'_, u32> {
     let (rest, digits) = ascii_run(i, u8::is_ascii_digit)?;
     match digits.parse::<u32>() {
         Ok(v) => Ok((rest, v)),
-        Err(_) => failure(i, "Zahl 0…4294967295"),
+        Err(_) => failure(i, Expected::NumberU32),
     }
 }
 
@@ -94,12 +95,12 @@ pub(crate) fn number(i: &str) -> Step<'_, f64> {
         digits += n - f;
     }
     if digits == 0 {
-        return expected(i, "Zahl");
+        return expected(i, Expected::Number);
     }
     // All bytes up to `n` are ASCII, so `n` is a char boundary.
     match crate::number::parse_f64(&i[..n]) {
         Some(v) if v.is_finite() => Ok((&i[n..], v)),
-        _ => failure(i, "Zahl"),
+        _ => failure(i, Expected::Number),
     }
 }
 
@@ -123,7 +124,7 @@ pub(crate) fn value(i: &str) -> Step<'_, Value> {
 /// A value that must end its word (`SPA+0 ` but not `SPA+0X`).
 pub(crate) fn word_value(i: &str) -> Step<'_, Value> {
     let (rest, v) = value(i)?;
-    if at_boundary(rest) { Ok((rest, v)) } else { failure(rest, "Leerzeichen") }
+    if at_boundary(rest) { Ok((rest, v)) } else { failure(rest, Expected::Blank) }
 }
 
 /// `FMAX`, `F MAX`, `F AUTO` or `F` value. Stops with `Expected` (not `Cut`) if no `F` is there.
@@ -132,7 +133,7 @@ pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
         return Ok((rest, Feed::Max));
     }
     let Some(after_f) = i.strip_prefix('F') else {
-        return expected(i, "F");
+        return expected(i, Expected::Nc("F"));
     };
     let spaced = sp(after_f);
     if let Some(rest) = keyword(spaced, "MAX") {
@@ -143,7 +144,7 @@ pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
     }
     match word_value(after_f) {
         Ok((rest, v)) => Ok((rest, Feed::Value(v))),
-        Err(Stop::Expected { at, .. }) => Err(Stop::Cut { at, what: Some("F…|FMAX|F AUTO") }),
+        Err(Stop::Expected { at, .. }) => Err(Stop::Cut { at, what: Some(Expected::Nc("F…|FMAX|F AUTO")) }),
         Err(e) => Err(e),
     }
 }
@@ -152,7 +153,7 @@ pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
 pub(crate) fn m_function(i: &str) -> Step<'_, u32> {
     let Some(rest) = i.strip_prefix('M') else { return Err(Stop::Expected { at: i, what: None }) };
     let (rest, m) = uint(rest)?;
-    if at_boundary(rest) { Ok((rest, m)) } else { failure(rest, "Leerzeichen") }
+    if at_boundary(rest) { Ok((rest, m)) } else { failure(rest, Expected::Blank) }
 }
 
 /// `+` or `-` directly after a word (`DR+`, `SEQ-`).
@@ -160,7 +161,7 @@ pub(crate) fn sign(i: &str) -> Step<'_, Sign> {
     match i.as_bytes().first() {
         Some(b'+') => Ok((&i[1..], Sign::Plus)),
         Some(b'-') => Ok((&i[1..], Sign::Minus)),
-        _ => expected(i, "+|-"),
+        _ => expected(i, Expected::Nc("+|-")),
     }
 }
 
@@ -172,15 +173,15 @@ pub(crate) fn letters(i: &str) -> Step<'_, &str> {
 /// Everything up to the next blank (a name, a path).
 pub(crate) fn token(i: &str) -> Step<'_, &str> {
     let n = i.find([' ', '\t']).unwrap_or(i.len());
-    if n == 0 { expected(i, "Name") } else { Ok((&i[n..], &i[..n])) }
+    if n == 0 { expected(i, Expected::Name) } else { Ok((&i[n..], &i[..n])) }
 }
 
 /// A `"quoted"` name.
 pub(crate) fn quoted(i: &str) -> Step<'_, &str> {
-    let Some(inner) = i.strip_prefix('"') else { return expected(i, "\"Name\"") };
+    let Some(inner) = i.strip_prefix('"') else { return expected(i, Expected::QuotedName) };
     match inner.find('"') {
         Some(end) => Ok((&inner[end + 1..], &inner[..end])),
-        None => failure(i, "\""),
+        None => failure(i, Expected::Nc("\"")),
     }
 }
 
@@ -191,12 +192,12 @@ pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
         None => (false, i),
     };
     let Some(axis) = rest.as_bytes().first().copied().and_then(crate::ast::Axis::from_byte) else {
-        return expected(i, "Achse");
+        return expected(i, Expected::Axis);
     };
     // An axis letter followed by a letter is another word (`CC`, `AUTO`).
     let after = &rest[1..];
     if after.as_bytes().first().is_none_or(|b| b.is_ascii_alphabetic()) {
-        return expected(i, "Achse");
+        return expected(i, Expected::Axis);
     }
     let (rest, value) = word_value(after).map_err(Stop::cut)?;
     Ok((rest, crate::ast::AxisWord { axis, value, incremental }))

@@ -4,7 +4,7 @@ use crate::Lang;
 use crate::number::prose;
 use serde::Serialize;
 
-use crate::machine::Texts;
+use crate::lang::Text;
 use crate::orientation::PlaneError;
 use crate::solve::SolveError;
 
@@ -55,23 +55,23 @@ pub struct SimError {
     pub line: u32,
     pub code: SimErrorCode,
     /// The control's message.
-    pub message: Texts,
+    pub message: Text,
     /// The detail with the numbers.
-    pub detail: Texts,
+    pub detail: Text,
 }
 
-fn t(de: impl Into<String>, en: impl Into<String>) -> Texts {
-    Texts { de: de.into(), en: en.into() }
+fn t(de: impl Into<std::borrow::Cow<'static, str>>, en: impl Into<std::borrow::Cow<'static, str>>) -> Text {
+    Text { de: de.into(), en: en.into() }
 }
 
 impl SimErrorCode {
     /// The control's message (wordings not found in a source are marked in
     /// [`crate::unconfirmed::SIM_MESSAGES_UNCONFIRMED`]).
     #[must_use]
-    pub fn message(&self) -> Texts {
+    pub fn message(&self) -> Text {
         match self {
-            SimErrorCode::Solve { error } => t(error.message_de(), error.message_en()),
-            SimErrorCode::Plane { error } => t(error.message_de(), error.message_en()),
+            SimErrorCode::Solve { error } => error.message(),
+            SimErrorCode::Plane { error } => error.message(),
             SimErrorCode::UndefinedQ { .. } => t("Q-Parameter nicht definiert", "Q parameter not defined"),
             SimErrorCode::Arithmetic { .. } => t("Rechenfehler", "Arithmetical error"),
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
@@ -98,10 +98,10 @@ impl SimErrorCode {
 
     /// The detail with the numbers.
     #[must_use]
-    pub fn detail(&self) -> Texts {
+    pub fn detail(&self) -> Text {
         match self {
-            SimErrorCode::Solve { error } => t(error.detail_de(), error.detail_en()),
-            SimErrorCode::Plane { error } => t(error.message_de(), error.message_en()),
+            SimErrorCode::Solve { error } => error.detail(),
+            SimErrorCode::Plane { error } => error.message(),
             SimErrorCode::UndefinedQ { index } => {
                 t(format!("Q{index} wurde noch kein Wert zugewiesen"), format!("Q{index} has no value yet"))
             }

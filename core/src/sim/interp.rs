@@ -11,7 +11,8 @@ use crate::ast::{
     OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
-use crate::machine::{Carrier, Machine, Texts};
+use crate::lang::Text;
+use crate::machine::{Carrier, Machine};
 use crate::orientation::{self, Context};
 use crate::plane::{Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RotaryAxis, Value};
 use crate::solve::{self, Explanation, SolveError, SolveOptions};
@@ -46,7 +47,7 @@ pub(crate) struct Cx<'a> {
 #[derive(Debug, Default)]
 pub(crate) struct Rec {
     pub segments: Vec<Segment>,
-    pub message: Option<Texts>,
+    pub message: Option<Text>,
     pub explanation: Option<Arc<Explanation>>,
 }
 
@@ -117,10 +118,9 @@ const NOT_SIMULATED_M: [u32; 4] = [92, 128, 129, 140];
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
 pub const STAY_SECONDS: f64 = 1.0;
 
-fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> (String, String)) {
+fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
     if let Some(r) = rec.as_deref_mut() {
-        let (de, en) = text();
-        r.message = Some(Texts { de, en });
+        r.message = Some(text());
     }
 }
 
@@ -292,15 +292,15 @@ impl Interp {
                 self.pc = cx.program.blocks.len();
             }
             note(&mut rec, || {
-                (
-                    "Nach Programmende (M30/M2): nicht ausgeführt".into(),
-                    "After program end (M30/M2): not executed".into(),
+                Text::new(
+                    "Nach Programmende (M30/M2): nicht ausgeführt",
+                    "After program end (M30/M2): not executed",
                 )
             });
             return Ok(false);
         }
         if block.skip && cx.options.block_skip {
-            note(&mut rec, || ("Satz ausgeblendet (/)".into(), "Block skipped (/)".into()));
+            note(&mut rec, || Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
             return Ok(false);
         }
         if !matches!(&block.body, BlockBody::CycleDefOld(d) if d.number == 7) {
@@ -316,30 +316,32 @@ impl Interp {
             BlockBody::ToolCall(t) => self.tool_call(t, &mut rec)?,
             BlockBody::L(line) => self.line(cx, &mut rec, idx, line)?,
             BlockBody::Cc(_) => note(&mut rec, || {
-                ("CC: Kreismittelpunkt (keine Bewegung)".into(), "CC: circle centre (no motion)".into())
+                Text::new("CC: Kreismittelpunkt (keine Bewegung)", "CC: circle centre (no motion)")
             }),
             BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) => {
                 let line = Line { axes: m.axes.clone(), comp: m.comp, feed: m.feed, m: m.m.clone() };
                 self.line(cx, &mut rec, idx, &line)?;
                 note(&mut rec, || {
-                    (
-                        "Kreisbahn nicht simuliert: Gerade zum Endpunkt".into(),
-                        "Arc not simulated: straight line to its end point".into(),
+                    Text::new(
+                        "Kreisbahn nicht simuliert: Gerade zum Endpunkt",
+                        "Arc not simulated: straight line to its end point",
                     )
                 });
             }
             BlockBody::Lp(_) | BlockBody::Cp(_) | BlockBody::Rnd { .. } | BlockBody::Chf { .. } => {
                 note(&mut rec, || {
-                    (
-                        "Polar-/Rundungs-/Fasensatz nicht simuliert".into(),
-                        "Polar, rounding or chamfer block not simulated".into(),
+                    Text::new(
+                        "Polar-/Rundungs-/Fasensatz nicht simuliert",
+                        "Polar, rounding or chamfer block not simulated",
                     )
                 })
             }
             BlockBody::MFunctions(m) => {
                 self.spindle_m(m);
                 if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
-                    note(&mut rec, || (format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
+                    note(&mut rec, || {
+                        Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated"))
+                    });
                 }
                 if m.contains(&99) {
                     self.call_cycle(cx, &mut rec, idx)?;
@@ -350,7 +352,7 @@ impl Interp {
                 self.cycle = Some(StoredCycle::New(idx));
                 let n = d.number;
                 note(&mut rec, || {
-                    (
+                    Text::owned(
                         format!("Zyklus {n} definiert, wirkt beim Aufruf"),
                         format!("Cycle {n} defined, acts when called"),
                     )
@@ -403,7 +405,10 @@ impl Interp {
             BlockBody::CallPgm { path } => {
                 let p = path.clone();
                 note(&mut rec, || {
-                    (format!("CALL PGM {p}: nicht simuliert"), format!("CALL PGM {p}: not simulated"))
+                    Text::owned(
+                        format!("CALL PGM {p}: nicht simuliert"),
+                        format!("CALL PGM {p}: not simulated"),
+                    )
                 })
             }
             BlockBody::QAssign { target, expr, .. } => {
@@ -423,7 +428,7 @@ impl Interp {
                 None => {
                     let t = text.clone();
                     note(&mut rec, || {
-                        (format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
+                        Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
                     })
                 }
             },
@@ -486,7 +491,7 @@ impl Interp {
             if !known {
                 let (n, l, r) = (self.tool.number, self.tool.length, self.tool.radius);
                 note(rec, || {
-                    (
+                    Text::owned(
                         format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
                         format!("Tool {n} not in the tool table: assuming L={l} R={r}"),
                     )
@@ -498,7 +503,7 @@ impl Interp {
             if a != Axis::Z {
                 let c = self.tool.axis;
                 note(rec, || {
-                    (
+                    Text::owned(
                         format!("Werkzeugachse {c}: simuliert wird mit Werkzeugachse Z"),
                         format!("Tool axis {c}: simulated with tool axis Z"),
                     )

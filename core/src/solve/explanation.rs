@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::words::{axis_word, fmt_deg, selection_word, sign_char};
 use crate::axes::AxisValues;
+use crate::lang::Text;
 use crate::machine::Limits;
 use crate::plane::{RotaryAxis, Selection, Sign, TransformMode};
 use crate::unconfirmed::{self, Decision};
@@ -112,33 +113,32 @@ pub enum Rule {
 }
 
 impl Rule {
-    /// `(German, English)` text for the trainee.
+    /// The text for the trainee.
     #[must_use]
-    pub fn texts(&self) -> (String, String) {
+    pub fn text(&self) -> Text {
+        let t = Text::owned;
         let pm = |sign: Sign, de: [&'static str; 2], en: [&'static str; 2]| match sign {
             Sign::Plus => (de[0], en[0]),
             Sign::Minus => (de[1], en[1]),
         };
         match *self {
-            Rule::Axial => (
-                "PLANE AXIAL: Achswinkel direkt programmiert, keine Auswahl nötig".into(),
-                "PLANE AXIAL: axis angles programmed directly, nothing to choose".into(),
+            Rule::Axial => Text::new(
+                "PLANE AXIAL: Achswinkel direkt programmiert, keine Auswahl nötig",
+                "PLANE AXIAL: axis angles programmed directly, nothing to choose",
             ),
-            Rule::Reset => (
-                "PLANE RESET: Drehachsen zurück in die Grundstellung".into(),
-                "PLANE RESET: rotary axes back to the home position".into(),
+            Rule::Reset => Text::new(
+                "PLANE RESET: Drehachsen zurück in die Grundstellung",
+                "PLANE RESET: rotary axes back to the home position",
             ),
-            Rule::Unique { free: None } => {
-                ("Nur eine Lösung möglich".into(), "Only one solution exists".into())
-            }
-            Rule::Unique { free: Some(a) } => (
+            Rule::Unique { free: None } => Text::new("Nur eine Lösung möglich", "Only one solution exists"),
+            Rule::Unique { free: Some(a) } => t(
                 format!("Nur eine Lösung: Werkzeugachse parallel zur Achse {a}, {a} ist frei"),
                 format!("Only one solution: tool axis parallel to axis {a}, {a} is free"),
             ),
             Rule::Seq { sign, master } => {
                 let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
                 let s = sign_char(sign);
-                (
+                t(
                     format!(
                         "SEQ{s}: Master-Achse {master} muss {de} sein (bezogen auf die Grundstellung 0°)"
                     ),
@@ -148,7 +148,7 @@ impl Rule {
             Rule::SeqNearer { sign, master } => {
                 let (de, en) = pm(sign, ["positiv", "negativ"], ["positive", "negative"]);
                 let s = sign_char(sign);
-                (
+                t(
                     format!("SEQ{s}: beide Lösungen haben {master} {de}, die Steuerung nimmt die nähere"),
                     format!("SEQ{s}: both solutions have {master} {en}, the control takes the nearer one"),
                 )
@@ -156,45 +156,33 @@ impl Rule {
             Rule::Sym { sign, master, symmetry_point } => {
                 let (de, en) = pm(sign, ["positiven", "negativen"], ["positive", "negative"]);
                 let (s, p) = (sign_char(sign), axis_word(master, symmetry_point));
-                (
+                t(
                     format!("SYM{s}: Master-Achse {master} im {de} Halbraum ab dem Symmetriepunkt {p}"),
                     format!(
                         "SYM{s}: master axis {master} in the {en} half-space from the symmetry point {p}"
                     ),
                 )
             }
-            Rule::OnlyInLimits => (
-                "Nur eine Lösung liegt im Verfahrbereich".into(),
-                "Only one solution lies inside the traverse range".into(),
+            Rule::OnlyInLimits => Text::new(
+                "Nur eine Lösung liegt im Verfahrbereich",
+                "Only one solution lies inside the traverse range",
             ),
-            Rule::ShortestPath => (
-                "Kürzester Weg von der aktuellen Position der Drehachsen".into(),
-                "Shortest path from the current rotary axis positions".into(),
+            Rule::ShortestPath => Text::new(
+                "Kürzester Weg von der aktuellen Position der Drehachsen",
+                "Shortest path from the current rotary axis positions",
             ),
-            Rule::Tie { master } => (
+            Rule::Tie { master } => t(
                 format!("Beide Wege gleich lang: Lösung mit {master} positiver (Annahme, nicht bestätigt)"),
                 format!("Equal paths: the solution with the larger {master} (assumption, unconfirmed)"),
             ),
             Rule::NoneInLimits => {
-                ("Keine Lösung im Verfahrbereich".into(), "No solution inside the traverse range".into())
+                Text::new("Keine Lösung im Verfahrbereich", "No solution inside the traverse range")
             }
-            Rule::Unreachable => (
-                "Diese Werkzeugachse ist mit der Kinematik nicht erreichbar".into(),
-                "This tool axis cannot be reached with this kinematics".into(),
+            Rule::Unreachable => Text::new(
+                "Diese Werkzeugachse ist mit der Kinematik nicht erreichbar",
+                "This tool axis cannot be reached with this kinematics",
             ),
         }
-    }
-
-    /// German text for the trainee.
-    #[must_use]
-    pub fn text_de(&self) -> String {
-        self.texts().0
-    }
-
-    /// English text for the trainee.
-    #[must_use]
-    pub fn text_en(&self) -> String {
-        self.texts().1
     }
 }
 
@@ -215,38 +203,27 @@ pub enum SolveError {
 }
 
 impl SolveError {
-    /// The control's message, `(German, English)`: "Winkel nicht erlaubt" [S2] /
+    /// The control's message: "Winkel nicht erlaubt" [S2] /
     /// "Entered angle not permitted" [M:TNC7basic-SYM].
     #[must_use]
-    pub fn messages(&self) -> (&'static str, &'static str) {
+    pub fn message(&self) -> Text {
         match self {
             SolveError::Unreachable { .. } if unconfirmed::UNREACHABLE_IS_SEPARATE_ERROR => {
-                ("Winkel nicht berechenbar", "Angle cannot be calculated")
+                Text::new("Winkel nicht berechenbar", "Angle cannot be calculated")
             }
-            SolveError::NotFinite { .. } => ("Ungültiger Zahlenwert", "Invalid number"),
-            _ => ("Winkel nicht erlaubt", "Entered angle not permitted"),
+            SolveError::NotFinite { .. } => Text::new("Ungültiger Zahlenwert", "Invalid number"),
+            _ => Text::new("Winkel nicht erlaubt", "Entered angle not permitted"),
         }
     }
 
-    /// The control's message, German.
+    /// The detail with the numbers.
     #[must_use]
-    pub fn message_de(&self) -> &'static str {
-        self.messages().0
-    }
-
-    /// The control's message, English.
-    #[must_use]
-    pub fn message_en(&self) -> &'static str {
-        self.messages().1
-    }
-
-    /// The detail with the numbers, `(German, English)`.
-    #[must_use]
-    pub fn details(&self) -> (String, String) {
+    pub fn detail(&self) -> Text {
+        let t = Text::owned;
         match *self {
             SolveError::AxisOutOfLimit { axis, value, min, max } => {
                 let (v, lo, hi) = (axis_word(axis, value), fmt_deg(min), fmt_deg(max));
-                (
+                t(
                     format!("{v} außerhalb des Verfahrbereichs {lo} … {hi}"),
                     format!("{v} outside the traverse range {lo} … {hi}"),
                 )
@@ -254,66 +231,35 @@ impl SolveError {
             SolveError::NoSolutionOnSide { selection, master, values } => {
                 let (sel, v0, v1) =
                     (selection_word(selection), axis_word(master, values[0]), axis_word(master, values[1]));
-                (
+                t(
                     format!("{sel}: keine Lösung auf dieser Seite ({v0}, {v1})"),
                     format!("{sel}: no solution on that side ({v0}, {v1})"),
                 )
             }
-            SolveError::NoSolutionInLimits { candidates } => (
+            SolveError::NoSolutionInLimits { candidates } => t(
                 format!("Keine der {candidates} Lösungen liegt im Verfahrbereich"),
                 format!("None of the {candidates} solutions lies inside the traverse range"),
             ),
-            SolveError::Unreachable { tool_axis: [x, y, z] } => (
+            SolveError::Unreachable { tool_axis: [x, y, z] } => t(
                 format!(
                     "Werkzeugachse {} mit dieser Kinematik nicht erreichbar",
                     crate::number::prose_vec([x, y, z], 4, crate::Lang::De)
                 ),
                 format!("Tool axis ({x:.4}, {y:.4}, {z:.4}) cannot be reached with this kinematics"),
             ),
-            SolveError::NotFinite { what, value } => {
-                (format!("{what} = {value}"), format!("{what} = {value}"))
-            }
+            SolveError::NotFinite { what, value } => Text::same(format!("{what} = {value}")),
         }
-    }
-
-    /// The detail with the numbers, German.
-    #[must_use]
-    pub fn detail_de(&self) -> String {
-        self.details().0
-    }
-
-    /// The detail with the numbers, English.
-    #[must_use]
-    pub fn detail_en(&self) -> String {
-        self.details().1
     }
 }
 
-/// A [`Rule`] that serialises as its texts, `{"de": …, "en": …}`. The texts are only formatted
+/// A [`Rule`] that serialises as its text, `{"de": …, "en": …}`. The text is only formatted
 /// when asked for, which keeps [`solve`] free of string formatting (benchmark budget).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reason(pub Rule);
 
-impl Reason {
-    /// German text.
-    #[must_use]
-    pub fn de(&self) -> String {
-        self.0.text_de()
-    }
-    /// English text.
-    #[must_use]
-    pub fn en(&self) -> String {
-        self.0.text_en()
-    }
-}
-
 impl Serialize for Reason {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeStruct;
-        let mut st = s.serialize_struct("Reason", 2)?;
-        st.serialize_field("de", &self.de())?;
-        st.serialize_field("en", &self.en())?;
-        st.end()
+        self.0.text().serialize(s)
     }
 }
 
@@ -321,26 +267,9 @@ impl Serialize for Reason {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ErrorMessage(pub SolveError);
 
-impl ErrorMessage {
-    /// German, as the control says it ("Winkel nicht erlaubt").
-    #[must_use]
-    pub fn de(&self) -> &'static str {
-        self.0.message_de()
-    }
-    /// English ("Entered angle not permitted").
-    #[must_use]
-    pub fn en(&self) -> &'static str {
-        self.0.message_en()
-    }
-}
-
 impl Serialize for ErrorMessage {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeStruct;
-        let mut st = s.serialize_struct("ErrorMessage", 2)?;
-        st.serialize_field("de", self.de())?;
-        st.serialize_field("en", self.en())?;
-        st.end()
+        self.0.message().serialize(s)
     }
 }
 

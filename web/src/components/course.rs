@@ -106,7 +106,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
                 <button onclick={toggle_lang} data-testid="course-lang">{ l.t("English", "Deutsch") }</button>
                 <a href="index.html" class="to-trainer">{ l.t("Zum Trainer", "To the trainer") }</a>
             </header>
-            if let Some(n) = state.notice {
+            if let Some(n) = &state.notice {
                 <p class="course-notice" role="status" data-testid="course-notice">{ n.get(l) }</p>
             }
             { page }

@@ -71,19 +71,22 @@ impl Interp {
                 self.sync_pos();
             }
             (11, _) => note(rec, || {
-                ("Zyklus 11 (Maßfaktor) nicht simuliert".into(), "Cycle 11 (scaling) not simulated".into())
+                Text::new("Zyklus 11 (Maßfaktor) nicht simuliert", "Cycle 11 (scaling) not simulated")
             }),
             (19, 0) => note(rec, || {
-                (
-                    "Zyklus 19: die Winkel folgen im Satz 19.1".into(),
-                    "Cycle 19: the angles follow in block 19.1".into(),
+                Text::new(
+                    "Zyklus 19: die Winkel folgen im Satz 19.1",
+                    "Cycle 19: the angles follow in block 19.1",
                 )
             }),
             (19, _) => self.cycle19(cx, rec, idx, words)?,
             (n, 0) => {
                 self.cycle = Some(StoredCycle::Old(n));
                 note(rec, || {
-                    (format!("Zyklus {n} (alte Form) definiert"), format!("Cycle {n} (old form) defined"))
+                    Text::owned(
+                        format!("Zyklus {n} (alte Form) definiert"),
+                        format!("Cycle {n} (old form) defined"),
+                    )
                 });
             }
             _ => {}
@@ -95,7 +98,9 @@ impl Interp {
         let Some(c) = self.cycle else { return Err(SimErrorCode::NoCycle) };
         let def = match c {
             StoredCycle::Old(n) => {
-                note(rec, || (format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+                note(rec, || {
+                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
+                });
                 return Ok(());
             }
             StoredCycle::New(b) => match cx.program.blocks.get(b).map(|b| &b.body) {
@@ -120,7 +125,7 @@ impl Interp {
                 let m = cycles::face_mill_232(&q, self.pos_i, self.tool.radius)?;
                 if strategy != 0.0 && unconfirmed::CYCLE232_STRATEGY {
                     note(rec, || {
-                        (
+                        Text::owned(
                             format!("Zyklus 232: Strategie Q389={strategy} als Mäander simuliert"),
                             format!("Cycle 232: strategy Q389={strategy} simulated as a meander"),
                         )
@@ -129,7 +134,9 @@ impl Interp {
                 m
             }
             n => {
-                note(rec, || (format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+                note(rec, || {
+                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
+                });
                 return Ok(());
             }
         };
@@ -147,7 +154,7 @@ impl Interp {
         if rec.as_ref().is_some_and(|r| r.message.is_none()) {
             let n = moves.len();
             note(rec, || {
-                (
+                Text::owned(
                     format!("Zyklus {number} ausgeführt ({n} Bewegungen in der Bearbeitungsebene)"),
                     format!("Cycle {number} executed ({n} moves in the working plane)"),
                 )

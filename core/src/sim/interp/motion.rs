@@ -140,14 +140,14 @@ impl Interp {
         }
         if matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
             note(rec, || {
-                (
-                    "Radiuskorrektur RL/RR nicht simuliert: Werkzeugmittelpunkt auf der Kontur".into(),
-                    "Radius compensation RL/RR not simulated: tool centre on the contour".into(),
+                Text::new(
+                    "Radiuskorrektur RL/RR nicht simuliert: Werkzeugmittelpunkt auf der Kontur",
+                    "Radius compensation RL/RR not simulated: tool centre on the contour",
                 )
             });
         }
         if let Some(&m) = line.m.iter().find(|&&m| NOT_SIMULATED_M.contains(&m)) {
-            note(rec, || (format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
+            note(rec, || Text::owned(format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
         }
         self.check_rotary(cx, rot)?;
         if lin_prog && !m91 {

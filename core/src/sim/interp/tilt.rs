@@ -102,9 +102,9 @@ impl Interp {
             None | Some(Positioning::Stay) => {
                 if pb.positioning.is_none() {
                     note(rec, || {
-                        (
-                            "MOVE/TURN/STAY fehlt: wie STAY behandelt".into(),
-                            "MOVE/TURN/STAY missing: treated as STAY".into(),
+                        Text::new(
+                            "MOVE/TURN/STAY fehlt: wie STAY behandelt",
+                            "MOVE/TURN/STAY missing: treated as STAY",
                         )
                     });
                 }
@@ -224,7 +224,7 @@ impl Interp {
             self.plane = None;
             self.stay_segment(rec, idx, before, DMat3::IDENTITY);
             self.sync_pos();
-            note(rec, || ("Zyklus 19 zurückgesetzt".into(), "Cycle 19 reset".into()));
+            note(rec, || Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
             return Ok(());
         }
         let machine = cx.machine;
@@ -262,12 +262,12 @@ impl Interp {
         }
         if unconfirmed::CYCLE19_MOVES_AXES {
             // Not the chosen convention; kept so the switch in unconfirmed.rs stays meaningful.
-            note(rec, || ("Zyklus 19 positioniert die Achsen".into(), "Cycle 19 positions the axes".into()));
+            note(rec, || Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes"));
         } else {
             note(rec, || {
-                (
-                    "Zyklus 19 aktiv: Drehachsen mit L A+Q120 … positionieren".into(),
-                    "Cycle 19 active: position the rotary axes with L A+Q120 …".into(),
+                Text::new(
+                    "Zyklus 19 aktiv: Drehachsen mit L A+Q120 … positionieren",
+                    "Cycle 19 active: position the rotary axes with L A+Q120 …",
                 )
             });
         }
