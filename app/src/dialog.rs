@@ -12,6 +12,7 @@ use schwenkbar_core::parse::parse_value;
 use schwenkbar_core::plane::{
     self, Feed, MoveBack, PlaneKind, RelAxis, Selection, Sign, TransformMode, Value, Word,
 };
+use schwenkbar_core::unconfirmed::Decision;
 
 use crate::i18n::Text;
 
@@ -200,6 +201,16 @@ impl Dialog {
                 t("Schwenklösung wählen? (optional)", "Select the tilting solution? (optional)")
             }
             Step::Transform => t("Transformationsart? (optional)", "Type of transformation? (optional)"),
+        }
+    }
+
+    /// The UNCONFIRMED decision behind the current prompt's German wording, if it is not the
+    /// manual's (said in the German dialog).
+    #[must_use]
+    pub fn wording(&self) -> Option<Decision> {
+        match self.field() {
+            Some(f) if f.confirmed => None,
+            _ => Some(Decision::DialogWording),
         }
     }
 

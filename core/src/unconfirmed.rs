@@ -84,11 +84,16 @@ pub enum Decision {
     DatumAbsoluteReplaces,
     /// Simulator: [`Q120_ONLY_FOR_SPATIAL_TILTS`].
     Q120OnlySpatial,
+    /// The dialog's German wording where no manual gives it (DOMAIN.md §7): the prompts of
+    /// SPATIAL, PROJECTED, POINTS, RELATIV, AXIAL, DIST, MB and the positioning step, and the
+    /// softkey labels other than SPATIAL/RESET. Confirmed, from the iTNC 530 German user
+    /// manual: the EULER and VECTOR prompts.
+    DialogWording,
 }
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 33] = [
+    pub const ALL: [Decision; 34] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -122,6 +127,7 @@ impl Decision {
         Decision::Cycle232Strategy,
         Decision::DatumAbsoluteReplaces,
         Decision::Q120OnlySpatial,
+        Decision::DialogWording,
     ];
 
     /// The text for the trainee.
@@ -259,6 +265,10 @@ impl Decision {
             Decision::Q120OnlySpatial => Text::new(
                 "Q120–Q122 werden von Schwenkungen mit Raumwinkeln geschrieben, nicht von PLANE AXIAL und PLANE RESET.",
                 "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
+            ),
+            Decision::DialogWording => Text::new(
+                "Wortlaut der Dialogfrage nicht aus einem Handbuch (bestätigt sind nur EULER und VECTOR).",
+                "The German wording of this prompt is not from a manual (only EULER and VECTOR are confirmed).",
             ),
         }
     }
@@ -488,3 +498,21 @@ pub const DATUM_ABSOLUTE_REPLACES: bool = true;
 /// written by tilts with spatial angles (every PLANE function except AXIAL and RESET, cycle 19)
 /// and left unchanged by PLANE AXIAL and PLANE RESET. **UNCONFIRMED** for AXIAL and RESET.
 pub const Q120_ONLY_FOR_SPATIAL_TILTS: bool = true;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_decision_is_listed_once_with_a_text_in_both_languages() {
+        for (i, d) in Decision::ALL.iter().enumerate() {
+            assert!(!Decision::ALL[..i].contains(d), "{d:?} listed twice");
+            let t = d.text();
+            assert!(!t.de.is_empty() && !t.en.is_empty() && t.de != t.en, "{d:?}");
+        }
+        let texts: Vec<_> = Decision::ALL.iter().map(|d| d.text().de).collect();
+        for (i, t) in texts.iter().enumerate() {
+            assert!(!texts[..i].contains(t), "the same text twice: {t}");
+        }
+    }
+}

@@ -1,7 +1,8 @@
 //! The prompts of each PLANE function in the control's order, with their one-line help
-//! (DOMAIN.md §7; the English prompts are the manual's). German: the EULER prompts are the
-//! iTNC 530 German user manual's (PLANE EULER, input parameters) and confirmed; the other German
-//! prompts are ours, UNCONFIRMED.
+//! (DOMAIN.md §7; the English prompts are the manual's). German: the EULER and VECTOR prompts
+//! are the iTNC 530 German user manual's and confirmed (`confirmed: true`); the other German
+//! prompts are ours in the manual's abbreviation style, UNCONFIRMED
+//! (`unconfirmed::Decision::DialogWording`, said under the prompt).
 
 use schwenkbar_core::plane::Word;
 
@@ -15,10 +16,17 @@ pub struct Field {
     pub prompt: Text,
     pub help: Text,
     pub required: bool,
+    /// The German prompt is the manual's.
+    pub confirmed: bool,
 }
 
 const fn field(word: Word, prompt: Text, help: Text) -> Field {
-    Field { word, prompt, help, required: true }
+    Field { word, prompt, help, required: true, confirmed: false }
+}
+
+/// A field whose German prompt the iTNC 530 German user manual gives.
+const fn manual_field(word: Word, prompt: Text, help: Text) -> Field {
+    Field { word, prompt, help, required: true, confirmed: true }
 }
 
 pub(super) const fn t(de: &'static str, en: &'static str) -> Text {
@@ -71,7 +79,7 @@ pub(super) static PROJECTED: [Field; 3] = [
     ),
     field(
         Word::Rot,
-        t("ROT-Winkel der geschwenkten Ebene?", "ROT angle of the tilted plane?"),
+        t("ROT-Winkel der geschw. Ebene?", "ROT angle of the tilted plane?"),
         t(
             "Drehung um die geschwenkte Werkzeugachse, 0…360°.",
             "Rotation about the tilted tool axis, 0…360°.",
@@ -80,7 +88,7 @@ pub(super) static PROJECTED: [Field; 3] = [
 ];
 
 pub(super) static EULER: [Field; 3] = [
-    field(
+    manual_field(
         Word::Eulpr,
         t("Drehw. Haupt-Koordinatenebene?", "Rot. angle main coordinate plane?"),
         t(
@@ -88,7 +96,7 @@ pub(super) static EULER: [Field; 3] = [
             "Precession: rotation about the untilted Z axis, −180…+180°.",
         ),
     ),
-    field(
+    manual_field(
         Word::Eulnu,
         t("Schwenkwinkel Werkzeug-Achse?", "Tilting angle tool axis?"),
         t(
@@ -96,7 +104,7 @@ pub(super) static EULER: [Field; 3] = [
             "Nutation: rotation about the rotated X axis, 0…180°.",
         ),
     ),
-    field(
+    manual_field(
         Word::Eulrot,
         t("ROT-Winkel der geschw. Ebene?", "ROT angle of the tilted plane?"),
         t(
@@ -107,7 +115,7 @@ pub(super) static EULER: [Field; 3] = [
 ];
 
 const fn vec_field(word: Word, prompt: Text) -> Field {
-    field(
+    manual_field(
         word,
         prompt,
         t(
@@ -167,6 +175,7 @@ const fn axial_field(word: Word, prompt: Text) -> Field {
             "Machine axis angle directly; existing axes only. NO ENT skips the axis.",
         ),
         required: false,
+        confirmed: false,
     }
 }
 

@@ -427,3 +427,15 @@ fn the_dialog_refuses_exactly_what_the_parser_refuses() {
     enter(&mut d, "400");
     assert_eq!(d.message.as_ref().map(|m| &*m.de), Some("Winkel nicht erlaubt"));
 }
+
+#[test]
+fn only_the_manuals_german_prompts_count_as_confirmed() {
+    let euler = Dialog::new(PlaneKind::Euler);
+    assert_eq!(euler.prompt().de, "Drehw. Haupt-Koordinatenebene?");
+    assert_eq!(euler.wording(), None);
+    assert_eq!(Dialog::new(PlaneKind::Vector).wording(), None);
+    assert_eq!(Dialog::new(PlaneKind::Spatial).wording(), Some(Decision::DialogWording));
+    let mut d = spatial("0", "15", "0");
+    d.key(Key::Positioning(PosKind::Move));
+    assert_eq!(d.wording(), Some(Decision::DialogWording), "DIST's prompt is ours");
+}

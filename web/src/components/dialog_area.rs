@@ -71,7 +71,13 @@ pub fn dialog_area(props: &DialogAreaProps) -> Html {
                         <span class="caret" aria-hidden="true">{ "▏" }</span>
                     </div>
                 }
-                <div class="dialog-help">{ d.help().get(l) }</div>
+                <div class="dialog-help">
+                    { d.help().get(l) }
+                    // Only the German wording can be unconfirmed: the English prompts are the manual's.
+                    if let (Lang::De, Some(decision)) = (l, d.wording()) {
+                        <span class="unconfirmed" title={decision.text().get(l).to_owned()}>{ " · Wortlaut unbestätigt" }</span>
+                    }
+                </div>
                 <div class="keys-hint">
                     { l.t("Tastatur: Enter = ENT · Umschalt+Enter = NO ENT · Ende = END · Esc = DEL · F1–F8 = Softkeys",
                           "Keyboard: Enter = ENT · Shift+Enter = NO ENT · End = END · Esc = DEL · F1–F8 = softkeys") }
