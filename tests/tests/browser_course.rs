@@ -359,3 +359,26 @@ async fn the_other_solution_in_lessons_4_8_and_9_gets_its_own_hint_and_lesson_5_
     web_sys::window().expect("window").location().set_hash("").expect("hash");
     settle().await;
 }
+
+/// Language and the classroom projector are one setting of both pages: chosen in the course,
+/// the trainer opens the same way.
+#[wasm_bindgen_test]
+async fn the_language_and_instructor_view_chosen_in_the_course_are_the_trainers_too() {
+    clear_storage();
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    let course = mount_at("#kurs").await;
+    click(&course, "[data-testid=course-lang]").await;
+    click(&course, "[data-testid=instructor]").await;
+    let page = query(&course, "[data-testid=course]").expect("course page");
+    assert_eq!(page.get_attribute("lang").as_deref(), Some("en"));
+    unmount(&course);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+    let trainer = mount().await;
+    let tnc = query(&trainer, ".tnc").expect("trainer");
+    assert_eq!(tnc.get_attribute("lang").as_deref(), Some("en"), "the course's language");
+    let class = tnc.get_attribute("class").unwrap_or_default();
+    assert!(class.split(' ').any(|c| c == "projector"), "the instructor view is the projector mode: {class}");
+    unmount(&trainer);
+    clear_storage();
+}
