@@ -107,6 +107,8 @@ pub struct Removal {
     pub volume: f64,
     /// The longest piece removed from one ray, mm.
     pub depth: f64,
+    /// Rays whose crossing with the sweep was computed (the work of the cut).
+    pub rays: usize,
 }
 
 /// The tri-dexel stock.
@@ -292,6 +294,10 @@ impl Stock {
         if lo.cmpgt(hi).any() {
             return out;
         }
+        // Every tool point lies between the tip's and the top's heights along t, so the sweep lies
+        // in the slab s_lo ≤ p·t ≤ s_hi: a cheap test that skips rays whose material is outside
+        // it (a tool passing just above a tilted face touches many rays' boxes but no material).
+        let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + cutter.length + 1e-9);
         let mut scratch = Vec::new();
         for d in 0..3 {
             let (a, b) = others(d);
@@ -307,13 +313,24 @@ impl Stock {
             let area = self.h[a] * self.h[b];
             for j in rj {
                 for i in ri.clone() {
-                    let dexel = &mut self.grids[d][i + self.n[a] * j];
-                    if !dexel.spans().iter().any(|s| s.hi > lo[d] && s.lo < hi[d]) {
-                        continue;
-                    }
                     let mut r0 = DVec3::ZERO;
                     r0[a] = self.min[a] + (i as f64 + 0.5) * self.h[a];
                     r0[b] = self.min[b] + (j as f64 + 0.5) * self.h[b];
+                    // The slab along this ray: r0·t + λ·t_d within [s_lo, s_hi].
+                    let (mut from, mut to) = (lo[d], hi[d]);
+                    let at = r0.dot(t);
+                    if t[d].abs() > 1e-12 {
+                        let (x, y) = ((s_lo - at) / t[d], (s_hi - at) / t[d]);
+                        from = from.max(x.min(y));
+                        to = to.min(x.max(y));
+                    } else if at < s_lo || at > s_hi {
+                        continue;
+                    }
+                    let dexel = &mut self.grids[d][i + self.n[a] * j];
+                    if from > to || !dexel.spans().iter().any(|s| s.hi > from && s.lo < to) {
+                        continue;
+                    }
+                    out.rays += 1;
                     if let Some((x0, x1)) = cutter.ray_interval(&frame, p0, p1, r0, dir) {
                         let removed = dexel.subtract(x0, x1, &mut scratch);
                         out.volume += removed * area / 3.0;

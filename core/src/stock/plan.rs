@@ -14,6 +14,9 @@ use super::{Cutter, Removal, Stock, StockError};
 /// grazing or roundoff (1 µm, the control's display resolution).
 const ENTERS_MATERIAL: f64 = 1e-3;
 
+/// Rays between two checkpoints at first (about 20 ms of cutting in a release build).
+const FIRST_CHECKPOINT_RAYS: usize = 200_000;
+
 /// Most sub-moves of one turning motion (a swivel of 180° of a 100 mm tool at 0.25 mm needs
 /// about 5,000): bounds the work of absurd programs.
 const MAX_SUB_MOVES: usize = 10_000;
@@ -23,8 +26,8 @@ const MAX_SUB_MOVES: usize = 10_000;
 pub struct StockOptions {
     /// Ray spacing, mm.
     pub resolution: f64,
-    /// Stocks kept along the run besides the blank, spaced evenly over the cuts: stepping back
-    /// re-cuts at most the cuts between two of them.
+    /// Stocks kept along the run besides the blank, spaced evenly over the work of the cuts
+    /// (rays computed): stepping back re-cuts at most the work between two of them.
     pub checkpoints: usize,
 }
 
@@ -198,11 +201,12 @@ impl Cutting {
                 SegmentPath::Stay { .. } => {}
                 SegmentPath::Linear if seg.rotary_delta == [0.0; 2] => {
                     // Fixed orientation: the tip moves on a straight line in the W-CS, one exact
-                    // sweep; split into pieces of at least two diameters only so that an
-                    // animated block shows the cut advancing.
+                    // sweep; split into pieces of at least four diameters (each piece tests the
+                    // rays of its box again) only so that an animated block shows the cut
+                    // advancing.
                     let (from, to) = (kin.tip_wcs(&seg.start), kin.tip_wcs(&seg.end));
                     let axis = kin.tool_axis_wcs(seg.start.rotary);
-                    let piece = (4.0 * radius).max(10.0);
+                    let piece = (8.0 * radius).max(20.0);
                     let n = ((from.distance(to) / piece).ceil() as usize).clamp(1, 64);
                     for i in 0..n {
                         let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
@@ -223,20 +227,35 @@ impl Cutting {
         }
     }
 
-    /// Cuts every event once: the notes, and the checkpoints evenly over the events.
+    /// Cuts every event once: the notes, and the checkpoints evenly over the work. The total is
+    /// known only at the end, so a checkpoint is taken after every `budget` rays; when there are
+    /// too many, every other one goes and the budget doubles (so they stay within a factor of
+    /// two of even).
     fn first_pass(&mut self) {
         let mut cursor = StockCursor::default();
-        let every = self.events.len() / (self.options.checkpoints + 1) + 1;
         let mut last_rapid_note = None;
+        let mut budget = FIRST_CHECKPOINT_RAYS;
+        let mut work = 0usize;
         self.checkpoints.push((0, None));
         for k in 0..self.events.len() {
-            if k > 0 && k % every == 0 && self.checkpoints.len() <= self.options.checkpoints {
+            if work >= budget && self.options.checkpoints > 0 {
                 self.checkpoints.push((k, cursor.stock.clone()));
+                work = 0;
+                if self.checkpoints.len() > self.options.checkpoints + 1 {
+                    let mut i = 0;
+                    // Keep the blank (index 0) and every second checkpoint after it.
+                    self.checkpoints.retain(|_| {
+                        i += 1;
+                        i == 1 || i % 2 == 1
+                    });
+                    budget *= 2;
+                }
             }
             let event = &self.events[k];
             let (step, block) = (event.step, event.block);
             match self.apply(&mut cursor, k) {
                 Applied::Removed(r) => {
+                    work += r.rays;
                     if matches!(event.action, Action::Cut { rapid: true, .. })
                         && r.depth > ENTERS_MATERIAL
                         && last_rapid_note != Some(step)
