@@ -111,18 +111,30 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
     s
 }
 
-/// A tool row as `RawTool { number, name, length, radius }`; `number` defaults to 0 and unknown
+/// A tool row as `RawTool { number, name, length, radius, shape, corner_radius, point_angle }`;
+/// `number` defaults to 0, `shape` to flat, and unknown
 /// fields are ignored, as the serde schema of `ToolEntry` does.
 fn tool(ctx: &str, v: &Value) -> String {
     let Value::Object(t) = v else { panic!("{ctx}: tool {v} is not an object") };
     let number = t.get("number").map_or(0, |n| {
         n.as_u64().and_then(|n| u32::try_from(n).ok()).unwrap_or_else(|| panic!("{ctx}: tool number {n}"))
     });
+    // The shape fields are optional so that tables without them stay readable (sim/tools.rs).
+    let shape = match t.get("shape").map(|s| string(ctx, s)) {
+        None | Some("flat") => "Flat",
+        Some("ball") => "Ball",
+        Some("bull") => "Bull",
+        Some("drill") => "Drill",
+        Some(other) => panic!("{ctx}: tool shape {other:?}, expected flat, ball, bull or drill"),
+    };
     format!(
-        "RawTool {{ number: {number}, name: {:?}, length: {}, radius: {} }}",
+        "RawTool {{ number: {number}, name: {:?}, length: {}, radius: {}, shape: ShapeKind::{shape}, \
+         corner_radius: {}, point_angle: {} }}",
         string(ctx, required(ctx, t, "name")),
         float(ctx, required(ctx, t, "length")),
         float(ctx, required(ctx, t, "radius")),
+        option(t.get("corner_radius"), |v| float(ctx, v)),
+        option(t.get("point_angle"), |v| float(ctx, v)),
     )
 }
 

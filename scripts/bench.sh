@@ -3,6 +3,7 @@
 #   Parser: MB/s, peak memory / file size, 10x scaling ratio (issue 3).
 #   Solver: solves/s from orientation to chosen axis positions, budget ≥ 1,000,000/s (issue 4).
 #   Simulator: blocks/s on the 1,000,000-block program (≥ 1,000,000), state_at latency (issue 5).
+#   Stock: time to cut Musterprogramm 1 at 0.25 mm (≤ 300 ms) and its memory (≤ 64 MB) (issue 14).
 #   Browser: key press → updated screen, Musterprogramm 1 and 100,000 blocks (issue 6), and the
 #   bundle size.
 set -euo pipefail
@@ -13,6 +14,7 @@ source scripts/env.sh
 cargo run --release -p schwenkbar-core --example bench_parse
 cargo run --release -p schwenkbar-core --example bench_solve
 cargo run --release -p schwenkbar-core --example bench_sim
+cargo run --release -p schwenkbar-core --example bench_stock
 wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_render -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'
 bash scripts/bundle.sh | tail -1

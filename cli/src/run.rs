@@ -1,4 +1,6 @@
-//! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en]`: one row per executed block.
+//! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
+//! per executed block; with `--stock-stl` also the stock after the run as binary STL, and the
+//! stock's notes (a rapid into the material, …) on stderr.
 
 use std::collections::BTreeMap;
 use std::io::Write;
@@ -9,6 +11,7 @@ use schwenkbar_core::Lang;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::tidy;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
+use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
 use schwenkbar_core::{Program, parse};
 use serde::Serialize;
 
@@ -30,6 +33,13 @@ pub(crate) struct Args {
     /// Stop after this many executed blocks (endless loops); default: the simulator's budget.
     #[arg(long)]
     max_blocks: Option<usize>,
+    /// Cut the BLK FORM blank with every motion and write the stock after the run (binary STL,
+    /// W-CS, mm).
+    #[arg(long, value_name = "OUT.stl")]
+    stock_stl: Option<PathBuf>,
+    /// Ray spacing of the stock, mm.
+    #[arg(long, default_value_t = StockOptions::default().resolution, value_name = "MM")]
+    stock_resolution: f64,
 }
 
 /// Rounds away float noise (1e-9) and `-0` for printing.
@@ -119,7 +129,44 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         eprintln!("error: {e}");
         return ExitCode::from(2);
     }
+    if let Some(path) = &args.stock_stl
+        && let Err(e) = write_stock(path, args, &program, &sim)
+    {
+        eprintln!("error: {}: {e}", path.display());
+        return ExitCode::from(2);
+    }
     if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}
+
+/// Cuts the run's blank and writes the final stock as STL; the stock's notes go to stderr as
+/// `FILE:LINE: message`, then one summary line.
+fn write_stock(
+    path: &std::path::Path,
+    args: &Args,
+    program: &Program,
+    sim: &Simulation,
+) -> std::io::Result<()> {
+    let options = StockOptions { resolution: args.stock_resolution, ..StockOptions::default() };
+    let cutting = Cutting::new(program, sim, options);
+    for note in &cutting.notes {
+        let line = program.blocks.get(note.block).map_or(0, |b| b.line);
+        eprintln!("{}:{line}: {}", args.file.display(), note.message().get(Lang::from(args.lang)));
+    }
+    let Some(stock) = cutting.final_stock() else {
+        return Err(std::io::Error::other("no BLK FORM blank with a volume: no stock to write"));
+    };
+    let mesh = StockMesh::of(&stock);
+    std::fs::write(path, mesh.to_stl())?;
+    let (min, max) = stock.bounds();
+    let blank = (max - min).element_product();
+    eprintln!(
+        "stock: {:.0} mm³ of {:.0} mm³ removed, {} mm rays, {} triangles",
+        blank - stock.volume(),
+        blank,
+        tidy(stock.resolution(), 4),
+        mesh.triangles()
+    );
+    Ok(())
 }
 
 fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: Lang) -> JsonState<'a> {

@@ -145,6 +145,8 @@ pub struct ToolState {
     pub length: f64,
     /// Radius incl. DR, mm.
     pub radius: f64,
+    /// Cutting shape from the tool table (flat for an unknown tool).
+    pub shape: tools::ToolShape,
     /// Found in the tool table (else default length and radius).
     pub known: bool,
     /// F of the TOOL CALL (used by `F AUTO`), mm/min.

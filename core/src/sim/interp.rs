@@ -156,6 +156,7 @@ impl Interp {
             axis: 'Z',
             length: entry.length,
             radius: entry.radius,
+            shape: entry.shape(entry.radius),
             known: false,
             feed: 0.0,
         };
@@ -483,6 +484,7 @@ impl Interp {
         let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         if let Some(tool) = &t.tool {
             let (entry, known) = tools::lookup(tool);
+            self.tool.shape = entry.shape(entry.radius + dr);
             self.tool.number = entry.number;
             self.tool.name = entry.name;
             self.tool.length = entry.length + dl;

@@ -1,6 +1,10 @@
 //! The small tool table shipped in `static/tools.json` (compiled in as constants by `build.rs`,
-//! so the wasm needs no JSON parser): number, name, length and radius; an unknown tool gets the
-//! table's default length and radius.
+//! so the wasm needs no JSON parser): number, name, length, radius and the cutting shape; an
+//! unknown tool gets the table's default length, radius and shape.
+//!
+//! The shape fields are optional, so older tables stay readable: `"shape"` is `"flat"` (the
+//! default), `"ball"`, `"bull"` (with `"corner_radius"`, mm) or `"drill"` (with `"point_angle"`,
+//! degrees, default [`DRILL_POINT_ANGLE`]).
 
 use std::sync::OnceLock;
 
@@ -18,6 +22,71 @@ pub struct ToolEntry {
     pub length: f64,
     /// mm.
     pub radius: f64,
+    #[serde(default)]
+    pub shape: ShapeKind,
+    /// Bull nose: the corner radius, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub corner_radius: Option<f64>,
+    /// Drill: the point angle, degrees.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point_angle: Option<f64>,
+}
+
+/// The point angle of a twist drill when the table gives none, degrees: the usual 118° of
+/// DIN 1412 drills.
+pub const DRILL_POINT_ANGLE: f64 = 118.0;
+
+/// The cutting shape as the table names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ShapeKind {
+    /// Flat end mill (and every tool the table does not describe).
+    #[default]
+    Flat,
+    /// Ball nose: the corner radius is the tool radius.
+    Ball,
+    /// Bull nose (torus cutter) with `corner_radius`.
+    Bull,
+    /// Drill with `point_angle`.
+    Drill,
+}
+
+/// The cutting shape of a tool with its effective radius (incl. DR), as the stock cuts it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum ToolShape {
+    Flat,
+    Ball,
+    /// Corner radius, mm (at most the tool radius).
+    Bull {
+        corner_radius: f64,
+    },
+    /// Point angle, degrees (0 < angle < 180).
+    Drill {
+        point_angle: f64,
+    },
+}
+
+impl ToolEntry {
+    /// The shape for a tool of radius `radius` (the table's radius plus DR): a corner radius is
+    /// kept within the radius; a missing or impossible point angle is [`DRILL_POINT_ANGLE`].
+    #[must_use]
+    pub fn shape(&self, radius: f64) -> ToolShape {
+        match self.shape {
+            ShapeKind::Flat => ToolShape::Flat,
+            ShapeKind::Ball => ToolShape::Ball,
+            ShapeKind::Bull => {
+                let c = self.corner_radius.filter(|c| c.is_finite()).unwrap_or(0.0);
+                ToolShape::Bull { corner_radius: c.clamp(0.0, radius.max(0.0)) }
+            }
+            ShapeKind::Drill => ToolShape::Drill {
+                point_angle: self
+                    .point_angle
+                    .filter(|a| a.is_finite() && *a > 0.0 && *a < 180.0)
+                    .unwrap_or(DRILL_POINT_ANGLE),
+            },
+        }
+    }
 }
 
 /// A row as `build.rs` writes it from `static/tools.json`.
@@ -26,6 +95,9 @@ struct RawTool {
     name: &'static str,
     length: f64,
     radius: f64,
+    shape: ShapeKind,
+    corner_radius: Option<f64>,
+    point_angle: Option<f64>,
 }
 
 impl RawTool {
@@ -35,6 +107,9 @@ impl RawTool {
             name: self.name.to_string(),
             length: self.length,
             radius: self.radius,
+            shape: self.shape,
+            corner_radius: self.corner_radius,
+            point_angle: self.point_angle,
         }
     }
 }
@@ -102,5 +177,26 @@ mod tests {
         assert!(!known);
         assert_eq!(u.number, 999);
         assert!((u.length - 100.0).abs() < 1e-12);
+        assert_eq!(u.shape(u.radius), ToolShape::Flat);
+    }
+
+    #[test]
+    fn shapes_of_the_shipped_tools() {
+        let shape = |n| {
+            let (t, _) = lookup(&ToolRef::Number(n));
+            t.shape(t.radius)
+        };
+        assert_eq!(shape(8), ToolShape::Drill { point_angle: DRILL_POINT_ANGLE });
+        assert_eq!(shape(12), ToolShape::Ball);
+        assert_eq!(shape(16), ToolShape::Flat);
+    }
+
+    #[test]
+    fn an_old_row_without_shape_reads_as_flat() {
+        let t: ToolEntry = serde_json::from_str(r#"{"number": 3, "name": "T", "length": 50, "radius": 2}"#)
+            .expect("old row");
+        assert_eq!(t.shape(2.0), ToolShape::Flat);
+        let bull = ToolEntry { shape: ShapeKind::Bull, corner_radius: Some(9.0), ..t };
+        assert_eq!(bull.shape(2.0), ToolShape::Bull { corner_radius: 2.0 });
     }
 }

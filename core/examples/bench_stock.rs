@@ -1,0 +1,66 @@
+//! Stock benchmark (issue 14 budget): Musterprogramm 1 on `ac-table`, its 100×100×40 blank cut at
+//! 0.25 mm in a release build.
+//!
+//! Prints the time to cut the whole program (`Cutting::new`: plan, every cut once, checkpoints;
+//! best of 3; budget ≤ 300 ms), the memory of one stock and of the checkpoints (budget ≤ 64 MB),
+//! the time of a step back (`seek` from the end to block 13) and of the mesh of the final stock.
+//! Run: `scripts/bench.sh` or `cargo run --release -p schwenkbar-core --example bench_stock`.
+
+use std::time::Instant;
+
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::parse;
+use schwenkbar_core::sim::{SimOptions, simulate};
+use schwenkbar_core::stock::{Cutting, StockCursor, StockMesh, StockOptions};
+
+fn main() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../static/programs/musterprogramm1.h");
+    let Ok(src) = std::fs::read_to_string(&path) else {
+        eprintln!("{}: not readable", path.display());
+        return;
+    };
+    let (program, _) = parse(&src);
+    let Ok(machine) = Machine::builtin("ac-table") else {
+        eprintln!("no machine ac-table");
+        return;
+    };
+    let sim = simulate(&program, &machine, &SimOptions::default());
+    let options = StockOptions::default();
+    let mut best = f64::INFINITY;
+    let mut cutting = Cutting::new(&program, &sim, options);
+    for _ in 0..3 {
+        let t = Instant::now();
+        cutting = Cutting::new(&program, &sim, options);
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    let last = sim.len().saturating_sub(1);
+    let mut cursor = StockCursor::default();
+    cutting.seek(&mut cursor, last, 1.0);
+    let Some(stock) = cursor.stock.clone() else {
+        eprintln!("no stock");
+        return;
+    };
+    let mb = |b: usize| b as f64 / (1024.0 * 1024.0);
+    println!(
+        "stock: Musterprogramm 1 cut at {} mm in {:.1} ms (budget ≤ 300 ms); one stock {:.1} MB, \
+         with {} checkpoints {:.1} MB (budget ≤ 64 MB)",
+        options.resolution,
+        best * 1e3,
+        mb(stock.memory_bytes()),
+        options.checkpoints,
+        mb(stock.memory_bytes() + cutting.checkpoint_bytes()),
+    );
+    let back = sim.step_of_block(13).unwrap_or(0);
+    let t = Instant::now();
+    cutting.seek(&mut cursor, back, 1.0);
+    let seek = t.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let mesh = StockMesh::of(&stock);
+    let meshing = t.elapsed().as_secs_f64();
+    println!(
+        "stock: step back to block 13 {:.1} ms; mesh of the final stock {:.1} ms, {} triangles",
+        seek * 1e3,
+        meshing * 1e3,
+        mesh.triangles()
+    );
+}

@@ -1,0 +1,386 @@
+//! The cuts of a whole run, in order, and the stock after any step: [`Cutting`] turns every
+//! motion segment of the simulation into straight sweeps in the W-CS once, cuts them all once
+//! (for the notes and a few checkpoints) and replays them from the nearest checkpoint on demand.
+
+use glam::DVec3;
+
+use crate::Text;
+use crate::ast::Program;
+use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, State, ToolState};
+
+use super::{Cutter, Removal, Stock, StockError};
+
+/// A rapid that removes more than this from one ray (mm) has entered the material; less is
+/// grazing or roundoff (1 µm, the control's display resolution).
+const ENTERS_MATERIAL: f64 = 1e-3;
+
+/// Rays between two checkpoints at first (about 20 ms of cutting in a release build).
+const FIRST_CHECKPOINT_RAYS: usize = 200_000;
+
+/// Most sub-moves of one turning motion (a swivel of 180° of a 100 mm tool at 0.25 mm needs
+/// about 5,000): bounds the work of absurd programs.
+const MAX_SUB_MOVES: usize = 10_000;
+
+/// Options of the stock.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StockOptions {
+    /// Ray spacing, mm.
+    pub resolution: f64,
+    /// Stocks kept along the run besides the blank, spaced evenly over the work of the cuts
+    /// (rays computed): stepping back re-cuts at most the work between two of them.
+    pub checkpoints: usize,
+}
+
+impl Default for StockOptions {
+    /// 0.25 mm, the resolution the issue asks for on Musterprogramm 1's blank; three checkpoints
+    /// keep four stocks of that blank at about 7 MB each.
+    fn default() -> Self {
+        StockOptions { resolution: 0.25, checkpoints: 3 }
+    }
+}
+
+/// What the stock reports about a step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StockNoteKind {
+    /// A rapid (FMAX) removed material.
+    RapidIntoMaterial,
+    /// The blank needs more rays than [`super::MAX_RAYS`] at the resolution asked for.
+    ResolutionCapped { asked: f64, used: f64 },
+    /// The blank has no volume or is not finite: no stock.
+    InvalidBlank,
+}
+
+/// A note on one executed step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StockNote {
+    pub step: usize,
+    /// Index of the block in the program.
+    pub block: usize,
+    pub kind: StockNoteKind,
+}
+
+impl StockNote {
+    /// The message, German and English.
+    #[must_use]
+    pub fn message(&self) -> Text {
+        match self.kind {
+            StockNoteKind::RapidIntoMaterial => {
+                Text::new("Eilgang ins Material", "Rapid traverse into the material")
+            }
+            StockNoteKind::ResolutionCapped { asked, used } => Text::owned(
+                format!("Rohteil zu groß für {asked:.2} mm Auflösung: {used:.2} mm verwendet"),
+                format!("Blank too large for a resolution of {asked:.2} mm: using {used:.2} mm"),
+            ),
+            StockNoteKind::InvalidBlank => Text::new(
+                "Rohteil ohne Volumen: kein Materialabtrag",
+                "Blank without volume: no material removal",
+            ),
+        }
+    }
+}
+
+/// One thing that happens to the stock.
+#[derive(Debug, Clone, PartialEq)]
+enum Action {
+    /// A BLK FORM took effect: the stock starts over from this blank.
+    Blank(Blank),
+    /// A straight sweep (W-CS) with a fixed tool axis.
+    Cut { cutter: usize, axis: DVec3, from: DVec3, to: DVec3, rapid: bool },
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct Event {
+    step: usize,
+    /// Index of the block in the program.
+    block: usize,
+    /// Fraction of the step's motion time at which this event is complete.
+    end: f64,
+    action: Action,
+}
+
+/// The stock as it stands after some events; reusable, so stepping forward only cuts what is
+/// new.
+#[derive(Debug, Clone, Default)]
+pub struct StockCursor {
+    /// `None` before the first BLK FORM, or for a blank without volume.
+    pub stock: Option<Stock>,
+    /// Events applied.
+    applied: usize,
+    /// Bumped whenever the stock changes (the view re-meshes when it differs).
+    pub version: u64,
+}
+
+/// The cuts of a run.
+#[derive(Debug, Clone)]
+pub struct Cutting {
+    options: StockOptions,
+    events: Vec<Event>,
+    /// `step_events[k]` = index of the first event of step `k` (one more entry at the end).
+    step_events: Vec<usize>,
+    cutters: Vec<Cutter>,
+    /// `(events applied, stock)`, ascending.
+    checkpoints: Vec<(usize, Option<Stock>)>,
+    /// Notes, by step.
+    pub notes: Vec<StockNote>,
+}
+
+impl Cutting {
+    /// The cuts of `sim` (a run of `program`); cuts everything once to find the notes and to
+    /// place the checkpoints.
+    #[must_use]
+    pub fn new(program: &Program, sim: &Simulation, options: StockOptions) -> Cutting {
+        let mut c = Cutting {
+            options,
+            events: Vec::new(),
+            step_events: Vec::with_capacity(sim.len() + 1),
+            cutters: Vec::new(),
+            checkpoints: Vec::new(),
+            notes: Vec::new(),
+        };
+        let mut blank = None;
+        let mut tool: Option<(ToolState, usize)> = None;
+        for state in sim.states(program) {
+            c.step_events.push(c.events.len());
+            if state.blank != blank {
+                blank = state.blank;
+                if let Some(b) = blank {
+                    c.events.push(Event {
+                        step: state.step,
+                        block: state.block,
+                        end: 0.0,
+                        action: Action::Blank(b),
+                    });
+                }
+            }
+            if state.segments.is_empty() {
+                continue;
+            }
+            let cutter = match &tool {
+                Some((t, k)) if *t == state.tool => *k,
+                _ => {
+                    let t = &state.tool;
+                    // The bull nose's profile error: a quarter of the resolution (sweep.rs).
+                    c.cutters.push(Cutter::new(t.shape, t.radius, t.length, options.resolution / 4.0));
+                    tool = Some((state.tool.clone(), c.cutters.len() - 1));
+                    c.cutters.len() - 1
+                }
+            };
+            c.plan_step(sim, &state, cutter);
+        }
+        c.step_events.push(c.events.len());
+        c.first_pass();
+        c
+    }
+
+    /// The sweeps of one step's segments (see the module doc of [`super`]).
+    fn plan_step(&mut self, sim: &Simulation, state: &State, cutter: usize) {
+        let kin = Kin::new(&sim.machine, state.tool.length);
+        let total = state.duration();
+        let (step, block) = (state.step, state.block);
+        let (radius, length) = (self.cutters[cutter].radius, self.cutters[cutter].length);
+        let mut elapsed = 0.0;
+        for (k, seg) in state.segments.iter().enumerate() {
+            let frac = |f: f64| {
+                if total > 0.0 {
+                    ((elapsed + f * seg.duration) / total).min(1.0)
+                } else {
+                    (k + 1) as f64 / state.segments.len() as f64
+                }
+            };
+            let rapid = seg.kind == SegmentKind::Rapid;
+            let push = |events: &mut Vec<Event>, f: f64, axis: DVec3, from: DVec3, to: DVec3| {
+                events.push(Event {
+                    step,
+                    block,
+                    end: frac(f),
+                    action: Action::Cut { cutter, axis, from, to, rapid },
+                });
+            };
+            match &seg.path {
+                SegmentPath::Stay { .. } => {}
+                SegmentPath::Linear if seg.rotary_delta == [0.0; 2] => {
+                    // Fixed orientation: the tip moves on a straight line in the W-CS, one exact
+                    // sweep; split into pieces of at least four diameters (each piece tests the
+                    // rays of its box again) only so that an animated block shows the cut
+                    // advancing.
+                    let (from, to) = (kin.tip_wcs(&seg.start), kin.tip_wcs(&seg.end));
+                    let axis = kin.tool_axis_wcs(seg.start.rotary);
+                    let piece = (8.0 * radius).max(20.0);
+                    let n = ((from.distance(to) / piece).ceil() as usize).clamp(1, 64);
+                    for i in 0..n {
+                        let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+                        push(&mut self.events, fb, axis, from.lerp(to, fa), from.lerp(to, fb));
+                    }
+                }
+                _ => {
+                    let n = sub_moves(&kin, seg, radius + length, self.options.resolution);
+                    for i in 0..n {
+                        let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+                        let axis = kin.tool_axis_wcs(seg.axes_at(0.5 * (fa + fb)).rotary);
+                        let (from, to) = (kin.tip_wcs(&seg.axes_at(fa)), kin.tip_wcs(&seg.axes_at(fb)));
+                        push(&mut self.events, fb, axis, from, to);
+                    }
+                }
+            }
+            elapsed += seg.duration;
+        }
+    }
+
+    /// Cuts every event once: the notes, and the checkpoints evenly over the work. The total is
+    /// known only at the end, so a checkpoint is taken after every `budget` rays; when there are
+    /// too many, every other one goes and the budget doubles (so they stay within a factor of
+    /// two of even).
+    fn first_pass(&mut self) {
+        let mut cursor = StockCursor::default();
+        let mut last_rapid_note = None;
+        let mut budget = FIRST_CHECKPOINT_RAYS;
+        let mut work = 0usize;
+        self.checkpoints.push((0, None));
+        for k in 0..self.events.len() {
+            if work >= budget && self.options.checkpoints > 0 {
+                self.checkpoints.push((k, cursor.stock.clone()));
+                work = 0;
+                if self.checkpoints.len() > self.options.checkpoints + 1 {
+                    let mut i = 0;
+                    // Keep the blank (index 0) and every second checkpoint after it.
+                    self.checkpoints.retain(|_| {
+                        i += 1;
+                        i == 1 || i % 2 == 1
+                    });
+                    budget *= 2;
+                }
+            }
+            let event = &self.events[k];
+            let (step, block) = (event.step, event.block);
+            match self.apply(&mut cursor, k) {
+                Applied::Removed(r) => {
+                    work += r.rays;
+                    if matches!(event.action, Action::Cut { rapid: true, .. })
+                        && r.depth > ENTERS_MATERIAL
+                        && last_rapid_note != Some(step)
+                    {
+                        last_rapid_note = Some(step);
+                        self.notes.push(StockNote { step, block, kind: StockNoteKind::RapidIntoMaterial });
+                    }
+                }
+                Applied::NewStock { asked, used } => {
+                    if (used - asked).abs() > 1e-9 {
+                        self.notes.push(StockNote {
+                            step,
+                            block,
+                            kind: StockNoteKind::ResolutionCapped { asked, used },
+                        });
+                    }
+                }
+                Applied::NoStock => {
+                    self.notes.push(StockNote { step, block, kind: StockNoteKind::InvalidBlank });
+                }
+            }
+        }
+    }
+
+    /// Applies event `k` to `cursor`.
+    fn apply(&self, cursor: &mut StockCursor, k: usize) -> Applied {
+        cursor.applied = k + 1;
+        let Some(event) = self.events.get(k) else { return Applied::Removed(Removal::default()) };
+        match &event.action {
+            Action::Blank(b) => {
+                cursor.version += 1;
+                match Stock::new(b, self.options.resolution) {
+                    Ok(s) => {
+                        let used = s.resolution();
+                        cursor.stock = Some(s);
+                        Applied::NewStock { asked: self.options.resolution, used }
+                    }
+                    Err(StockError::InvalidBlank) => {
+                        cursor.stock = None;
+                        Applied::NoStock
+                    }
+                }
+            }
+            Action::Cut { cutter, axis, from, to, .. } => {
+                let Some(stock) = cursor.stock.as_mut() else { return Applied::Removed(Removal::default()) };
+                let r = stock.cut(&self.cutters[*cutter], *axis, *from, *to);
+                if r.depth > 0.0 {
+                    cursor.version += 1;
+                }
+                Applied::Removed(r)
+            }
+        }
+    }
+
+    /// Number of events up to the end of `step` (or up to `fraction` of its motion).
+    fn events_until(&self, step: usize, fraction: f64) -> usize {
+        let last = self.step_events.len().saturating_sub(1);
+        let (start, end) = (self.step_events[step.min(last)], self.step_events[(step + 1).min(last)]);
+        if fraction >= 1.0 || fraction.is_nan() {
+            return end;
+        }
+        start + self.events[start..end].iter().take_while(|e| e.end <= fraction).count()
+    }
+
+    /// Moves `cursor` to the stock after `fraction` (0…1) of step `step`'s motion (1 = the whole
+    /// step): forward by cutting only what is new, backward from the nearest checkpoint.
+    pub fn seek(&self, cursor: &mut StockCursor, step: usize, fraction: f64) {
+        let target = self.events_until(step, fraction);
+        if target < cursor.applied {
+            let (at, stock) =
+                self.checkpoints.iter().rev().find(|(at, _)| *at <= target).cloned().unwrap_or((0, None));
+            cursor.stock = stock;
+            cursor.applied = at;
+            cursor.version += 1;
+        }
+        while cursor.applied < target {
+            self.apply(cursor, cursor.applied);
+        }
+    }
+
+    /// The stock after step `step` (`None` before a BLK FORM or for a blank without volume).
+    #[must_use]
+    pub fn stock_at(&self, step: usize) -> Option<Stock> {
+        let mut cursor = StockCursor::default();
+        self.seek(&mut cursor, step, 1.0);
+        cursor.stock
+    }
+
+    /// The stock at the end of the run.
+    #[must_use]
+    pub fn final_stock(&self) -> Option<Stock> {
+        self.stock_at(self.step_events.len().saturating_sub(2))
+    }
+
+    /// The notes of one step.
+    pub fn notes_at(&self, step: usize) -> impl Iterator<Item = &StockNote> {
+        self.notes.iter().filter(move |n| n.step == step)
+    }
+
+    /// Bytes held by the checkpoints.
+    #[must_use]
+    pub fn checkpoint_bytes(&self) -> usize {
+        self.checkpoints.iter().filter_map(|(_, s)| s.as_ref()).map(Stock::memory_bytes).sum()
+    }
+}
+
+enum Applied {
+    Removed(Removal),
+    NewStock { asked: f64, used: f64 },
+    NoStock,
+}
+
+/// Sub-moves of a motion that turns the tool: the turn (sum of the angles between the tool axes
+/// at 16 points) times the tool's reach `reach` (radius + length) is the farthest a tool point
+/// moves by turning; each sub-move keeps that within half the resolution, so evaluating the
+/// orientation at its middle errs by at most a quarter.
+fn sub_moves(kin: &Kin, seg: &Segment, reach: f64, resolution: f64) -> usize {
+    const SAMPLES: usize = 16;
+    let axis = |f: f64| kin.tool_axis_wcs(seg.axes_at(f).rotary);
+    let mut turn = 0.0;
+    let mut prev = axis(0.0);
+    for i in 1..=SAMPLES {
+        let next = axis(i as f64 / SAMPLES as f64);
+        turn += prev.angle_between(next);
+        prev = next;
+    }
+    let n = (turn * reach / (0.5 * resolution)).ceil();
+    if n.is_finite() { (n as usize).clamp(1, MAX_SUB_MOVES) } else { 1 }
+}

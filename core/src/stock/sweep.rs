@@ -1,0 +1,372 @@
+//! The cutting solid of a tool and where a ray crosses the volume it sweeps on a straight move
+//! with a fixed orientation, in closed form.
+//!
+//! # The tool as pieces of revolution
+//! In the tool frame (tip at the origin, tool axis = +z) every shape is a union of convex pieces
+//! of revolution, each one quadric inequality plus a slab `z0 ≤ z ≤ z1`:
+//! * a frustum `x² + y² ≤ (a + b·z)²` (b = 0: cylinder; a = 0: cone from the tip),
+//! * a ball `x² + y² + (z − c)² ≤ r²`.
+//!
+//! Flat end mill: one cylinder `R`, `0 ≤ z ≤ L`. Ball nose: a ball of radius `R` centred `R`
+//! above the tip and the cylinder above it. Drill: the point cone `r = z·tan(φ/2)` up to
+//! `h = R / tan(φ/2)` and the cylinder above. Bull nose: the corner arc
+//! `r(z) = R − rc + √(rc² − (rc − z)²)`, `0 ≤ z ≤ rc`, as frustums between points on the arc
+//! (inscribed: the chords lie inside the exact profile, the radial error is at most the sagitta
+//! `rc·(1 − cos(Δ/2))` of the arc step Δ, chosen below a quarter of the stock's resolution;
+//! no closed form of a ray against a *swept* torus exists, its quartic grows to degree 8), and
+//! the cylinder above. The whole tool length cuts: the model has no shank or holder.
+//!
+//! # A ray against a swept piece
+//! Moving the piece `T` from `p0` to `p1` sweeps `⋃_{t∈[0,1]} (T + t·(p1 − p0))`, the Minkowski
+//! sum of `T` and the segment, which is convex because `T` is. A ray point `r0 + λ·r` is inside
+//! when some `t ∈ [0,1]` puts it in `T`; in the tool frame that is the point
+//! `P(λ, t) = o + λ·u + t·w` (`o` = ray origin − `p0`, `u` = ray direction, `w` = −(p1 − p0),
+//! all rotated into the tool frame). The set of `(λ, t)` is convex and bounded by one conic
+//! `Q(λ, t) = Aλ² + Bλt + Ct² + Dλ + Et + F ≤ 0` (the quadric restricted to the plane) and four
+//! lines (the slab and `0 ≤ t ≤ 1`). The smallest and largest λ of a compact convex set lie on
+//! its boundary where either two boundary curves meet or the conic's tangent is parallel to the
+//! t axis (∂Q/∂t = 0); so the extremes are among: the line–line vertices, the line–conic
+//! intersections and the conic's two λ-extreme points, each kept if it satisfies every other
+//! constraint (the standard Karush–Kuhn–Tucker enumeration of a 2D convex program, e.g.
+//! Boyd & Vandenberghe, *Convex Optimization*, 2004, §5.5.3). Pieces of one tool overlap, and
+//! the sweep of the whole (convex) tool is convex, so the pieces' intervals on one ray join to
+//! one interval. Motion along the ray, a standing tool or a ray along the axis need no special
+//! case: the enumeration covers degenerate conics (a quadratic in one unknown turning linear).
+
+use glam::DVec3;
+
+use crate::sim::tools::ToolShape;
+
+/// Points within this distance of a line constraint count as on it (mm): f64 roundoff of
+/// coordinates up to 10⁴ mm stays far below it.
+const TOL_LINE: f64 = 1e-7;
+/// The same for the conic (mm², about `2·radius·TOL_LINE` for radii up to a few mm).
+const TOL_QUAD: f64 = 1e-6;
+
+/// One convex piece of revolution in the tool frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Piece {
+    /// Quadric `x² + y² + s·z² + 2·g·z + h ≤ 0`.
+    s: f64,
+    g: f64,
+    h: f64,
+    z0: f64,
+    z1: f64,
+}
+
+impl Piece {
+    /// Frustum of radius `a + b·z` for `z0 ≤ z ≤ z1` (radius ≥ 0 there).
+    fn frustum(a: f64, b: f64, z0: f64, z1: f64) -> Piece {
+        // x² + y² − (a + b·z)² = x² + y² − b²z² − 2ab·z − a².
+        Piece { s: -b * b, g: -a * b, h: -a * a, z0, z1 }
+    }
+
+    /// Ball of radius `r` centred at `z = c`.
+    fn ball(c: f64, r: f64) -> Piece {
+        // x² + y² + (z − c)² − r² = x² + y² + z² − 2c·z + c² − r².
+        Piece { s: 1.0, g: -c, h: c * c - r * r, z0: c - r, z1: c + r }
+    }
+}
+
+/// A tool as the stock cuts it.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Cutter {
+    pub pieces: Vec<Piece>,
+    pub radius: f64,
+    pub length: f64,
+}
+
+impl Cutter {
+    /// The pieces of a tool of `radius` and `length` (mm); `tolerance` bounds the bull nose's
+    /// profile error. A radius or length ≤ 0 (or not finite) cuts nothing.
+    pub fn new(shape: ToolShape, radius: f64, length: f64, tolerance: f64) -> Cutter {
+        let (r, l) = (radius, length);
+        if !(r.is_finite() && l.is_finite() && r > 0.0 && l > 0.0) {
+            return Cutter { pieces: Vec::new(), radius: 0.0, length: 0.0 };
+        }
+        let mut pieces = Vec::new();
+        // Height where the cylinder starts; below it the shape's own tip.
+        let base = match shape {
+            ToolShape::Flat => 0.0,
+            ToolShape::Ball => {
+                pieces.push(Piece::ball(r, r));
+                r
+            }
+            ToolShape::Drill { point_angle } => {
+                let k = (point_angle.to_radians() / 2.0).tan();
+                let h = r / k;
+                pieces.push(Piece::frustum(0.0, k, 0.0, h.min(l)));
+                h
+            }
+            ToolShape::Bull { corner_radius } => {
+                let rc = corner_radius.min(r);
+                if rc > 0.0 {
+                    // Arc step Δ with rc·(1 − cos(Δ/2)) ≤ tolerance; the quarter arc in n steps.
+                    let tol = tolerance.max(1e-6);
+                    let max_step = 2.0 * (1.0 - (tol / rc).min(1.0)).acos();
+                    let n = ((std::f64::consts::FRAC_PI_2 / max_step).ceil() as usize).clamp(1, 256);
+                    // Arc point at angle θ from the bottom: z = rc − rc·cos θ, r = R − rc + rc·sin θ.
+                    let at = |i: usize| {
+                        let th = std::f64::consts::FRAC_PI_2 * i as f64 / n as f64;
+                        (rc - rc * th.cos(), r - rc + rc * th.sin())
+                    };
+                    for i in 0..n {
+                        let ((za, ra), (zb, rb)) = (at(i), at(i + 1));
+                        let b = (rb - ra) / (zb - za);
+                        pieces.push(Piece::frustum(ra - b * za, b, za, zb));
+                    }
+                }
+                rc
+            }
+        };
+        if base < l {
+            pieces.push(Piece::frustum(r, 0.0, base, l));
+        }
+        Cutter { pieces, radius: r, length: l }
+    }
+
+    /// Where the ray `r0 + λ·dir` crosses the volume swept by this tool moving from tip `p0` to
+    /// tip `p1` with tool axis `frame[2]` (`frame` orthonormal, columns x, y, axis): `(λmin,
+    /// λmax)`, or `None` if it misses.
+    pub fn ray_interval(
+        &self,
+        frame: &[DVec3; 3],
+        p0: DVec3,
+        p1: DVec3,
+        r0: DVec3,
+        dir: DVec3,
+    ) -> Option<(f64, f64)> {
+        let local = |v: DVec3| DVec3::new(frame[0].dot(v), frame[1].dot(v), frame[2].dot(v));
+        let o = local(r0 - p0);
+        let u = local(dir);
+        let w = -local(p1 - p0);
+        let mut out: Option<(f64, f64)> = None;
+        for piece in &self.pieces {
+            if let Some((a, b)) = piece_interval(piece, o, u, w) {
+                out = Some(out.map_or((a, b), |(lo, hi)| (lo.min(a), hi.max(b))));
+            }
+        }
+        out
+    }
+}
+
+/// `αλ + βt + γ ≥ 0`.
+#[derive(Clone, Copy)]
+struct Half {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+impl Half {
+    fn at(&self, l: f64, t: f64) -> f64 {
+        self.a * l + self.b * t + self.c
+    }
+}
+
+/// The conic `Aλ² + Bλt + Ct² + Dλ + Et + F`.
+struct Conic {
+    a: f64,
+    b: f64,
+    c: f64,
+    d: f64,
+    e: f64,
+    f: f64,
+}
+
+impl Conic {
+    fn at(&self, l: f64, t: f64) -> f64 {
+        self.a * l * l + self.b * l * t + self.c * t * t + self.d * l + self.e * t + self.f
+    }
+}
+
+/// Real roots of `a·x² + b·x + c = 0` (a linear equation when `a` is negligible).
+fn roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
+    let scale = b.abs().max(c.abs()).max(f64::MIN_POSITIVE);
+    if a.abs() <= 1e-13 * scale {
+        return if b.abs() > 0.0 { [Some(-c / b), None] } else { [None, None] };
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return [None, None];
+    }
+    // Numerically stable form (Press et al., Numerical Recipes, §5.6): q = −(b + sgn b·√disc)/2.
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    if q == 0.0 {
+        return [Some(0.0), None];
+    }
+    [Some(q / a), Some(c / q)]
+}
+
+/// λ range of `{(λ, t): Q ≤ 0, slab, 0 ≤ t ≤ 1}` for one piece (see the module doc).
+fn piece_interval(p: &Piece, o: DVec3, u: DVec3, w: DVec3) -> Option<(f64, f64)> {
+    // Bilinear form of the quadric's matrix diag(1, 1, s).
+    let sd = |x: DVec3, y: DVec3| x.x * y.x + x.y * y.y + p.s * x.z * y.z;
+    let q = Conic {
+        a: sd(u, u),
+        b: 2.0 * sd(u, w),
+        c: sd(w, w),
+        d: 2.0 * (sd(o, u) + p.g * u.z),
+        e: 2.0 * (sd(o, w) + p.g * w.z),
+        f: sd(o, o) + 2.0 * p.g * o.z + p.h,
+    };
+    let lines = [
+        Half { a: 0.0, b: 1.0, c: 0.0 },
+        Half { a: 0.0, b: -1.0, c: 1.0 },
+        Half { a: u.z, b: w.z, c: o.z - p.z0 },
+        Half { a: -u.z, b: -w.z, c: p.z1 - o.z },
+    ];
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    let mut take = |l: f64, t: f64, skip: [usize; 2], check_q: bool| {
+        if !l.is_finite() || !t.is_finite() {
+            return;
+        }
+        if check_q && q.at(l, t) > TOL_QUAD {
+            return;
+        }
+        for (k, h) in lines.iter().enumerate() {
+            if !skip.contains(&k) && h.at(l, t) < -TOL_LINE {
+                return;
+            }
+        }
+        lo = lo.min(l);
+        hi = hi.max(l);
+    };
+    // Line–line vertices.
+    for i in 0..4 {
+        for j in i + 1..4 {
+            let (m, n) = (lines[i], lines[j]);
+            let det = m.a * n.b - m.b * n.a;
+            if det.abs() > 1e-12 {
+                // Cramer's rule for m.a·λ + m.b·t = −m.c, n.a·λ + n.b·t = −n.c.
+                let l = (-m.c * n.b + n.c * m.b) / det;
+                let t = (-m.a * n.c + n.a * m.c) / det;
+                take(l, t, [i, j], true);
+            }
+        }
+    }
+    // Line–conic intersections: the line as point + s·direction, Q along it a quadratic in s.
+    for (k, h) in lines.iter().enumerate() {
+        let nn = h.a * h.a + h.b * h.b;
+        if nn <= 0.0 {
+            continue;
+        }
+        let (l0, t0) = (-h.c * h.a / nn, -h.c * h.b / nn);
+        let (dl, dt) = (-h.b, h.a);
+        let a2 = q.a * dl * dl + q.b * dl * dt + q.c * dt * dt;
+        let a1 = 2.0 * q.a * l0 * dl + q.b * (l0 * dt + t0 * dl) + 2.0 * q.c * t0 * dt + q.d * dl + q.e * dt;
+        let a0 = q.at(l0, t0);
+        for s in roots(a2, a1, a0).into_iter().flatten() {
+            take(l0 + s * dl, t0 + s * dt, [k, k], false);
+        }
+    }
+    // The conic's λ extremes: ∂Q/∂t = Bλ + 2Ct + E = 0, so t = −(Bλ + E)/(2C) on Q = 0.
+    if q.c.abs() > 1e-12 {
+        let a2 = q.a - q.b * q.b / (4.0 * q.c);
+        let a1 = q.d - q.b * q.e / (2.0 * q.c);
+        let a0 = q.f - q.e * q.e / (4.0 * q.c);
+        for l in roots(a2, a1, a0).into_iter().flatten() {
+            take(l, -(q.b * l + q.e) / (2.0 * q.c), [4, 4], false);
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// An orthonormal frame with `axis` as its third column (tools are round, so any x works).
+pub(crate) fn frame_of(axis: DVec3) -> [DVec3; 3] {
+    let z = axis.normalize_or(DVec3::Z);
+    let (x, y) = z.any_orthonormal_pair();
+    [x, y, z]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use schwenkbar_testkit::assert_close;
+
+    const Z: [DVec3; 3] = [DVec3::X, DVec3::Y, DVec3::Z];
+
+    #[test]
+    fn standing_cylinder_against_rays_along_each_axis() {
+        let c = Cutter::new(ToolShape::Flat, 5.0, 50.0, 0.01);
+        let p = DVec3::new(10.0, 0.0, 0.0);
+        // Along Z through the axis: the tool's length.
+        let (a, b) = c.ray_interval(&Z, p, p, DVec3::new(10.0, 0.0, 0.0), DVec3::Z).expect("hit");
+        assert_close!(a, 0.0, 1e-9);
+        assert_close!(b, 50.0, 1e-9);
+        // Along X at height 1, 3 off the axis: chord 2·√(25 − 9) = 8.
+        let (a, b) = c.ray_interval(&Z, p, p, DVec3::new(0.0, 3.0, 1.0), DVec3::X).expect("hit");
+        assert_close!(a, 6.0, 1e-9);
+        assert_close!(b, 14.0, 1e-9);
+        assert!(c.ray_interval(&Z, p, p, DVec3::new(0.0, 6.0, 1.0), DVec3::X).is_none());
+        assert!(c.ray_interval(&Z, p, p, DVec3::new(0.0, 0.0, -1.0), DVec3::X).is_none());
+    }
+
+    #[test]
+    fn moving_cylinder_sweeps_a_slot_with_round_ends() {
+        let c = Cutter::new(ToolShape::Flat, 5.0, 50.0, 0.01);
+        let (p0, p1) = (DVec3::ZERO, DVec3::new(20.0, 0.0, 0.0));
+        let (a, b) = c.ray_interval(&Z, p0, p1, DVec3::new(0.0, 4.0, 1.0), DVec3::X).expect("hit");
+        assert_close!(a, -3.0, 1e-9);
+        assert_close!(b, 23.0, 1e-9);
+        // Across the slot: its width.
+        let (a, b) = c.ray_interval(&Z, p0, p1, DVec3::new(7.0, 0.0, 1.0), DVec3::Y).expect("hit");
+        assert_close!(a, -5.0, 1e-9);
+        assert_close!(b, 5.0, 1e-9);
+        // Plunge along the axis: the tool plus the travel.
+        let down = DVec3::new(0.0, 0.0, -10.0);
+        let (a, b) = c.ray_interval(&Z, p0, down, DVec3::new(1.0, 1.0, 0.0), DVec3::Z).expect("hit");
+        assert_close!(a, -10.0, 1e-9);
+        assert_close!(b, 50.0, 1e-9);
+    }
+
+    #[test]
+    fn ball_and_drill_tips() {
+        let ball = Cutter::new(ToolShape::Ball, 5.0, 50.0, 0.01);
+        // Ray along Z 3 off the axis: the sphere's bottom at 5 − √(25 − 9) = 1.
+        let (a, _) = ball
+            .ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(3.0, 0.0, 0.0), DVec3::Z)
+            .expect("hit");
+        assert_close!(a, 1.0, 1e-9);
+        let drill = Cutter::new(ToolShape::Drill { point_angle: 90.0 }, 4.0, 50.0, 0.01);
+        // 90° point: the cone rises 1 per 1 of radius.
+        let (a, _) = drill
+            .ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(3.0, 0.0, 0.0), DVec3::Z)
+            .expect("hit");
+        assert_close!(a, 3.0, 1e-9);
+        // A tilted drill moving laterally: the far end of a ray along its axis line is the top.
+        let t = DVec3::new(1.0, 0.0, 1.0).normalize();
+        let f = frame_of(t);
+        let (a, b) = drill.ray_interval(&f, DVec3::ZERO, DVec3::Y, DVec3::ZERO, t).expect("hit");
+        assert_close!(a, 0.0, 1e-9);
+        assert_close!(b, 50.0, 1e-9);
+    }
+
+    #[test]
+    fn bull_nose_profile_stays_within_the_tolerance() {
+        let tol = 0.01;
+        let c = Cutter::new(ToolShape::Bull { corner_radius: 2.0 }, 5.0, 30.0, tol);
+        // Rays from the corner arc's centre (r = 3, z = 2) outward through the arc: each leaves
+        // the tool between the arc (2 away) and the inscribed chords (the sagitta less).
+        let centre = DVec3::new(3.0, 0.0, 2.0);
+        for i in 0..=50 {
+            let th = std::f64::consts::FRAC_PI_2 * f64::from(i) / 50.0;
+            let dir = DVec3::new(th.sin(), 0.0, -th.cos());
+            let (_, b) = c.ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, centre, dir).expect("hit");
+            assert!(b <= 2.0 + 1e-9 && b >= 2.0 - tol - 1e-9, "angle {th}: {b}");
+        }
+        // The flat bottom inside the corner.
+        let (a, _) =
+            c.ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(1.0, 1.0, -5.0), DVec3::Z).expect("hit");
+        assert_close!(a, 5.0, 1e-9);
+    }
+
+    #[test]
+    fn nothing_for_a_tool_without_size() {
+        let c = Cutter::new(ToolShape::Flat, 0.0, 50.0, 0.01);
+        assert!(c.ray_interval(&Z, DVec3::ZERO, DVec3::X, DVec3::ZERO, DVec3::X).is_none());
+        let c = Cutter::new(ToolShape::Flat, f64::NAN, 50.0, 0.01);
+        assert!(c.pieces.is_empty());
+    }
+}

@@ -1,0 +1,100 @@
+use glam::DVec3;
+use schwenkbar_testkit::assert_close;
+
+use super::*;
+use crate::sim::tools::ToolShape;
+
+fn blank(min: [f64; 3], max: [f64; 3]) -> Blank {
+    Blank { min: DVec3::from_array(min), max: DVec3::from_array(max) }
+}
+
+#[test]
+fn a_new_stock_is_the_blank() {
+    let s = Stock::new(&blank([0.0, 0.0, -40.0], [100.0, 100.0, 0.0]), 0.25).expect("stock");
+    assert_eq!(s.cells(), [400, 400, 160]);
+    assert_close!(s.volume(), 400_000.0, 1e-6);
+    assert_eq!(s.spans(2, 3, 4), &[Span { lo: -40.0, hi: 0.0 }]);
+    assert!(s.memory_bytes() < 16 << 20, "{}", s.memory_bytes());
+}
+
+#[test]
+fn a_huge_blank_gets_a_coarser_resolution_not_an_oom() {
+    let s = Stock::new(&blank([0.0; 3], [1e6, 1e6, 1e6]), 0.25).expect("stock");
+    let n = s.cells();
+    assert!(n[0] * n[1] + n[1] * n[2] + n[2] * n[0] <= MAX_RAYS);
+    assert!(s.resolution() > 1000.0);
+    assert_eq!(Stock::new(&blank([0.0; 3], [f64::INFINITY, 1.0, 1.0]), 0.25), Err(StockError::InvalidBlank));
+    assert_eq!(Stock::new(&blank([0.0; 3], [1.0, 1.0, 0.0]), 0.25), Err(StockError::InvalidBlank));
+    assert!(Stock::new(&blank([0.0; 3], [1.0, 1.0, 1.0]), f64::NAN).is_ok());
+}
+
+#[test]
+fn a_plunge_removes_a_cylinder() {
+    let mut s = Stock::new(&blank([-10.0, -10.0, -20.0], [10.0, 10.0, 0.0]), 0.1).expect("stock");
+    let tool = Cutter::new(ToolShape::Flat, 4.0, 50.0, 0.025);
+    let r = s.cut(&tool, DVec3::Z, DVec3::new(0.0, 0.0, 5.0), DVec3::new(0.0, 0.0, -10.0));
+    let exact = std::f64::consts::PI * 16.0 * 10.0;
+    assert!((r.volume - exact).abs() < 0.01 * exact, "{} vs {exact}", r.volume);
+    assert_close!(8000.0 - s.volume(), r.volume, 1e-6);
+    // The Z ray through the axis now starts at the hole's floor.
+    let (i, j) = (100, 100);
+    assert_close!(s.ray_position(2, i, j).0, 0.05, 1e-12);
+    assert_close!(s.spans(2, i, j)[0].hi, -10.0, 1e-9);
+    // Cutting the same again removes nothing.
+    let again = s.cut(&tool, DVec3::Z, DVec3::new(0.0, 0.0, 5.0), DVec3::new(0.0, 0.0, -10.0));
+    assert!(again.depth < 1e-9, "{}", again.depth);
+}
+
+#[test]
+fn mesh_of_the_blank_is_six_merged_faces_and_stl_has_them() {
+    let s = Stock::new(&blank([0.0; 3], [4.0, 3.0, 2.0]), 1.0).expect("stock");
+    let m = StockMesh::of(&s);
+    // Per grid, one strip per row and side: rows 3 (X rays over Y·Z rows of Z) …
+    assert!(m.flags.iter().all(|f| f & mesh::flag::CUT == 0));
+    let area: f64 = m
+        .positions
+        .chunks_exact(3)
+        .map(|t| {
+            let p = t
+                .iter()
+                .map(|v| DVec3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
+                .collect::<Vec<_>>();
+            0.5 * (p[1] - p[0]).cross(p[2] - p[0]).length()
+        })
+        .sum();
+    assert_close!(area, 2.0 * (12.0 + 6.0 + 8.0), 1e-6);
+    let stl = m.to_stl();
+    assert_eq!(stl.len(), 84 + 50 * m.triangles());
+}
+
+/// A standing tool inside a box removes its own volume, whatever its orientation: flat
+/// πR²L; ball πR²(L − R) + ⅔πR³; drill πR²(L − h) + ⅓πR²h with h = R / tan(φ/2); bull nose
+/// πR²(L − rc) + π(R − rc)²rc + the revolved quarter disc of the corner, 2π(R − rc + 4rc/3π)·πrc²/4
+/// (Pappus's centroid theorem).
+#[test]
+fn a_tool_standing_in_the_block_removes_its_own_volume_in_any_orientation() {
+    use std::f64::consts::PI;
+    let (r, l, rc) = (4.0, 12.0, 1.5);
+    let h = r / (59f64.to_radians()).tan();
+    let cases = [
+        (ToolShape::Flat, PI * r * r * l),
+        (ToolShape::Ball, PI * r * r * (l - r) + 2.0 / 3.0 * PI * r * r * r),
+        (ToolShape::Drill { point_angle: 118.0 }, PI * r * r * (l - h) + PI * r * r * h / 3.0),
+        (
+            ToolShape::Bull { corner_radius: rc },
+            PI * r * r * (l - rc)
+                + PI * (r - rc).powi(2) * rc
+                + 2.0 * PI * (r - rc + 4.0 * rc / (3.0 * PI)) * PI * rc * rc / 4.0,
+        ),
+    ];
+    let axes = [DVec3::Z, DVec3::new(1.0, 2.0, 3.0).normalize(), DVec3::new(-1.0, 0.3, -0.2).normalize()];
+    for (shape, exact) in cases {
+        for axis in axes {
+            let mut s = Stock::new(&blank([-20.0; 3], [20.0; 3]), 0.2).expect("stock");
+            let tool = Cutter::new(shape, r, l, 0.05);
+            let tip = -0.5 * l * axis;
+            let removed = s.cut(&tool, axis, tip, tip).volume;
+            assert!((removed - exact).abs() < 0.01 * exact, "{shape:?} along {axis}: {removed} vs {exact}");
+        }
+    }
+}
