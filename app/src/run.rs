@@ -26,6 +26,24 @@ impl PartialEq for SimRef {
     }
 }
 
+/// A machine state handed to the views, compared by identity: a view re-renders when the run
+/// shows another state, and comparing two states field by field would cost time and code.
+#[derive(Debug, Clone)]
+pub struct StateRef(pub Rc<State>);
+
+impl PartialEq for StateRef {
+    fn eq(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::ops::Deref for StateRef {
+    type Target = State;
+    fn deref(&self) -> &State {
+        &self.0
+    }
+}
+
 /// Playback speeds, as factors of the real motion time.
 pub const SPEEDS: [f64; 7] = [0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0];
 

@@ -65,7 +65,7 @@ pub mod segment;
 pub mod tools;
 pub mod transform;
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use glam::{DMat3, DVec3};
@@ -279,7 +279,8 @@ impl State {
 }
 
 /// Key of the label table.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+/// Ordered (a BTreeMap, not a HashMap): the wasm then carries no hasher of its own for it.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) enum LabelKey {
     Num(u32),
     Name(String),
@@ -306,7 +307,7 @@ pub struct Simulation {
     /// For each block of the program, the first step that executed it.
     pub first_step: Vec<Option<u32>>,
     checkpoints: Vec<Interp>,
-    labels: Arc<HashMap<LabelKey, usize>>,
+    labels: Arc<BTreeMap<LabelKey, usize>>,
     blocks: usize,
 }
 
@@ -369,8 +370,8 @@ fn make_error(program: &Program, step: usize, block: usize, code: SimErrorCode) 
     SimError { step, block, line, message: code.message(), detail: code.detail(), code }
 }
 
-fn label_table(program: &Program) -> HashMap<LabelKey, usize> {
-    let mut m = HashMap::new();
+fn label_table(program: &Program) -> BTreeMap<LabelKey, usize> {
+    let mut m = BTreeMap::new();
     for (i, b) in program.blocks.iter().enumerate() {
         if let BlockBody::Lbl(l) = &b.body
             && *l != Label::Number(0)

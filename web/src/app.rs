@@ -4,6 +4,8 @@ use std::rc::Rc;
 
 use yew::prelude::*;
 
+use schwenkbar_app::run::StateRef;
+
 use crate::browser;
 use crate::components::dialog_area::DialogArea;
 use crate::components::header::Header;
@@ -115,7 +117,7 @@ pub fn app(props: &AppProps) -> Html {
         Some(_) => l.t("Programmlauf Einzelsatz", "Program run, single block"),
     };
     let speed = state.run.as_ref().map_or(1.0, |r| r.speed_factor());
-    let scene_state = state.shown_state();
+    let scene_state = state.shown_state().map(StateRef);
     let fraction = use_state_eq(|| 1.0_f64);
     // The candidate hovered in the why panel, drawn as the ghost; forgotten when the cursor moves.
     let hovered = use_state_eq(|| None::<(usize, schwenkbar_core::axes::AxisValues)>);
@@ -131,7 +133,7 @@ pub fn app(props: &AppProps) -> Html {
         let fraction = fraction.clone();
         Callback::from(move |f: f64| fraction.set(f))
     };
-    let shown = state.run.as_ref().and_then(|r| r.state.clone());
+    let shown = state.run.as_ref().and_then(|r| r.state.clone()).map(StateRef);
     let class = classes!("tnc", state.projector.then_some("projector"));
     html! {
             <div {class} lang={l.code()} tabindex="-1" ref={root} data-keys={keys_on.then_some("on")}>

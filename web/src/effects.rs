@@ -15,11 +15,17 @@ use yew::prelude::*;
 use crate::browser;
 
 /// The effects of the last transition; `seq` changes with every non-empty list, so each list
-/// runs once.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// runs once (and two lists are the same list when their `seq` is).
+#[derive(Debug, Clone, Default)]
 pub struct Pending {
     seq: u64,
     list: Rc<[Effect]>,
+}
+
+impl PartialEq for Pending {
+    fn eq(&self, other: &Pending) -> bool {
+        self.seq == other.seq
+    }
 }
 
 impl Pending {

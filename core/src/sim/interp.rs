@@ -1,6 +1,6 @@
 //! The interpreter: one executed block at a time. Cloneable, so a clone is a checkpoint.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use glam::{DMat3, DVec3};
@@ -40,7 +40,7 @@ pub(crate) struct Cx<'a> {
     pub program: &'a Program,
     pub machine: &'a Machine,
     pub options: &'a SimOptions,
-    pub labels: &'a HashMap<LabelKey, usize>,
+    pub labels: &'a BTreeMap<LabelKey, usize>,
 }
 
 /// What a full-detail step records (segments, message, explanation). The fast run passes none.

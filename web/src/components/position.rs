@@ -8,11 +8,13 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{ActiveTransform, Level, SpindleDir, State};
 use yew::prelude::*;
 
+use schwenkbar_app::run::StateRef;
+
 use schwenkbar_app::i18n::Lang;
 
 #[derive(Properties, PartialEq)]
 pub struct PositionProps {
-    pub state: Rc<State>,
+    pub state: StateRef,
     pub lang: Lang,
     /// The machine, for the tool tip during the block's motion.
     pub machine: Option<Rc<Machine>>,

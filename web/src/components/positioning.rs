@@ -3,6 +3,8 @@
 
 use yew::prelude::*;
 
+use schwenkbar_app::run::StateRef;
+
 use super::scene_pane::ScenePane;
 use schwenkbar_app::course::positioning::{Pane, panes};
 use schwenkbar_app::i18n::Lang;
@@ -36,7 +38,7 @@ pub fn positioning_compare(props: &PositioningProps) -> Html {
                         <figure class="positioning-pane" key={format!("{name}-{}", *replay)} data-testid={format!("pane-{name}")}>
                             <figcaption>{ name }</figcaption>
                             <ScenePane lang={l} machine={machine.clone()} sim={sim.clone()} doc={doc.clone()}
-                                state={state.clone()} animate={true} speed={1.0} />
+                                state={state.clone().map(StateRef)} animate={true} speed={1.0} />
                         </figure>
                     }
                 }) }

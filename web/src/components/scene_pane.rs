@@ -18,7 +18,7 @@ use super::view3d::{SharedPath, View3d};
 use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath};
 use schwenkbar_app::document::Document;
 use schwenkbar_app::i18n::Lang;
-use schwenkbar_app::run::SimRef;
+use schwenkbar_app::run::{SimRef, StateRef};
 use schwenkbar_app::scene::SceneState;
 
 #[derive(Properties, PartialEq)]
@@ -28,7 +28,7 @@ pub struct ScenePaneProps {
     pub sim: Option<SimRef>,
     pub doc: Rc<Document>,
     /// The state to show (after the cursor block, or the run's step).
-    pub state: Option<Rc<State>>,
+    pub state: Option<StateRef>,
     /// Animate the block's motion (program run) instead of showing its end.
     pub animate: bool,
     /// Playback speed factor.
@@ -77,7 +77,7 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
     {
         let fraction = fraction.clone();
         let generation = generation.borrow().clone();
-        let deps = (props.state.as_ref().map(|s| (s.step, Rc::as_ptr(s) as usize)), props.animate);
+        let deps = (props.state.as_ref().map(|s| (s.step, Rc::as_ptr(&s.0) as usize)), props.animate);
         let duration = props.state.as_ref().map_or(0.0, |s| s.duration());
         let speed = props.speed.max(0.01);
         use_effect_with(deps, move |(_, animate)| {

@@ -5,12 +5,11 @@ use std::rc::Rc;
 
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
 use schwenkbar_app::document::Document;
 use schwenkbar_app::i18n::Lang;
-use schwenkbar_app::run::SimRef;
+use schwenkbar_app::run::{SimRef, StateRef};
 use schwenkbar_app::why::{describe, for_block};
 
 #[derive(Properties, PartialEq)]
@@ -20,7 +19,7 @@ pub struct WhyPanelProps {
     pub machine: Option<Rc<Machine>>,
     pub sim: Option<SimRef>,
     /// The state shown in run mode.
-    pub shown: Option<Rc<State>>,
+    pub shown: Option<StateRef>,
     pub lang: Lang,
     /// A candidate hovered (its axes, shown as the ghost in the 3D view) or left (`None`).
     #[prop_or_default]
