@@ -17,12 +17,15 @@ use crate::run::SimRef;
 /// a frame, so the stock follows the tool in quarters of the block, not every frame.
 pub const STAGES: f64 = 4.0;
 
+/// A mesh and the cursor version it shows.
+type Meshed = (u64, Rc<StockMesh>);
+
 /// The cuts of one simulation and where the view stands in them.
 pub struct StockView {
     sim: SimRef,
     cutting: Cutting,
     /// The cursor and the mesh of its stock (with the cursor's version when it was made).
-    at: RefCell<(StockCursor, Option<(u64, Rc<StockMesh>)>)>,
+    at: RefCell<(StockCursor, Option<Meshed>)>,
 }
 
 /// The stock of the current simulation, shared and compared by identity.
