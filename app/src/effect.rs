@@ -23,6 +23,9 @@ pub enum Effect {
     ConsumeFragment,
     /// Satzfolge: send `RunTick(step)` after `ms` milliseconds.
     Tick { step: usize, ms: u64 },
+    /// Send `BuildStock` once the screen is painted (cutting a run's stock takes about a
+    /// second in the browser; the run's first render should not wait for it).
+    BuildStock,
     /// A lesson's trainer tells the course which PLANE block its cursor is on (`None`: none).
     TellCourse(Option<String>),
 }

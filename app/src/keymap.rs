@@ -51,6 +51,8 @@ pub fn action(state: &AppState, press: &KeyPress<'_>) -> Option<Action> {
         "p" | "P" => Action::ToggleProjector,
         // The right-hand rule on the cursor's PLANE block, in place of the machine view.
         "h" | "H" => Action::ToggleRightHand,
+        // The ROHTEIL switch (the stock in the 3D view).
+        "r" | "R" => Action::ToggleStock,
         _ => return None,
     })
 }

@@ -18,5 +18,6 @@ pub mod samples;
 pub mod scene;
 pub mod softkeys;
 pub mod state;
+pub mod stock;
 pub mod syntax;
 pub mod why;

@@ -142,6 +142,18 @@ pub struct SceneState {
     pub blank: Blank,
     /// How many toolpath segments to draw (`None` = all), for a run in progress.
     pub toolpath_drawn: Option<usize>,
+    /// The cut stock (W-CS), drawn in place of the blank's box.
+    pub stock: Option<StockShape>,
+}
+
+/// A stock mesh, shared and compared by identity (a new `Rc` = the stock changed).
+#[derive(Debug, Clone)]
+pub struct StockShape(pub std::rc::Rc<schwenkbar_core::stock::StockMesh>);
+
+impl PartialEq for StockShape {
+    fn eq(&self, other: &Self) -> bool {
+        std::rc::Rc::ptr_eq(&self.0, &other.0)
+    }
 }
 
 impl Default for SceneState {
@@ -155,6 +167,7 @@ impl Default for SceneState {
             tool: Tool::default(),
             blank,
             toolpath_drawn: None,
+            stock: None,
         }
     }
 }

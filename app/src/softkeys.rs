@@ -114,7 +114,12 @@ pub fn row(state: &AppState) -> Row {
             text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
             text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),
             key("run-faster", &speed, Action::RunFaster),
-            None,
+            Some(Softkey {
+                id: "stock".to_owned(),
+                label: Text::new("ROHTEIL", "STOCK").get(l).to_owned(),
+                action: Action::ToggleStock,
+                active: state.stock_shown,
+            }),
             back(l),
         ];
     }

@@ -16,6 +16,7 @@ use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
+use crate::stock::StockRef;
 
 mod run_mode;
 mod start;
@@ -85,6 +86,11 @@ pub struct AppState {
     pub link: Option<LinkPreview>,
     /// A lesson's trainer: nothing is saved, the cursor's PLANE block is told to the course.
     pub embedded: bool,
+    /// The ROHTEIL switch: the 3D view draws the stock (the blank as the run has cut it).
+    pub stock_shown: bool,
+    /// The cut stock of `sim`: made after a program run starts with the switch on
+    /// ([`Effect::BuildStock`]), never while typing; dropped when the simulation changes.
+    pub stock: Option<StockRef>,
 }
 
 impl Default for AppState {
@@ -104,6 +110,10 @@ impl Default for AppState {
             right_hand: false,
             link: None,
             embedded: false,
+            // Off until asked for: cutting Musterprogramm 1 takes about a second in the browser
+            // and re-meshing more than a frame (issue 14's budgets not reached yet).
+            stock_shown: false,
+            stock: None,
         }
         .simulated()
     }
@@ -166,6 +176,10 @@ pub enum Action {
     ToggleRightHand,
     ToggleLang,
     ToggleProjector,
+    /// The ROHTEIL switch: show or hide the stock.
+    ToggleStock,
+    /// Cut the run's stock now (sent by the shell for [`Effect::BuildStock`], after a render).
+    BuildStock,
 }
 
 impl Reducer for AppState {
@@ -305,6 +319,12 @@ impl AppState {
             Action::ToggleRightHand => next.right_hand = !self.right_hand,
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
+            Action::ToggleStock => next.stock_shown = !self.stock_shown,
+            Action::BuildStock => {
+                if let Some(sim) = self.sim.as_ref().filter(|_| self.wants_stock()) {
+                    next.stock = Some(StockRef::of(sim, &self.doc.program));
+                }
+            }
         }
         let machine_changed = match (&self.machine, &next.machine) {
             (Some(a), Some(b)) => !Rc::ptr_eq(a, b),
@@ -321,6 +341,7 @@ impl AppState {
     #[must_use]
     fn simulated(mut self) -> AppState {
         self.sim = self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m));
+        self.stock = None;
         match (&self.sim, self.run.as_mut()) {
             (Some(sim), Some(run)) => run.go_to(&sim.0, &self.doc.program, run.step),
             (None, Some(_)) => self.run = None,
@@ -383,6 +404,21 @@ impl AppState {
         }
     }
 
+    /// Whether the stock is to be cut: shown, in a program run, not yet made for this simulation.
+    #[must_use]
+    pub fn wants_stock(&self) -> bool {
+        self.stock_shown
+            && self.run.is_some()
+            && self.sim.as_ref().is_some_and(|sim| !self.stock.as_ref().is_some_and(|s| s.is_for(sim)))
+    }
+
+    /// The stock to draw (switch on, made for the current simulation).
+    #[must_use]
+    pub fn shown_stock(&self) -> Option<StockRef> {
+        let sim = self.sim.as_ref()?;
+        self.stock.clone().filter(|s| self.stock_shown && s.is_for(sim))
+    }
+
     /// The dialog line in the UI language: the control's error message when a run stopped, else
     /// [`AppState::dialog_text`].
     #[must_use]
@@ -410,6 +446,10 @@ impl AppState {
             return m.clone();
         }
         if let Some(run) = &self.run {
+            // The stock's note on the shown block (a rapid into the material).
+            if let Some(note) = self.shown_stock().and_then(|s| s.notes_at(run.step)) {
+                return note;
+            }
             return if run.playing {
                 Text::new("Programmlauf Satzfolge", "Program run, full sequence")
             } else {

@@ -61,6 +61,7 @@ pub fn app(props: &AppProps) -> Html {
         Shell {
             notice: on_action.reform(Action::Notice),
             tick: on_action.reform(Action::RunTick),
+            build_stock: on_action.reform(|()| Action::BuildStock),
             root: root.clone(),
             tell_course: props.embed.as_ref().map(|e| e.on_plane_block.clone()),
         },
@@ -145,7 +146,7 @@ pub fn app(props: &AppProps) -> Html {
                         <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
-                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} />
+                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} stock={state.shown_stock()} />
                     }
                     <div class="side">
                         if let Some(shown) = shown.clone() {

@@ -81,6 +81,8 @@ pub struct Shell {
     pub notice: Callback<Text>,
     /// Satzfolge's timer fires `RunTick(step)`.
     pub tick: Callback<usize>,
+    /// Cut the run's stock (`BuildStock`), after the screen is painted.
+    pub build_stock: Callback<()>,
     /// The app's root element (file input, text area).
     pub root: NodeRef,
     /// A lesson's trainer: the course wants the cursor's PLANE block.
@@ -155,6 +157,14 @@ fn run(effect: &Effect, shell: &Shell) {
             yew::platform::spawn_local(async move {
                 yew::platform::time::sleep(std::time::Duration::from_millis(ms)).await;
                 tick.emit(step);
+            });
+        }
+        Effect::BuildStock => {
+            let build = shell.build_stock.clone();
+            yew::platform::spawn_local(async move {
+                // Long enough for the browser to paint the run's first screen.
+                yew::platform::time::sleep(std::time::Duration::from_millis(50)).await;
+                build.emit(());
             });
         }
         Effect::TellCourse(block) => {

@@ -24,6 +24,7 @@ pub mod from_sim;
 pub mod machine_parts;
 pub mod mesh;
 pub mod right_hand;
+pub mod stock;
 pub mod toolpath;
 pub mod triads;
 

@@ -44,6 +44,8 @@ impl Action {
                 | Action::ToggleRightHand
                 | Action::ToggleLang
                 | Action::ToggleProjector
+                | Action::ToggleStock
+                | Action::BuildStock
         )
     }
 }
@@ -88,6 +90,9 @@ impl AppState {
             if link_closed || before.is_none_or(|b| b.prefs() != prefs) {
                 fx.push(Effect::Save { key: persist::PREFS_KEY, value: prefs.to_record() });
             }
+        }
+        if self.wants_stock() && before.is_none_or(|b| !b.wants_stock() || b.sim != self.sim) {
+            fx.push(Effect::BuildStock);
         }
         let tick = |s: &AppState| s.run.as_ref().map(|r| (r.step, r.playing, r.tick_ms()));
         if let Some((step, true, ms)) = tick(self)

@@ -283,3 +283,39 @@ fn satzfolge_asks_for_a_tick_per_step_and_none_when_paused() {
     let (_, fx) = s.apply(Action::RunPlay);
     assert!(fx.is_empty(), "paused: no timer");
 }
+
+#[test]
+fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_it() {
+    let s = AppState::default().then(Action::SetText(crate::samples::MUSTERPROGRAMM_1.text.to_owned()));
+    assert!(!s.stock_shown, "off by default");
+    let (_, fx) = s.then(Action::StartRun).apply(Action::ToggleStock);
+    assert!(fx.contains(&Effect::BuildStock), "switched on in a run: cut");
+    let s = s.then(Action::ToggleStock);
+    let (typed, fx) = s.apply(Action::SetText(format!("{}\n", s.doc.text)));
+    assert!(!fx.contains(&Effect::BuildStock) && typed.stock.is_none(), "typing cuts nothing");
+    let (run, fx) = typed.apply(Action::StartRun);
+    assert_eq!(
+        fx.iter().filter(|e| **e == Effect::BuildStock).count(),
+        1,
+        "asked for once, after the render"
+    );
+    assert!(run.stock.is_none());
+    let (_, fx) = run.apply(Action::RunNext);
+    assert!(!fx.contains(&Effect::BuildStock), "asked for already");
+    let (cut, fx) = run.apply(Action::BuildStock);
+    assert!(!fx.contains(&Effect::BuildStock));
+    let stock = cut.shown_stock().expect("the stock of this run");
+    assert!(stock.is_for(cut.sim.as_ref().expect("sim")));
+    let hidden = cut.then(Action::ToggleStock);
+    assert!(hidden.shown_stock().is_none() && hidden.stock.is_some(), "hidden, kept for the switch back");
+    assert_eq!(
+        crate::keymap::action(&cut, &crate::keymap::KeyPress { key: "r", shift: false, ctrl_or_alt: false }),
+        Some(Action::ToggleStock)
+    );
+    let row = crate::softkeys::row(&cut);
+    assert!(
+        row[6].as_ref().is_some_and(|k| k.label == "ROHTEIL" && k.active && k.action == Action::ToggleStock)
+    );
+    let other = cut.then(Action::SelectMachine("ba-table".into()));
+    assert!(other.stock.is_none(), "a new simulation drops the old stock");
+}

@@ -19,7 +19,8 @@ use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath};
 use schwenkbar_app::document::Document;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
-use schwenkbar_app::scene::SceneState;
+use schwenkbar_app::scene::{SceneState, StockShape};
+use schwenkbar_app::stock::StockRef;
 
 #[derive(Properties, PartialEq)]
 pub struct ScenePaneProps {
@@ -39,6 +40,9 @@ pub struct ScenePaneProps {
     /// A PLANE candidate hovered in the why panel: drawn as the ghost instead of the other one.
     #[prop_or_default]
     pub ghost: Option<AxisValues>,
+    /// The cut stock of the run (the ROHTEIL switch on), drawn at the shown step and fraction.
+    #[prop_or_default]
+    pub stock: Option<StockRef>,
     /// Told where in the block's motion the view stands (animation or scrub), for the
     /// position display.
     #[prop_or_default]
@@ -113,6 +117,7 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             if props.ghost.is_some() {
                 scene.ghost = props.ghost;
             }
+            scene.stock = props.stock.as_ref().and_then(|st| st.mesh_at(s.step, *fraction)).map(StockShape);
             Some(Rc::new(scene))
         }
         _ => None,

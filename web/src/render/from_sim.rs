@@ -35,6 +35,7 @@ pub fn scene_state(machine: &Machine, s: &State) -> SceneState {
         tool: Tool { length: s.tool.length, radius: s.tool.radius },
         blank: s.blank.map_or_else(Blank::default, |b| Blank { min: b.min, max: b.max }),
         toolpath_drawn: None,
+        stock: None,
     }
 }
 

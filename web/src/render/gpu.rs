@@ -150,6 +150,47 @@ impl Drop for GpuMesh {
     }
 }
 
+/// Triangles without indices (the stock): one static buffer of position + normal, drawn in
+/// ranges.
+pub struct GpuTriangles {
+    gl: Gl,
+    vao: WebGlVertexArrayObject,
+    vbo: WebGlBuffer,
+}
+
+impl GpuTriangles {
+    pub fn upload(gl: &Gl, vertices: &[f32]) -> Result<GpuTriangles, RenderError> {
+        let (vao, vbo) = (vertex_array(gl)?, buffer(gl)?);
+        gl.bind_vertex_array(Some(&vao));
+        gl.bind_buffer(Gl::ARRAY_BUFFER, Some(&vbo));
+        gl.buffer_data_with_array_buffer_view(
+            Gl::ARRAY_BUFFER,
+            &Float32Array::from(vertices),
+            Gl::STATIC_DRAW,
+        );
+        interleaved_3_3(gl);
+        gl.bind_vertex_array(None);
+        Ok(GpuTriangles { gl: gl.clone(), vao, vbo })
+    }
+
+    /// Draws vertices `first..first + count`.
+    pub fn draw(&self, first: usize, count: usize) {
+        if let (Ok(first), Ok(count)) = (i32::try_from(first), i32::try_from(count))
+            && count > 0
+        {
+            self.gl.bind_vertex_array(Some(&self.vao));
+            self.gl.draw_arrays(Gl::TRIANGLES, first, count);
+        }
+    }
+}
+
+impl Drop for GpuTriangles {
+    fn drop(&mut self) {
+        self.gl.delete_vertex_array(Some(&self.vao));
+        self.gl.delete_buffer(Some(&self.vbo));
+    }
+}
+
 /// Coloured line segments on the GPU (the toolpath): one static buffer.
 pub struct GpuLines {
     gl: Gl,

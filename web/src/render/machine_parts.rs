@@ -330,13 +330,16 @@ fn table_side(
             }
         }
     }
-    // The blank, clamped on the innermost table link.
-    list.push(
-        Shape::Cube,
-        cuboid(p.workpiece * frame_affine(&s.wcs), s.blank.min, s.blank.max),
-        style.colour(BLANK),
-        pass,
-    );
+    // The blank, clamped on the innermost table link (the renderer draws the cut stock in its
+    // place when there is one; the ghost keeps the box).
+    if s.stock.is_none() || style.tint.is_some() {
+        list.push(
+            Shape::Cube,
+            cuboid(p.workpiece * frame_affine(&s.wcs), s.blank.min, s.blank.max),
+            style.colour(BLANK),
+            pass,
+        );
+    }
 }
 
 fn head(list: &mut DrawList, m: &Machine, tool: &Tool, p: &Poses, style: Style) {

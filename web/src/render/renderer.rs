@@ -8,8 +8,10 @@ use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl, WebGlUniformLocat
 
 use super::camera::{Camera, project_to_css};
 use super::draw_list::{DrawList, Pass, Shape};
-use super::gpu::{GpuLines, GpuMesh, Program, RenderError};
+use super::gpu::{GpuLines, GpuMesh, GpuTriangles, Program, RenderError};
+use super::machine_parts::BLANK;
 use super::mesh::{self, Lines};
+use super::stock::{self, CUT};
 use super::toolpath::{self, PathPoint};
 use super::triads;
 use schwenkbar_app::scene::Scene;
@@ -47,6 +49,8 @@ struct Gpu {
     line_mvp: Option<WebGlUniformLocation>,
     shapes: Vec<GpuMesh>,
     toolpath: Option<GpuLines>,
+    /// The stock uploaded: its triangles, how many vertices are raw, and the total.
+    stock: Option<(GpuTriangles, usize, usize)>,
 }
 
 impl Gpu {
@@ -64,7 +68,7 @@ impl Gpu {
             shapes.push(GpuMesh::upload(gl, &unit_mesh(s))?);
         }
         let toolpath = if path.vertices.is_empty() { None } else { Some(GpuLines::upload(gl, path)?) };
-        Ok(Gpu { lit, lit_u, line, line_mvp, shapes, toolpath })
+        Ok(Gpu { lit, lit_u, line, line_mvp, shapes, toolpath, stock: None })
     }
 }
 
@@ -87,6 +91,10 @@ pub struct Renderer {
     gpu: Option<Gpu>,
     /// The toolpath in CPU memory, to upload again after a context loss.
     path: Lines,
+    /// The stock mesh uploaded (compared by pointer: a new `Rc` is a changed stock).
+    stock: Option<std::rc::Rc<schwenkbar_core::stock::StockMesh>>,
+    /// Where the stock is drawn this frame (W-CS on the table as it stands), if at all.
+    stock_model: Option<DAffine3>,
 }
 
 /// The WebGL2 context of a canvas, with multisampling asked for (the browser may ignore it).
@@ -107,7 +115,7 @@ impl Renderer {
         let gl = context(canvas)?;
         let path = Lines::default();
         let gpu = Gpu::new(&gl, &path)?;
-        Ok(Renderer { gl, canvas: canvas.clone(), gpu: Some(gpu), path })
+        Ok(Renderer { gl, canvas: canvas.clone(), gpu: Some(gpu), path, stock: None, stock_model: None })
     }
 
     /// The GL context (for tests and pixel probes).
@@ -143,6 +151,7 @@ impl Renderer {
     pub fn restore(&mut self) -> Result<(), RenderError> {
         self.gpu = None;
         self.gpu = Some(Gpu::new(&self.gl, &self.path)?);
+        self.stock = None;
         Ok(())
     }
 
@@ -167,6 +176,17 @@ impl Renderer {
             schwenkbar_app::scene::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
         let wcs = DAffine3::from_mat3_translation(scene.state.wcs.rot, scene.state.wcs.origin);
         let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
+        self.stock_model = None;
+        if let (Some(shape), Some(gpu)) = (&s.stock, &mut self.gpu) {
+            if !self.stock.as_ref().is_some_and(|m| std::rc::Rc::ptr_eq(m, &shape.0)) {
+                // A new stock: one upload (the mesh is made again only when the stock changed).
+                gpu.stock = None;
+                self.stock = Some(shape.0.clone());
+                let (vertices, raw) = stock::vertices(&shape.0);
+                gpu.stock = Some((GpuTriangles::upload(&self.gl, &vertices)?, raw, vertices.len() / 6));
+            }
+            self.stock_model = Some(path.0);
+        }
         self.paint_list(&list, camera, Some(path))
     }
 
@@ -178,6 +198,7 @@ impl Renderer {
         camera: &Camera,
         toolpath: Option<(DAffine3, usize)>,
     ) -> Result<Vec<ScreenLabel>, RenderError> {
+        let stock_model = self.stock_model.take();
         let gl = &self.gl;
         if gl.is_context_lost() {
             return Err(RenderError::ContextLost);
@@ -200,6 +221,14 @@ impl Renderer {
         gl.use_program(Some(&gpu.lit.program));
         gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.projection.as_ref(), false, &proj.to_cols_array());
         draw_pass(gl, gpu, list, Pass::Opaque, &view);
+        if let (Some((tris, raw, all)), Some(model)) = (&gpu.stock, stock_model) {
+            let mv = view * mat4(&model);
+            gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.model_view.as_ref(), false, &mv.to_cols_array());
+            for (colour, first, count) in [(BLANK, 0, *raw), (CUT, *raw, all - raw)] {
+                gl.uniform4f(gpu.lit_u.colour.as_ref(), colour[0], colour[1], colour[2], 1.0);
+                tris.draw(first, count);
+            }
+        }
 
         if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {
             gl.use_program(Some(&gpu.line.program));
