@@ -50,6 +50,9 @@ build_pages() {
   bundle_env trunk build kurs.html --release --offline --dist target/kurs-dist
   cp target/kurs-dist/index.html dist/kurs.html
   find target/kurs-dist -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+  # wasm-bindgen's JS glue, minified with terser (trunk's minifier cannot parse it), and the
+  # pages' integrity hashes of it written anew.
+  python3 scripts/minify_glue.py dist
   # The service worker (offline after one visit): its precache list and cache version come from
   # the files now in dist/, whose names trunk hashed.
   python3 scripts/precache.py dist

@@ -11,6 +11,7 @@ set -euo pipefail
 WASM_BINDGEN_VERSION=0.2.130
 TRUNK_VERSION=0.21.14
 BINARYEN_VERSION=132
+TERSER_VERSION=5.51.2
 TOOLS_DIR="${SCHWENKBAR_TOOLS:-$HOME/.cache/schwenkbar-tools}"
 
 step() { printf '\n==> setup step %s\n' "$*"; }
@@ -90,6 +91,18 @@ else
   (cd "$TOOLS_DIR" && npm install --no-audit --no-fund --silent "binaryen@$BINARYEN_VERSION") \
     || fail "4/5 (npm install binaryen@$BINARYEN_VERSION)"
   ok "$("$WASM_OPT" --version)"
+fi
+# terser minifies wasm-bindgen's JS glue (trunk 0.21's own minifier cannot parse it).
+TERSER="$TOOLS_DIR/node_modules/.bin/terser"
+if [ -x "$TERSER" ] && "$TERSER" --version | grep -q "$TERSER_VERSION"; then
+  ok "$("$TERSER" --version)"
+else
+  command -v npm >/dev/null || apt_install nodejs npm || fail "4/5 (apt-get install nodejs npm)"
+  mkdir -p "$TOOLS_DIR"
+  [ -f "$TOOLS_DIR/package.json" ] || echo '{"name":"schwenkbar-tools","private":true}' >"$TOOLS_DIR/package.json"
+  (cd "$TOOLS_DIR" && npm install --no-audit --no-fund --silent "terser@$TERSER_VERSION") \
+    || fail "4/5 (npm install terser@$TERSER_VERSION)"
+  ok "$("$TERSER" --version)"
 fi
 
 # --- 5: Chromium and ChromeDriver for the headless browser tests ---------------------------

@@ -81,18 +81,21 @@ def pack(dist, page):
         glue_name = imp.group(3)
         glue = read(local(dist, glue_name))
         check_inline(glue, glue_name)
+        # The glue may be minified (scripts/env.sh build_pages): `export{j as initSync,…}` on
+        # the last line after a `}`.
         if not re.search(r"^async function __wbg_init\(", glue, re.M) or not re.search(
-                r"^export (?:default __wbg_init|\{[^}]*\b__wbg_init as default\b[^}]*\});?$", glue, re.M):
+                r"\bexport ?(?:default __wbg_init|\{[^}]*\b__wbg_init as default\b[^}]*\});?$", glue, re.M):
             sys.exit(f"single-file: {glue_name}: not wasm-bindgen's web glue (no __wbg_init as its default export)")
         if "__schwenkbarWasm" in glue:
             sys.exit(f"single-file: {glue_name} already uses the name __schwenkbarWasm")
-        exported = re.findall(r"^export (?:async )?(?:function\*?|class|const|let|var) (\w+)", glue, re.M)
-        for group in re.findall(r"^export \{([^}]*)\}", glue, re.M):
+        # Exported name → the glue's own (top-level) name for it.
+        exported = [(n, n) for n in re.findall(r"^export (?:async )?(?:function\*?|class|const|let|var) (\w+)", glue, re.M)]
+        for group in re.findall(r"\bexport ?\{([^}]*)\}", glue):
             for item in group.split(","):
                 parts = item.split(" as ")
                 if parts[0].strip():
-                    exported.append(parts[-1].strip())
-        names = [n for n in exported if n != "default"]
+                    exported.append((parts[-1].strip(), parts[0].strip()))
+        names = [f"{name}: {local}" for name, local in exported if name != "default"]
         bindings = "{ " + ", ".join(names + ["default: __wbg_init"]) + " }"
         b64 = base64.b64encode(read(local(dist, wasm.group(1)), "rb")).decode()
         start = body[: imp.start()] + body[imp.end():]

@@ -1,0 +1,38 @@
+#!/usr/bin/env python3
+"""Minifies wasm-bindgen's JS glue in a built dist/ folder (trunk 0.21's own minifier cannot parse
+it) with terser, and writes the new subresource-integrity hashes into the pages that preload it.
+
+Names are mangled except `__wbg_init`, one statement a line, so scripts/single_file.py still finds
+the glue's parts. Usage: minify_glue.py DIST"""
+import base64
+import hashlib
+import pathlib
+import re
+import subprocess
+import sys
+
+dist = pathlib.Path(sys.argv[1])
+hashes = {}
+for glue in sorted(dist.glob("*.js")):
+    if glue.name == "sw.js":
+        continue
+    subprocess.run(["terser", str(glue), "--module", "--mangle", "reserved=['__wbg_init']",
+                    "--format", "semicolons=false", "-o", str(glue)], check=True)
+    digest = hashlib.sha384(glue.read_bytes()).digest()
+    hashes[glue.name] = "sha384-" + base64.b64encode(digest).decode()
+
+# A tag naming the glue (href="/x.js", href=/x.js) gets the glue's new integrity.
+TAG = re.compile(r"<link\b[^>]*>", re.I)
+for page in sorted(dist.glob("*.html")):
+    html = page.read_text(encoding="utf-8")
+
+    def fix(m):
+        tag = m.group(0)
+        href = re.search(r"""href=["']?/?([^"'\s>]+)""", tag)
+        if not href or href.group(1) not in hashes:
+            return tag
+        return re.sub(r"""integrity=(["']?)sha384-[A-Za-z0-9+/=]+\1""",
+                      lambda i: f"integrity={i.group(1)}{hashes[href.group(1)]}{i.group(1)}", tag)
+
+    page.write_text(TAG.sub(fix, html), encoding="utf-8")
+print("minified glue:", ", ".join(sorted(hashes)))
