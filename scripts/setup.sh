@@ -81,29 +81,24 @@ fi
 
 # --- 4: wasm-opt from binaryen (Debian's 108 cannot read what rustc emits) ------------------
 step "4/5: wasm-opt (binaryen $BINARYEN_VERSION)"
-WASM_OPT="$TOOLS_DIR/node_modules/.bin/wasm-opt"
-if [ -x "$WASM_OPT" ] && "$WASM_OPT" --version | grep -q "version $BINARYEN_VERSION"; then
-  ok "$("$WASM_OPT" --version)"
-else
+# Installs an npm package into $TOOLS_DIR unless its command already reports `version`.
+npm_tool() {
+  local command=$1 package=$2 version=$3
+  local bin="$TOOLS_DIR/node_modules/.bin/$command"
+  if [ -x "$bin" ] && "$bin" --version | grep -q "$version"; then
+    ok "$("$bin" --version)"
+    return
+  fi
   command -v npm >/dev/null || apt_install nodejs npm || fail "4/5 (apt-get install nodejs npm)"
   mkdir -p "$TOOLS_DIR"
   [ -f "$TOOLS_DIR/package.json" ] || echo '{"name":"schwenkbar-tools","private":true}' >"$TOOLS_DIR/package.json"
-  (cd "$TOOLS_DIR" && npm install --no-audit --no-fund --silent "binaryen@$BINARYEN_VERSION") \
-    || fail "4/5 (npm install binaryen@$BINARYEN_VERSION)"
-  ok "$("$WASM_OPT" --version)"
-fi
+  (cd "$TOOLS_DIR" && npm install --no-audit --no-fund --silent "$package@$version") \
+    || fail "4/5 (npm install $package@$version)"
+  ok "$("$bin" --version)"
+}
+npm_tool wasm-opt binaryen "$BINARYEN_VERSION"
 # terser minifies wasm-bindgen's JS glue (trunk 0.21's own minifier cannot parse it).
-TERSER="$TOOLS_DIR/node_modules/.bin/terser"
-if [ -x "$TERSER" ] && "$TERSER" --version | grep -q "$TERSER_VERSION"; then
-  ok "$("$TERSER" --version)"
-else
-  command -v npm >/dev/null || apt_install nodejs npm || fail "4/5 (apt-get install nodejs npm)"
-  mkdir -p "$TOOLS_DIR"
-  [ -f "$TOOLS_DIR/package.json" ] || echo '{"name":"schwenkbar-tools","private":true}' >"$TOOLS_DIR/package.json"
-  (cd "$TOOLS_DIR" && npm install --no-audit --no-fund --silent "terser@$TERSER_VERSION") \
-    || fail "4/5 (npm install terser@$TERSER_VERSION)"
-  ok "$("$TERSER" --version)"
-fi
+npm_tool terser terser "$TERSER_VERSION"
 
 # --- 5: Chromium and ChromeDriver for the headless browser tests ---------------------------
 step "5/5: Chromium + ChromeDriver"
