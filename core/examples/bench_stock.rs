@@ -11,7 +11,7 @@ use std::time::Instant;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::parse;
 use schwenkbar_core::sim::{SimOptions, simulate};
-use schwenkbar_core::stock::{Cutting, StockCursor, StockMesh, StockOptions};
+use schwenkbar_core::stock::{Cutting, StockCursor, StockMesh, StockOptions, TiledMesh};
 
 fn main() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../static/programs/musterprogramm1.h");
@@ -63,4 +63,37 @@ fn main() {
         meshing * 1e3,
         mesh.triangles()
     );
+    // The view's work per animation frame: each block animated over 60 frames, each frame
+    // cutting at most FRAME_RAYS rays towards the tool's position and meshing the tiles that
+    // changed (what `schwenkbar_app::stock::StockRef::mesh_toward` does per frame).
+    let mut cursor = StockCursor::default();
+    let mut tiled = TiledMesh::default();
+    let (mut worst, mut total, mut frames, mut behind) = (0.0_f64, 0.0, 0, 0);
+    for step in 0..sim.len() {
+        for k in 1..=FRAMES {
+            let t = Instant::now();
+            let reached = cutting.advance(&mut cursor, step, f64::from(k) / f64::from(FRAMES), FRAME_RAYS);
+            if let Some(stock) = &cursor.stock {
+                tiled.update(stock);
+            }
+            let dt = t.elapsed().as_secs_f64();
+            (worst, total, frames) = (worst.max(dt), total + dt, frames + 1);
+            behind += usize::from(!reached);
+        }
+    }
+    // Catching up after the last block.
+    while !cutting.advance(&mut cursor, last, 1.0, FRAME_RAYS) {
+        behind += 1;
+    }
+    println!(
+        "stock: animated run, {FRAMES} frames per block, ≤ {FRAME_RAYS} rays per frame: worst frame {:.2} ms, \
+         mean {:.3} ms; {behind} frames with the stock behind the tool",
+        worst * 1e3,
+        total * 1e3 / f64::from(frames),
+    );
 }
+
+/// Frames per animated block.
+const FRAMES: u32 = 60;
+/// Rays per frame (`schwenkbar_app::stock::FRAME_RAYS`).
+const FRAME_RAYS: usize = 6_000;

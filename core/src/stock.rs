@@ -27,18 +27,25 @@ mod plan;
 mod sweep;
 
 use std::hash::{DefaultHasher, Hash, Hasher};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::DVec3;
 
 use crate::sim::Blank;
 
-pub use mesh::StockMesh;
+pub use mesh::{StockMesh, TiledMesh};
 pub use plan::{Cutting, StockCursor, StockNote, StockNoteKind, StockOptions};
 pub(crate) use sweep::Cutter;
 
 /// Spans shorter than this (mm) are dropped after a cut: what a neighbouring cut leaves over from
 /// roundoff, far below any resolution.
 const MIN_SPAN: f64 = 1e-7;
+
+/// A sweep whose slab reaches less than this (mm) into a ray's material only touches it: the
+/// ray is skipped. Passes of a face mill at one height leave each ray's end exactly on the next
+/// pass's tip plane; without this margin roundoff would make every later pass re-cut (and
+/// re-count) those rays for nothing. 1 nm, far below any resolution.
+const TOUCH: f64 = 1e-6;
 
 /// At most this many rays in all three grids: about 14 MB at one span per ray (24 bytes each),
 /// so the live stock and its checkpoints stay within the 64 MB. A bigger blank gets a
@@ -109,10 +116,58 @@ pub struct Removal {
     pub depth: f64,
     /// Rays whose crossing with the sweep was computed (the work of the cut).
     pub rays: usize,
+    /// Rays of the cut's box looked at, computed or not.
+    pub visited: usize,
+    /// Tiles that got the cut's stamp (each is meshed again for the view).
+    pub tiles: usize,
+}
+
+impl Removal {
+    /// The cut's work in computed rays, the view's meshing included: a ray looked at and
+    /// skipped costs about an eighth of one whose crossing is computed, meshing a tile again
+    /// about 400 (measured natively on Musterprogramm 1).
+    #[must_use]
+    pub fn work(&self) -> usize {
+        self.rays + self.visited / 8 + 400 * self.tiles
+    }
+}
+
+/// Rays per side of a tile: the view meshes (and uploads) the stock in tiles of at most
+/// `TILE × TILE` rays of one grid, and after a cut only the tiles it changed. 64 keeps a tile's
+/// mesh well under a millisecond and Musterprogramm 1's stock at about a hundred tiles (draw
+/// calls).
+pub const TILE: usize = 64;
+
+/// Tile stamps: equal stamps mean equal rays, in any stock (clones, checkpoints and the live
+/// stock alike), so a cached tile mesh is reused exactly when its stamp matches. A cut by
+/// [`Cutting`] stamps the tiles it changed with a value fixed by the run and the cut's index
+/// ([`Stamp::done`]), so a cursor that went back to a checkpoint and cut forward again ends
+/// with the same stamps as the first pass and only the tiles that really differ are meshed
+/// again; a cut stopped halfway stamps with a value never used before ([`Stamp::fresh`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Stamp(pub u64);
+
+static NEXT_STAMP: AtomicU64 = AtomicU64::new(1);
+
+impl Stamp {
+    /// A stamp no tile had before (the high bit keeps it apart from [`Stamp::done`]).
+    pub fn fresh() -> Stamp {
+        Stamp(NEXT_STAMP.fetch_add(1, Ordering::Relaxed) | 1 << 63)
+    }
+
+    /// A number for one run's cuts, apart from every other run's.
+    pub fn run() -> u64 {
+        NEXT_STAMP.fetch_add(1, Ordering::Relaxed) & 0x7fff_ffff
+    }
+
+    /// The stamp of tiles whose last change was event `event` of run `run`, cut whole.
+    pub fn done(run: u64, event: usize) -> Stamp {
+        Stamp(run << 32 | (event as u64 & 0xffff_ffff))
+    }
 }
 
 /// The tri-dexel stock.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Stock {
     min: DVec3,
     max: DVec3,
@@ -123,6 +178,28 @@ pub struct Stock {
     /// Grid `d` holds the rays along axis `d`, ray `(i, j)` at index `i + n[a]·j` over the other
     /// two axes `a = (d + 1) % 3`, `b = (d + 2) % 3`.
     grids: [Vec<Dexel>; 3],
+    /// Per tile (grids in order, each row-major over `⌈n[a]/TILE⌉ × ⌈n[b]/TILE⌉`): the stamp of
+    /// its rays' current content.
+    stamps: Vec<u64>,
+    /// The latest [`Stock::restamp`]s, `(tile, from, to)`: the tile meshed under `from` has the
+    /// same rays under `to` ([`TiledMesh::update`] renames instead of meshing again).
+    renames: Vec<(usize, u64, u64)>,
+    /// The stamp of the tiles no cut has touched yet.
+    pristine: u64,
+}
+
+/// Equal material; the tiles' stamps (bookkeeping of the view) do not count.
+impl PartialEq for Stock {
+    fn eq(&self, other: &Self) -> bool {
+        self.min == other.min && self.max == other.max && self.n == other.n && self.grids == other.grids
+    }
+}
+
+/// A row of one grid: where a cut made in parts goes on ([`Stock::cut_part`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct RowAt {
+    d: usize,
+    j: usize,
 }
 
 /// Why a blank gives no stock.
@@ -135,6 +212,12 @@ pub enum StockError {
 /// The two other axes of grid `d`.
 const fn others(d: usize) -> (usize, usize) {
     ((d + 1) % 3, (d + 2) % 3)
+}
+
+/// Tiles of grid `d` along its two other axes.
+fn tiles_of(n: [usize; 3], d: usize) -> (usize, usize) {
+    let (a, b) = others(d);
+    (n[a].div_ceil(TILE), n[b].div_ceil(TILE))
 }
 
 impl Stock {
@@ -167,7 +250,9 @@ impl Stock {
             let (a, b) = others(d);
             vec![Dexel::One(Span { lo: min[d], hi: max[d] }); n[a] * n[b]]
         });
-        Ok(Stock { min, max, n, h, grids })
+        let stamp = Stamp::fresh().0;
+        let tiles = (0..3).map(|d| tiles_of(n, d)).map(|(ta, tb)| ta * tb).sum();
+        Ok(Stock { min, max, n, h, grids, stamps: vec![stamp; tiles], renames: Vec::new(), pristine: stamp })
     }
 
     /// The blank's corners, W-CS.
@@ -192,6 +277,61 @@ impl Stock {
     #[must_use]
     pub fn cells(&self) -> [usize; 3] {
         self.n
+    }
+
+    /// The tiles: `(grid, tile column, tile row)` in the order of [`Stock::tile_stamp`].
+    pub fn tiles(&self) -> impl Iterator<Item = (usize, usize, usize)> + use<> {
+        let n = self.n;
+        (0..3).flat_map(move |d| {
+            let (ta, tb) = tiles_of(n, d);
+            (0..tb).flat_map(move |tj| (0..ta).map(move |ti| (d, ti, tj)))
+        })
+    }
+
+    /// The stamp of tile `k` (index in [`Stock::tiles`]): equal stamps, equal rays.
+    #[must_use]
+    pub fn tile_stamp(&self, k: usize) -> u64 {
+        self.stamps.get(k).copied().unwrap_or(0)
+    }
+
+    /// Stamps every tile with `stamp` (a new stock from a [`Cutting`]'s event).
+    pub(crate) fn stamp_all(&mut self, stamp: Stamp) {
+        self.stamps.fill(stamp.0);
+        self.pristine = stamp.0;
+    }
+
+    /// Whether no cut has touched tile `k` (its rays are the blank's).
+    pub(crate) fn is_pristine(&self, k: usize) -> bool {
+        self.stamps.get(k) == Some(&self.pristine)
+    }
+
+    /// Stamps with `to` every tile stamped with one of `from` (a cut made in parts, now whole).
+    pub(crate) fn restamp(&mut self, from: &[Stamp], to: Stamp) {
+        for (k, s) in self.stamps.iter_mut().enumerate() {
+            if from.iter().any(|f| f.0 == *s) {
+                // Per tile: a stamp a part gave is the tile's content only if no later part
+                // changed that tile again.
+                self.renames.push((k, *s, to.0));
+                *s = to.0;
+            }
+        }
+        // A view is at most a few frames behind: the latest renames are enough.
+        const KEEP: usize = 1024;
+        if self.renames.len() > KEEP {
+            self.renames.drain(..self.renames.len() - KEEP);
+        }
+    }
+
+    /// The stamp tile `k`, meshed under `stamp`, has now if only a [`Stock::restamp`] changed
+    /// it.
+    pub(crate) fn renamed(&self, k: usize, stamp: u64) -> Option<u64> {
+        self.renames.iter().rev().find(|(tile, from, _)| *tile == k && *from == stamp).map(|(_, _, to)| *to)
+    }
+
+    /// Index of the tile holding ray `(i, j)` of grid `d`.
+    fn tile_index(&self, d: usize, i: usize, j: usize) -> usize {
+        let offset: usize = (0..d).map(|g| tiles_of(self.n, g)).map(|(ta, tb)| ta * tb).sum();
+        offset + i / TILE + tiles_of(self.n, d).0 * (j / TILE)
     }
 
     /// The material of ray `(i, j)` of grid `d` (rays along axis `d`; `i`, `j` over the next two
@@ -269,16 +409,36 @@ impl Stock {
             })
             .sum();
         std::mem::size_of::<Stock>()
+            + self.stamps.capacity() * std::mem::size_of::<u64>()
             + self.grids.iter().map(|g| g.capacity() * std::mem::size_of::<Dexel>()).sum::<usize>()
             + heap
     }
 
     /// Removes the volume `cutter` sweeps moving straight from tip `p0` to tip `p1` with tool
-    /// axis `axis` (all W-CS).
+    /// axis `axis` (all W-CS). The tests cut this way; a run's cuts go through [`Cutting`].
+    #[cfg(test)]
     pub(crate) fn cut(&mut self, cutter: &Cutter, axis: DVec3, p0: DVec3, p1: DVec3) -> Removal {
+        self.cut_part(cutter, axis, p0, p1, RowAt::default(), usize::MAX, Stamp::fresh()).0
+    }
+
+    /// [`Stock::cut`] from row `start` on, stopping after the row in which its work
+    /// ([`Removal::work`]) reached `budget`: returns what was removed and the row to go on from (`None`: done). Each
+    /// ray's result depends only on that ray's material and the sweep, so a cut made in parts
+    /// leaves exactly the stock of the cut made at once. Tiles it changes get `stamp`.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn cut_part(
+        &mut self,
+        cutter: &Cutter,
+        axis: DVec3,
+        p0: DVec3,
+        p1: DVec3,
+        start: RowAt,
+        budget: usize,
+        stamp: Stamp,
+    ) -> (Removal, Option<RowAt>) {
         let mut out = Removal::default();
         if cutter.pieces.is_empty() || !(p0.is_finite() && p1.is_finite() && axis.is_finite()) {
-            return out;
+            return (out, None);
         }
         let frame = sweep::frame_of(axis);
         let t = frame[2];
@@ -292,14 +452,14 @@ impl Stock {
         let hi = p0.max(p0 + top).max(p1).max(p1 + top) + grow;
         let (lo, hi) = (lo.max(self.min), hi.min(self.max));
         if lo.cmpgt(hi).any() {
-            return out;
+            return (out, None);
         }
         // Every tool point lies between the tip's and the top's heights along t, so the sweep lies
         // in the slab s_lo ≤ p·t ≤ s_hi: a cheap test that skips rays whose material is outside
         // it (a tool passing just above a tilted face touches many rays' boxes but no material).
         let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + cutter.length + 1e-9);
         let mut scratch = Vec::new();
-        for d in 0..3 {
+        for d in start.d..3 {
             let (a, b) = others(d);
             let range = |k: usize| {
                 // Rays at min + (i + ½)·h inside [lo, hi].
@@ -309,9 +469,11 @@ impl Stock {
                 last.filter(|&l| l >= first).map(|l| first..=l)
             };
             let (Some(ri), Some(rj)) = (range(a), range(b)) else { continue };
+            let first_row = if d == start.d { start.j.max(*rj.start()) } else { *rj.start() };
             let dir = DVec3::from_array(std::array::from_fn(|k| if k == d { 1.0 } else { 0.0 }));
             let area = self.h[a] * self.h[b];
-            for j in rj {
+            for j in first_row..=*rj.end() {
+                out.visited += ri.end() + 1 - ri.start();
                 for i in ri.clone() {
                     let mut r0 = DVec3::ZERO;
                     r0[a] = self.min[a] + (i as f64 + 0.5) * self.h[a];
@@ -327,7 +489,7 @@ impl Stock {
                         continue;
                     }
                     let dexel = &mut self.grids[d][i + self.n[a] * j];
-                    if from > to || !dexel.spans().iter().any(|s| s.hi > from && s.lo < to) {
+                    if from > to || !dexel.spans().iter().any(|s| s.hi > from + TOUCH && s.lo < to - TOUCH) {
                         continue;
                     }
                     out.rays += 1;
@@ -335,11 +497,21 @@ impl Stock {
                         let removed = dexel.subtract(x0, x1, &mut scratch);
                         out.volume += removed * area / 3.0;
                         out.depth = out.depth.max(removed);
+                        if removed > 0.0 {
+                            let k = self.tile_index(d, i, j);
+                            if self.stamps[k] != stamp.0 {
+                                self.stamps[k] = stamp.0;
+                                out.tiles += 1;
+                            }
+                        }
                     }
+                }
+                if out.work() >= budget {
+                    return (out, Some(RowAt { d, j: j + 1 }));
                 }
             }
         }
-        out
+        (out, None)
     }
 }
 

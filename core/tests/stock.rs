@@ -4,7 +4,7 @@
 use glam::DVec3;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
-use schwenkbar_core::stock::{Cutting, Stock, StockCursor, StockNoteKind, StockOptions};
+use schwenkbar_core::stock::{Cutting, Stock, StockCursor, StockMesh, StockNoteKind, StockOptions, TiledMesh};
 use schwenkbar_core::{Program, parse};
 
 fn run(src: &str, options: StockOptions) -> (Program, Simulation, Cutting) {
@@ -235,4 +235,65 @@ fn no_blank_no_stock_and_an_empty_blank_says_so() {
     assert!(c.final_stock().is_none());
     assert_eq!(c.notes.len(), 1);
     assert_eq!(c.notes[0].kind, StockNoteKind::InvalidBlank);
+}
+
+/// An animation cuts in frames of a few thousand rays, stopping inside a cut: the stock it ends
+/// with is bit for bit the stock cut in one go, forward and after stepping back.
+#[test]
+fn cutting_in_small_parts_gives_the_same_stock_as_in_one_go() {
+    let (_, sim, c) = run(&musterprogramm(), StockOptions { resolution: 0.5, checkpoints: 2 });
+    let last = sim.len() - 1;
+    let direct = c.stock_at(last).expect("stock").digest();
+    let mut cursor = StockCursor::default();
+    let mut calls = 0;
+    while !c.advance(&mut cursor, last, 1.0, 2_000) {
+        calls += 1;
+        assert!(calls < 10_000, "advance makes no progress");
+    }
+    assert!(calls > 10, "the budget split the work ({calls} calls)");
+    assert_eq!(cursor.stock.as_ref().map(Stock::digest), Some(direct));
+    // Back into the middle of block 13 in parts, then on to the end in parts.
+    let step13 = sim.step_of_block(13).expect("block 13");
+    while !c.advance(&mut cursor, step13, 0.4, 1_000) {}
+    let mut whole = StockCursor::default();
+    c.seek(&mut whole, step13, 0.4);
+    assert_eq!(cursor.stock.as_ref().map(Stock::digest), whole.stock.as_ref().map(Stock::digest));
+    while !c.advance(&mut cursor, last, 1.0, 5_000) {}
+    assert_eq!(cursor.stock.as_ref().map(Stock::digest), Some(direct));
+}
+
+/// The view's tiles, each meshed again only when its stamp changed, always add up to the mesh of
+/// the whole stock made from scratch: on the blank (drawn without looking at its rays), while an
+/// animation cuts in parts, and after stepping back to a checkpoint.
+#[test]
+fn the_tiled_mesh_always_equals_the_mesh_made_from_scratch() {
+    let (_, sim, c) = run(&musterprogramm(), StockOptions { resolution: 0.5, checkpoints: 2 });
+    let joined = |t: &TiledMesh| {
+        let mut m = StockMesh::default();
+        for (_, tile) in t.tiles() {
+            m.positions.extend_from_slice(&tile.positions);
+            m.flags.extend_from_slice(&tile.flags);
+        }
+        m
+    };
+    let mut cursor = StockCursor::default();
+    let mut tiled = TiledMesh::default();
+    let (mut checked, mut reused) = (0, 0);
+    let step13 = sim.step_of_block(13).expect("block 13");
+    let last = sim.len() - 1;
+    for (step, fraction) in [(2, 1.0), (step13, 0.3), (step13, 0.7), (last, 1.0), (step13, 0.5), (last, 1.0)] {
+        loop {
+            let done = c.advance(&mut cursor, step, fraction, 3_000);
+            if let Some(stock) = &cursor.stock {
+                let made = tiled.update(stock);
+                reused += tiled.tiles().len() - made;
+                assert_eq!(joined(&tiled), StockMesh::of(stock), "step {step} at {fraction}");
+                checked += 1;
+            }
+            if done {
+                break;
+            }
+        }
+    }
+    assert!(checked > 20 && reused > checked, "{checked} meshes checked, {reused} tiles reused");
 }

@@ -1,13 +1,17 @@
 //! The stock as triangles for the 3D view and STL: every dexel end is a small square facing
 //! along its ray, as large as its ray's cell (the dexel-end rendering of Van Hook 1986, with
-//! three grids so that walls along each axis are covered). Neighbouring ends along a row at the
-//! same height merge into one strip, so the raw blank's faces and flat cuts cost few triangles.
+//! three grids so that walls along each axis are covered). Neighbouring equal ends merge into
+//! rectangles (greedy meshing, within [`MERGE`]), so the raw blank's faces, flat cuts and faces
+//! tilted about one axis cost few triangles. The view meshes the stock in tiles and after a cut
+//! only the tiles it changed ([`TiledMesh`]).
 //! The mesh is not watertight (tilted faces are sampled by the ends, like a heightfield of
 //! tiles); it is meant for looking at, not for volume computations ([`super::Stock::volume`]).
 //!
 //! Positions are `f32` because the GPU takes them so (WebGL2 has no double attributes).
 
-use super::{Stock, others};
+use std::rc::Rc;
+
+use super::{Stock, TILE, others};
 
 /// Bits of [`StockMesh::flags`].
 pub mod flag {
@@ -19,6 +23,12 @@ pub mod flag {
     pub const CUT: u8 = 0b1000;
 }
 
+/// Dexel ends closer than this (mm) along a row or a column count as one face: their heights
+/// differ only by the roundoff of neighbouring rays' crossings with one tool surface (a face
+/// tilted about one axis gives equal ends along the other), far below what `f32` positions or a
+/// screen show. A merged face keeps its first end, so it strays from any end by at most this.
+const MERGE: f64 = 1e-4;
+
 /// Triangles of the stock, W-CS: `positions` three per triangle, `flags` one per vertex (the
 /// same for the three vertices of a triangle, so the view can pass it as a vertex attribute).
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -27,75 +37,156 @@ pub struct StockMesh {
     pub flags: Vec<u8>,
 }
 
-/// A run of equal dexel ends along one row.
+/// A rectangle of equal dexel ends in one grid: cells `start..end` along the row axis, rows
+/// `row..` (closed when emitted).
 #[derive(Clone, Copy)]
-struct Run {
+struct Rect {
     value: f64,
     negative: bool,
     start: usize,
+    end: usize,
+    row: usize,
+}
+
+impl Rect {
+    fn same(&self, other: &Rect) -> bool {
+        self.start == other.start
+            && self.end == other.end
+            && self.negative == other.negative
+            && (self.value - other.value).abs() <= MERGE
+    }
+
+    fn key(&self) -> (usize, usize, bool) {
+        (self.start, self.end, self.negative)
+    }
+
+    fn order(&self, other: &Rect) -> std::cmp::Ordering {
+        self.key().cmp(&other.key()).then(self.value.total_cmp(&other.value))
+    }
+}
+
+/// Reused buffers of [`StockMesh::add_tile`].
+#[derive(Default)]
+struct Scratch {
+    ends: Vec<(f64, bool)>,
+    slots: Vec<Rect>,
+    row: Vec<Rect>,
+    open: Vec<Rect>,
+    next: Vec<Rect>,
 }
 
 impl StockMesh {
-    /// The mesh of `stock`.
+    /// The mesh of `stock` (all its tiles).
     #[must_use]
     pub fn of(stock: &Stock) -> StockMesh {
         let mut mesh = StockMesh::default();
-        let mut ends = Vec::new();
-        let mut runs: Vec<Run> = Vec::new();
-        for d in 0..3 {
-            let (a, b) = others(d);
-            for j in 0..stock.n[b] {
-                for i in 0..stock.n[a] {
-                    ends.clear();
-                    for s in stock.spans(d, i, j) {
-                        ends.push((s.lo, true));
-                        ends.push((s.hi, false));
-                    }
-                    let same = ends.len() == runs.len();
-                    if !same {
-                        for r in runs.drain(..) {
-                            mesh.quad(stock, d, j, r, i);
-                        }
-                    }
-                    for (k, &(value, negative)) in ends.iter().enumerate() {
-                        if same {
-                            if runs[k].value.to_bits() == value.to_bits() {
-                                continue;
-                            }
-                            let r = runs[k];
-                            mesh.quad(stock, d, j, r, i);
-                            runs[k] = Run { value, negative, start: i };
-                        } else {
-                            runs.push(Run { value, negative, start: i });
-                        }
-                    }
-                }
-                for r in runs.drain(..) {
-                    mesh.quad(stock, d, j, r, stock.n[a]);
-                }
-            }
+        let mut scratch = Scratch::default();
+        for (d, ti, tj) in stock.tiles() {
+            mesh.add_tile(stock, d, ti, tj, &mut scratch);
         }
         mesh
     }
 
-    /// Emits the strip of `run` on row `j` of grid `d`, cells `run.start..end`.
-    fn quad(&mut self, stock: &Stock, d: usize, j: usize, run: Run, end: usize) {
+    /// Adds tile `(ti, tj)` of grid `d`: along each row, neighbouring equal ends merge into a
+    /// strip; strips equal in extent and end on consecutive rows merge into a rectangle (greedy
+    /// meshing of a height field).
+    fn add_tile(&mut self, stock: &Stock, d: usize, ti: usize, tj: usize, s: &mut Scratch) {
         let (a, b) = others(d);
-        let raw = if run.negative { stock.min[d] } else { stock.max[d] };
-        let cut = run.value.to_bits() != raw.to_bits();
-        let flags = d as u8 | if run.negative { flag::NEGATIVE } else { 0 } | if cut { flag::CUT } else { 0 };
-        let (a0, a1) = (stock.min[a] + run.start as f64 * stock.h[a], stock.min[a] + end as f64 * stock.h[a]);
-        let (b0, b1) = (stock.min[b] + j as f64 * stock.h[b], stock.min[b] + (j + 1) as f64 * stock.h[b]);
+        let (i0, i1) = (ti * TILE, ((ti + 1) * TILE).min(stock.n[a]));
+        let (j0, j1) = (tj * TILE, ((tj + 1) * TILE).min(stock.n[b]));
+        s.open.clear();
+        for j in j0..j1 {
+            s.row.clear();
+            s.slots.clear();
+            for i in i0..i1 {
+                s.ends.clear();
+                for span in stock.spans(d, i, j) {
+                    s.ends.push((span.lo, true));
+                    s.ends.push((span.hi, false));
+                }
+                if s.ends.len() != s.slots.len() {
+                    s.row.extend(s.slots.drain(..).map(|r| Rect { end: i, ..r }));
+                    s.slots.extend(s.ends.iter().map(|&(value, negative)| Rect {
+                        value,
+                        negative,
+                        start: i,
+                        end: i,
+                        row: j,
+                    }));
+                    continue;
+                }
+                for (slot, &(value, negative)) in s.slots.iter_mut().zip(&s.ends) {
+                    if (slot.value - value).abs() > MERGE {
+                        s.row.push(Rect { end: i, ..*slot });
+                        *slot = Rect { value, negative, start: i, end: i, row: j };
+                    }
+                }
+            }
+            s.row.extend(s.slots.drain(..).map(|r| Rect { end: i1, ..r }));
+            // Continue the open rectangles the row repeats; close the others.
+            s.row.sort_by(Rect::order);
+            s.next.clear();
+            let (mut p, mut q) = (0, 0);
+            while p < s.open.len() || q < s.row.len() {
+                match (s.open.get(p), s.row.get(q)) {
+                    (Some(o), Some(r)) if o.same(r) => {
+                        s.next.push(*o);
+                        p += 1;
+                        q += 1;
+                    }
+                    (Some(o), Some(r)) if o.order(r).is_lt() => {
+                        self.quad(stock, d, o, j);
+                        p += 1;
+                    }
+                    (Some(o), None) => {
+                        self.quad(stock, d, o, j);
+                        p += 1;
+                    }
+                    (_, Some(r)) => {
+                        s.next.push(*r);
+                        q += 1;
+                    }
+                    (None, None) => break,
+                }
+            }
+            std::mem::swap(&mut s.open, &mut s.next);
+        }
+        for r in &s.open {
+            self.quad(stock, d, r, j1);
+        }
+    }
+
+    /// Adds tile `(ti, tj)` of grid `d` of the uncut blank without looking at its rays: its two
+    /// faces, what [`StockMesh::add_tile`] makes of rays that all run from `min` to `max`.
+    fn add_blank_tile(&mut self, stock: &Stock, d: usize, ti: usize, tj: usize) {
+        let (a, b) = others(d);
+        let (i0, i1) = (ti * TILE, ((ti + 1) * TILE).min(stock.n[a]));
+        let (j0, j1) = (tj * TILE, ((tj + 1) * TILE).min(stock.n[b]));
+        // In add_tile's order (the +d face sorts first).
+        for (value, negative) in [(stock.max[d], false), (stock.min[d], true)] {
+            self.quad(stock, d, &Rect { value, negative, start: i0, end: i1, row: j0 }, j1);
+        }
+    }
+
+    /// Emits `rect` of grid `d`, closed before row `end_row`.
+    fn quad(&mut self, stock: &Stock, d: usize, rect: &Rect, end_row: usize) {
+        let (a, b) = others(d);
+        let raw = if rect.negative { stock.min[d] } else { stock.max[d] };
+        let cut = (rect.value - raw).abs() > MERGE;
+        let flags = d as u8 | if rect.negative { flag::NEGATIVE } else { 0 } | if cut { flag::CUT } else { 0 };
+        let cell = |k: usize, i: usize| stock.min[k] + i as f64 * stock.h[k];
+        let (a0, a1) = (cell(a, rect.start), cell(a, rect.end));
+        let (b0, b1) = (cell(b, rect.row), cell(b, end_row));
         let at = |u: f64, v: f64| {
             let mut p = [0.0_f32; 3];
-            p[d] = run.value as f32;
+            p[d] = rect.value as f32;
             p[a] = u as f32;
             p[b] = v as f32;
             p
         };
         // Counter-clockwise seen from outside: e_a × e_b = e_d, so (a, b) order faces +d.
         let (p00, p10, p11, p01) = (at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1));
-        let tris = if run.negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
+        let tris = if rect.negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
         self.positions.extend_from_slice(&tris);
         self.flags.extend_from_slice(&[flags; 6]);
     }
@@ -132,5 +223,57 @@ impl StockMesh {
             out.extend_from_slice(&[0, 0]);
         }
         out
+    }
+}
+
+/// The stock's mesh in tiles ([`TILE`]), each made again only when its stamp changed: after a
+/// cut, only the tiles it touched ([`TiledMesh::update`]).
+#[derive(Debug, Clone, Default)]
+pub struct TiledMesh {
+    /// `(stamp, mesh)` per tile of the stock, in the order of [`Stock::tiles`].
+    tiles: Vec<(u64, Rc<StockMesh>)>,
+}
+
+impl TiledMesh {
+    /// Brings every tile up to `stock`; returns how many tiles were meshed again.
+    pub fn update(&mut self, stock: &Stock) -> usize {
+        let mut made = 0;
+        let mut scratch = Scratch::default();
+        let count = stock.tiles().count();
+        self.tiles.truncate(count);
+        for (k, (d, ti, tj)) in stock.tiles().enumerate() {
+            let stamp = stock.tile_stamp(k);
+            if let Some(t) = self.tiles.get_mut(k)
+                && (t.0 == stamp || stock.renamed(k, t.0) == Some(stamp))
+            {
+                t.0 = stamp;
+                continue;
+            }
+            let mut mesh = StockMesh::default();
+            if stock.is_pristine(k) {
+                mesh.add_blank_tile(stock, d, ti, tj);
+            } else {
+                mesh.add_tile(stock, d, ti, tj, &mut scratch);
+            }
+            let entry = (stamp, Rc::new(mesh));
+            match self.tiles.get_mut(k) {
+                Some(t) => *t = entry,
+                None => self.tiles.push(entry),
+            }
+            made += 1;
+        }
+        made
+    }
+
+    /// `(stamp, mesh)` per tile: a tile with an unchanged stamp has the same mesh.
+    #[must_use]
+    pub fn tiles(&self) -> &[(u64, Rc<StockMesh>)] {
+        &self.tiles
+    }
+
+    /// Number of triangles.
+    #[must_use]
+    pub fn triangles(&self) -> usize {
+        self.tiles.iter().map(|t| t.1.triangles()).sum()
     }
 }

@@ -8,7 +8,7 @@ use crate::Text;
 use crate::ast::Program;
 use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, State, ToolState};
 
-use super::{Cutter, Removal, Stock, StockError};
+use super::{Cutter, Removal, RowAt, Stamp, Stock, StockError};
 
 /// A rapid that removes more than this from one ray (mm) has entered the material; less is
 /// grazing or roundoff (1 µm, the control's display resolution).
@@ -16,6 +16,10 @@ const ENTERS_MATERIAL: f64 = 1e-3;
 
 /// Rays between two checkpoints at first (about 20 ms of cutting in a release build).
 const FIRST_CHECKPOINT_RAYS: usize = 200_000;
+
+/// Copying a checkpoint (a few MB) costs about as much as computing this many rays: a cursor
+/// behind a checkpoint by less work cuts its way there instead.
+const CHECKPOINT_COPY_RAYS: usize = 50_000;
 
 /// Most sub-moves of one turning motion (a swivel of 180° of a 100 mm tool at 0.25 mm needs
 /// about 5,000): bounds the work of absurd programs.
@@ -106,6 +110,10 @@ pub struct StockCursor {
     pub stock: Option<Stock>,
     /// Events applied.
     applied: usize,
+    /// Where event `applied` stands when it is applied in part ([`Cutting::advance`]), and the
+    /// stamps its parts gave so far.
+    partial: Option<RowAt>,
+    partial_stamps: Vec<Stamp>,
     /// Bumped whenever the stock changes (the view re-meshes when it differs).
     pub version: u64,
 }
@@ -120,8 +128,13 @@ pub struct Cutting {
     cutters: Vec<Cutter>,
     /// `(events applied, stock)`, ascending.
     checkpoints: Vec<(usize, Option<Stock>)>,
+    /// `work[k]`: the work ([`Removal::work`]) of the first `k` events (one more entry than
+    /// events).
+    work: Vec<usize>,
     /// Notes, by step.
     pub notes: Vec<StockNote>,
+    /// This run's number in the tiles' stamps.
+    run: u64,
 }
 
 impl Cutting {
@@ -135,7 +148,9 @@ impl Cutting {
             step_events: Vec::with_capacity(sim.len() + 1),
             cutters: Vec::new(),
             checkpoints: Vec::new(),
+            work: Vec::new(),
             notes: Vec::new(),
+            run: Stamp::run(),
         };
         let mut blank = None;
         let mut tool: Option<(ToolState, usize)> = None;
@@ -236,6 +251,7 @@ impl Cutting {
         let mut budget = FIRST_CHECKPOINT_RAYS;
         let mut work = 0usize;
         self.checkpoints.push((0, None));
+        self.work = vec![0; self.events.len() + 1];
         for k in 0..self.events.len() {
             if work >= budget && self.options.checkpoints > 0 {
                 self.checkpoints.push((k, cursor.stock.clone()));
@@ -255,6 +271,7 @@ impl Cutting {
             match self.apply(&mut cursor, k) {
                 Applied::Removed(r) => {
                     work += r.rays;
+                    self.work[k + 1] = r.work();
                     if matches!(event.action, Action::Cut { rapid: true, .. })
                         && r.depth > ENTERS_MATERIAL
                         && last_rapid_note != Some(step)
@@ -277,17 +294,23 @@ impl Cutting {
                 }
             }
         }
+        for k in 1..self.work.len() {
+            self.work[k] += self.work[k - 1];
+        }
     }
 
     /// Applies event `k` to `cursor`.
     fn apply(&self, cursor: &mut StockCursor, k: usize) -> Applied {
         cursor.applied = k + 1;
+        cursor.partial = None;
+        cursor.partial_stamps.clear();
         let Some(event) = self.events.get(k) else { return Applied::Removed(Removal::default()) };
         match &event.action {
             Action::Blank(b) => {
                 cursor.version += 1;
                 match Stock::new(b, self.options.resolution) {
-                    Ok(s) => {
+                    Ok(mut s) => {
+                        s.stamp_all(Stamp::done(self.run, k));
                         let used = s.resolution();
                         cursor.stock = Some(s);
                         Applied::NewStock { asked: self.options.resolution, used }
@@ -300,13 +323,20 @@ impl Cutting {
             }
             Action::Cut { cutter, axis, from, to, .. } => {
                 let Some(stock) = cursor.stock.as_mut() else { return Applied::Removed(Removal::default()) };
-                let r = stock.cut(&self.cutters[*cutter], *axis, *from, *to);
+                let whole = (RowAt::default(), usize::MAX, Stamp::done(self.run, k));
+                let (r, _) = stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, whole.0, whole.1, whole.2);
                 if r.depth > 0.0 {
                     cursor.version += 1;
                 }
                 Applied::Removed(r)
             }
         }
+    }
+
+    /// The work of the events `from..to` in the first pass.
+    fn work_between(&self, from: usize, to: usize) -> usize {
+        let at = |k: usize| self.work.get(k).or(self.work.last()).copied().unwrap_or(0);
+        at(to).saturating_sub(at(from))
     }
 
     /// Number of events up to the end of `step` (or up to `fraction` of its motion).
@@ -322,17 +352,59 @@ impl Cutting {
     /// Moves `cursor` to the stock after `fraction` (0…1) of step `step`'s motion (1 = the whole
     /// step): forward by cutting only what is new, backward from the nearest checkpoint.
     pub fn seek(&self, cursor: &mut StockCursor, step: usize, fraction: f64) {
+        self.advance(cursor, step, fraction, usize::MAX);
+    }
+
+    /// [`Cutting::seek`] that computes about `budget` rays at most (an animation frame's share;
+    /// a cut may stop between two rows and go on in the next call): returns whether `cursor`
+    /// reached the stock asked for. A cursor past the target starts over from the nearest
+    /// checkpoint before it; without a budget, so does a cursor so far behind a checkpoint that
+    /// copying it is cheaper than cutting up to it (with one, copying would blow the frame).
+    pub fn advance(&self, cursor: &mut StockCursor, step: usize, fraction: f64, budget: usize) -> bool {
         let target = self.events_until(step, fraction);
-        if target < cursor.applied {
-            let (at, stock) =
-                self.checkpoints.iter().rev().find(|(at, _)| *at <= target).cloned().unwrap_or((0, None));
-            cursor.stock = stock;
-            cursor.applied = at;
+        let past = cursor.applied > target || (cursor.applied == target && cursor.partial.is_some());
+        if let Some((at, stock)) = self.checkpoints.iter().rev().find(|(at, _)| *at <= target)
+            && (past
+                || (budget == usize::MAX
+                    && *at > cursor.applied
+                    && self.work_between(cursor.applied, *at) > CHECKPOINT_COPY_RAYS))
+        {
+            cursor.stock = stock.clone();
+            cursor.applied = *at;
+            cursor.partial = None;
+            cursor.partial_stamps.clear();
             cursor.version += 1;
         }
-        while cursor.applied < target {
-            self.apply(cursor, cursor.applied);
+        let mut spent = 0;
+        while cursor.applied < target && spent < budget {
+            let k = cursor.applied;
+            match (&self.events[k].action, cursor.stock.as_mut()) {
+                (Action::Cut { cutter, axis, from, to, .. }, Some(stock)) => {
+                    let start = cursor.partial.unwrap_or_default();
+                    // A part that may not finish the cut stamps afresh; the whole cut's stamp
+                    // goes on every tile it changed once it is done.
+                    let stamp = Stamp::fresh();
+                    let (r, rest) =
+                        stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, start, budget - spent, stamp);
+                    spent += r.work().max(1);
+                    if r.depth > 0.0 {
+                        cursor.version += 1;
+                    }
+                    cursor.partial_stamps.push(stamp);
+                    cursor.partial = rest;
+                    if rest.is_none() {
+                        stock.restamp(&cursor.partial_stamps, Stamp::done(self.run, k));
+                        cursor.partial_stamps.clear();
+                        cursor.applied += 1;
+                    }
+                }
+                _ => {
+                    self.apply(cursor, k);
+                    spent += 1;
+                }
+            }
         }
+        cursor.applied >= target
     }
 
     /// The stock after step `step` (`None` before a BLK FORM or for a blank without volume).
