@@ -146,14 +146,14 @@ pub struct SceneState {
     pub stock: Option<StockShape>,
 }
 
-/// A stock mesh, shared and compared by identity (a new `Rc` = the stock changed).
-#[derive(Debug, Clone)]
-pub struct StockShape(pub std::rc::Rc<schwenkbar_core::stock::StockMesh>);
-
-impl PartialEq for StockShape {
-    fn eq(&self, other: &Self) -> bool {
-        std::rc::Rc::ptr_eq(&self.0, &other.0)
-    }
+/// The stock to draw: the run's stock and where in it (the renderer cuts and meshes towards
+/// it frame by frame, [`crate::stock::StockRef::mesh_toward`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StockShape {
+    pub stock: crate::stock::StockRef,
+    pub step: usize,
+    /// Of the step's motion, 0…1.
+    pub fraction: f64,
 }
 
 impl Default for SceneState {

@@ -1,31 +1,41 @@
 //! The stock in the 3D view (issue 14): the run's cuts ([`Cutting`]) made once per simulation
 //! when the stock is shown, and the stock's mesh at any step and fraction of that step's motion.
-//! A cursor moves forward by cutting only what is new (back from a checkpoint), and the mesh is
-//! made again only when the stock changed, so an animation frame that cuts nothing costs nothing.
+//! Each animation frame cuts at most [`FRAME_RAYS`] rays towards the tool's position (a cut may
+//! stop between rows and go on in the next frame) and meshes again only the tiles that changed,
+//! so a frame's cost is bounded however big the cut; the view asks for more frames while the
+//! stock is behind. A step back is cut from a checkpoint aside and shown once it is there, so
+//! the view never flashes an older stock.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
 use schwenkbar_core::Program;
-use schwenkbar_core::stock::{Cutting, StockCursor, StockMesh, StockOptions};
+use schwenkbar_core::stock::{Cutting, StockCursor, StockOptions, TiledMesh};
 
 use crate::i18n::Text;
 use crate::run::SimRef;
 
-/// Stages of a block's motion at which the animated stock is cut and meshed again: a new mesh of
-/// Musterprogramm 1's milled face costs about 30 ms natively (320,000 triangles), far more than
-/// a frame, so the stock follows the tool in quarters of the block, not every frame.
-pub const STAGES: f64 = 4.0;
+/// The cutting work of one animation frame, in rays ([`schwenkbar_core::stock::Removal::work`],
+/// meshing included): about 2 ms natively and 4 ms in a release wasm build, half the issue's
+/// 8 ms frame (`scripts/bench.sh`).
+pub const FRAME_RAYS: usize = 6_000;
 
-/// A mesh and the cursor version it shows.
-type Meshed = (u64, Rc<StockMesh>);
+/// What the view shows and where it is going.
+#[derive(Default)]
+struct Shown {
+    /// The stock shown.
+    cursor: StockCursor,
+    /// A step back, cut forward from a checkpoint; shown when it gets there.
+    pending: Option<StockCursor>,
+    tiles: TiledMesh,
+    mesh: Option<Rc<TiledMesh>>,
+}
 
 /// The cuts of one simulation and where the view stands in them.
 pub struct StockView {
     sim: SimRef,
     cutting: Cutting,
-    /// The cursor and the mesh of its stock (with the cursor's version when it was made).
-    at: RefCell<(StockCursor, Option<Meshed>)>,
+    at: RefCell<Shown>,
 }
 
 /// The stock of the current simulation, shared and compared by identity.
@@ -45,15 +55,11 @@ impl std::fmt::Debug for StockRef {
 }
 
 impl StockRef {
-    /// Cuts the whole run of `sim` once (about a second in the browser for Musterprogramm 1).
+    /// Cuts the whole run of `sim` once (the notes and the checkpoints).
     #[must_use]
     pub fn of(sim: &SimRef, program: &Program) -> StockRef {
         let cutting = Cutting::new(program, &sim.0, StockOptions::default());
-        StockRef(Rc::new(StockView {
-            sim: sim.clone(),
-            cutting,
-            at: RefCell::new((StockCursor::default(), None)),
-        }))
+        StockRef(Rc::new(StockView { sim: sim.clone(), cutting, at: RefCell::new(Shown::default()) }))
     }
 
     /// Whether this is the stock of `sim`.
@@ -62,24 +68,36 @@ impl StockRef {
         self.0.sim == *sim
     }
 
-    /// The stock's mesh (W-CS) after `fraction` (0…1) of step `step`'s motion, which it
-    /// follows in [`STAGES`] steps; the same `Rc` as long as the stock did not change. `None`
-    /// before a `BLK FORM`.
-    #[must_use]
-    pub fn mesh_at(&self, step: usize, fraction: f64) -> Option<Rc<StockMesh>> {
-        let mut at = self.0.at.borrow_mut();
-        let (cursor, mesh) = &mut *at;
-        let staged = (fraction.clamp(0.0, 1.0) * STAGES).floor() / STAGES;
-        self.0.cutting.seek(cursor, step, staged);
-        let stock = cursor.stock.as_ref()?;
-        match mesh {
-            Some((version, m)) if *version == cursor.version => Some(m.clone()),
-            _ => {
-                let m = Rc::new(StockMesh::of(stock));
-                *mesh = Some((cursor.version, m.clone()));
-                Some(m)
+    /// The stock's mesh (W-CS, in tiles) on its way to the stock after `fraction` (0…1) of step
+    /// `step`'s motion, cutting about `budget` rays at most ([`FRAME_RAYS`] per frame,
+    /// `usize::MAX` to get there at once); the same `Rc` as long as nothing changed. Also says
+    /// whether the mesh shows that stock (`false`: call again next frame). `None` before a
+    /// `BLK FORM`.
+    pub fn mesh_toward(&self, step: usize, fraction: f64, budget: usize) -> (Option<Rc<TiledMesh>>, bool) {
+        let mut guard = self.0.at.borrow_mut();
+        let at = &mut *guard;
+        let cutting = &self.0.cutting;
+        let fraction = fraction.clamp(0.0, 1.0);
+        let done = if cutting.is_past(&at.cursor, step, fraction) {
+            let pending = at.pending.get_or_insert_with(StockCursor::default);
+            let done = cutting.advance(pending, step, fraction, budget);
+            if done {
+                at.cursor = at.pending.take().unwrap_or_default();
             }
+            done
+        } else {
+            // Forward again (or still): a step back under way is no longer wanted.
+            at.pending = None;
+            cutting.advance(&mut at.cursor, step, fraction, budget)
+        };
+        let Some(stock) = &at.cursor.stock else {
+            at.mesh = None;
+            return (None, done);
+        };
+        if at.tiles.update(stock) > 0 || at.mesh.is_none() {
+            at.mesh = Some(Rc::new(at.tiles.clone()));
         }
+        (at.mesh.clone(), done)
     }
 
     /// What the stock says about step `step` (a rapid into the material), German and English.
@@ -114,8 +132,15 @@ mod tests {
     }
 
     /// Cut faces of a mesh (flag bit 3, `stock::mesh::flag::CUT`), as triangles.
-    fn cut_triangles(m: &StockMesh) -> usize {
-        m.flags.iter().step_by(3).filter(|f| **f & 0b1000 != 0).count()
+    fn cut_triangles(m: &TiledMesh) -> usize {
+        m.tiles().iter().flat_map(|t| t.1.flags.iter().step_by(3)).filter(|f| **f & 0b1000 != 0).count()
+    }
+
+    /// The mesh at once.
+    fn mesh_at(stock: &StockRef, step: usize, fraction: f64) -> Option<Rc<TiledMesh>> {
+        let (mesh, done) = stock.mesh_toward(step, fraction, usize::MAX);
+        assert!(done, "without a budget the stock gets there at once");
+        mesh
     }
 
     #[test]
@@ -124,23 +149,65 @@ mod tests {
         let stock = StockRef::of(&sim, &doc.program);
         assert!(stock.is_for(&sim));
         let (before, after) = (step_of(&doc, &sim, 13) - 1, step_of(&doc, &sim, 13));
-        let m0 = stock.mesh_at(before, 1.0).expect("a blank");
+        let m0 = mesh_at(&stock, before, 1.0).expect("a blank");
         assert_eq!(cut_triangles(&m0), 0, "nothing cut before block 13");
-        assert!(Rc::ptr_eq(&m0, &stock.mesh_at(before, 1.0).expect("same")), "no new mesh");
-        let half = stock.mesh_at(after, 0.6).expect("stock");
-        assert!(Rc::ptr_eq(&half, &stock.mesh_at(after, 0.7).expect("stock")), "same stage, same mesh");
-        let m1 = stock.mesh_at(after, 1.0).expect("stock");
+        assert!(Rc::ptr_eq(&m0, &mesh_at(&stock, before, 1.0).expect("same")), "no new mesh");
+        let half = mesh_at(&stock, after, 0.5).expect("stock");
+        let m1 = mesh_at(&stock, after, 1.0).expect("stock");
         assert!(cut_triangles(&half) > 0 && cut_triangles(&m1) > cut_triangles(&half) / 2);
-        assert!(!Rc::ptr_eq(&m0, &m1));
+        // Only the tiles the second half of the block cut are new meshes.
+        let same = half.tiles().iter().zip(m1.tiles()).filter(|(a, b)| Rc::ptr_eq(&a.1, &b.1)).count();
+        assert!(same > 0 && same < m1.tiles().len(), "{same} of {} tiles kept", m1.tiles().len());
         // Back again: the same stock as before.
-        assert_eq!(*stock.mesh_at(before, 1.0).expect("stock"), *m0);
+        let back = mesh_at(&stock, before, 1.0).expect("stock");
+        assert!(back.tiles().iter().zip(m0.tiles()).all(|(a, b)| a.1 == b.1));
+    }
+
+    /// An animation frame cuts a bounded share; the view is told to come back until the stock
+    /// is there, and a step back keeps showing the stock it had until the older one is ready.
+    #[test]
+    fn frames_cut_a_bounded_share_and_a_step_back_shows_the_old_stock_until_the_new_is_ready() {
+        let (doc, sim) = musterprogramm1();
+        let stock = StockRef::of(&sim, &doc.program);
+        let step13 = step_of(&doc, &sim, 13);
+        let mut frames = 0;
+        let mut last = None;
+        loop {
+            let (mesh, done) = stock.mesh_toward(step13, 1.0, FRAME_RAYS);
+            frames += 1;
+            last = mesh.or(last);
+            if done {
+                break;
+            }
+            assert!(frames < 10_000);
+        }
+        assert!(frames > 5, "block 13 takes several frames at {FRAME_RAYS} rays: {frames}");
+        let full = last.expect("stock");
+        assert!(
+            full.tiles()
+                .iter()
+                .zip(mesh_at(&stock, step13, 1.0).expect("same").tiles())
+                .all(|(a, b)| a.1 == b.1)
+        );
+        // Step back to the middle of block 13: until the stock is cut there, the full one stays.
+        let (first, done) = stock.mesh_toward(step13, 0.5, 2_000);
+        if !done {
+            let first = first.expect("stock");
+            assert!(
+                first.tiles().iter().zip(full.tiles()).all(|(a, b)| a.1 == b.1),
+                "the old stock stays shown"
+            );
+        }
+        while !stock.mesh_toward(step13, 0.5, 2_000).1 {}
+        let half = mesh_at(&stock, step13, 0.5).expect("stock");
+        assert!(cut_triangles(&half) < cut_triangles(&full));
     }
 
     #[test]
     fn the_stock_before_the_blk_form_is_none_and_notes_are_worded_in_both_languages() {
         let (doc, sim) = musterprogramm1();
         let stock = StockRef::of(&sim, &doc.program);
-        assert!(stock.mesh_at(0, 1.0).is_none(), "BEGIN PGM: no blank yet");
+        assert!(mesh_at(&stock, 0, 1.0).is_none(), "BEGIN PGM: no blank yet");
         let (p, _) = schwenkbar_core::parse(
             "0 BEGIN PGM R MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 16 Z S5000\n4 L X+50 Y+50 Z+50 R0 FMAX\n5 L Z-5 R0 FMAX\n6 END PGM R MM\n",
         );

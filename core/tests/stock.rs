@@ -4,7 +4,9 @@
 use glam::DVec3;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
-use schwenkbar_core::stock::{Cutting, Stock, StockCursor, StockMesh, StockNoteKind, StockOptions, TiledMesh};
+use schwenkbar_core::stock::{
+    Cutting, Stock, StockCursor, StockMesh, StockNoteKind, StockOptions, TiledMesh,
+};
 use schwenkbar_core::{Program, parse};
 
 fn run(src: &str, options: StockOptions) -> (Program, Simulation, Cutting) {
@@ -281,7 +283,8 @@ fn the_tiled_mesh_always_equals_the_mesh_made_from_scratch() {
     let (mut checked, mut reused) = (0, 0);
     let step13 = sim.step_of_block(13).expect("block 13");
     let last = sim.len() - 1;
-    for (step, fraction) in [(2, 1.0), (step13, 0.3), (step13, 0.7), (last, 1.0), (step13, 0.5), (last, 1.0)] {
+    for (step, fraction) in [(2, 1.0), (step13, 0.3), (step13, 0.7), (last, 1.0), (step13, 0.5), (last, 1.0)]
+    {
         loop {
             let done = c.advance(&mut cursor, step, fraction, 3_000);
             if let Some(stock) = &cursor.stock {

@@ -173,7 +173,8 @@ impl StockMesh {
         let (a, b) = others(d);
         let raw = if rect.negative { stock.min[d] } else { stock.max[d] };
         let cut = (rect.value - raw).abs() > MERGE;
-        let flags = d as u8 | if rect.negative { flag::NEGATIVE } else { 0 } | if cut { flag::CUT } else { 0 };
+        let flags =
+            d as u8 | if rect.negative { flag::NEGATIVE } else { 0 } | if cut { flag::CUT } else { 0 };
         let cell = |k: usize, i: usize| stock.min[k] + i as f64 * stock.h[k];
         let (a0, a1) = (cell(a, rect.start), cell(a, rect.end));
         let (b0, b1) = (cell(b, rect.row), cell(b, end_row));
@@ -186,7 +187,8 @@ impl StockMesh {
         };
         // Counter-clockwise seen from outside: e_a × e_b = e_d, so (a, b) order faces +d.
         let (p00, p10, p11, p01) = (at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1));
-        let tris = if rect.negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
+        let tris =
+            if rect.negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
         self.positions.extend_from_slice(&tris);
         self.flags.extend_from_slice(&[flags; 6]);
     }

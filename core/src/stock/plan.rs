@@ -324,7 +324,8 @@ impl Cutting {
             Action::Cut { cutter, axis, from, to, .. } => {
                 let Some(stock) = cursor.stock.as_mut() else { return Applied::Removed(Removal::default()) };
                 let whole = (RowAt::default(), usize::MAX, Stamp::done(self.run, k));
-                let (r, _) = stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, whole.0, whole.1, whole.2);
+                let (r, _) =
+                    stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, whole.0, whole.1, whole.2);
                 if r.depth > 0.0 {
                     cursor.version += 1;
                 }
@@ -358,14 +359,16 @@ impl Cutting {
     /// [`Cutting::seek`] that computes about `budget` rays at most (an animation frame's share;
     /// a cut may stop between two rows and go on in the next call): returns whether `cursor`
     /// reached the stock asked for. A cursor past the target starts over from the nearest
-    /// checkpoint before it; without a budget, so does a cursor so far behind a checkpoint that
-    /// copying it is cheaper than cutting up to it (with one, copying would blow the frame).
+    /// checkpoint before it; so does a cursor so far behind a checkpoint that copying it is
+    /// cheaper than cutting up to it, unless a budget is given (copying would blow the frame)
+    /// and the cursor already holds a stock.
     pub fn advance(&self, cursor: &mut StockCursor, step: usize, fraction: f64, budget: usize) -> bool {
         let target = self.events_until(step, fraction);
-        let past = cursor.applied > target || (cursor.applied == target && cursor.partial.is_some());
+        let past = self.is_past(cursor, step, fraction);
+        let fresh = cursor.applied == 0 && cursor.stock.is_none();
         if let Some((at, stock)) = self.checkpoints.iter().rev().find(|(at, _)| *at <= target)
             && (past
-                || (budget == usize::MAX
+                || ((budget == usize::MAX || fresh)
                     && *at > cursor.applied
                     && self.work_between(cursor.applied, *at) > CHECKPOINT_COPY_RAYS))
         {
@@ -384,8 +387,15 @@ impl Cutting {
                     // A part that may not finish the cut stamps afresh; the whole cut's stamp
                     // goes on every tile it changed once it is done.
                     let stamp = Stamp::fresh();
-                    let (r, rest) =
-                        stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, start, budget - spent, stamp);
+                    let (r, rest) = stock.cut_part(
+                        &self.cutters[*cutter],
+                        *axis,
+                        *from,
+                        *to,
+                        start,
+                        budget - spent,
+                        stamp,
+                    );
                     spent += r.work().max(1);
                     if r.depth > 0.0 {
                         cursor.version += 1;
@@ -405,6 +415,14 @@ impl Cutting {
             }
         }
         cursor.applied >= target
+    }
+
+    /// Whether `cursor` has cut more than the stock after `fraction` of step `step` holds (it
+    /// has to go back to a checkpoint to get there).
+    #[must_use]
+    pub fn is_past(&self, cursor: &StockCursor, step: usize, fraction: f64) -> bool {
+        let target = self.events_until(step, fraction);
+        cursor.applied > target || (cursor.applied == target && cursor.partial.is_some())
     }
 
     /// The stock after step `step` (`None` before a BLK FORM or for a blank without volume).

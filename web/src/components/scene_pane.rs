@@ -117,7 +117,11 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             if props.ghost.is_some() {
                 scene.ghost = props.ghost;
             }
-            scene.stock = props.stock.as_ref().and_then(|st| st.mesh_at(s.step, *fraction)).map(StockShape);
+            scene.stock = props.stock.as_ref().map(|st| StockShape {
+                stock: st.clone(),
+                step: s.step,
+                fraction: *fraction,
+            });
             Some(Rc::new(scene))
         }
         _ => None,

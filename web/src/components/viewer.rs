@@ -130,7 +130,8 @@ impl Viewer {
         };
         match result {
             Ok(mut labels) => {
-                self.dirty = false;
+                // The stock may still be cutting its way to this step: paint on until it is there.
+                self.dirty = renderer.wants_frame();
                 self.paints += 1;
                 spread_labels(&mut labels);
                 self.place_labels(&labels);

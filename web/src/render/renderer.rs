@@ -15,6 +15,9 @@ use super::stock::{self, CUT};
 use super::toolpath::{self, PathPoint};
 use super::triads;
 use schwenkbar_app::scene::Scene;
+use schwenkbar_app::stock::FRAME_RAYS;
+use schwenkbar_core::stock::StockMesh;
+use std::rc::Rc;
 
 /// Background of the view (the control's dark graphics area).
 pub const BACKGROUND: [f32; 3] = [0.11, 0.15, 0.20];
@@ -49,8 +52,17 @@ struct Gpu {
     line_mvp: Option<WebGlUniformLocation>,
     shapes: Vec<GpuMesh>,
     toolpath: Option<GpuLines>,
-    /// The stock uploaded: its triangles, how many vertices are raw, and the total.
-    stock: Option<(GpuTriangles, usize, usize)>,
+    /// The stock uploaded, tile by tile ([`schwenkbar_core::stock::TiledMesh`]).
+    stock: Vec<StockTile>,
+}
+
+/// One tile of the stock on the GPU: the mesh it was made from (a new `Rc` = a changed tile),
+/// its triangles, how many vertices are the raw blank's (drawn first) and the total.
+struct StockTile {
+    mesh: Rc<StockMesh>,
+    tris: GpuTriangles,
+    raw: usize,
+    all: usize,
 }
 
 impl Gpu {
@@ -68,7 +80,7 @@ impl Gpu {
             shapes.push(GpuMesh::upload(gl, &unit_mesh(s))?);
         }
         let toolpath = if path.vertices.is_empty() { None } else { Some(GpuLines::upload(gl, path)?) };
-        Ok(Gpu { lit, lit_u, line, line_mvp, shapes, toolpath, stock: None })
+        Ok(Gpu { lit, lit_u, line, line_mvp, shapes, toolpath, stock: Vec::new() })
     }
 }
 
@@ -91,10 +103,10 @@ pub struct Renderer {
     gpu: Option<Gpu>,
     /// The toolpath in CPU memory, to upload again after a context loss.
     path: Lines,
-    /// The stock mesh uploaded (compared by pointer: a new `Rc` is a changed stock).
-    stock: Option<std::rc::Rc<schwenkbar_core::stock::StockMesh>>,
     /// Where the stock is drawn this frame (W-CS on the table as it stands), if at all.
     stock_model: Option<DAffine3>,
+    /// The stock drawn is still behind the one asked for: paint another frame.
+    stock_behind: bool,
 }
 
 /// The WebGL2 context of a canvas, with multisampling asked for (the browser may ignore it).
@@ -115,7 +127,14 @@ impl Renderer {
         let gl = context(canvas)?;
         let path = Lines::default();
         let gpu = Gpu::new(&gl, &path)?;
-        Ok(Renderer { gl, canvas: canvas.clone(), gpu: Some(gpu), path, stock: None, stock_model: None })
+        Ok(Renderer {
+            gl,
+            canvas: canvas.clone(),
+            gpu: Some(gpu),
+            path,
+            stock_model: None,
+            stock_behind: false,
+        })
     }
 
     /// The GL context (for tests and pixel probes).
@@ -142,6 +161,13 @@ impl Renderer {
         Ok(())
     }
 
+    /// Whether the stock drawn is still behind the one asked for (the view paints again next
+    /// frame, and the stock catches up a frame's share at a time).
+    #[must_use]
+    pub fn wants_frame(&self) -> bool {
+        self.stock_behind
+    }
+
     /// Forgets the GL objects of a lost context (they are invalid anyway).
     pub fn lost(&mut self) {
         self.gpu = None;
@@ -151,7 +177,6 @@ impl Renderer {
     pub fn restore(&mut self) -> Result<(), RenderError> {
         self.gpu = None;
         self.gpu = Some(Gpu::new(&self.gl, &self.path)?);
-        self.stock = None;
         Ok(())
     }
 
@@ -177,15 +202,33 @@ impl Renderer {
         let wcs = DAffine3::from_mat3_translation(scene.state.wcs.rot, scene.state.wcs.origin);
         let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
         self.stock_model = None;
+        self.stock_behind = false;
         if let (Some(shape), Some(gpu)) = (&s.stock, &mut self.gpu) {
-            if !self.stock.as_ref().is_some_and(|m| std::rc::Rc::ptr_eq(m, &shape.0)) {
-                // A new stock: one upload (the mesh is made again only when the stock changed).
-                gpu.stock = None;
-                self.stock = Some(shape.0.clone());
-                let (vertices, raw) = stock::vertices(&shape.0);
-                gpu.stock = Some((GpuTriangles::upload(&self.gl, &vertices)?, raw, vertices.len() / 6));
+            // This frame's share of cutting towards the stock asked for; only changed tiles are
+            // meshed and uploaded again.
+            let (mesh, done) = shape.stock.mesh_toward(shape.step, shape.fraction, FRAME_RAYS);
+            self.stock_behind = !done;
+            let tiles = mesh.as_ref().map_or(&[][..], |m| m.tiles());
+            gpu.stock.truncate(tiles.len());
+            for (k, (_, tile)) in tiles.iter().enumerate() {
+                if gpu.stock.get(k).is_some_and(|t| Rc::ptr_eq(&t.mesh, tile)) {
+                    continue;
+                }
+                let (vertices, raw) = stock::vertices(tile);
+                let up = StockTile {
+                    mesh: tile.clone(),
+                    tris: GpuTriangles::upload(&self.gl, &vertices)?,
+                    raw,
+                    all: vertices.len() / 6,
+                };
+                match gpu.stock.get_mut(k) {
+                    Some(t) => *t = up,
+                    None => gpu.stock.push(up),
+                }
             }
-            self.stock_model = Some(path.0);
+            if mesh.is_some() {
+                self.stock_model = Some(path.0);
+            }
         }
         self.paint_list(&list, camera, Some(path))
     }
@@ -221,12 +264,16 @@ impl Renderer {
         gl.use_program(Some(&gpu.lit.program));
         gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.projection.as_ref(), false, &proj.to_cols_array());
         draw_pass(gl, gpu, list, Pass::Opaque, &view);
-        if let (Some((tris, raw, all)), Some(model)) = (&gpu.stock, stock_model) {
+        if let Some(model) = stock_model {
             let mv = view * mat4(&model);
             gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.model_view.as_ref(), false, &mv.to_cols_array());
-            for (colour, first, count) in [(BLANK, 0, *raw), (CUT, *raw, all - raw)] {
-                gl.uniform4f(gpu.lit_u.colour.as_ref(), colour[0], colour[1], colour[2], 1.0);
-                tris.draw(first, count);
+            gl.uniform4f(gpu.lit_u.colour.as_ref(), BLANK[0], BLANK[1], BLANK[2], 1.0);
+            for t in &gpu.stock {
+                t.tris.draw(0, t.raw);
+            }
+            gl.uniform4f(gpu.lit_u.colour.as_ref(), CUT[0], CUT[1], CUT[2], 1.0);
+            for t in &gpu.stock {
+                t.tris.draw(t.raw, t.all - t.raw);
             }
         }
 
