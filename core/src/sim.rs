@@ -56,11 +56,11 @@
 //! interpreter every [`SimOptions::checkpoint_interval`] blocks; [`Simulation::state_at`]
 //! re-runs from the nearest checkpoint, so any step is at most one interval away.
 
+pub mod arc;
 mod cycles;
 mod error;
 pub mod geometry;
 mod interp;
-mod jumps;
 pub mod segment;
 pub mod tools;
 pub mod transform;
@@ -78,7 +78,7 @@ use crate::solve::Explanation;
 
 pub use error::{SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
-pub use segment::{MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
+pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
 pub use transform::{ActiveTransform, Level, Transforms};
 
 use interp::{Interp, Rec};
