@@ -7,7 +7,8 @@ use std::fmt::Write as _;
 
 use crate::ast::{
     ApprDep, AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
-    OldCycleWord, PatternItem, PatternKey, PatternKind, PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
+    OldCycleWord, PatternItem, PatternKey, PatternKind, PolarWord, Program, RadiusComp, ToolCall, ToolRef,
+    Unit,
 };
 use crate::plane::{
     Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
@@ -414,8 +415,9 @@ fn pattern_item(out: &mut String, item: &PatternItem) {
         out.push_str(key.as_str());
         // Counts, the pitch-circle step and a circle's diameter are written without sign, as in
         // the manual's examples (`NUM8`, `STEP30`, `D80`); positions and angles with it.
-        let unsigned = matches!(key, PatternKey::Num | PatternKey::NumX | PatternKey::NumY | PatternKey::Step)
-            || (*key == PatternKey::D && matches!(item.kind, PatternKind::Circ | PatternKind::PitchCirc));
+        let unsigned =
+            matches!(key, PatternKey::Num | PatternKey::NumX | PatternKey::NumY | PatternKey::Step)
+                || (*key == PatternKey::D && matches!(item.kind, PatternKind::Circ | PatternKind::PitchCirc));
         if unsigned { plain(out, *v) } else { value(out, *v) }
     }
     out.push(')');

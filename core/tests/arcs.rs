@@ -142,7 +142,12 @@ fn arcs_after_plane_spatial_lie_in_the_tilted_plane() {
             let seg = &s.segments[0];
             for f in [0.0, 0.3, 0.5, 1.0] {
                 let want = spatial(a, b, c, on_circle('Z', (0.0, 0.0), 20.0, from + f * sweep, 5.0));
-                assert_close!(kin.tip_wcs(&seg.axes_at(f)), want, TOL, "SPA{a} SPB{b} SPC{c} block {number} at {f}");
+                assert_close!(
+                    kin.tip_wcs(&seg.axes_at(f)),
+                    want,
+                    TOL,
+                    "SPA{a} SPB{b} SPC{c} block {number} at {f}"
+                );
             }
         }
     }
@@ -221,7 +226,12 @@ fn ct_continues_tangentially_from_the_line_before() {
     let (p, m, sim) = run(&src);
     let s = after(&p, &sim, 5);
     for f in [0.0, 0.5, 1.0] {
-        assert_close!(ics(&m, &s, f), on_circle('Z', (0.0, 20.0), 20.0, -90.0 + 90.0 * f, 5.0), TOL, "at {f}");
+        assert_close!(
+            ics(&m, &s, f),
+            on_circle('Z', (0.0, 20.0), 20.0, -90.0 + 90.0 * f, 5.0),
+            TOL,
+            "at {f}"
+        );
     }
 }
 
@@ -230,7 +240,14 @@ fn rnd_and_chf_at_a_right_angle_corner() {
     // Corner (50,0) between +X and +Y. RND R5: tangent points P ∓ r·tan(45°)·d = (45,0),
     // (50,5), centre (45,5). CHF 5: the same points joined by a straight line.
     for (corner, mid) in [
-        ("RND R5", DVec3::new(45.0 + 5.0 * (-45f64).to_radians().cos(), 5.0 + 5.0 * (-45f64).to_radians().sin(), 0.0)),
+        (
+            "RND R5",
+            DVec3::new(
+                45.0 + 5.0 * (-45f64).to_radians().cos(),
+                5.0 + 5.0 * (-45f64).to_radians().sin(),
+                0.0,
+            ),
+        ),
         ("CHF 5", DVec3::new(47.5, 2.5, 0.0)),
     ] {
         let src = program(
@@ -252,7 +269,10 @@ fn rnd_and_chf_at_a_general_corner() {
     // Corner (50,0) between d1 = +X and d2 = (−0.6, 0.8): deflection α with cos α = −0.6, so
     // tan(α/2) = 2. RND R10: T1 = (50 − 20, 0), T2 = (50,0) + 20·d2 = (38,16), centre (30,10).
     // CHF 10: T1 = (40,0), T2 = (44,8).
-    let cases = [("RND R10", DVec3::new(30.0, 0.0, 0.0), DVec3::new(38.0, 16.0, 0.0)), ("CHF 10", DVec3::new(40.0, 0.0, 0.0), DVec3::new(44.0, 8.0, 0.0))];
+    let cases = [
+        ("RND R10", DVec3::new(30.0, 0.0, 0.0), DVec3::new(38.0, 16.0, 0.0)),
+        ("CHF 10", DVec3::new(40.0, 0.0, 0.0), DVec3::new(44.0, 8.0, 0.0)),
+    ];
     for (corner, t1, t2) in cases {
         let src = program(
             'Z',
@@ -265,7 +285,12 @@ fn rnd_and_chf_at_a_general_corner() {
         assert_close!(s.tip_ics, t2, TOL, "{corner} T2");
         if corner.starts_with("RND") {
             for f in [0.25, 0.5, 0.75] {
-                assert_close!(ics(&m, &s, f).distance(DVec3::new(30.0, 10.0, 0.0)), 10.0, TOL, "{corner} radius at {f}");
+                assert_close!(
+                    ics(&m, &s, f).distance(DVec3::new(30.0, 10.0, 0.0)),
+                    10.0,
+                    TOL,
+                    "{corner} radius at {f}"
+                );
             }
         }
     }
@@ -311,20 +336,32 @@ fn error_of(src: &str) -> (u32, SimErrorCode) {
 fn geometry_errors_stop_at_their_block() {
     let (n, code) = error_of(&program('Z', &["L X+10 Y+0 Z+10 R0 FMAX".into(), "C X+0 Y+10 DR+".into()]));
     assert_eq!((n, code), (4, SimErrorCode::NoCircleCentre { word: "C" }));
-    let (n, code) = error_of(&program('Z', &["L X+0 Y+0 Z+10 R0 FMAX".into(), "CR X+50 Y+0 R+20 DR+".into()]));
+    let (n, code) =
+        error_of(&program('Z', &["L X+0 Y+0 Z+10 R0 FMAX".into(), "CR X+50 Y+0 R+20 DR+".into()]));
     assert_eq!((n, code), (4, SimErrorCode::RadiusTooSmall { radius: 20.0, chord: 50.0 }));
     let (n, code) = error_of(&program('Z', &["CT X+10 Y+10".into()]));
     assert_eq!((n, code), (3, SimErrorCode::NoTangent));
     let (n, code) = error_of(&program('Z', &["LP PR+10 PA+0".into()]));
     assert_eq!((n, code), (3, SimErrorCode::NoCircleCentre { word: "LP" }));
-    let (n, code) = error_of(&program('Z', &["L X+10 Y+0 Z+10 R0 FMAX".into(), "CC X+0 Y+0".into(), "C X+0 Y+15 DR+".into()]));
+    let (n, code) = error_of(&program(
+        'Z',
+        &["L X+10 Y+0 Z+10 R0 FMAX".into(), "CC X+0 Y+0".into(), "C X+0 Y+15 DR+".into()],
+    ));
     assert!(n == 5 && matches!(code, SimErrorCode::CircleEnd { .. }), "{n} {code:?}");
     // RND too big for the line before it, and RND with nothing after it.
-    let (n, code) = error_of(&program('Z', &["L X+0 Y+0 Z+0 R0 FMAX".into(), "L X+5 F500".into(), "RND R10".into(), "L Y+50".into()]));
+    let (n, code) = error_of(&program(
+        'Z',
+        &["L X+0 Y+0 Z+0 R0 FMAX".into(), "L X+5 F500".into(), "RND R10".into(), "L Y+50".into()],
+    ));
     assert_eq!((n, code), (5, SimErrorCode::CornerTooLarge { word: "RND", value: 10.0 }));
-    let (n, code) = error_of(&program('Z', &["L X+0 Y+0 Z+0 R0 FMAX".into(), "L X+50 F500".into(), "CHF 5".into(), "M30".into()]));
+    let (n, code) = error_of(&program(
+        'Z',
+        &["L X+0 Y+0 Z+0 R0 FMAX".into(), "L X+50 F500".into(), "CHF 5".into(), "M30".into()],
+    ));
     assert_eq!((n, code), (5, SimErrorCode::CornerWithoutContour { word: "CHF" }));
-    for code in [SimErrorCode::NoCircleCentre { word: "C" }, SimErrorCode::NoTangent, SimErrorCode::ChamferNeedsLines] {
+    for code in
+        [SimErrorCode::NoCircleCentre { word: "C" }, SimErrorCode::NoTangent, SimErrorCode::ChamferNeedsLines]
+    {
         let (m, d) = (code.message(), code.detail());
         assert!(!m.de.is_empty() && !m.en.is_empty() && m.de != m.en && d.de != d.en, "{code:?}");
     }
@@ -332,8 +369,9 @@ fn geometry_errors_stop_at_their_block() {
 
 #[test]
 fn fn_jumps_loop_and_fn_maths_compute() {
-    let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/fixtures/sim/fn_math_loop.h"))
-        .expect("fixture");
+    let src =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/fixtures/sim/fn_math_loop.h"))
+            .expect("fixture");
     let (p, _, sim) = run(&src);
     assert!(sim.error.is_none(), "{:?}", sim.error);
     let idx = p.blocks.iter().position(|b| b.number == Some(10)).expect("block 10") as u32;
@@ -352,15 +390,19 @@ fn fn_jumps_loop_and_fn_maths_compute() {
 
 #[test]
 fn fn_blocks_are_typed_nodes() {
-    let (p, d) = parse("1 FN 12: IF +Q25 LT +Q35 GOTO LBL 2\n2 FN 4: Q4 = +8 DIV +Q2\n3 FN 5: Q20 = SQRT 4\n");
+    let (p, d) =
+        parse("1 FN 12: IF +Q25 LT +Q35 GOTO LBL 2\n2 FN 4: Q4 = +8 DIV +Q2\n3 FN 5: Q20 = SQRT 4\n");
     assert!(d.is_empty(), "{d:?}");
     assert!(p.blocks.iter().all(|b| matches!(b.body, BlockBody::FnJump(_) | BlockBody::FnMath(_))));
 }
 
 #[test]
 fn every_prefix_of_the_new_blocks_parses_without_panic() {
-    let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/fixtures/ok/contour_manual.h"))
-        .expect("fixture");
+    let src = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../tests/fixtures/ok/contour_manual.h"
+    ))
+    .expect("fixture");
     for line in src.lines() {
         for (i, _) in line.char_indices() {
             let _ = parse(&line[..i]);

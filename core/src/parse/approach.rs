@@ -59,7 +59,11 @@ pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockB
         match axis_word(i) {
             Ok((r, word)) => {
                 if cx.axes.iter().any(|a| a.axis == word.axis) {
-                    cx.error(at, at.len() - r.len(), DiagCode::Duplicate { word: word.axis.as_str().to_owned() });
+                    cx.error(
+                        at,
+                        at.len() - r.len(),
+                        DiagCode::Duplicate { word: word.axis.as_str().to_owned() },
+                    );
                     return None;
                 }
                 w.first_axis.get_or_insert(at);

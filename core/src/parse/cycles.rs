@@ -89,11 +89,18 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
                     cx.m.push(m);
                     i = sp(r);
                 }
-                Err(_) => return cx.invalid(i, Some(Expected::Nc(if pat.is_some() { "F|M" } else { "PAT|POS|M" }))),
+                Err(_) => {
+                    return cx
+                        .invalid(i, Some(Expected::Nc(if pat.is_some() { "F|M" } else { "PAT|POS|M" })));
+                }
             }
         }
         let m = cx.take_m();
-        return Some(if pat.is_some() { BlockBody::CyclCallPat { feed: f, m } } else { BlockBody::CyclCall { m } });
+        return Some(if pat.is_some() {
+            BlockBody::CyclCallPat { feed: f, m }
+        } else {
+            BlockBody::CyclCall { m }
+        });
     }
     let Some(rest) = keyword(rest, "DEF").map(sp) else {
         return cx.invalid(rest, Some(Expected::Nc("DEF|CALL")));

@@ -31,7 +31,9 @@ pub(super) fn pattern_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             Ok(ok) => ok,
             Err(e) => return cx.fail(e),
         };
-        let Some(mut r) = sp(r).strip_prefix('(').map(sp) else { return cx.invalid(sp(r), Some(Expected::Nc("("))) };
+        let Some(mut r) = sp(r).strip_prefix('(').map(sp) else {
+            return cx.invalid(sp(r), Some(Expected::Nc("(")));
+        };
         let mut words = Vec::with_capacity(kind.keys().len());
         loop {
             if let Some(after) = r.strip_prefix(')') {
@@ -44,7 +46,8 @@ pub(super) fn pattern_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             let Some((after, key)) =
                 PatternKey::BY_LENGTH.into_iter().find_map(|k| r.strip_prefix(k.as_str()).map(|a| (a, k)))
             else {
-                return cx.invalid(r, Some(Expected::Nc("X|Y|Z|D|DX|DY|NUM|NUMX|NUMY|ROT|ROTX|ROTY|START|STEP")));
+                return cx
+                    .invalid(r, Some(Expected::Nc("X|Y|Z|D|DX|DY|NUM|NUMX|NUMY|ROT|ROTX|ROTY|START|STEP")));
             };
             let word = &r[..key.as_str().len()];
             if !kind.keys().contains(&key) {

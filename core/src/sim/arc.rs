@@ -108,7 +108,10 @@ pub fn directed(plane: &WorkPlane, a: DVec3, b: DVec3, dir: f64) -> f64 {
 pub enum Shape {
     Line,
     /// `centre` has the start's tool-axis coordinate; `sweep` in radians, positive = DR+.
-    Arc { centre: DVec3, sweep: f64 },
+    Arc {
+        centre: DVec3,
+        sweep: f64,
+    },
 }
 
 /// One contour element from `start` to `end` (I-CS).
@@ -222,7 +225,10 @@ impl Elem {
             Shape::Arc { centre, sweep } => Elem {
                 start: from,
                 end: self.end,
-                shape: Shape::Arc { centre: plane.with_axial(centre, plane.axial(from)), sweep: sweep * (1.0 - f) },
+                shape: Shape::Arc {
+                    centre: plane.with_axial(centre, plane.axial(from)),
+                    sweep: sweep * (1.0 - f),
+                },
             },
         }
     }
@@ -232,7 +238,9 @@ impl Elem {
     pub fn head_to(&self, f: f64, to: DVec3) -> Elem {
         match self.shape {
             Shape::Line => Elem::line(self.start, to),
-            Shape::Arc { centre, sweep } => Elem { start: self.start, end: to, shape: Shape::Arc { centre, sweep: sweep * f } },
+            Shape::Arc { centre, sweep } => {
+                Elem { start: self.start, end: to, shape: Shape::Arc { centre, sweep: sweep * f } }
+            }
         }
     }
 }
@@ -242,7 +250,14 @@ impl Elem {
 ///
 /// # Errors
 /// [`GeoError::EndNotOnCircle`], [`GeoError::Degenerate`] (start on the centre).
-pub fn arc_c(plane: &WorkPlane, start: DVec3, end: DVec3, cc: DVec3, dir: f64, tolerance: f64) -> Result<Elem, GeoError> {
+pub fn arc_c(
+    plane: &WorkPlane,
+    start: DVec3,
+    end: DVec3,
+    cc: DVec3,
+    dir: f64,
+    tolerance: f64,
+) -> Result<Elem, GeoError> {
     let centre = plane.with_axial(cc, plane.axial(start));
     let (rs, re) = (plane.planar(start - centre).length(), plane.planar(end - centre).length());
     if rs < LENGTH_EPS {
@@ -263,7 +278,14 @@ pub fn arc_c(plane: &WorkPlane, start: DVec3, end: DVec3, cc: DVec3, dir: f64, t
 /// # Errors
 /// [`GeoError::RadiusTooSmall`] when d > 2R (beyond `tolerance`), [`GeoError::Degenerate`] when
 /// start = end.
-pub fn arc_cr(plane: &WorkPlane, start: DVec3, end: DVec3, r: f64, dir: f64, tolerance: f64) -> Result<Elem, GeoError> {
+pub fn arc_cr(
+    plane: &WorkPlane,
+    start: DVec3,
+    end: DVec3,
+    r: f64,
+    dir: f64,
+    tolerance: f64,
+) -> Result<Elem, GeoError> {
     let chord = plane.planar(end - start);
     let d = chord.length();
     let radius = r.abs();
@@ -311,7 +333,13 @@ pub fn arc_ct(plane: &WorkPlane, start: DVec3, end: DVec3, t: DVec3) -> Result<E
 ///
 /// # Errors
 /// [`GeoError::Degenerate`] when the start is on the pole.
-pub fn arc_cp(plane: &WorkPlane, start: DVec3, pole: DVec3, sweep: f64, axial_end: f64) -> Result<Elem, GeoError> {
+pub fn arc_cp(
+    plane: &WorkPlane,
+    start: DVec3,
+    pole: DVec3,
+    sweep: f64,
+    axial_end: f64,
+) -> Result<Elem, GeoError> {
     let centre = plane.with_axial(pole, plane.axial(start));
     let r = plane.planar(start - centre);
     if r.length() < LENGTH_EPS || sweep.abs() < ANGLE_EPS {
@@ -384,7 +412,8 @@ fn intersect(plane: &WorkPlane, a: Curve, b: Curve) -> Vec<DVec3> {
             let t = (p2 - p1).cross(d2).dot(plane.normal) / den;
             vec![p1 + t * d1]
         }
-        (Curve::Line { p, d }, Curve::Circle { c, r, .. }) | (Curve::Circle { c, r, .. }, Curve::Line { p, d }) => {
+        (Curve::Line { p, d }, Curve::Circle { c, r, .. })
+        | (Curve::Circle { c, r, .. }, Curve::Line { p, d }) => {
             // |p + t d − c|² = r²  →  t² + 2 t (d·(p−c)) + |p−c|² − r² = 0.
             let m = p - c;
             let b = d.dot(m);
@@ -427,7 +456,12 @@ fn intersect(plane: &WorkPlane, a: Curve, b: Curve) -> Vec<DVec3> {
 ///
 /// # Errors
 /// [`GeoError::NoCorner`], [`GeoError::CornerTooLarge`], [`GeoError::ChamferNeedsLines`].
-pub fn corner(plane: &WorkPlane, e1: &Elem, e2: &Elem, kind: CornerKind) -> Result<(Elem, Elem, f64), GeoError> {
+pub fn corner(
+    plane: &WorkPlane,
+    e1: &Elem,
+    e2: &Elem,
+    kind: CornerKind,
+) -> Result<(Elem, Elem, f64), GeoError> {
     let p = e1.end;
     let axial = plane.axial(p);
     let (Some(t1), Some(t2)) = (e1.tangent(plane, true), e2.tangent(plane, false)) else {
@@ -462,7 +496,10 @@ pub fn corner(plane: &WorkPlane, e1: &Elem, e2: &Elem, kind: CornerKind) -> Resu
                 .into_iter()
                 .min_by(|x, y| x.distance_squared(pp).total_cmp(&y.distance_squared(pp)))
                 .ok_or(GeoError::CornerTooLarge)?;
-            let (a, b) = (plane.with_axial(c1.foot(plane, centre), axial), plane.with_axial(c2.foot(plane, centre), axial));
+            let (a, b) = (
+                plane.with_axial(c1.foot(plane, centre), axial),
+                plane.with_axial(c2.foot(plane, centre), axial),
+            );
             let centre = plane.with_axial(centre, axial);
             let sweep = side * plane.angle(a - centre, b - centre).abs();
             (a, b, Elem { start: a, end: b, shape: Shape::Arc { centre, sweep } })

@@ -114,7 +114,9 @@ impl SimErrorCode {
                 t("Programmlauf abgebrochen: Satzbudget erschöpft", "Run stopped: block budget exhausted")
             }
             SimErrorCode::InvalidBlock => t("Satz fehlerhaft", "Block syntax error"),
-            SimErrorCode::NoCircleCentre { .. } => t("Kreismittelpunkt undefiniert", "Circle center undefined"),
+            SimErrorCode::NoCircleCentre { .. } => {
+                t("Kreismittelpunkt undefiniert", "Circle center undefined")
+            }
             SimErrorCode::CircleEnd { .. } | SimErrorCode::ArcDegenerate { .. } => {
                 t("Kreis-Endposition falsch", "Circle end position incorrect")
             }
@@ -229,7 +231,9 @@ impl SimErrorCode {
                 "CT: the end point lies on the tangent of the preceding element (that would be a straight line)",
             ),
             SimErrorCode::CornerWithoutContour { word } => t(
-                format!("{word} steht zwischen zwei Konturelementen (Gerade oder Kreis) in der Bearbeitungsebene"),
+                format!(
+                    "{word} steht zwischen zwei Konturelementen (Gerade oder Kreis) in der Bearbeitungsebene"
+                ),
                 format!("{word} must stand between two contour elements (line or arc) in the working plane"),
             ),
             SimErrorCode::NoCorner { word } => t(
@@ -237,13 +241,18 @@ impl SimErrorCode {
                 format!("{word}: the two elements join tangentially, there is no corner"),
             ),
             SimErrorCode::CornerTooLarge { word, value } => t(
-                format!("{word} {}: passt nicht auf die angrenzenden Konturelemente", prose(*value, Some(4), Lang::De)),
-                format!("{word} {}: does not fit on the adjoining contour elements", prose(*value, Some(4), Lang::En)),
+                format!(
+                    "{word} {}: passt nicht auf die angrenzenden Konturelemente",
+                    prose(*value, Some(4), Lang::De)
+                ),
+                format!(
+                    "{word} {}: does not fit on the adjoining contour elements",
+                    prose(*value, Some(4), Lang::En)
+                ),
             ),
-            SimErrorCode::ChamferNeedsLines => t(
-                "CHF verbindet nur zwei Geraden",
-                "CHF joins two straight lines only",
-            ),
+            SimErrorCode::ChamferNeedsLines => {
+                t("CHF verbindet nur zwei Geraden", "CHF joins two straight lines only")
+            }
         }
     }
 }

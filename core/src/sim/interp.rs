@@ -337,7 +337,10 @@ impl Interp {
                 let last = self.geom_start.unwrap_or(self.pos_i);
                 self.pole = Some(self.pole_of(&m.axes, last)?);
                 note(&mut rec, || {
-                    Text::new("CC: Kreismittelpunkt/Pol (keine Bewegung)", "CC: circle centre/pole (no motion)")
+                    Text::new(
+                        "CC: Kreismittelpunkt/Pol (keine Bewegung)",
+                        "CC: circle centre/pole (no motion)",
+                    )
                 });
             }
             BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
@@ -356,8 +359,12 @@ impl Interp {
                 let k = a.kind.as_str();
                 note(&mut rec, || {
                     Text::owned(
-                        format!("{w} {k} nicht simuliert: Gerade zum programmierten Punkt, ohne Radiuskorrektur"),
-                        format!("{w} {k} not simulated: straight line to the programmed point, no radius compensation"),
+                        format!(
+                            "{w} {k} nicht simuliert: Gerade zum programmierten Punkt, ohne Radiuskorrektur"
+                        ),
+                        format!(
+                            "{w} {k} not simulated: straight line to the programmed point, no radius compensation"
+                        ),
                     )
                 });
             }

@@ -218,7 +218,8 @@ impl Cutting {
                     // θ ≤ 2·acos(1 − (res/4)/r). A helix rises linearly, so its pieces deviate
                     // from it by the same sagitta.
                     let (r, tolerance) = (arc.radius(), self.options.resolution / 4.0);
-                    let step = if r > tolerance { 2.0 * (1.0 - tolerance / r).acos() } else { std::f64::consts::PI };
+                    let step =
+                        if r > tolerance { 2.0 * (1.0 - tolerance / r).acos() } else { std::f64::consts::PI };
                     let n = ((arc.sweep.abs() / step).ceil() as usize).clamp(1, MAX_SUB_MOVES);
                     let axis = kin.tool_axis_wcs(seg.start.rotary);
                     for i in 0..n {

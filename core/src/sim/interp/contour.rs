@@ -26,7 +26,9 @@ fn sign_of(s: Sign) -> f64 {
 /// The error of a geometry failure at a block of kind `word`.
 fn geo_error(word: &'static str, e: GeoError, value: f64) -> SimErrorCode {
     match e {
-        GeoError::EndNotOnCircle { start_radius, end_radius } => SimErrorCode::CircleEnd { start_radius, end_radius },
+        GeoError::EndNotOnCircle { start_radius, end_radius } => {
+            SimErrorCode::CircleEnd { start_radius, end_radius }
+        }
         GeoError::RadiusTooSmall { radius, chord } => SimErrorCode::RadiusTooSmall { radius, chord },
         GeoError::Degenerate => SimErrorCode::ArcDegenerate { word },
         GeoError::EndOnTangent => SimErrorCode::EndOnTangent,
@@ -96,7 +98,11 @@ impl Interp {
         // The tool-axis coordinate of a Cartesian arc ([`unconfirmed::ARC_TOOL_AXIS_LINEAR`]).
         let arc_end = |m: &Motion| -> R<DVec3> {
             let end = self.target(&m.axes, start)?;
-            Ok(if unconfirmed::ARC_TOOL_AXIS_LINEAR { end } else { plane.with_axial(end, plane.axial(start)) })
+            Ok(if unconfirmed::ARC_TOOL_AXIS_LINEAR {
+                end
+            } else {
+                plane.with_axial(end, plane.axial(start))
+            })
         };
         match body {
             BlockBody::L(line) => {
@@ -108,13 +114,27 @@ impl Interp {
             BlockBody::C(m) => {
                 let cc = need_pole()?;
                 let end = arc_end(m)?;
-                geo(arc::arc_c(&plane, start, end, cc, self.direction(m.direction), unconfirmed::CIRCLE_END_TOLERANCE))
+                geo(arc::arc_c(
+                    &plane,
+                    start,
+                    end,
+                    cc,
+                    self.direction(m.direction),
+                    unconfirmed::CIRCLE_END_TOLERANCE,
+                ))
             }
             BlockBody::Cr(m) => {
                 let Some(r) = m.radius else { return Err(SimErrorCode::ArcDegenerate { word }) };
                 let r = self.value(&r)?;
                 let end = arc_end(m)?;
-                geo(arc::arc_cr(&plane, start, end, r, self.direction(m.direction), unconfirmed::CIRCLE_END_TOLERANCE))
+                geo(arc::arc_cr(
+                    &plane,
+                    start,
+                    end,
+                    r,
+                    self.direction(m.direction),
+                    unconfirmed::CIRCLE_END_TOLERANCE,
+                ))
             }
             BlockBody::Ct(m) => {
                 let t = tangent.ok_or(SimErrorCode::NoTangent)?;
@@ -143,7 +163,11 @@ impl Interp {
                 let sweep = match m.polar_angle {
                     Some(w) if w.incremental => {
                         let ipa = self.value(&w.value)?.to_radians();
-                        if m.direction.is_some() && unconfirmed::CP_IPA_DIRECTION_FROM_DR { dir * ipa.abs() } else { ipa }
+                        if m.direction.is_some() && unconfirmed::CP_IPA_DIRECTION_FROM_DR {
+                            dir * ipa.abs()
+                        } else {
+                            ipa
+                        }
                     }
                     Some(w) => {
                         let pa = self.value(&w.value)?;
@@ -272,7 +296,14 @@ impl Interp {
     }
 
     /// Moves along `elem` (I-CS) with the rotary axes standing, recording the exact path.
-    pub(super) fn follow(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, elem: &Elem, rate: Rate) -> R<()> {
+    pub(super) fn follow(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        elem: &Elem,
+        rate: Rate,
+    ) -> R<()> {
         let plane = self.work_plane();
         let target = self.map.apply(elem.end);
         self.check_linear(cx, target)?;

@@ -98,7 +98,10 @@ impl Interp {
     pub(super) fn call_not_simulated(&mut self, rec: &mut Option<&mut Rec>, word: &'static str, m: &[u32]) {
         self.spindle_m(m);
         note(rec, || {
-            Text::owned(format!("CYCL CALL {word} nicht simuliert"), format!("CYCL CALL {word} not simulated"))
+            Text::owned(
+                format!("CYCL CALL {word} nicht simuliert"),
+                format!("CYCL CALL {word} not simulated"),
+            )
         });
         self.end_m(m);
     }
