@@ -410,3 +410,40 @@ fn every_prefix_of_the_new_blocks_parses_without_panic() {
         }
     }
 }
+
+#[test]
+fn the_contour_fixtures_run_without_errors_on_every_machine() {
+    for name in ["contour_arcs", "polar_helix", "arcs_tilted", "fn_math_loop"] {
+        let path = format!("{}/../tests/fixtures/sim/{name}.h", env!("CARGO_MANIFEST_DIR"));
+        let (p, d) = parse(&std::fs::read_to_string(&path).expect("fixture"));
+        assert!(d.is_empty(), "{name}: {d:?}");
+        for id in ["ac-table", "ba-table", "bc-head-table", "ca-head", "b45-nutating"] {
+            let m = Machine::builtin(id).expect("machine");
+            let sim = simulate(&p, &m, &SimOptions::default());
+            assert!(sim.error.is_none(), "{name} on {id}: {:?}", sim.error);
+        }
+    }
+}
+
+#[test]
+fn the_stock_is_cut_along_the_arc_not_along_its_chords() {
+    use schwenkbar_core::stock::{Cutting, StockOptions};
+    let src = "0 BEGIN PGM S MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
+               3 TOOL CALL 1 Z S1000 F500\n4 L X+80 Y+50 Z+5 R0 FMAX\n5 L Z-5 F300\n6 CC X+50 Y+50\n\
+               7 C X+80 Y+50 DR+\n8 L Z+5 FMAX\n9 END PGM S MM\n";
+    let (p, _, sim) = run(src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let r = sim.state_at(&p, sim.len() - 1).expect("state").tool.radius;
+    let stock = Cutting::new(&p, &sim, StockOptions::default()).final_stock().expect("stock");
+    // An end mill of radius 5 (tool 1). Within 0.6 mm of the swept band's edges (resolution
+    // 0.25 mm): inside cut, outside not, at angles between any two straight pieces; chords
+    // of 45° (sagitta 30·(1 − cos 22.5°) = 2.3 mm) would cut into the island.
+    for deg in [13.0, 37.0, 100.0, 200.0, 333.0] {
+        let at = |radius: f64| on_circle('Z', (50.0, 50.0), radius, deg, -3.0);
+        assert!(!stock.material_at(at(30.0)), "cut on the circle at {deg}°");
+        assert!(!stock.material_at(at(30.0 + r - 0.6)), "cut at the outer edge at {deg}°");
+        assert!(!stock.material_at(at(30.0 - r + 0.6)), "cut at the inner edge at {deg}°");
+        assert!(stock.material_at(at(30.0 + r + 0.6)), "outside stays at {deg}°");
+        assert!(stock.material_at(at(30.0 - r - 0.6)), "the island stays at {deg}°");
+    }
+}
