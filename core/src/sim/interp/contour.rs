@@ -173,8 +173,8 @@ impl Interp {
                         let pa = self.value(&w.value)?;
                         arc::directed(&plane, rel, plane.direction(pa), dir)
                     }
-                    // No angle: a full circle in the direction of rotation.
-                    None => dir * std::f64::consts::TAU,
+                    // The parser refuses a CP without PA/IPA.
+                    None => return Err(SimErrorCode::ArcDegenerate { word }),
                 };
                 let axial = plane.axial(self.target(&m.axes, start)?);
                 geo(arc::arc_cp(&plane, start, pole, sweep, axial))
