@@ -447,3 +447,34 @@ fn the_stock_is_cut_along_the_arc_not_along_its_chords() {
         assert!(stock.material_at(at(30.0 - r - 0.6)), "the island stays at {deg}°");
     }
 }
+
+#[test]
+fn rnd_between_two_arcs_touches_both_circles() {
+    // C counter-clockwise around (0,0) from (50,0) to (0,50), heading −X there; then clockwise
+    // around (50,50), heading +Y: a right turn. The R5 rounding's centre f lies r outside the
+    // first circle on the ray through T1 and r inside the second; T2 is on the second circle.
+    let src = program(
+        'Z',
+        &[
+            "L X+50 Y+0 Z+0 R0 FMAX".into(),
+            "CC X+0 Y+0".into(),
+            "C X+0 Y+50 DR+ F500".into(),
+            "RND R5".into(),
+            "CC X+50 Y+50".into(),
+            "C X+100 Y+50 DR-".into(),
+        ],
+    );
+    let (p, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let c2 = DVec3::new(50.0, 50.0, 0.0);
+    let t1 = after(&p, &sim, 5).tip_ics;
+    assert_close!(t1.length(), 50.0, TOL, "T1 on the first circle");
+    let f = t1 * (55.0 / 50.0);
+    assert_close!(f.distance(c2), 45.0, TOL, "centre r inside the second circle");
+    let s = after(&p, &sim, 6);
+    assert_close!(s.tip_ics.distance(c2), 50.0, TOL, "T2 on the second circle");
+    for x in [0.0, 0.5, 1.0] {
+        assert_close!(ics(&m, &s, x).distance(f), 5.0, TOL, "rounding at {x}");
+    }
+    assert_close!(after(&p, &sim, 8).tip_ics, DVec3::new(100.0, 50.0, 0.0), TOL, "second arc ends");
+}
