@@ -223,7 +223,21 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
             "Zyklusdefinition: wirkt erst beim Aufruf (M99 oder CYCL CALL), außer bei Koordinatentransformationen.",
             "Cycle definition: acts only when called (M99 or CYCL CALL), except coordinate transformations.",
         ),
-        BlockBody::CyclCall { .. } => l.t("Ruft den zuletzt definierten Zyklus auf.", "Calls the last defined cycle."),
+        BlockBody::CyclCall { .. } | BlockBody::CyclCallPat { .. } | BlockBody::CyclCallPos(_) => {
+            l.t("Ruft den zuletzt definierten Zyklus auf.", "Calls the last defined cycle.")
+        }
+        BlockBody::PatternDef(_) => l.t(
+            "Musterdefinition: Bearbeitungspositionen für CYCL CALL PAT in der Bearbeitungsebene.",
+            "Pattern definition: machining positions for CYCL CALL PAT in the working plane.",
+        ),
+        BlockBody::Appr(_) | BlockBody::Dep(_) => l.t(
+            "Anfahren oder Verlassen der Kontur auf einer Geraden oder einem Kreisbogen.",
+            "Approaching or departing the contour on a straight line or an arc.",
+        ),
+        BlockBody::FnJump(_) => l.t(
+            "Bedingter Sprung: ist die Bedingung erfüllt, geht es bei der Marke LBL weiter.",
+            "Conditional jump: if the condition holds, the program continues at the label LBL.",
+        ),
         BlockBody::TransDatum { .. } | BlockBody::TransDatumReset => l.t(
             "Nullpunktverschiebung: vor dem Schwenken verschiebt sie den Ursprung der Bearbeitungsebene (WPL-CS).",
             "Datum shift: before tilting it moves the origin of the working plane (WPL-CS).",
@@ -239,7 +253,7 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
         BlockBody::Lbl(_) | BlockBody::CallLbl { .. } | BlockBody::CallPgm { .. } => {
             l.t("Unterprogramm: Marke oder Aufruf.", "Subprogram: label or call.")
         }
-        BlockBody::QAssign { .. } => l.t("Weist einem Q-Parameter einen Wert zu.", "Assigns a value to a Q parameter."),
+        BlockBody::QAssign { .. } | BlockBody::FnMath(_) => l.t("Weist einem Q-Parameter einen Wert zu.", "Assigns a value to a Q parameter."),
         BlockBody::MFunctions(_) => l.t("Zusatzfunktionen (M).", "Miscellaneous functions (M)."),
         BlockBody::Unknown { .. } => l.t(
             "Ein Satz, den dieser Trainer nicht nachbildet: er wird angezeigt, aber nicht ausgeführt.",

@@ -116,17 +116,23 @@ macro_rules! fixtures {
 }
 
 fixtures! {
+    arcs_tilted: "ac-table";
     axial_mirror: "ac-table";
+    c_without_cc: "ac-table";
     call_lbl: "ac-table";
+    contour_arcs: "ac-table";
+    cr_too_small: "ac-table";
     cycle19_stay: "ac-table";
     datum_then_tilt: "ac-table";
     endless: "ac-table", max_blocks = 25;
     endless_fn9: "ac-table", max_blocks = 25;
     fn_jump_loop: "ac-table";
+    fn_math_loop: "ac-table";
     linear_limit: "ac-table";
     m99_without_cycle: "ac-table";
     mirror_then_tilt: "ac-table";
     old_cycles_7_8_10: "ac-table";
+    polar_helix: "ac-table";
     relativ_chain: "ac-table";
     rotary_limit: "ca-head";
     swivel_move: "ac-table";

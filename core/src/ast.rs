@@ -105,10 +105,23 @@ pub enum BlockBody {
     CycleDef(Box<CycleDef>),
     /// Old-style cycle with sub-numbers: `CYCL DEF 7.0 NULLPUNKT`, `CYCL DEF 7.1 X+10`.
     CycleDefOld(Box<CycleDefOld>),
-    /// `CYCL CALL [M…]`.
+    /// `CYCL CALL [F…] [M…]`.
     CyclCall {
         m: Box<[u32]>,
     },
+    /// `CYCL CALL PAT [F…] [M…]`: the cycle at every point of the last `PATTERN DEF`.
+    CyclCallPat {
+        feed: Option<Feed>,
+        m: Box<[u32]>,
+    },
+    /// `CYCL CALL POS X… Y… Z… [FMAX|F…] [M…]`: the cycle at this position.
+    CyclCallPos(Box<Line>),
+    /// `PATTERN DEF POS1 (…) ROW1 (…) …`: machining positions for `CYCL CALL PAT`.
+    PatternDef(Box<[PatternItem]>),
+    /// `APPR LT|LN|CT|LCT …`: approach the contour.
+    Appr(Box<ApprDep>),
+    /// `DEP LT|LN|CT|LCT …`: depart from the contour.
+    Dep(Box<ApprDep>),
     Plane(Box<PlaneBlock>),
     /// `TRANS DATUM AXIS X… Y… Z…`.
     TransDatum {
@@ -143,6 +156,10 @@ pub enum BlockBody {
         expr: Expr,
         fn0: bool,
     },
+    /// `FN 1..5: Q… = a op b`: the arithmetic functions.
+    FnMath(Box<FnMath>),
+    /// `FN 9..12: IF a EQU|NE|GT|LT b GOTO LBL …`: conditional jumps.
+    FnJump(Box<FnJump>),
     /// A well-formed block of a kind this trainer does not model (kept verbatim, with a warning).
     Unknown {
         text: String,
@@ -259,6 +276,271 @@ pub struct Motion {
     pub comp: Option<RadiusComp>,
     pub feed: Option<Feed>,
     pub m: Box<[u32]>,
+}
+
+/// `FN 1: ADDITION` … `FN 5: SQUARE ROOT` (`FN 4: Q4 = +8 DIV +Q2`, `FN 5: Q20 = SQRT 4`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum FnOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Sqrt,
+}
+
+impl FnOp {
+    /// The FN number.
+    #[must_use]
+    pub fn number(self) -> u32 {
+        match self {
+            FnOp::Add => 1,
+            FnOp::Sub => 2,
+            FnOp::Mul => 3,
+            FnOp::Div => 4,
+            FnOp::Sqrt => 5,
+        }
+    }
+
+    /// The operator word as the control writes it between the operands (`SQRT` before the one).
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            FnOp::Add => "+",
+            FnOp::Sub => "-",
+            FnOp::Mul => "*",
+            FnOp::Div => "DIV",
+            FnOp::Sqrt => "SQRT",
+        }
+    }
+}
+
+/// `FN n: Q<target> = a op b`; `FN 5` has only `a` (`SQRT a`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FnMath {
+    pub op: FnOp,
+    pub target: u32,
+    pub a: Value,
+    pub b: Option<Value>,
+}
+
+/// The condition of a jump: `FN 9` EQU, `FN 10` NE, `FN 11` GT, `FN 12` LT.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum JumpIf {
+    Equ,
+    Ne,
+    Gt,
+    Lt,
+}
+
+impl JumpIf {
+    #[must_use]
+    pub fn number(self) -> u32 {
+        match self {
+            JumpIf::Equ => 9,
+            JumpIf::Ne => 10,
+            JumpIf::Gt => 11,
+            JumpIf::Lt => 12,
+        }
+    }
+
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            JumpIf::Equ => "EQU",
+            JumpIf::Ne => "NE",
+            JumpIf::Gt => "GT",
+            JumpIf::Lt => "LT",
+        }
+    }
+
+    /// Whether the jump is taken for the values `a`, `b`.
+    #[must_use]
+    pub fn holds(self, a: f64, b: f64) -> bool {
+        match self {
+            JumpIf::Equ => a == b,
+            JumpIf::Ne => a != b,
+            JumpIf::Gt => a > b,
+            JumpIf::Lt => a < b,
+        }
+    }
+}
+
+/// `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FnJump {
+    pub condition: JumpIf,
+    pub a: Value,
+    pub b: Value,
+    pub label: Label,
+}
+
+/// The path of an approach or departure: `LT` straight tangential, `LN` straight perpendicular,
+/// `CT` arc tangential, `LCT` arc tangential to the contour and a straight line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum ApprKind {
+    Lt,
+    Ln,
+    Ct,
+    Lct,
+}
+
+impl ApprKind {
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ApprKind::Lt => "LT",
+            ApprKind::Ln => "LN",
+            ApprKind::Ct => "CT",
+            ApprKind::Lct => "LCT",
+        }
+    }
+}
+
+/// `APPR CT X+10 Y+20 Z-10 CCA180 R+10 RR F100`, `DEP LT LEN12.5 F100`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ApprDep {
+    pub kind: ApprKind,
+    /// APPR: the first contour point; DEP LCT: the end point.
+    pub axes: Box<[AxisWord]>,
+    /// `LEN`: distance to the auxiliary point (LT, LN).
+    pub len: Option<Value>,
+    /// `CCA`: central angle of the arc (CT).
+    pub cca: Option<Value>,
+    /// `R`: radius of the arc (CT, LCT).
+    pub radius: Option<Value>,
+    pub comp: Option<RadiusComp>,
+    pub feed: Option<Feed>,
+    pub m: Box<[u32]>,
+}
+
+/// What a `PATTERN DEF` item defines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum PatternKind {
+    /// `POS1 (X… Y… Z…)`: one point.
+    Pos,
+    /// `ROW1 (X… Y… D… NUM… ROT… Z…)`: points on a line.
+    Row,
+    /// `PAT1 (X… Y… DX… DY… NUMX… NUMY… ROT… ROTX… ROTY… Z…)`: a grid.
+    Pat,
+    /// `FRAME1 (…)`: the edge points of a grid, words as `PAT`.
+    Frame,
+    /// `CIRC1 (X… Y… D… START… NUM… Z…)`: a full circle.
+    Circ,
+    /// `PITCHCIRC1 (X… Y… D… START… STEP… NUM… Z…)`: a pitch circle.
+    PitchCirc,
+}
+
+impl PatternKind {
+    pub const ALL: [PatternKind; 6] = [
+        PatternKind::PitchCirc,
+        PatternKind::Circ,
+        PatternKind::Frame,
+        PatternKind::Pat,
+        PatternKind::Pos,
+        PatternKind::Row,
+    ];
+
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            PatternKind::Pos => "POS",
+            PatternKind::Row => "ROW",
+            PatternKind::Pat => "PAT",
+            PatternKind::Frame => "FRAME",
+            PatternKind::Circ => "CIRC",
+            PatternKind::PitchCirc => "PITCHCIRC",
+        }
+    }
+
+    /// The words the item takes, in the order the control writes them.
+    #[must_use]
+    pub fn keys(self) -> &'static [PatternKey] {
+        use PatternKey::*;
+        match self {
+            PatternKind::Pos => &[X, Y, Z],
+            PatternKind::Row => &[X, Y, D, Num, Rot, Z],
+            PatternKind::Pat | PatternKind::Frame => &[X, Y, Dx, Dy, NumX, NumY, Rot, RotX, RotY, Z],
+            PatternKind::Circ => &[X, Y, D, Start, Num, Z],
+            PatternKind::PitchCirc => &[X, Y, D, Start, Step, Num, Z],
+        }
+    }
+}
+
+/// A word inside a `PATTERN DEF` item.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum PatternKey {
+    X,
+    Y,
+    Z,
+    D,
+    Dx,
+    Dy,
+    Num,
+    NumX,
+    NumY,
+    Rot,
+    RotX,
+    RotY,
+    Start,
+    Step,
+}
+
+impl PatternKey {
+    /// Longest first, so that a prefix never shadows a longer word (`NUMX` before `NUM`).
+    pub const BY_LENGTH: [PatternKey; 14] = [
+        PatternKey::Start,
+        PatternKey::NumX,
+        PatternKey::NumY,
+        PatternKey::RotX,
+        PatternKey::RotY,
+        PatternKey::Step,
+        PatternKey::Num,
+        PatternKey::Rot,
+        PatternKey::Dx,
+        PatternKey::Dy,
+        PatternKey::D,
+        PatternKey::X,
+        PatternKey::Y,
+        PatternKey::Z,
+    ];
+
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            PatternKey::X => "X",
+            PatternKey::Y => "Y",
+            PatternKey::Z => "Z",
+            PatternKey::D => "D",
+            PatternKey::Dx => "DX",
+            PatternKey::Dy => "DY",
+            PatternKey::Num => "NUM",
+            PatternKey::NumX => "NUMX",
+            PatternKey::NumY => "NUMY",
+            PatternKey::Rot => "ROT",
+            PatternKey::RotX => "ROTX",
+            PatternKey::RotY => "ROTY",
+            PatternKey::Start => "START",
+            PatternKey::Step => "STEP",
+        }
+    }
+}
+
+/// One item of `PATTERN DEF`: `POS1 (X+25 Y+33.5 Z+0)`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PatternItem {
+    pub kind: PatternKind,
+    /// The number after the keyword (`POS1` → 1).
+    pub index: u32,
+    /// The words in the order written.
+    pub words: Box<[(PatternKey, Value)]>,
+}
+
+impl PatternItem {
+    /// The value of a word, if written.
+    #[must_use]
+    pub fn get(&self, key: PatternKey) -> Option<Value> {
+        self.words.iter().find(|(k, _)| *k == key).map(|(_, v)| *v)
+    }
 }
 
 /// `BLK FORM 0.1 Z X… Y… Z…` (MIN point, with the tool axis) or `0.2 …` (MAX point).

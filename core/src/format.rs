@@ -6,8 +6,9 @@
 use std::fmt::Write as _;
 
 use crate::ast::{
-    AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
-    OldCycleWord, PolarWord, Program, RadiusComp, ToolCall, ToolRef, Unit,
+    ApprDep, AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
+    OldCycleWord, PatternItem, PatternKey, PatternKind, PolarWord, Program, RadiusComp, ToolCall, ToolRef,
+    Unit,
 };
 use crate::plane::{
     Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
@@ -238,6 +239,46 @@ fn body(out: &mut String, b: &BlockBody) {
             out.push_str("CYCL CALL");
             ms(out, m);
         }
+        BlockBody::CyclCallPat { feed: f, m } => {
+            out.push_str("CYCL CALL PAT");
+            tail(out, None, *f, m);
+        }
+        BlockBody::CyclCallPos(l) => {
+            out.push_str("CYCL CALL POS");
+            axes(out, &l.axes);
+            tail(out, None, l.feed, &l.m);
+        }
+        BlockBody::PatternDef(items) => {
+            out.push_str("PATTERN DEF");
+            for item in items.iter() {
+                pattern_item(out, item);
+            }
+        }
+        BlockBody::Appr(a) => appr_dep(out, "APPR", a),
+        BlockBody::Dep(a) => appr_dep(out, "DEP", a),
+        BlockBody::FnMath(f) => {
+            let _ = write!(out, "FN {}: Q{} = ", f.op.number(), f.target);
+            match f.b {
+                None => {
+                    out.push_str(f.op.word());
+                    out.push(' ');
+                    value(out, f.a);
+                }
+                Some(b) => {
+                    value(out, f.a);
+                    let _ = write!(out, " {} ", f.op.word());
+                    value(out, b);
+                }
+            }
+        }
+        BlockBody::FnJump(j) => {
+            let _ = write!(out, "FN {}: IF ", j.condition.number());
+            value(out, j.a);
+            let _ = write!(out, " {} ", j.condition.word());
+            value(out, j.b);
+            out.push_str(" GOTO LBL ");
+            label(out, &j.label);
+        }
         BlockBody::Plane(p) => plane(out, p),
         BlockBody::TransDatum { axes: a } => {
             out.push_str("TRANS DATUM AXIS");
@@ -345,6 +386,41 @@ fn motion(out: &mut String, kw: &str, m: &Motion) {
         let _ = write!(out, " DR{}", sign(d));
     }
     tail(out, m.comp, m.feed, &m.m);
+}
+
+fn appr_dep(out: &mut String, kw: &str, a: &ApprDep) {
+    let _ = write!(out, "{kw} {}", a.kind.as_str());
+    axes(out, &a.axes);
+    if let Some(v) = a.len {
+        out.push_str(" LEN");
+        value(out, v);
+    }
+    if let Some(v) = a.cca {
+        out.push_str(" CCA");
+        plain(out, v);
+    }
+    if let Some(v) = a.radius {
+        out.push_str(" R");
+        value(out, v);
+    }
+    tail(out, a.comp, a.feed, &a.m);
+}
+
+fn pattern_item(out: &mut String, item: &PatternItem) {
+    let _ = write!(out, " {}{} (", item.kind.as_str(), item.index);
+    for (k, (key, v)) in item.words.iter().enumerate() {
+        if k > 0 {
+            out.push(' ');
+        }
+        out.push_str(key.as_str());
+        // Counts, the pitch-circle step and a circle's diameter are written without sign, as in
+        // the manual's examples (`NUM8`, `STEP30`, `D80`); positions and angles with it.
+        let unsigned =
+            matches!(key, PatternKey::Num | PatternKey::NumX | PatternKey::NumY | PatternKey::Step)
+                || (*key == PatternKey::D && matches!(item.kind, PatternKind::Circ | PatternKind::PitchCirc));
+        if unsigned { plain(out, *v) } else { value(out, *v) }
+    }
+    out.push(')');
 }
 
 fn cycle_def(out: &mut String, c: &CycleDef, comment: Option<&str>) {

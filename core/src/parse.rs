@@ -8,10 +8,12 @@
 //! [`words::Stop`]; no parser-combinator library, see ARCHITECTURE.md "Parser"). No backtracking
 //! across lines, so time is linear in the input.
 
+mod approach;
 mod cycles;
 mod frame;
 mod labels_q;
 mod motion;
+mod pattern;
 mod plane;
 mod tool;
 mod transforms;
@@ -445,6 +447,9 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             motion::path(cx, kw, rest)
         }
         "M" if digit_follows => motion::m_only(cx, body),
+        "APPR" => approach::appr_dep(cx, true, rest),
+        "DEP" => approach::appr_dep(cx, false, rest),
+        "PATTERN" => pattern::pattern_def(cx, body),
         "CYCL" => cycles::cycle_other(cx, body),
         "PLANE" => plane::plane(cx, rest),
         "TRANS" => transforms::trans(cx, body),

@@ -40,8 +40,20 @@
 //!   block still gets a [`SegmentKind::SwivelStay`] segment (axes constant, the plane's turn in
 //!   [`SegmentPath::Stay`]) so the view can show the coordinate system turning.
 //!
+//! # Contour (issue 15)
+//! `CC`, `C`, `CR`, `CT`, polar `LP`/`CP` (helix with `IZ`), `RND` and `CHF` run in the main
+//! plane of the TOOL CALL's tool axis (Z → XY, Y → ZX, X → YZ; DR+ counter-clockwise seen
+//! against the tool axis) of the I-CS, so after a PLANE they lie in the tilted plane
+//! ([`arc`], `interp/contour.rs`). An arc is one [`SegmentKind::Feed`] (or rapid) segment with
+//! [`SegmentPath::Arc`]: the I-CS arc carried into the linear axes, exact at every fraction. The
+//! element before a `RND`/`CHF` looks ahead to the element after it, ends at the first tangent
+//! point and leaves the rounding to the `RND`/`CHF` block; the element after starts at the
+//! second. Geometry errors (no CC, CR radius too small, CT without a preceding element, a
+//! rounding that does not fit) stop the run at their block. `APPR`/`DEP` move straight to their
+//! point for now (radius compensation is not simulated), with a note.
+//!
 //! # Programs
-//! Labels, `CALL LBL n [REP m]`, `FN 0`, formulas and `FN 9–12` jumps run; `M30`/`M2` end the
+//! Labels, `CALL LBL n [REP m]`, `FN 0`, formulas, `FN 1–5` and `FN 9–12` jumps run; `M30`/`M2` end the
 //! run and the rest of the program is listed as not executed
 //! ([`crate::unconfirmed::LIST_BLOCKS_AFTER_END`]); a `CYCL DEF` acts at `M99`/`CYCL CALL`
 //! (cycles 200 and 232 move, every other cycle is reported as not simulated).
@@ -56,11 +68,11 @@
 //! interpreter every [`SimOptions::checkpoint_interval`] blocks; [`Simulation::state_at`]
 //! re-runs from the nearest checkpoint, so any step is at most one interval away.
 
+pub mod arc;
 mod cycles;
 mod error;
 pub mod geometry;
 mod interp;
-mod jumps;
 pub mod segment;
 pub mod tools;
 pub mod transform;
@@ -78,7 +90,7 @@ use crate::solve::Explanation;
 
 pub use error::{SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
-pub use segment::{MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
+pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
 pub use transform::{ActiveTransform, Level, Transforms};
 
 use interp::{Interp, Rec};

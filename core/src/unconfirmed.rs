@@ -84,6 +84,9 @@ pub enum Decision {
     DatumAbsoluteReplaces,
     /// Simulator: [`Q120_ONLY_FOR_SPATIAL_TILTS`].
     Q120OnlySpatial,
+    /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`], [`CIRCLE_END_TOLERANCE`],
+    /// [`ARC_TOOL_AXIS_LINEAR`], [`CP_IPA_DIRECTION_FROM_DR`].
+    ArcConventions,
     /// The dialog's German wording where no manual gives it (DOMAIN.md §7): the prompts of
     /// SPATIAL, PROJECTED, POINTS, RELATIV, AXIAL, DIST, MB and the positioning step, and the
     /// softkey labels other than SPATIAL/RESET. Confirmed, from the iTNC 530 German user
@@ -93,7 +96,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 34] = [
+    pub const ALL: [Decision; 35] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -127,6 +130,7 @@ impl Decision {
         Decision::Cycle232Strategy,
         Decision::DatumAbsoluteReplaces,
         Decision::Q120OnlySpatial,
+        Decision::ArcConventions,
         Decision::DialogWording,
     ];
 
@@ -265,6 +269,10 @@ impl Decision {
             Decision::Q120OnlySpatial => Text::new(
                 "Q120–Q122 werden von Schwenkungen mit Raumwinkeln geschrieben, nicht von PLANE AXIAL und PLANE RESET.",
                 "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
+            ),
+            Decision::ArcConventions => Text::new(
+                "Kreisbahnen: ohne DR gilt die zuletzt programmierte Drehrichtung (vor dem ersten DR: DR+); der Endpunkt von C darf 0,01 mm neben dem Kreis liegen; eine Werkzeugachs-Koordinate in C/CR/CT fährt linear mit (wie eine Helix); bei CP mit IPA und DR bestimmt DR die Richtung.",
+                "Arcs: without DR the last programmed direction applies (before the first DR: DR+); the end point of C may be 0.01 mm off the circle; a tool-axis coordinate in C/CR/CT moves linearly along (like a helix); CP with IPA and DR: DR gives the direction.",
             ),
             Decision::DialogWording => Text::new(
                 "Wortlaut der Dialogfrage nicht aus einem Handbuch (bestätigt sind nur EULER und VECTOR).",
@@ -414,7 +422,9 @@ pub const AXIAL_LIMIT: f64 = 99_999.999_9;
 /// [S2] are **UNCONFIRMED** (our wording in the control's style): "Q-Parameter nicht definiert",
 /// "Zyklus nicht definiert", "Zyklusparameter fehlt", "Endschalter X+", "Achse nicht vorhanden",
 /// "Label-Nummer nicht vorhanden", "Verschachtelung zu tief", "Rechenfehler", "Satz fehlerhaft",
-/// "Vorzeichen Tiefe falsch" and their English versions.
+/// "Vorzeichen Tiefe falsch", and for the contour (issue 15) "Kreismittelpunkt undefiniert",
+/// "Kreis-Endposition falsch", "Kreisradius zu klein", "Tangentialer Anschluss nicht möglich",
+/// "RND/CHF nicht möglich", and their English versions.
 pub const SIM_MESSAGES_UNCONFIRMED: bool = true;
 
 /// Datum shift and mirror act in the W-CS when programmed with no tilt active (they move and
@@ -498,6 +508,26 @@ pub const DATUM_ABSOLUTE_REPLACES: bool = true;
 /// written by tilts with spatial angles (every PLANE function except AXIAL and RESET, cycle 19)
 /// and left unchanged by PLANE AXIAL and PLANE RESET. **UNCONFIRMED** for AXIAL and RESET.
 pub const Q120_ONLY_FOR_SPATIAL_TILTS: bool = true;
+
+/// `C`/`CR`/`CP` without `DR`: the last programmed direction of rotation (the manuals say so
+/// for the polar arc without direction, iTNC 530 DIN/ISO manual p. 211); before any `DR` in the
+/// program: DR+ (+1). **UNCONFIRMED** for the first arc.
+pub const ARC_DIRECTION_WITHOUT_DR: f64 = 1.0;
+
+/// `C`: how far (mm) the end point may lie off the circle through the start point around CC
+/// before "Kreis-Endposition falsch"; also how much longer than the diameter a `CR` chord may be.
+/// The control's tolerance is a machine parameter not given in the sources; **UNCONFIRMED**.
+pub const CIRCLE_END_TOLERANCE: f64 = 0.01;
+
+/// A coordinate of the tool axis in `C`, `CR`, `CT` (`C X… Y… Z…`) moves linearly while the arc
+/// turns, like the helix of `CP … IZ…`. The manuals describe the helix only for `CP`;
+/// **UNCONFIRMED** for the Cartesian arcs.
+pub const ARC_TOOL_AXIS_LINEAR: bool = true;
+
+/// `CP IPA… DR±`: the turned angle is |IPA| in the direction of DR (the manual asks for both and
+/// shows them with the same sign, `CP IPA-1800 IZ+5 DR-`); without DR the sign of IPA gives the
+/// direction. **UNCONFIRMED** when the signs disagree.
+pub const CP_IPA_DIRECTION_FROM_DR: bool = true;
 
 #[cfg(test)]
 mod tests {

@@ -83,7 +83,7 @@ proptest! {
     /// Any mix of the blocks the simulator knows, with random numbers, never panics; the run
     /// either ends or stops with a message, and every recorded step can be stepped to.
     #[test]
-    fn random_programs_never_panic(picks in proptest::collection::vec((0usize..24, -400.0..400.0f64, 0u32..4), 1..30),
+    fn random_programs_never_panic(picks in proptest::collection::vec((0usize..35, -400.0..400.0f64, 0u32..4), 1..30),
                                    machine in 0usize..5) {
         let vocab = |k: usize, v: f64, n: u32| -> String {
             match k {
@@ -110,6 +110,17 @@ proptest! {
                 20 => format!("TOOL CALL {n} Z S1000 F{}", v.abs()),
                 21 => "M30".to_string(),
                 22 => format!("CYCL DEF 7.1 X{v:+.2}"),
+                23 => format!("CC X{:+.2} Y{:+.2}", v / 3.0, v / 5.0),
+                24 => format!("C X{:+.2} Y{v:+.2} DR{}", v / 2.0, if n % 2 == 0 { '+' } else { '-' }),
+                25 => format!("CR X{v:+.2} Y{:+.2} R{:+.2} DR-", v / 3.0, v / (f64::from(n) - 1.5)),
+                26 => format!("CT X{:+.2} Y{v:+.2}", v / 7.0),
+                27 => format!("RND R{:+.2}", v.abs() / 20.0),
+                28 => format!("CHF {:+.2}", v.abs() / 30.0),
+                29 => format!("LP PR{:+.2} IPA{v:+.1}", v.abs() / 4.0),
+                30 => format!("CP IPA{:+.1} IZ{:+.2} DR{}", v * 3.0, v / 50.0, if n % 2 == 0 { '+' } else { '-' }),
+                31 => format!("FN 4: Q{n} = +Q{} DIV {v:+.1}", n + 1),
+                32 => format!("FN 12: IF +Q{n} LT {v:+.1} GOTO LBL {}", n % 3),
+                33 => format!("APPR LCT X{v:+.2} Y+0 R5 RR F200"),
                 _ => "CYCL CALL".to_string(),
             }
         };

@@ -137,6 +137,7 @@ macro_rules! fixtures {
 
 fixtures!(ok, check_ok:
     cam_hypermill,
+    contour_manual,
     cycles_continuation,
     euler_example,
     musterprogramm1,
@@ -152,6 +153,7 @@ fixtures!(err, check_err:
     end_pgm_name,
     eulnu_negative,
     garbage,
+    path_words,
     propr_90,
     seq_with_sym,
     spa_360,

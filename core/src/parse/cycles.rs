@@ -1,9 +1,10 @@
 //! Cycle definitions and calls.
 //!   def  := CYCL DEF n name [~] { NL Q<n>=value [;label] [~] }   (continuation lines, DOMAIN.md §8)
-//!   old  := CYCL DEF n.0 name | CYCL DEF n.s words        call := CYCL CALL { Mn }
+//!   old  := CYCL DEF n.0 name | CYCL DEF n.s words
+//!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS axis… [F…|FMAX] { Mn }
 
 use super::Cx;
-use super::words::{axis_word, keyword, m_function, sp, uint, word_value};
+use super::words::{axis_word, feed, keyword, m_function, sp, uint, word_value};
 use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
 use crate::diag::{DiagCode, Expected};
 
@@ -56,6 +57,31 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<Bl
 pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(rest) = keyword(body, "CYCL").map(sp) else { return super::unknown(cx, body) };
     if let Some(mut i) = keyword(rest, "CALL").map(sp) {
+        if let Some(r) = keyword(i, "POS") {
+            // The words of a straight line without radius compensation.
+            return match super::motion::path(cx, "L", r)? {
+                BlockBody::L(line) if line.comp.is_none() => Some(BlockBody::CyclCallPos(Box::new(line))),
+                _ => {
+                    let word = r.split([' ', '\t']).find(|w| matches!(*w, "R0" | "RL" | "RR")).unwrap_or(r);
+                    cx.error(word, word.len(), DiagCode::NotAllowed { word: word.to_owned() });
+                    None
+                }
+            };
+        }
+        let pat = keyword(i, "PAT");
+        if let Some(r) = pat {
+            i = sp(r);
+        }
+        let mut f = None;
+        if pat.is_some() && i.starts_with('F') {
+            match feed(i) {
+                Ok((r, v)) => {
+                    f = Some(v);
+                    i = sp(r);
+                }
+                Err(e) => return cx.fail(e),
+            }
+        }
         cx.m.clear();
         while !i.is_empty() {
             match m_function(i) {
@@ -63,12 +89,18 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
                     cx.m.push(m);
                     i = sp(r);
                 }
-                // `CYCL CALL PAT`, `CYCL CALL POS …`: not modelled.
-                Err(_) if cx.m.is_empty() => return super::unknown(cx, body),
-                Err(e) => return cx.fail(e),
+                Err(_) => {
+                    return cx
+                        .invalid(i, Some(Expected::Nc(if pat.is_some() { "F|M" } else { "PAT|POS|M" })));
+                }
             }
         }
-        return Some(BlockBody::CyclCall { m: cx.take_m() });
+        let m = cx.take_m();
+        return Some(if pat.is_some() {
+            BlockBody::CyclCallPat { feed: f, m }
+        } else {
+            BlockBody::CyclCall { m }
+        });
     }
     let Some(rest) = keyword(rest, "DEF").map(sp) else {
         return cx.invalid(rest, Some(Expected::Nc("DEF|CALL")));

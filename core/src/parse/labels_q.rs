@@ -2,10 +2,14 @@
 //!   lbl := LBL (n|"name")    call := CALL LBL (n|"name") [REP m[/m]] | CALL PGM path
 //!   q   := [FN 0:] Q<n> = expr      expr := term {(+|-) term}   term := unary {(*|/) unary}
 //!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
+//!   fn  := FN (1|2|3|4): Q<n> = value (+|-|*|DIV) value | FN 5: Q<n> = SQRT value
+//!        | FN (9|10|11|12): IF value (EQU|NE|GT|LT) value GOTO LBL (n|"name")
+//! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
+//! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)
 
 use super::Cx;
-use super::words::{Step, failure, keyword, number, quoted, sp, token, uint};
-use crate::ast::{BinOp, BlockBody, Expr, Func, Label};
+use super::words::{Step, failure, keyword, number, quoted, sp, token, uint, word_value};
+use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label};
 use crate::diag::{DiagCode, Expected};
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
@@ -65,15 +69,86 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     end(cx, rest, BlockBody::CallLbl { label: l, rep })
 }
 
-/// `FN 0: Q1 = +5`; other FN functions are kept as unknown blocks.
+/// `FN 0: Q1 = +5`, the arithmetic `FN 1..5` and the jumps `FN 9..12`; other FN functions are
+/// kept as unknown blocks.
 pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(r) = keyword(body, "FN").map(sp) else { return super::unknown(cx, body) };
-    match uint(r) {
-        Ok((rest, 0)) => match sp(rest).strip_prefix(':') {
-            Some(q) => assign(cx, sp(q), true),
-            None => cx.invalid(sp(rest), Some(Expected::Nc(":"))),
-        },
-        _ => super::unknown(cx, body),
+    let Ok((rest, n)) = uint(r) else { return super::unknown(cx, body) };
+    if !matches!(n, 0..=5 | 9..=12) {
+        return super::unknown(cx, body);
+    }
+    let Some(q) = sp(rest).strip_prefix(':').map(sp) else {
+        return cx.invalid(sp(rest), Some(Expected::Nc(":")));
+    };
+    match n {
+        0 => assign(cx, q, true),
+        9..=12 => jump(cx, n, q),
+        _ => math(cx, n, q),
+    }
+}
+
+/// `Q<n> = a op b` (`FN 1..4`) or `Q<n> = SQRT a` (`FN 5`).
+fn math(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
+    let op = match n {
+        1 => FnOp::Add,
+        2 => FnOp::Sub,
+        3 => FnOp::Mul,
+        4 => FnOp::Div,
+        _ => FnOp::Sqrt,
+    };
+    let Some(q) = i.strip_prefix('Q') else { return cx.invalid(i, Some(Expected::Nc("Q"))) };
+    let (r, target) = match uint(q) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let Some(r) = sp(r).strip_prefix('=').map(sp) else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
+    if op == FnOp::Sqrt {
+        let Some(r) = keyword(r, "SQRT").map(sp) else { return cx.invalid(r, Some(Expected::Nc("SQRT"))) };
+        return match word_value(r) {
+            Ok((rest, a)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: None }))),
+            Err(e) => cx.fail(e),
+        };
+    }
+    let (r, a) = match word_value(r) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let r = sp(r);
+    let Some(r) = keyword(r, op.word()).map(sp) else { return cx.invalid(r, Some(Expected::Nc(op.word()))) };
+    match word_value(r) {
+        Ok((rest, b)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: Some(b) }))),
+        Err(e) => cx.fail(e),
+    }
+}
+
+/// `IF a OP b GOTO LBL label`, where OP must be the one of the FN number.
+fn jump(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
+    let condition = match n {
+        9 => JumpIf::Equ,
+        10 => JumpIf::Ne,
+        11 => JumpIf::Gt,
+        _ => JumpIf::Lt,
+    };
+    let Some(r) = keyword(i, "IF").map(sp) else { return cx.invalid(i, Some(Expected::Nc("IF"))) };
+    let (r, a) = match word_value(r) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let r = sp(r);
+    let Some(r) = keyword(r, condition.word()).map(sp) else {
+        return cx.invalid(r, Some(Expected::Nc(condition.word())));
+    };
+    let (r, b) = match word_value(r) {
+        Ok(ok) => ok,
+        Err(e) => return cx.fail(e),
+    };
+    let r = sp(r);
+    let Some(r) = keyword(r, "GOTO").map(sp).and_then(|r| keyword(r, "LBL")).map(sp) else {
+        return cx.invalid(r, Some(Expected::Nc("GOTO LBL")));
+    };
+    match label(r) {
+        Ok((rest, label)) => end(cx, rest, BlockBody::FnJump(Box::new(FnJump { condition, a, b, label }))),
+        Err(e) => cx.fail(e),
     }
 }
 

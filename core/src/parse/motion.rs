@@ -158,6 +158,12 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
         cx.error(end, 0, DiagCode::MissingWord { word: "R" });
         return None;
     }
+    // CP needs the end point's angle (manual: "Polar coordinates angle PA: angular position of
+    // the arc end point").
+    if kw == "CP" && w.polar_angle.is_none() {
+        cx.error(end, 0, DiagCode::MissingWord { word: "PA" });
+        return None;
+    }
     let comp = w.comp.map(|c| c.0);
     let feed = w.feed.map(|f| f.0);
     if kw == "L" {

@@ -42,6 +42,27 @@ pub enum SimErrorCode {
     BlockBudget { steps: usize },
     /// A block the parser could not read.
     InvalidBlock,
+    /// `C`, `LP` or `CP` with no circle centre / pole (`CC`) before it.
+    NoCircleCentre { word: &'static str },
+    /// `C`: the end point is not on the circle around CC through the start point.
+    CircleEnd { start_radius: f64, end_radius: f64 },
+    /// `CR`: the distance from start to end point is larger than the diameter.
+    RadiusTooSmall { radius: f64, chord: f64 },
+    /// An arc from a point to itself where a full circle is not defined (CR), or starting on its
+    /// centre (C, CP).
+    ArcDegenerate { word: &'static str },
+    /// `CT` with no contour element before it to be tangent to.
+    NoTangent,
+    /// `CT` whose end point lies on the tangent of the preceding element.
+    EndOnTangent,
+    /// `RND`/`CHF` without a contour element before and after it.
+    CornerWithoutContour { word: &'static str },
+    /// `RND`/`CHF` where the two elements meet tangentially (no corner).
+    NoCorner { word: &'static str },
+    /// `RND`/`CHF` too large for the elements it joins.
+    CornerTooLarge { word: &'static str, value: f64 },
+    /// `CHF` between elements that are not both straight lines.
+    ChamferNeedsLines,
 }
 
 /// The run stopped at this block; every state before it is kept.
@@ -93,6 +114,22 @@ impl SimErrorCode {
                 t("Programmlauf abgebrochen: Satzbudget erschöpft", "Run stopped: block budget exhausted")
             }
             SimErrorCode::InvalidBlock => t("Satz fehlerhaft", "Block syntax error"),
+            SimErrorCode::NoCircleCentre { .. } => {
+                t("Kreismittelpunkt undefiniert", "Circle center undefined")
+            }
+            SimErrorCode::CircleEnd { .. } | SimErrorCode::ArcDegenerate { .. } => {
+                t("Kreis-Endposition falsch", "Circle end position incorrect")
+            }
+            SimErrorCode::RadiusTooSmall { .. } => t("Kreisradius zu klein", "Circle radius too small"),
+            SimErrorCode::NoTangent | SimErrorCode::EndOnTangent => {
+                t("Tangentialer Anschluss nicht möglich", "Tangential connection not possible")
+            }
+            SimErrorCode::CornerWithoutContour { word }
+            | SimErrorCode::NoCorner { word }
+            | SimErrorCode::CornerTooLarge { word, .. } => {
+                t(format!("{word} nicht möglich"), format!("{word} not possible"))
+            }
+            SimErrorCode::ChamferNeedsLines => t("CHF nicht möglich", "CHF not possible"),
         }
     }
 
@@ -152,6 +189,69 @@ impl SimErrorCode {
             ),
             SimErrorCode::InvalidBlock => {
                 t("Der Satz konnte nicht gelesen werden", "The block could not be read")
+            }
+            SimErrorCode::NoCircleCentre { word } => t(
+                format!("{word} braucht einen Kreismittelpunkt/Pol: vorher CC programmieren"),
+                format!("{word} needs a circle centre/pole: program CC before it"),
+            ),
+            SimErrorCode::CircleEnd { start_radius, end_radius } => t(
+                format!(
+                    "Der Endpunkt liegt nicht auf dem Kreis um CC: Radius am Anfang {}, am Ende {}",
+                    prose(*start_radius, Some(4), Lang::De),
+                    prose(*end_radius, Some(4), Lang::De)
+                ),
+                format!(
+                    "The end point is not on the circle around CC: radius {} at the start, {} at the end",
+                    prose(*start_radius, Some(4), Lang::En),
+                    prose(*end_radius, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::RadiusTooSmall { radius, chord } => t(
+                format!(
+                    "CR: Abstand Anfangs- zu Endpunkt {} ist größer als der Durchmesser 2·R = {}",
+                    prose(*chord, Some(4), Lang::De),
+                    prose(2.0 * radius, Some(4), Lang::De)
+                ),
+                format!(
+                    "CR: the distance from start to end point {} is larger than the diameter 2·R = {}",
+                    prose(*chord, Some(4), Lang::En),
+                    prose(2.0 * radius, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::ArcDegenerate { word } => t(
+                format!("{word}: Anfangspunkt, Endpunkt und Mittelpunkt legen keinen Kreisbogen fest"),
+                format!("{word}: start point, end point and centre define no arc"),
+            ),
+            SimErrorCode::NoTangent => t(
+                "CT braucht ein vorheriges Konturelement, an das der Kreis tangential anschließt",
+                "CT needs a preceding contour element for the arc to join tangentially",
+            ),
+            SimErrorCode::EndOnTangent => t(
+                "CT: der Endpunkt liegt auf der Tangente des vorherigen Elements (das wäre eine Gerade)",
+                "CT: the end point lies on the tangent of the preceding element (that would be a straight line)",
+            ),
+            SimErrorCode::CornerWithoutContour { word } => t(
+                format!(
+                    "{word} steht zwischen zwei Konturelementen (Gerade oder Kreis) in der Bearbeitungsebene"
+                ),
+                format!("{word} must stand between two contour elements (line or arc) in the working plane"),
+            ),
+            SimErrorCode::NoCorner { word } => t(
+                format!("{word}: die beiden Elemente schließen tangential an, es gibt keine Ecke"),
+                format!("{word}: the two elements join tangentially, there is no corner"),
+            ),
+            SimErrorCode::CornerTooLarge { word, value } => t(
+                format!(
+                    "{word} {}: passt nicht auf die angrenzenden Konturelemente",
+                    prose(*value, Some(4), Lang::De)
+                ),
+                format!(
+                    "{word} {}: does not fit on the adjoining contour elements",
+                    prose(*value, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::ChamferNeedsLines => {
+                t("CHF verbindet nur zwei Geraden", "CHF joins two straight lines only")
             }
         }
     }

@@ -7,7 +7,7 @@ use glam::{DMat3, DVec3};
 
 use crate::angle::short_delta;
 use crate::ast::{
-    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDefOld, Expr, Func, Label, Line, OldCycleData,
+    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDefOld, Expr, FnOp, Func, Label, Line, OldCycleData,
     OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
@@ -21,10 +21,10 @@ use crate::unconfirmed;
 use super::cycles::{self, CycleMove};
 use super::error::SimErrorCode;
 use super::geometry::{Affine, Kin};
-use super::jumps;
-use super::segment::{MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
+use super::segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
 use super::tools;
 use super::transform::{Level, Transforms};
+mod contour;
 mod cycle_calls;
 mod motion;
 mod snapshot;
@@ -98,6 +98,16 @@ pub(crate) struct Interp {
     m126: bool,
     /// The cycle 7 definition being read: the shift before its `7.0` header, the words so far.
     c7: Option<Cycle7>,
+    /// The circle centre / pole of the last `CC` (I-CS).
+    pole: Option<DVec3>,
+    /// The last programmed direction of rotation (+1 = DR+).
+    last_dr: Option<f64>,
+    /// Direction of travel (in the working plane, unit) at the end of the last contour element.
+    tangent: Option<DVec3>,
+    /// The rounding/chamfer the element just run prepared for the RND/CHF block after it.
+    corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
+    /// The corner point a RND/CHF cut off: where the next element starts geometrically.
+    geom_start: Option<DVec3>,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -110,9 +120,9 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
-/// M functions with a motion meaning the simulator does not model (M92 OEM position, M128/M129
-/// TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 4] = [92, 128, 129, 140];
+/// M functions with a motion meaning the simulator does not model (M89 modal cycle call, M92 OEM
+/// position, M128/M129 TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 5] = [89, 92, 128, 129, 140];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
@@ -188,6 +198,11 @@ impl Interp {
             map: Affine::IDENTITY,
             m126: false,
             c7: None,
+            pole: None,
+            last_dr: None,
+            tangent: None,
+            corner: None,
+            geom_start: None,
         };
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
@@ -307,6 +322,8 @@ impl Interp {
         if !matches!(&block.body, BlockBody::CycleDefOld(d) if d.number == 7) {
             self.c7 = None;
         }
+        // A prepared rounding belongs to the block right after the element that prepared it.
+        let pending_corner = self.corner.take();
         match &block.body {
             BlockBody::BeginPgm { .. } | BlockBody::Empty | BlockBody::Structure { .. } => {}
             BlockBody::EndPgm { .. } => {
@@ -316,26 +333,72 @@ impl Interp {
             BlockBody::BlkForm(b) => self.blk_form(b)?,
             BlockBody::ToolCall(t) => self.tool_call(t, &mut rec)?,
             BlockBody::L(line) => self.line(cx, &mut rec, idx, line)?,
-            BlockBody::Cc(_) => note(&mut rec, || {
-                Text::new("CC: Kreismittelpunkt (keine Bewegung)", "CC: circle centre (no motion)")
-            }),
-            BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) => {
-                let line = Line { axes: m.axes.clone(), comp: m.comp, feed: m.feed, m: m.m.clone() };
-                self.line(cx, &mut rec, idx, &line)?;
+            BlockBody::Cc(m) => {
+                let last = self.geom_start.unwrap_or(self.pos_i);
+                self.pole = Some(self.pole_of(&m.axes, last)?);
                 note(&mut rec, || {
                     Text::new(
-                        "Kreisbahn nicht simuliert: Gerade zum Endpunkt",
-                        "Arc not simulated: straight line to its end point",
+                        "CC: Kreismittelpunkt/Pol (keine Bewegung)",
+                        "CC: circle centre/pole (no motion)",
                     )
                 });
             }
-            BlockBody::Lp(_) | BlockBody::Cp(_) | BlockBody::Rnd { .. } | BlockBody::Chf { .. } => {
+            BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
+                self.contour(cx, &mut rec, idx, &block.body, m)?;
+            }
+            BlockBody::Rnd { feed, .. } => {
+                self.corner_block(cx, &mut rec, idx, "RND", feed.as_ref(), pending_corner)?;
+            }
+            BlockBody::Chf { feed, .. } => {
+                self.corner_block(cx, &mut rec, idx, "CHF", feed.as_ref(), pending_corner)?;
+            }
+            BlockBody::Appr(a) | BlockBody::Dep(a) => {
+                let line = Line { axes: a.axes.clone(), comp: None, feed: a.feed, m: a.m.clone() };
+                self.line(cx, &mut rec, idx, &line)?;
+                let w = if matches!(block.body, BlockBody::Appr(_)) { "APPR" } else { "DEP" };
+                let k = a.kind.as_str();
                 note(&mut rec, || {
-                    Text::new(
-                        "Polar-/Rundungs-/Fasensatz nicht simuliert",
-                        "Polar, rounding or chamfer block not simulated",
+                    Text::owned(
+                        format!(
+                            "{w} {k} nicht simuliert: Gerade zum programmierten Punkt, ohne Radiuskorrektur"
+                        ),
+                        format!(
+                            "{w} {k} not simulated: straight line to the programmed point, no radius compensation"
+                        ),
                     )
-                })
+                });
+            }
+            BlockBody::CyclCallPat { m, .. } => self.call_not_simulated(&mut rec, "PAT", m),
+            BlockBody::CyclCallPos(l) => self.call_not_simulated(&mut rec, "POS", &l.m),
+            BlockBody::PatternDef(items) => {
+                let n = items.len();
+                note(&mut rec, || {
+                    Text::owned(
+                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT (nicht simuliert)"),
+                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT (not simulated)"),
+                    )
+                });
+            }
+            BlockBody::FnMath(f) => {
+                let a = self.value(&f.a)?;
+                let b = f.b.map(|b| self.value(&b)).transpose()?.unwrap_or(0.0);
+                let v = match f.op {
+                    FnOp::Add => a + b,
+                    FnOp::Sub => a - b,
+                    FnOp::Mul => a * b,
+                    FnOp::Div => a / b,
+                    FnOp::Sqrt => a.sqrt(),
+                };
+                if !v.is_finite() {
+                    return Err(SimErrorCode::Arithmetic { index: f.target });
+                }
+                self.q.insert(f.target, v);
+            }
+            BlockBody::FnJump(j) => {
+                let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
+                if j.condition.holds(a, b) {
+                    self.pc = self.label_index(cx, &j.label)?;
+                }
             }
             BlockBody::MFunctions(m) => {
                 self.spindle_m(m);
@@ -419,20 +482,12 @@ impl Interp {
                 }
                 self.q.insert(*target, v);
             }
-            BlockBody::Unknown { text } => match jumps::parse_jump(text) {
-                Some(j) => {
-                    let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
-                    if j.holds(a, b) {
-                        self.pc = self.label_index(cx, &j.label)?;
-                    }
-                }
-                None => {
-                    let t = text.clone();
-                    note(&mut rec, || {
-                        Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
-                    })
-                }
-            },
+            BlockBody::Unknown { text } => {
+                let t = text.clone();
+                note(&mut rec, || {
+                    Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
+                })
+            }
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
         }
         Ok(true)

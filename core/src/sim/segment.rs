@@ -80,6 +80,41 @@ pub enum SegmentPath {
     /// PLANE … STAY (and PLANE RESET STAY): the axes stand still; the working plane turns from
     /// `from` to `to` (orientations in W-CS, columns = tilted axes) for the view to interpolate.
     Stay { from: DMat3, to: DMat3 },
+    /// An arc or a helix (C, CR, CT, CP, RND, APPR/DEP arcs) with the rotary axes standing still:
+    /// the linear axes at fraction f are `centre + u·cos(f·sweep) + v·sin(f·sweep) + f·lead`
+    /// ([`ArcPath`]), so every fraction is exactly on the arc.
+    Arc(Box<ArcPath>),
+}
+
+/// An arc in the linear axes (M-CS): the I-CS arc carried through the fixed I-CS → axes map,
+/// which only rotates, mirrors and shifts, so it stays an arc of the same radius.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ArcPath {
+    /// Linear axes of the centre at the start's height along the tool axis.
+    pub centre: DVec3,
+    /// From the centre to the start (length = radius).
+    pub u: DVec3,
+    /// `u` turned by +90° about the working plane's normal (in the direction DR+).
+    pub v: DVec3,
+    /// Turned angle, radians; positive = DR+ (counter-clockwise seen against the tool axis).
+    pub sweep: f64,
+    /// Displacement along the tool axis over the whole arc (helix), linear in the fraction.
+    pub lead: DVec3,
+}
+
+impl ArcPath {
+    /// The linear axes at fraction `f` (0…1).
+    #[must_use]
+    pub fn at(&self, f: f64) -> DVec3 {
+        let (s, c) = (f * self.sweep).sin_cos();
+        self.centre + self.u * c + self.v * s + f * self.lead
+    }
+
+    /// The radius.
+    #[must_use]
+    pub fn radius(&self) -> f64 {
+        self.u.length()
+    }
 }
 
 /// The data a MOVE swivel needs to place the linear axes at any fraction.
@@ -124,6 +159,7 @@ impl Segment {
         let linear = match &self.path {
             SegmentPath::Linear | SegmentPath::Stay { .. } => self.start.linear.lerp(self.end.linear, f),
             SegmentPath::Move(m) => move_linear(m, rotary),
+            SegmentPath::Arc(a) => a.at(f),
         };
         MachineAxes { linear, rotary, letters: self.start.letters }
     }

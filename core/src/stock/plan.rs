@@ -227,6 +227,22 @@ impl Cutting {
                         push(&mut self.events, fb, axis, from.lerp(to, fa), from.lerp(to, fb));
                     }
                 }
+                SegmentPath::Arc(arc) => {
+                    // Straight pieces whose chord error, the sagitta r·(1 − cos(θ/2)) of a piece
+                    // turning θ on radius r, stays below a quarter of the resolution:
+                    // θ ≤ 2·acos(1 − (res/4)/r). A helix rises linearly, so its pieces deviate
+                    // from it by the same sagitta.
+                    let (r, tolerance) = (arc.radius(), self.options.resolution / 4.0);
+                    let step =
+                        if r > tolerance { 2.0 * (1.0 - tolerance / r).acos() } else { std::f64::consts::PI };
+                    let n = ((arc.sweep.abs() / step).ceil() as usize).clamp(1, MAX_SUB_MOVES);
+                    let axis = kin.tool_axis_wcs(seg.start.rotary);
+                    for i in 0..n {
+                        let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
+                        let (from, to) = (kin.tip_wcs(&seg.axes_at(fa)), kin.tip_wcs(&seg.axes_at(fb)));
+                        push(&mut self.events, fb, axis, from, to);
+                    }
+                }
                 _ => {
                     let n = sub_moves(&kin, seg, radius + length, self.options.resolution);
                     for i in 0..n {

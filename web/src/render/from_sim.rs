@@ -66,6 +66,26 @@ pub struct RunPath {
 /// Samples per swivel or MOVE segment: the tip travels an arc relative to the workpiece there.
 const ARC_SAMPLES: u32 = 12;
 
+/// Largest turn (radians) of one straight piece of a programmed arc (C, CR, CT, CP, RND). The
+/// path is built once per run, not per frame, so it is tessellated by angle, which keeps the
+/// error a fixed share of the radius at every zoom: the sagitta of a piece is r·(1 − cos(θ/2)),
+/// below half a pixel for θ = 3.6° as long as the arc's radius on screen is under 1000 px
+/// (1 − cos 1.8° = 4.9·10⁻⁴), i.e. 100 pieces per full circle.
+const ARC_STEP: f64 = 3.6 * std::f64::consts::PI / 180.0;
+
+/// Most pieces of one arc (a helix of many turns): keeps one block's line buffer bounded.
+const MAX_ARC_PIECES: f64 = 4096.0;
+
+/// How many straight pieces draw a segment of the run.
+fn pieces(seg: &Segment) -> u32 {
+    match &seg.path {
+        // At least one piece; the cast is exact, the count is clamped to MAX_ARC_PIECES.
+        SegmentPath::Arc(arc) => (arc.sweep.abs() / ARC_STEP).ceil().clamp(1.0, MAX_ARC_PIECES) as u32,
+        SegmentPath::Linear if seg.rotary_delta == [0.0; 2] => 1,
+        _ => ARC_SAMPLES,
+    }
+}
+
 /// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
 #[must_use]
 pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
@@ -77,11 +97,7 @@ pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
                 path.points.push(PathPoint { at: kin.tip_wcs(&seg.start), rapid: true });
             }
             let rapid = !matches!(seg.kind, SegmentKind::Feed | SegmentKind::CycleFeed);
-            let samples = if matches!(seg.path, SegmentPath::Linear) && seg.rotary_delta == [0.0; 2] {
-                1
-            } else {
-                ARC_SAMPLES
-            };
+            let samples = pieces(seg);
             for k in 1..=samples {
                 let at = kin.tip_wcs(&seg.axes_at(f64::from(k) / f64::from(samples)));
                 path.points.push(PathPoint { at, rapid });
@@ -167,6 +183,30 @@ mod tests {
             assert!((-1e-6..=2.0 + 1e-6).contains(&a), "stroke depth {a}");
         }
         assert!(n.x > 0.25, "SPB+15 tilts the plane normal towards +X: {n}");
+    }
+
+    #[test]
+    fn a_full_circle_is_drawn_as_an_arc_of_100_pieces_on_its_radius() {
+        let doc = Document::new(
+            "0 BEGIN PGM K MM\n1 TOOL CALL 16 Z S1000 F500\n2 L X+30 Y+10 Z+5 R0 FMAX\n3 CC X+10 Y+10\n\
+             4 C X+30 Y+10 DR- F500\n5 END PGM K MM\n"
+                .to_owned(),
+        );
+        let machine = Machine::builtin("ac-table").expect("machine");
+        let sim = SimRef::of(&doc.program, &machine).0.as_ref().clone();
+        assert!(sim.error.is_none(), "{:?}", sim.error);
+        let path = toolpath(&sim, &doc.program);
+        let step = step_of_block(&sim, &doc.program, 4);
+        let arc = &path.points[path.segments_after[step - 1]..=path.segments_after[step]];
+        assert_eq!(arc.len(), 101, "360° in 3.6° pieces");
+        for (k, p) in arc.iter().enumerate() {
+            let r = (p.at - DVec3::new(10.0, 10.0, 5.0)).length();
+            // `rapid` tells how the point was reached: the first one by the positioning before.
+            assert!((r - 20.0).abs() < 1e-9 && (k == 0 || !p.rapid), "on the circle: {p:?}");
+        }
+        assert!((arc[100].at - arc[0].at).length() < 1e-9, "closed");
+        // DR−: clockwise seen from +Z, so the first piece heads −Y from (30, 10).
+        assert!(arc[1].at.y < arc[0].at.y);
     }
 
     #[test]

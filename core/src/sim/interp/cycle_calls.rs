@@ -94,6 +94,18 @@ impl Interp {
         Ok(())
     }
 
+    /// `CYCL CALL PAT`/`CYCL CALL POS`: the M functions act, the call is reported.
+    pub(super) fn call_not_simulated(&mut self, rec: &mut Option<&mut Rec>, word: &'static str, m: &[u32]) {
+        self.spindle_m(m);
+        note(rec, || {
+            Text::owned(
+                format!("CYCL CALL {word} nicht simuliert"),
+                format!("CYCL CALL {word} not simulated"),
+            )
+        });
+        self.end_m(m);
+    }
+
     pub(super) fn call_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize) -> R<()> {
         let Some(c) = self.cycle else { return Err(SimErrorCode::NoCycle) };
         let def = match c {

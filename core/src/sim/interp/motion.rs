@@ -2,6 +2,19 @@
 //! as segments the 3D view animates.
 
 use super::*;
+use crate::sim::arc::Elem;
+
+/// Duration (s) = distance / (feed per minute) · 60; the longer of the linear (`lin`, mm) and
+/// rotary (`rot`, °) shares wins (sim.rs doc).
+fn duration(cx: &Cx<'_>, rate: Rate, lin: f64, rot: f64) -> f64 {
+    let g = &cx.machine.geometry;
+    let (lin_rate, rot_rate) = match rate {
+        Rate::Feed(f) if f > 0.0 => (f, f),
+        _ => (g.rapid_linear, g.rapid_rotary),
+    };
+    let d = (lin / lin_rate).max(rot / rot_rate) * 60.0;
+    if d.is_finite() { d } else { 0.0 }
+}
 
 impl Interp {
     pub(super) fn check_linear(&self, cx: &Cx<'_>, l: DVec3) -> R<()> {
@@ -64,15 +77,9 @@ impl Interp {
     ) {
         let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
         if let Some(r) = rec.as_deref_mut().filter(|_| moves) {
-            let g = &cx.machine.geometry;
-            let (lin_rate, rot_rate) = match rate {
-                Rate::Feed(f) if f > 0.0 => (f, f),
-                _ => (g.rapid_linear, g.rapid_rotary),
-            };
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
-            // Duration (s) = distance / (feed per minute) · 60; the longer share wins (sim.rs doc).
-            let duration = (lin / lin_rate).max(rot / rot_rate) * 60.0;
+            let duration = duration(cx, rate, lin, rot);
             r.segments.push(Segment {
                 step: self.step_count.saturating_sub(1),
                 block,
@@ -80,8 +87,37 @@ impl Interp {
                 start: self.axes,
                 end: target,
                 rotary_delta,
-                duration: if duration.is_finite() { duration } else { 0.0 },
+                duration,
                 path: path(),
+            });
+        }
+        self.axes = target;
+    }
+
+    /// Moves the linear axes to `target` along `path` of `length` mm (an arc may end where it
+    /// started), recording a segment when a full record is asked for.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn go_along(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        block: usize,
+        kind: SegmentKind,
+        target: MachineAxes,
+        rate: Rate,
+        length: f64,
+        path: SegmentPath,
+    ) {
+        if let Some(r) = rec.as_deref_mut().filter(|_| length > 0.0) {
+            r.segments.push(Segment {
+                step: self.step_count.saturating_sub(1),
+                block,
+                kind,
+                start: self.axes,
+                end: target,
+                rotary_delta: [0.0; 2],
+                duration: duration(cx, rate, length, 0.0),
+                path,
             });
         }
         self.axes = target;
@@ -150,6 +186,16 @@ impl Interp {
             note(rec, || Text::owned(format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
         }
         self.check_rotary(cx, rot)?;
+        // A straight contour element in the working plane: it ends at the tangent point when a
+        // RND/CHF follows, and leaves its direction for a CT.
+        self.geom_start = None;
+        if lin_prog && !m91 && !rot_prog {
+            let elem = self.before_corner(cx, idx, Elem::line(self.pos_i, p))?;
+            p = elem.end;
+            if let Some(t) = elem.tangent(&self.work_plane(), true) {
+                self.tangent = Some(t);
+            }
+        }
         if lin_prog && !m91 {
             l = if rot_prog {
                 self.wcs_to_linear(rot).after(&self.tf.ics_to_wcs()).apply(p)

@@ -1,0 +1,164 @@
+//! Approaching and departing the contour (TNC 620 Klartext manual, "Approaching and departing
+//! a contour": `APPR LT X+20 Y+20 Z-10 LEN15 RR F100`, `APPR CT X+10 Y+20 Z-10 CCA180 R+10 RR
+//! F100`, `DEP LT LEN12.5 F100`, `DEP CT CCA 180 R+8 F100`, `DEP LCT X+10 Y+12 R+8 F100`).
+//!   appr := APPR (LT|LN|CT|LCT) { axis | LEN v | CCA v | R v | RL|RR|R0 | F… | M n }
+//!   dep  := DEP (LT|LN|CT|LCT) { axis | LEN v | CCA v | R v | F… | M n }
+//! Which words each kind takes, and which it needs, is checked here; what they do is the
+//! simulator's.
+
+use super::Cx;
+use super::words::{Stop, at_boundary, axis_word, feed, keyword, m_function, sp, word_value};
+use crate::ast::{ApprDep, ApprKind, BlockBody, RadiusComp};
+use crate::diag::{DiagCode, Expected};
+use crate::plane::{Feed, Value};
+
+/// A word and where it stood.
+type At<'a, T> = Option<(T, &'a str)>;
+
+#[derive(Default)]
+struct Words<'a> {
+    len: At<'a, Value>,
+    cca: At<'a, Value>,
+    radius: At<'a, Value>,
+    comp: At<'a, RadiusComp>,
+    feed: At<'a, Feed>,
+    first_axis: Option<&'a str>,
+}
+
+fn set<'a, T>(cx: &mut Cx, slot: &mut At<'a, T>, v: T, at: &'a str, len: usize) -> bool {
+    if slot.is_some() {
+        cx.error(at, len, DiagCode::Duplicate { word: at[..len.min(at.len())].to_owned() });
+        return false;
+    }
+    *slot = Some((v, at));
+    true
+}
+
+/// `APPR …` (`approach`) or `DEP …`; `rest` follows the keyword.
+pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockBody> {
+    cx.axes.clear();
+    cx.m.clear();
+    if !at_boundary(rest) {
+        return cx.invalid(rest, Some(Expected::Blank));
+    }
+    let i = sp(rest);
+    let Some((mut i, kind)) = [ApprKind::Lct, ApprKind::Lt, ApprKind::Ln, ApprKind::Ct]
+        .into_iter()
+        .find_map(|k| keyword(i, k.as_str()).map(|r| (sp(r), k)))
+    else {
+        return cx.invalid(i, Some(Expected::Nc("LT|LN|CT|LCT")));
+    };
+    let mut w = Words::default();
+    while !i.is_empty() {
+        let at = i;
+        if let Ok((r, m)) = m_function(i) {
+            cx.m.push(m);
+            i = sp(r);
+            continue;
+        }
+        match axis_word(i) {
+            Ok((r, word)) => {
+                if cx.axes.iter().any(|a| a.axis == word.axis) {
+                    cx.error(
+                        at,
+                        at.len() - r.len(),
+                        DiagCode::Duplicate { word: word.axis.as_str().to_owned() },
+                    );
+                    return None;
+                }
+                w.first_axis.get_or_insert(at);
+                cx.axes.push(word);
+                i = sp(r);
+                continue;
+            }
+            Err(Stop::Expected { .. }) => {}
+            Err(e) => return cx.fail(e),
+        }
+        let valued = |key: &str| -> Option<&str> { i.strip_prefix(key).map(sp) };
+        let (r, ok) = if i.starts_with('F') {
+            match feed(i) {
+                Ok((r, f)) => (r, set(cx, &mut w.feed, f, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(r) = keyword(i, "R0") {
+            (r, set(cx, &mut w.comp, RadiusComp::R0, at, 2))
+        } else if let Some(r) = keyword(i, "RL") {
+            (r, set(cx, &mut w.comp, RadiusComp::Rl, at, 2))
+        } else if let Some(r) = keyword(i, "RR") {
+            (r, set(cx, &mut w.comp, RadiusComp::Rr, at, 2))
+        } else if let Some(v) = valued("LEN") {
+            match word_value(v) {
+                Ok((r, v)) => (r, set(cx, &mut w.len, v, at, 3)),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(v) = valued("CCA") {
+            match word_value(v) {
+                Ok((r, v)) => (r, set(cx, &mut w.cca, v, at, 3)),
+                Err(e) => return cx.fail(e),
+            }
+        } else if let Some(v) = i.strip_prefix('R') {
+            match word_value(v) {
+                Ok((r, v)) => (r, set(cx, &mut w.radius, v, at, 1)),
+                Err(e) => return cx.fail(e),
+            }
+        } else {
+            return cx.invalid(at, Some(Expected::Nc("X|Y|Z|LEN|CCA|R|RL|RR|F|M")));
+        };
+        if !ok {
+            return None;
+        }
+        i = sp(r);
+    }
+    build(cx, approach, kind, w, i)
+}
+
+fn build(cx: &mut Cx, approach: bool, kind: ApprKind, w: Words<'_>, end: &str) -> Option<BlockBody> {
+    // The words of each kind, from the manual's dialog (DEP LT/LN/CT end away from the contour
+    // by LEN or the arc, only DEP LCT names an end point; DEP switches the compensation off).
+    let (takes_len, takes_arc, takes_axes) = match kind {
+        ApprKind::Lt | ApprKind::Ln => (true, false, approach),
+        ApprKind::Ct => (false, true, approach),
+        ApprKind::Lct => (false, false, true),
+    };
+    let takes_radius = takes_arc || kind == ApprKind::Lct;
+    let present = [
+        (w.len.map(|x| x.1), takes_len),
+        (w.cca.map(|x| x.1), takes_arc),
+        (w.radius.map(|x| x.1), takes_radius),
+        (w.comp.map(|x| x.1), approach),
+        (w.first_axis, takes_axes),
+    ];
+    for (at, allowed) in present {
+        if let Some(at) = at
+            && !allowed
+        {
+            let len = at.find([' ', '\t']).unwrap_or(at.len());
+            cx.error(at, len, DiagCode::NotAllowed { word: at[..len].to_owned() });
+            return None;
+        }
+    }
+    let missing = if takes_len && w.len.is_none() {
+        Some("LEN")
+    } else if takes_arc && w.cca.is_none() {
+        Some("CCA")
+    } else if takes_radius && w.radius.is_none() {
+        Some("R")
+    } else {
+        None
+    };
+    if let Some(word) = missing {
+        cx.error(end, 0, DiagCode::MissingWord { word });
+        return None;
+    }
+    let node = Box::new(ApprDep {
+        kind,
+        axes: cx.take_axes(),
+        len: w.len.map(|x| x.0),
+        cca: w.cca.map(|x| x.0),
+        radius: w.radius.map(|x| x.0),
+        comp: w.comp.map(|x| x.0),
+        feed: w.feed.map(|x| x.0),
+        m: cx.take_m(),
+    });
+    Some(if approach { BlockBody::Appr(node) } else { BlockBody::Dep(node) })
+}
