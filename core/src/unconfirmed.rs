@@ -84,6 +84,16 @@ pub enum Decision {
     DatumAbsoluteReplaces,
     /// Simulator: [`Q120_ONLY_FOR_SPATIAL_TILTS`].
     Q120OnlySpatial,
+    /// Simulator: the machining cycles' open points ([`decremented_infeed`],
+    /// [`CHIP_BREAK_AT_RETRACTION_FEED`], [`advanced_stop_distance`],
+    /// [`CYCLE205_Q208_ZERO_IS_Q206`], [`BORE_MILL_STEPOVER`], [`POCKET_HELIX`],
+    /// [`POCKET_RECIPROCATING_AS_VERTICAL`], [`SLOT_STEPOVER`], [`CIRCULAR_SLOT_REFERENCE`],
+    /// [`CYCLE233_AS_232`]).
+    CycleConventions,
+    /// Simulator: the patterns and cycle calls ([`PATTERN_GRID_ORDER`], [`cycle220_step`],
+    /// [`PATTERN_CYCLE_END`], [`CYCL_CALL_POS_CLEARANCE`], [`M89_CALLS_AT_ITS_BLOCK`],
+    /// [`CYCL_CALL_PAT_FEED_BETWEEN_POINTS`]).
+    PatternConventions,
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`], [`CIRCLE_END_TOLERANCE`],
     /// [`ARC_TOOL_AXIS_LINEAR`], [`CP_IPA_DIRECTION_FROM_DR`].
     ArcConventions,
@@ -96,7 +106,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 35] = [
+    pub const ALL: [Decision; 37] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -131,6 +141,8 @@ impl Decision {
         Decision::DatumAbsoluteReplaces,
         Decision::Q120OnlySpatial,
         Decision::ArcConventions,
+        Decision::CycleConventions,
+        Decision::PatternConventions,
         Decision::DialogWording,
     ];
 
@@ -251,8 +263,8 @@ impl Decision {
                 "Blocks after M30/M2 are listed as \"not executed\".",
             ),
             Decision::PositiveDepthError => Text::new(
-                "Zyklus 200 mit positiver Tiefe Q201: Fehlermeldung (Maschinenparameter displayDepthErr).",
-                "Cycle 200 with a positive depth Q201: error message (machine parameter displayDepthErr).",
+                "Bearbeitungszyklen mit positiver Tiefe Q201: Fehlermeldung (Maschinenparameter displayDepthErr).",
+                "Machining cycles with a positive depth Q201: error message (machine parameter displayDepthErr).",
             ),
             Decision::Cycle232Stepover => Text::new(
                 "Zyklus 232: maximale seitliche Zustellung = Q370 × Werkzeugradius.",
@@ -273,6 +285,14 @@ impl Decision {
             Decision::ArcConventions => Text::new(
                 "Kreisbahnen: ohne DR gilt die zuletzt programmierte Drehrichtung (vor dem ersten DR: DR+); der Endpunkt von C darf 0,01 mm neben dem Kreis liegen; eine Werkzeugachs-Koordinate in C/CR/CT fährt linear mit (wie eine Helix); bei CP mit IPA und DR bestimmt DR die Richtung.",
                 "Arcs: without DR the last programmed direction applies (before the first DR: DR+); the end point of C may be 0.01 mm off the circle; a tool-axis coordinate in C/CR/CT moves linearly along (like a helix); CP with IPA and DR: DR gives the direction.",
+            ),
+            Decision::CycleConventions => Text::new(
+                "Bearbeitungszyklen: Abnahmebetrag Q212 bis zur Mindest-Zustelltiefe Q205, danach der Rest in einem Schritt; Spanbruch-Rückzug Q256 mit dem Rückzugsvorschub Q208; Zyklus 205: Vorhalteabstand von Q258 nach Q259 linear mit der erreichten Tiefe, Q208 = 0 fährt mit Q206 zurück; Zyklus 208 mit Vorbohrung: Zustellung höchstens ein Werkzeugradius je Helix; Taschen und Nuten: konzentrische Bahnen von innen nach außen, gerade An- und Abfahrt, Helix mit Werkzeugradius und einer Umdrehung je Zustellung, pendelndes Eintauchen (Q366 = 2) senkrecht, Nuten 253/254 mit einem Werkzeugradius seitlicher Zustellung; 254 mit Q367 = 1/2/3: Werkzeug am Anfang/in der Mitte/am Ende der Mittellinie; 233 als Mäander wie 232.",
+                "Machining cycles: the decrement Q212 down to the minimum infeed Q205, then the rest in one step; chip-breaking retraction Q256 at the retraction feed Q208; cycle 205: advanced stop distance from Q258 to Q259 linear in the depth reached, Q208 = 0 retracts at Q206; cycle 208 with a pre-drilled hole: at most one tool radius more per helix; pockets and slots: concentric paths from the inside out, straight approach and departure, a helix of the tool radius with one turn per infeed, reciprocating plunge (Q366 = 2) vertical, slots 253/254 step over by one tool radius; 254 with Q367 = 1/2/3: the tool at the start/middle/end of the centre line; 233 as a meander like 232.",
+            ),
+            Decision::PatternConventions => Text::new(
+                "Muster und Zyklusaufrufe: PATTERN DEF PAT/FRAME Zeile für Zeile, jede zweite rückwärts (wie Zyklus 221); Zyklus 220 mit Q247 = 0: Vollkreis in Q241 gleiche Schritte, sonst Start- und Endwinkel eingeschlossen; nach dem letzten Punkt von 220/221 auf den 2. Sicherheitsabstand; CYCL CALL POS unterhalb der Oberfläche: zuerst auf den 2. Sicherheitsabstand; M89 ruft den Zyklus schon in seinem eigenen Satz auf; der Vorschub von CYCL CALL PAT gilt zwischen den Punkten.",
+                "Patterns and cycle calls: PATTERN DEF PAT/FRAME row by row, every other row backwards (like cycle 221); cycle 220 with Q247 = 0: a full circle in Q241 equal steps, otherwise start and stop angle both included; after the last point of 220/221 to the 2nd set-up clearance; CYCL CALL POS below the surface: first to the 2nd set-up clearance; M89 calls the cycle already in its own block; the feed of CYCL CALL PAT applies between the points.",
             ),
             Decision::DialogWording => Text::new(
                 "Wortlaut der Dialogfrage nicht aus einem Handbuch (bestätigt sind nur EULER und VECTOR).",
@@ -482,7 +502,7 @@ pub const REP_IS_SECTION_REPEAT: bool = true;
 /// control simply stops).
 pub const LIST_BLOCKS_AFTER_END: bool = true;
 
-/// Cycle 200 with a positive depth Q201: the control's machine parameter `displayDepthErr`
+/// A machining cycle with a positive depth Q201: the control's machine parameter `displayDepthErr`
 /// decides; we report an error (its usual setting, **UNCONFIRMED**).
 pub const CYCLE_POSITIVE_DEPTH_IS_ERROR: bool = true;
 
@@ -528,6 +548,95 @@ pub const ARC_TOOL_AXIS_LINEAR: bool = true;
 /// shows them with the same sign, `CP IPA-1800 IZ+5 DR-`); without DR the sign of IPA gives the
 /// direction. **UNCONFIRMED** when the signs disagree.
 pub const CP_IPA_DIRECTION_FROM_DR: bool = true;
+
+/// Cycles 203/205: the next infeed after `made` infeeds is Q202 (`first`) less the decrement
+/// Q212 per infeed, never less than the minimum plunging depth Q205 (the manual); when that
+/// leaves no positive step (Q205 = 0) or the step reaches past the depth, the `rest` is drilled
+/// in one step. **UNCONFIRMED** for the exhausted decrement.
+#[must_use]
+pub fn decremented_infeed(first: f64, decrement: f64, min: f64, made: usize, rest: f64) -> f64 {
+    let step = (first - decrement * made as f64).max(min);
+    if step > 0.0 && step < rest { step } else { rest }
+}
+
+/// Cycles 203/205: the chip-breaking retraction by Q256 runs at the retraction feed Q208 (the
+/// manuals give the distance, not the feed). **UNCONFIRMED**.
+pub const CHIP_BREAK_AT_RETRACTION_FEED: bool = true;
+
+/// Cycle 205: the advanced stop distance after the infeed that reached `reached` of `total`:
+/// Q258 (`upper`) at the top, Q259 (`lower`) at the depth, linear in between (the manual: "the
+/// control changes the advanced stop distance between the first and last plunging depth at the
+/// same rate"; the measure of "rate" is **UNCONFIRMED**: the depth).
+#[must_use]
+pub fn advanced_stop_distance(upper: f64, lower: f64, reached: f64, total: f64) -> f64 {
+    if total > 0.0 { upper + (lower - upper) * (reached / total).clamp(0.0, 1.0) } else { upper }
+}
+
+/// Cycle 205: a retraction feed Q208 of 0 retracts at the plunging feed Q206, as cycles 201 and
+/// 203 state. **UNCONFIRMED** for 205.
+pub const CYCLE205_Q208_ZERO_IS_Q206: bool = true;
+
+/// Cycle 208 with a pre-drilled diameter Q342: the helices widen the hole by at most this many
+/// tool radii each ("the control calculates the lateral infeed itself"). **UNCONFIRMED**.
+pub const BORE_MILL_STEPOVER: f64 = 1.0;
+
+/// Pockets with helical plunging (Q366 = 1): the helix radius in tool radii (less when the
+/// pocket is narrower; vertical when there is no room) and one turn per infeed, as the tool's
+/// plunge angle ANGLE is not in the tool table. **UNCONFIRMED**.
+pub const POCKET_HELIX: f64 = 1.0;
+
+/// Pockets with reciprocating plunging (Q366 = 2) are simulated with a vertical plunge, with a
+/// message. **UNCONFIRMED** simplification.
+pub const POCKET_RECIPROCATING_AS_VERTICAL: bool = true;
+
+/// Slots 253 and 254 have no path overlap Q370: their roughing paths are at most this many
+/// tool radii apart. **UNCONFIRMED**.
+pub const SLOT_STEPOVER: f64 = 1.0;
+
+/// Cycle 254 with Q367 = 1, 2, 3 ("left slot circle", "centre line", "right slot circle"): the
+/// tool position is the centre line's start (at Q376), middle or end. **UNCONFIRMED** mapping of
+/// left/right to start/end.
+pub const CIRCULAR_SLOT_REFERENCE: bool = true;
+
+/// Cycle 233 is simulated through cycle 232's meander (strategies Q389 and the limits
+/// Q347–Q349 with a message). **UNCONFIRMED** simplification.
+pub const CYCLE233_AS_232: bool = true;
+
+/// `PATTERN DEF` PAT and FRAME are machined row by row, every other row backwards, like cycle
+/// 221 (the manual gives no order for them). **UNCONFIRMED**.
+pub const PATTERN_GRID_ORDER: bool = true;
+
+/// Cycle 220 with the stepping angle Q247 = 0: the manual computes it "from the starting and
+/// stopping angles and the number of repetitions". **UNCONFIRMED** how: a full circle
+/// (|Q246 − Q245| = 360) in `n` equal steps, otherwise from start to stop, both included.
+#[must_use]
+pub fn cycle220_step(start: f64, stop: f64, n: usize) -> f64 {
+    let span = stop - start;
+    if (span.abs() - 360.0).abs() < 1e-9 {
+        span / n.max(1) as f64
+    } else if n > 1 {
+        span / (n - 1) as f64
+    } else {
+        0.0
+    }
+}
+
+/// Cycles 220/221: after the last machining position the tool goes to the 2nd set-up
+/// clearance, whatever Q301 said between the positions. **UNCONFIRMED**.
+pub const PATTERN_CYCLE_END: bool = true;
+
+/// `CYCL CALL POS` with the tool below the workpiece surface: "first in the tool axis to the
+/// clearance height" is taken as the 2nd set-up clearance Q204 above the surface.
+/// **UNCONFIRMED**.
+pub const CYCL_CALL_POS_CLEARANCE: bool = true;
+
+/// `M89` (modal cycle call) calls the cycle at the end of its own block too, not only at every
+/// following positioning block. **UNCONFIRMED**.
+pub const M89_CALLS_AT_ITS_BLOCK: bool = true;
+
+/// `CYCL CALL PAT F…`: the feed applies to the moves between the points (FMAX or none: rapid).
+/// **UNCONFIRMED**.
+pub const CYCL_CALL_PAT_FEED_BETWEEN_POINTS: bool = true;
 
 #[cfg(test)]
 mod tests {

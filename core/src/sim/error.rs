@@ -26,8 +26,15 @@ pub enum SimErrorCode {
     CycleParamsMissing { cycle: u32 },
     /// A cycle parameter the simulated cycle needs is missing.
     CycleParamMissing { cycle: u32, param: u32 },
-    /// Cycle 200 with a positive depth Q201.
-    DepthSign { value: f64 },
+    /// A machining cycle with a positive depth Q201.
+    DepthSign { cycle: u32, value: f64 },
+    /// The tool is larger than the bore, pocket or slot the cycle mills (`size`: its diameter or
+    /// width less the finishing allowances).
+    ToolTooLarge { cycle: u32, tool_diameter: f64, size: f64 },
+    /// Cycle 208 without a pre-drilled diameter: the bore is more than twice the tool diameter.
+    ToolTooSmall { cycle: u32, tool_diameter: f64, size: f64 },
+    /// `CYCL CALL PAT` with no `PATTERN DEF` before it.
+    NoPattern,
     /// A linear axis target outside its software limit switch.
     LimitSwitch { axis: char, value: f64, min: f64, max: f64 },
     /// A rotary axis target outside its software limit switch.
@@ -100,6 +107,9 @@ impl SimErrorCode {
                 t("Zyklusparameter fehlt", "Cycle parameter missing")
             }
             SimErrorCode::DepthSign { .. } => t("Vorzeichen Tiefe falsch", "Depth sign wrong"),
+            SimErrorCode::ToolTooLarge { .. } => t("Werkzeug-Radius zu groß", "Tool radius too large"),
+            SimErrorCode::ToolTooSmall { .. } => t("Werkzeug-Radius zu klein", "Tool radius too small"),
+            SimErrorCode::NoPattern => t("Muster nicht definiert", "Pattern not defined"),
             SimErrorCode::LimitSwitch { axis, value, max, .. }
             | SimErrorCode::RotaryLimit { axis, value, max, .. } => {
                 let sign = if value > max { '+' } else { '-' };
@@ -159,9 +169,37 @@ impl SimErrorCode {
                 format!("CYCL DEF {cycle}: Q{param} fehlt"),
                 format!("CYCL DEF {cycle}: Q{param} is missing"),
             ),
-            SimErrorCode::DepthSign { value } => t(
-                format!("Zyklus 200: Tiefe Q201 = {value} ist positiv"),
-                format!("Cycle 200: depth Q201 = {value} is positive"),
+            SimErrorCode::DepthSign { cycle, value } => t(
+                format!("Zyklus {cycle}: Tiefe Q201 = {} ist positiv", prose(*value, Some(4), Lang::De)),
+                format!("Cycle {cycle}: depth Q201 = {} is positive", prose(*value, Some(4), Lang::En)),
+            ),
+            SimErrorCode::ToolTooLarge { cycle, tool_diameter, size } => t(
+                format!(
+                    "Zyklus {cycle}: Werkzeugdurchmesser {} größer als {} (Bohrung, Tasche oder Nut ohne Aufmaß)",
+                    prose(*tool_diameter, Some(4), Lang::De),
+                    prose(*size, Some(4), Lang::De)
+                ),
+                format!(
+                    "Cycle {cycle}: tool diameter {} larger than {} (bore, pocket or slot less its allowance)",
+                    prose(*tool_diameter, Some(4), Lang::En),
+                    prose(*size, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::ToolTooSmall { cycle, tool_diameter, size } => t(
+                format!(
+                    "Zyklus {cycle}: Solldurchmesser {} größer als 2 × Werkzeugdurchmesser {}: Vorbohrdurchmesser Q342 angeben",
+                    prose(*size, Some(4), Lang::De),
+                    prose(*tool_diameter, Some(4), Lang::De)
+                ),
+                format!(
+                    "Cycle {cycle}: nominal diameter {} larger than 2 × the tool diameter {}: give the roughing diameter Q342",
+                    prose(*size, Some(4), Lang::En),
+                    prose(*tool_diameter, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::NoPattern => t(
+                "CYCL CALL PAT ohne vorheriges PATTERN DEF",
+                "CYCL CALL PAT without a preceding PATTERN DEF",
             ),
             SimErrorCode::LimitSwitch { axis, value, min, max }
             | SimErrorCode::RotaryLimit { axis, value, min, max } => t(

@@ -7,7 +7,7 @@ use glam::{DMat3, DVec3};
 
 use crate::angle::short_delta;
 use crate::ast::{
-    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDefOld, Expr, FnOp, Func, Label, Line, OldCycleData,
+    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line, OldCycleData,
     OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
@@ -108,6 +108,10 @@ pub(crate) struct Interp {
     corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
     /// The corner point a RND/CHF cut off: where the next element starts geometrically.
     geom_start: Option<DVec3>,
+    /// The block of the last `PATTERN DEF` (for `CYCL CALL PAT`).
+    pattern: Option<usize>,
+    /// `M89` is active: every positioning block calls the cycle.
+    m89: bool,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -120,9 +124,9 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
-/// M functions with a motion meaning the simulator does not model (M89 modal cycle call, M92 OEM
-/// position, M128/M129 TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 5] = [89, 92, 128, 129, 140];
+/// M functions with a motion meaning the simulator does not model (M92 OEM position, M128/M129
+/// TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 4] = [92, 128, 129, 140];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
@@ -203,6 +207,8 @@ impl Interp {
             tangent: None,
             corner: None,
             geom_start: None,
+            pattern: None,
+            m89: false,
         };
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
@@ -332,7 +338,10 @@ impl Interp {
             }
             BlockBody::BlkForm(b) => self.blk_form(b)?,
             BlockBody::ToolCall(t) => self.tool_call(t, &mut rec)?,
-            BlockBody::L(line) => self.line(cx, &mut rec, idx, line)?,
+            BlockBody::L(line) => {
+                self.line(cx, &mut rec, idx, line)?;
+                self.modal_call(cx, &mut rec, idx, line)?;
+            }
             BlockBody::Cc(m) => {
                 let last = self.geom_start.unwrap_or(self.pos_i);
                 self.pole = Some(self.pole_of(&m.axes, last)?);
@@ -368,14 +377,15 @@ impl Interp {
                     )
                 });
             }
-            BlockBody::CyclCallPat { m, .. } => self.call_not_simulated(&mut rec, "PAT", m),
-            BlockBody::CyclCallPos(l) => self.call_not_simulated(&mut rec, "POS", &l.m),
+            BlockBody::CyclCallPat { feed, m } => self.call_pattern(cx, &mut rec, idx, feed.as_ref(), m)?,
+            BlockBody::CyclCallPos(l) => self.call_pos(cx, &mut rec, idx, l)?,
             BlockBody::PatternDef(items) => {
+                self.pattern = Some(idx);
                 let n = items.len();
                 note(&mut rec, || {
                     Text::owned(
-                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT (nicht simuliert)"),
-                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT (not simulated)"),
+                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
+                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
                     )
                 });
             }
@@ -410,18 +420,10 @@ impl Interp {
                 if m.contains(&99) {
                     self.call_cycle(cx, &mut rec, idx)?;
                 }
+                self.m89 = m.contains(&89) || (self.m89 && !m.contains(&99));
                 self.end_m(m);
             }
-            BlockBody::CycleDef(d) => {
-                self.cycle = Some(StoredCycle::New(idx));
-                let n = d.number;
-                note(&mut rec, || {
-                    Text::owned(
-                        format!("Zyklus {n} definiert, wirkt beim Aufruf"),
-                        format!("Cycle {n} defined, acts when called"),
-                    )
-                });
-            }
+            BlockBody::CycleDef(d) => self.cycle_def(cx, &mut rec, idx, d)?,
             BlockBody::CycleDefOld(d) => self.old_cycle(cx, &mut rec, idx, d)?,
             BlockBody::CyclCall { m } => {
                 self.spindle_m(m);

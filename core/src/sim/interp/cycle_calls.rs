@@ -1,7 +1,11 @@
-//! Cycle definitions in the old form (`CYCL DEF 7.x`, `19.x` …) and cycle calls (`CYCL CALL`,
-//! `M99`): what each called cycle moves.
+//! Cycle definitions (`CYCL DEF n`, the old form `CYCL DEF 7.x`, `19.x` …) and cycle calls
+//! (`CYCL CALL`, `M99`, modal `M89`, `CYCL CALL PAT` with `PATTERN DEF`, `CYCL CALL POS`, the
+//! DEF-active patterns 220 and 221): what each called cycle moves ([`cycles`]), recorded as
+//! segments in the I-CS, arcs and helices as [`SegmentPath::Arc`].
 
 use super::*;
+use crate::ast::{PatternItem, PatternKey};
+use crate::sim::cycles::{ArcTo, CycleRun, Params, PatternValues, rapid};
 
 impl Interp {
     pub(super) fn old_cycle(
@@ -94,77 +98,75 @@ impl Interp {
         Ok(())
     }
 
-    /// `CYCL CALL PAT`/`CYCL CALL POS`: the M functions act, the call is reported.
-    pub(super) fn call_not_simulated(&mut self, rec: &mut Option<&mut Rec>, word: &'static str, m: &[u32]) {
-        self.spindle_m(m);
+    /// `CYCL DEF n …`: a machining cycle is stored for its calls; 220 and 221 are DEF-active and
+    /// call the stored one at once. A new definition ends a modal `M89` call (manual, "Calling a
+    /// cycle with M89").
+    pub(super) fn cycle_def(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, d: &CycleDef) -> R<()> {
+        self.m89 = false;
+        if matches!(d.number, 220 | 221) {
+            return self.pattern_cycle(cx, rec, idx, d);
+        }
+        self.cycle = Some(StoredCycle::New(idx));
+        let n = d.number;
         note(rec, || {
-            Text::owned(
-                format!("CYCL CALL {word} nicht simuliert"),
-                format!("CYCL CALL {word} not simulated"),
-            )
+            Text::owned(format!("Zyklus {n} definiert, wirkt beim Aufruf"), format!("Cycle {n} defined, acts when called"))
         });
-        self.end_m(m);
+        Ok(())
     }
 
-    pub(super) fn call_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize) -> R<()> {
-        let Some(c) = self.cycle else { return Err(SimErrorCode::NoCycle) };
-        let def = match c {
-            StoredCycle::Old(n) => {
-                note(rec, || {
-                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
-                });
-                return Ok(());
+    /// The evaluated parameters of a definition.
+    fn params_of(&self, d: &CycleDef) -> R<Params> {
+        if d.params.is_empty() {
+            return Err(SimErrorCode::CycleParamsMissing { cycle: d.number });
+        }
+        let values = d.params.iter().map(|p| Ok((p.index, self.value(&p.value)?))).collect::<R<Vec<_>>>()?;
+        Ok(Params::new(d.number, values))
+    }
+
+    /// The stored machining cycle's parameters; `None` (with a note) for an old-style cycle,
+    /// which is not simulated.
+    fn stored_params(&self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>) -> R<Option<Params>> {
+        match self.cycle {
+            None => Err(SimErrorCode::NoCycle),
+            Some(StoredCycle::Old(n)) => {
+                note(rec, || Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+                Ok(None)
             }
-            StoredCycle::New(b) => match cx.program.blocks.get(b).map(|b| &b.body) {
-                Some(BlockBody::CycleDef(d)) => d,
-                _ => return Err(SimErrorCode::NoCycle),
+            Some(StoredCycle::New(b)) => match cx.program.blocks.get(b).map(|b| &b.body) {
+                Some(BlockBody::CycleDef(d)) => self.params_of(d).map(Some),
+                _ => Err(SimErrorCode::NoCycle),
             },
-        };
-        let number = def.number;
-        if def.params.is_empty() {
-            return Err(SimErrorCode::CycleParamsMissing { cycle: number });
         }
-        let q = |i: u32| -> R<f64> {
-            match def.params.iter().rev().find(|p| p.index == i) {
-                Some(p) => self.value(&p.value),
-                None => Err(SimErrorCode::CycleParamMissing { cycle: number, param: i }),
-            }
+    }
+
+    /// Runs the stored cycle at the current position with its parameters adjusted by `adjust`;
+    /// the number of moves, or `None` when it is not simulated (said in the block's message).
+    fn run_stored(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        adjust: impl Fn(&mut Params),
+    ) -> R<Option<(u32, usize)>> {
+        let Some(mut p) = self.stored_params(cx, rec)? else { return Ok(None) };
+        adjust(&mut p);
+        let n = p.cycle;
+        let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)? else {
+            note(rec, || Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+            return Ok(None);
         };
-        let moves: Vec<CycleMove> = match number {
-            200 => cycles::drill_200(&q, self.pos_i)?,
-            232 => {
-                let strategy = q(389).unwrap_or(0.0);
-                let m = cycles::face_mill_232(&q, self.pos_i, self.tool.radius)?;
-                if strategy != 0.0 && unconfirmed::CYCLE232_STRATEGY {
-                    note(rec, || {
-                        Text::owned(
-                            format!("Zyklus 232: Strategie Q389={strategy} als Mäander simuliert"),
-                            format!("Cycle 232: strategy Q389={strategy} simulated as a meander"),
-                        )
-                    });
-                }
-                m
-            }
-            n => {
-                note(rec, || {
-                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
-                });
-                return Ok(());
-            }
-        };
-        for m in &moves {
-            let l = self.map.apply(m.target);
-            self.check_linear(cx, l)?;
-            let (kind, rate) = match m.feed {
-                None => (SegmentKind::Rapid, Rate::Rapid),
-                Some(f) => (SegmentKind::CycleFeed, Rate::Feed(f)),
-            };
-            let target = MachineAxes { linear: l, ..self.axes };
-            self.go(cx, rec, idx, kind, target, [0.0; 2], rate, || SegmentPath::Linear);
-            self.pos_i = m.target;
+        if let Some(t) = simplified {
+            note(rec, || t);
         }
-        if rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            let n = moves.len();
+        self.run_moves(cx, rec, idx, &moves)?;
+        Ok(Some((n, moves.len())))
+    }
+
+    /// `M99`, `CYCL CALL` and each block of a modal `M89` call: the stored cycle here.
+    pub(super) fn call_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize) -> R<()> {
+        if let Some((number, n)) = self.run_stored(cx, rec, idx, |_| {})?
+            && rec.as_ref().is_some_and(|r| r.message.is_none())
+        {
             note(rec, || {
                 Text::owned(
                     format!("Zyklus {number} ausgeführt ({n} Bewegungen in der Bearbeitungsebene)"),
@@ -173,5 +175,264 @@ impl Interp {
             });
         }
         Ok(())
+    }
+
+    /// After an `L` block: `M89` starts the modal cycle call ([`unconfirmed::M89_CALLS_AT_ITS_BLOCK`]),
+    /// which calls the cycle after every positioning block until `M99` (which calls it once
+    /// more, in [`Self::line`]) or a new `CYCL DEF` ends it (manual, "Calling a cycle with M89").
+    pub(super) fn modal_call(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, line: &Line) -> R<()> {
+        if line.m.contains(&99) {
+            self.m89 = false;
+            return Ok(());
+        }
+        if line.m.contains(&89) {
+            self.m89 = true;
+            if !unconfirmed::M89_CALLS_AT_ITS_BLOCK {
+                return Ok(());
+            }
+        }
+        if self.m89 && !self.ended && line.axes.iter().any(|w| linear_index(w.axis).is_some()) {
+            self.call_cycle(cx, rec, idx)?;
+        }
+        Ok(())
+    }
+
+    /// The moves of a cycle, each recorded as a segment (arcs and helices exact at any fraction).
+    fn run_moves(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, moves: &[CycleMove]) -> R<()> {
+        for m in moves {
+            let l = self.map.apply(m.target);
+            self.check_linear(cx, l)?;
+            let (kind, rate) = match m.feed {
+                None => (SegmentKind::Rapid, Rate::Rapid),
+                Some(f) => (SegmentKind::CycleFeed, Rate::Feed(f)),
+            };
+            let target = MachineAxes { linear: l, ..self.axes };
+            match m.arc {
+                None => self.go(cx, rec, idx, kind, target, [0.0; 2], rate, || SegmentPath::Linear),
+                Some(ArcTo { centre, sweep }) => {
+                    // The I-CS arc about the tool axis (Z) carried through the I-CS → axes map,
+                    // which only turns, mirrors and shifts (as the contour's arcs).
+                    let start = self.pos_i;
+                    let c = centre.extend(start.z);
+                    let u = start - c;
+                    let rise = m.target.z - start.z;
+                    let mm = self.map.m;
+                    let path = SegmentPath::Arc(Box::new(ArcPath {
+                        centre: self.map.apply(c),
+                        u: mm * u,
+                        v: mm * DVec3::Z.cross(u),
+                        sweep,
+                        lead: mm * DVec3::new(0.0, 0.0, rise),
+                    }));
+                    let length = (u.length() * sweep).hypot(rise);
+                    self.go_along(cx, rec, idx, kind, target, rate, length, path);
+                }
+            }
+            self.pos_i = m.target;
+        }
+        Ok(())
+    }
+
+    /// The words of a `PATTERN DEF` item as numbers (a word not written: 0, a count: 1).
+    fn pattern_values(&self, item: &PatternItem) -> R<PatternValues> {
+        let get = |k: PatternKey, default: f64| item.get(k).map_or(Ok(default), |v| self.value(&v));
+        Ok(PatternValues {
+            kind: item.kind,
+            x: get(PatternKey::X, 0.0)?,
+            y: get(PatternKey::Y, 0.0)?,
+            z: get(PatternKey::Z, 0.0)?,
+            d: get(PatternKey::D, 0.0)?,
+            dx: get(PatternKey::Dx, 0.0)?,
+            dy: get(PatternKey::Dy, 0.0)?,
+            num: get(PatternKey::Num, 1.0)?,
+            numx: get(PatternKey::NumX, 1.0)?,
+            numy: get(PatternKey::NumY, 1.0)?,
+            rot: get(PatternKey::Rot, 0.0)?,
+            rotx: get(PatternKey::RotX, 0.0)?,
+            roty: get(PatternKey::RotY, 0.0)?,
+            start: get(PatternKey::Start, 0.0)?,
+            step: get(PatternKey::Step, 0.0)?,
+        })
+    }
+
+    /// `CYCL CALL PAT`: the stored cycle at every point of the last `PATTERN DEF`, the point's Z
+    /// added to the cycle's surface Q203. Between the points the tool travels at the clearance
+    /// height, "the spindle axis coordinate at the cycle call or Q204, whichever is greater"
+    /// (manual, "Calling a cycle with CYCL CALL PAT"), at the block's feed
+    /// ([`unconfirmed::CYCL_CALL_PAT_FEED_BETWEEN_POINTS`]).
+    pub(super) fn call_pattern(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        feed: Option<&Feed<Value>>,
+        m: &[u32],
+    ) -> R<()> {
+        self.spindle_m(m);
+        let items = match self.pattern.and_then(|b| cx.program.blocks.get(b)).map(|b| &b.body) {
+            Some(BlockBody::PatternDef(items)) => items,
+            _ => return Err(SimErrorCode::NoPattern),
+        };
+        let mut points = Vec::new();
+        for item in items.iter() {
+            points.extend(cycles::pattern_points(&self.pattern_values(item)?));
+        }
+        points.truncate(MAX_PATTERN_POINTS);
+        let Some(p) = self.stored_params(cx, rec)? else {
+            self.end_m(m);
+            return Ok(());
+        };
+        let rate = match feed {
+            Some(Feed::Value(v)) if unconfirmed::CYCL_CALL_PAT_FEED_BETWEEN_POINTS => Some(self.value(v)?),
+            _ => None,
+        };
+        let z_call = self.pos_i.z;
+        let (surface, clear2) = (p.or(203, 0.0), p.or(204, 0.0));
+        let mut moves = 0;
+        for &(xy, z) in &points {
+            let height = z_call.max(surface + z + clear2);
+            let mut pre = Vec::new();
+            if self.pos_i.z < height {
+                pre.push(rapid(self.pos_i.truncate().extend(height)));
+            }
+            pre.push(CycleMove { target: xy.extend(self.pos_i.z.max(height)), feed: rate, arc: None });
+            self.run_moves(cx, rec, idx, &pre)?;
+            moves += pre.len() + self.run_stored(cx, rec, idx, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
+        }
+        let (number, k) = (p.cycle, points.len());
+        if rec.as_ref().is_some_and(|r| r.message.is_none()) {
+            note(rec, || {
+                Text::owned(
+                    format!("CYCL CALL PAT: Zyklus {number} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
+                    format!("CYCL CALL PAT: cycle {number} executed at {k} points ({moves} moves)"),
+                )
+            });
+        }
+        self.end_m(m);
+        Ok(())
+    }
+
+    /// `CYCL CALL POS X… Y… Z…`: the stored cycle at that position, its Z "an additional datum
+    /// shift" of the surface Q203. Above the surface the tool moves first in the plane, then in
+    /// the tool axis; below it first up to the clearance height
+    /// ([`unconfirmed::CYCL_CALL_POS_CLEARANCE`]), then in the plane (manual, "Calling a cycle
+    /// with CYCL CALL POS"). The block's feed acts only on these moves.
+    pub(super) fn call_pos(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, l: &Line) -> R<()> {
+        self.spindle_m(&l.m);
+        let Some(p) = self.stored_params(cx, rec)? else {
+            self.end_m(&l.m);
+            return Ok(());
+        };
+        let mut target = self.pos_i;
+        for w in l.axes.iter() {
+            let Some(i) = linear_index(w.axis) else { return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) }) };
+            let v = self.value(&w.value)?;
+            target[i] = if w.incremental { target[i] + v } else { v };
+        }
+        let rate = match l.feed.as_ref() {
+            Some(Feed::Value(v)) => Some(self.value(v)?),
+            Some(Feed::Max) => None,
+            Some(Feed::Auto) => (self.tool.feed > 0.0).then_some(self.tool.feed),
+            None => (self.feed > 0.0).then_some(self.feed),
+        };
+        let surface = p.or(203, 0.0) + target.z;
+        let here = self.pos_i;
+        let go = |v: DVec3| CycleMove { target: v, feed: rate, arc: None };
+        let pre = if here.z > surface || !unconfirmed::CYCL_CALL_POS_CLEARANCE {
+            vec![go(target.truncate().extend(here.z)), go(target)]
+        } else {
+            let h = surface + p.or(204, 0.0);
+            vec![go(here.truncate().extend(h)), go(target.truncate().extend(h)), go(target)]
+        };
+        self.run_moves(cx, rec, idx, &pre)?;
+        let shift = target.z;
+        if let Some((number, n)) = self.run_stored(cx, rec, idx, |q| shift_surface(q, shift))?
+            && rec.as_ref().is_some_and(|r| r.message.is_none())
+        {
+            note(rec, || {
+                Text::owned(
+                    format!("CYCL CALL POS: Zyklus {number} ausgeführt ({n} Bewegungen)"),
+                    format!("CYCL CALL POS: cycle {number} executed ({n} moves)"),
+                )
+            });
+        }
+        self.end_m(&l.m);
+        Ok(())
+    }
+
+    /// Cycles 220 MUSTER KREIS and 221 MUSTER LINIEN (DEF-active): the stored cycle at every
+    /// point, with this cycle's Q200, Q203 and Q204 (manual: "the set-up clearance, workpiece
+    /// surface and 2nd set-up clearance that you defined in cycle 220 are effective for the
+    /// selected fixed cycle"). To the first point: up to Q204, in the plane, (the cycle) down to
+    /// Q200; between the points at Q200 (Q301 = 0) or Q204 (Q301 = 1), on a straight line or,
+    /// for 220 with Q365 = 1, on the circle; at the end to Q204 ([`unconfirmed::PATTERN_CYCLE_END`]).
+    fn pattern_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, d: &CycleDef) -> R<()> {
+        let p = self.params_of(d)?;
+        let (points, circle) = if d.number == 220 {
+            let (points, centre, step) = cycles::circle_220(&p)?;
+            (points, (p.or(365, 0.0) == 1.0).then_some((centre, step)))
+        } else {
+            (cycles::grid_221(&p)?, None)
+        };
+        let (clear, surface, clear2, q301) = (p.get(200)?, p.get(203)?, p.get(204)?, p.get(301)?);
+        let between = if q301 == 0.0 { clear } else { clear2 };
+        let high = surface + clear2;
+        let mut moves = 0;
+        let mut called = None;
+        for (k, &xy) in points.iter().take(MAX_PATTERN_POINTS).enumerate() {
+            let here = self.pos_i;
+            let pre = if k == 0 {
+                let mut v = Vec::new();
+                if here.z < high {
+                    v.push(rapid(here.truncate().extend(high)));
+                }
+                v.push(rapid(xy.extend(here.z.max(high))));
+                v
+            } else {
+                let on_circle = circle.filter(|(c, _)| {
+                    ((here.truncate() - *c).length() - (xy - *c).length()).abs() < 1e-6
+                });
+                let arc = on_circle.map(|(centre, step)| ArcTo { centre, sweep: step.to_radians() });
+                vec![CycleMove { target: xy.extend(here.z), feed: None, arc }]
+            };
+            self.run_moves(cx, rec, idx, &pre)?;
+            let Some((n, count)) = self.run_stored(cx, rec, idx, |q| {
+                q.set(200, clear);
+                q.set(203, surface);
+                q.set(204, between);
+            })?
+            else {
+                return Ok(());
+            };
+            called = Some(n);
+            moves += pre.len() + count;
+        }
+        if unconfirmed::PATTERN_CYCLE_END && self.pos_i.z < high {
+            moves += 1;
+            self.run_moves(cx, rec, idx, &[rapid(self.pos_i.truncate().extend(high))])?;
+        }
+        let (number, k) = (d.number, points.len().min(MAX_PATTERN_POINTS));
+        let called = called.map_or_else(String::new, |n| n.to_string());
+        if rec.as_ref().is_some_and(|r| r.message.is_none()) {
+            note(rec, || {
+                Text::owned(
+                    format!("Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
+                    format!("Cycle {number}: cycle {called} executed at {k} points ({moves} moves)"),
+                )
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Upper bound of the positions of one pattern call.
+const MAX_PATTERN_POINTS: usize = 10_000;
+
+/// The surface Q203 of a called cycle moved by `z` (the pattern point's or `CYCL CALL POS`'s Z).
+fn shift_surface(p: &mut Params, z: f64) {
+    if z != 0.0
+        && let Ok(s) = p.get(203)
+    {
+        p.set(203, s + z);
     }
 }
