@@ -7,8 +7,8 @@ use glam::{DMat3, DVec3};
 
 use crate::angle::short_delta;
 use crate::ast::{
-    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line, OldCycleData,
-    OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
+    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line,
+    OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;

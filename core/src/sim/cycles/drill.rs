@@ -70,7 +70,11 @@ pub(super) fn drill_200(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let mut reached = 0.0;
     let mut made = 0;
     loop {
-        reached = next_depth(reached, unconfirmed::decremented_infeed(step, 0.0, 0.0, made, total - reached), total);
+        reached = next_depth(
+            reached,
+            unconfirmed::decremented_infeed(step, 0.0, 0.0, made, total - reached),
+            total,
+        );
         made += 1;
         out.push(feed(hole.below(reached), f));
         if reached >= total || out.len() >= MAX_CYCLE_MOVES {
@@ -165,7 +169,8 @@ pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let (first, decrement, min) = (p.get(202)?, p.get(212)?, p.get(205)?);
     let (upper, lower) = (p.get(258)?, p.get(259)?);
     let (break_every, lift) = (p.get(257)?, p.get(256)?);
-    let back = if unconfirmed::CYCLE205_Q208_ZERO_IS_Q206 { retract_feed(p.get(208)?, f) } else { p.get(208)? };
+    let back =
+        if unconfirmed::CYCLE205_Q208_ZERO_IS_Q206 { retract_feed(p.get(208)?, f) } else { p.get(208)? };
     let total = depth(p)?;
     let mut out = vec![rapid(hole.safe())];
     if total == 0.0 {
@@ -275,7 +280,8 @@ mod tests {
     const FMAX: Option<f64> = None;
 
     fn drilling(cycle: u32, extra: &[(u32, f64)]) -> Params {
-        let mut p = params(cycle, &[(200, 2.0), (201, -20.0), (206, 150.0), (202, 5.0), (203, 0.0), (204, 50.0)]);
+        let mut p =
+            params(cycle, &[(200, 2.0), (201, -20.0), (206, 150.0), (202, 5.0), (203, 0.0), (204, 50.0)]);
         for &(i, v) in extra {
             p.set(i, v);
         }
@@ -368,7 +374,16 @@ mod tests {
         // Q258 1 + (Q259 3 − 1)·10/20 = 2.
         let p = drilling(
             205,
-            &[(202, 10.0), (212, 0.0), (205, 0.0), (258, 1.0), (259, 3.0), (257, 4.0), (256, 0.2), (208, 1000.0)],
+            &[
+                (202, 10.0),
+                (212, 0.0),
+                (205, 0.0),
+                (258, 1.0),
+                (259, 3.0),
+                (257, 4.0),
+                (256, 0.2),
+                (208, 1000.0),
+            ],
         );
         let got = path(&peck_205(&p, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
         let at = |z: f64, f| (0.0, 0.0, z, f);
@@ -397,7 +412,17 @@ mod tests {
         // −5 with pitch 2: 3.5 turns; DR+ (Q351 = +1).
         let p = params(
             208,
-            &[(200, 2.0), (201, -5.0), (206, 150.0), (334, 2.0), (203, 0.0), (204, 20.0), (335, 16.0), (342, 0.0), (351, 1.0)],
+            &[
+                (200, 2.0),
+                (201, -5.0),
+                (206, 150.0),
+                (334, 2.0),
+                (203, 0.0),
+                (204, 20.0),
+                (335, 16.0),
+                (342, 0.0),
+                (351, 1.0),
+            ],
         );
         let moves = bore_mill_208(&p, DVec3::new(40.0, 30.0, 10.0), 5.0).expect("cycle");
         let got = path(&moves);
@@ -422,22 +447,41 @@ mod tests {
 
     #[test]
     fn cycle_208_tool_size_against_the_bore() {
-        let base = [(200, 2.0), (201, -5.0), (206, 150.0), (334, 2.0), (203, 0.0), (204, 20.0), (342, 0.0), (351, -1.0)];
+        let base = [
+            (200, 2.0),
+            (201, -5.0),
+            (206, 150.0),
+            (334, 2.0),
+            (203, 0.0),
+            (204, 20.0),
+            (342, 0.0),
+            (351, -1.0),
+        ];
         let with = |d: f64, pre: f64| {
             let mut p = params(208, &base);
             p.set(335, d);
             p.set(342, pre);
             bore_mill_208(&p, DVec3::ZERO, 5.0)
         };
-        assert_eq!(with(9.0, 0.0), Err(SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 9.0 }));
-        assert_eq!(with(21.0, 0.0), Err(SimErrorCode::ToolTooSmall { cycle: 208, tool_diameter: 10.0, size: 21.0 }));
+        assert_eq!(
+            with(9.0, 0.0),
+            Err(SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 9.0 })
+        );
+        assert_eq!(
+            with(21.0, 0.0),
+            Err(SimErrorCode::ToolTooSmall { cycle: 208, tool_diameter: 10.0, size: 21.0 })
+        );
         // Equal diameters: straight to depth, no helix.
         let got = path(&with(10.0, 0.0).expect("cycle"));
-        assert_eq!(got, vec![(0.0, 0.0, 2.0, FMAX), (0.0, 0.0, -5.0, F), (0.0, 0.0, 2.0, FMAX), (0.0, 0.0, 20.0, FMAX)]);
+        assert_eq!(
+            got,
+            vec![(0.0, 0.0, 2.0, FMAX), (0.0, 0.0, -5.0, F), (0.0, 0.0, 2.0, FMAX), (0.0, 0.0, 20.0, FMAX)]
+        );
         // Pre-drilled Ø 20, nominal Ø 40: helix radii from 5 to 15 in steps of at most the tool
         // radius: 10 and 15, each reached on a semicircle at 2 above the surface; DR− (Q351 = −1).
         let moves = with(40.0, 20.0).expect("cycle");
-        let starts: Vec<f64> = moves.iter().filter(|m| m.arc.is_some() && m.target.z == 2.0).map(|m| m.target.x).collect();
+        let starts: Vec<f64> =
+            moves.iter().filter(|m| m.arc.is_some() && m.target.z == 2.0).map(|m| m.target.x).collect();
         assert_eq!(starts, vec![10.0, 15.0]);
         assert!(moves.iter().filter_map(|m| m.arc).all(|a| a.sweep < 0.0));
     }

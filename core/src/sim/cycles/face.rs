@@ -118,7 +118,8 @@ pub(super) fn face_mill_233(p: &Params, pos: DVec3, tool_radius: f64) -> Result<
     // 232's start point is the lower left corner; along the minor axis the rows run in Y, so
     // the rectangle is milled with X and Y exchanged and exchanged back.
     let swap = |v: DVec3| if across { DVec3::new(v.y, v.x, v.z) } else { v };
-    let (corner, sides) = if across { ((cy - h2, cx - h1), (l2, l1)) } else { ((cx - h1, cy - h2), (l1, l2)) };
+    let (corner, sides) =
+        if across { ((cy - h2, cx - h1), (l2, l1)) } else { ((cx - h1, cy - h2), (l1, l2)) };
     q.set(225, corner.0);
     q.set(226, corner.1);
     q.set(218, sides.0);

@@ -43,7 +43,14 @@ fn count(n: f64) -> usize {
 /// The points of a grid: `cols` along `e1` spaced `d1`, `rows` along `e2` spaced `d2`, from
 /// `origin`, row by row, every other row backwards (cycle 221's order; `PATTERN DEF` PAT and
 /// FRAME by [`unconfirmed::PATTERN_GRID_ORDER`]). `edge_only`: the frame's points.
-fn grid(origin: DVec2, e1: DVec2, e2: DVec2, (d1, d2): (f64, f64), (cols, rows): (usize, usize), edge_only: bool) -> Vec<DVec2> {
+fn grid(
+    origin: DVec2,
+    e1: DVec2,
+    e2: DVec2,
+    (d1, d2): (f64, f64),
+    (cols, rows): (usize, usize),
+    edge_only: bool,
+) -> Vec<DVec2> {
     let mut out = Vec::new();
     let rows = rows.min(MAX_CYCLE_MOVES / cols.max(1));
     for j in 0..rows {
@@ -188,7 +195,10 @@ mod tests {
     fn rows_grids_and_frames() {
         // ROW1 (X+10 Y+20 D+8 NUM3 ROT+90): up the Y axis.
         let v = PatternValues { d: 8.0, num: 3.0, rot: 90.0, ..item(PatternKind::Row) };
-        close(&xy(pattern_points(&v)), &[DVec2::new(10.0, 20.0), DVec2::new(10.0, 28.0), DVec2::new(10.0, 36.0)]);
+        close(
+            &xy(pattern_points(&v)),
+            &[DVec2::new(10.0, 20.0), DVec2::new(10.0, 28.0), DVec2::new(10.0, 36.0)],
+        );
         // PAT1 3 × 2, DX 5, DY 4: the first row forwards, the second backwards.
         let v = PatternValues { dx: 5.0, dy: 4.0, numx: 3.0, numy: 2.0, ..item(PatternKind::Pat) };
         let p = |x: f64, y: f64| DVec2::new(x, y);
@@ -212,7 +222,10 @@ mod tests {
     #[test]
     fn cycle_220_full_circle_and_arc_and_cycle_221_meander() {
         let circle = |start: f64, stop: f64, step: f64, n: f64| {
-            params(220, &[(216, 0.0), (217, 0.0), (244, 20.0), (245, start), (246, stop), (247, step), (241, n)])
+            params(
+                220,
+                &[(216, 0.0), (217, 0.0), (244, 20.0), (245, start), (246, stop), (247, step), (241, n)],
+            )
         };
         let on = |deg: f64| 10.0 * polar(deg);
         // Q247 = 0, 0°…360°, 4 points: 90° apart.
@@ -226,8 +239,14 @@ mod tests {
         let (pts, _, _) = circle_220(&circle(10.0, 90.0, -20.0, 2.0)).expect("pattern");
         close(&pts, &[on(10.0), on(-10.0)]);
         // 221: 3 columns 10 apart, 2 lines 5 apart, from (1, 2); the second line backwards.
-        let p = params(221, &[(225, 1.0), (226, 2.0), (237, 10.0), (238, 5.0), (242, 3.0), (243, 2.0), (224, 0.0)]);
+        let p = params(
+            221,
+            &[(225, 1.0), (226, 2.0), (237, 10.0), (238, 5.0), (242, 3.0), (243, 2.0), (224, 0.0)],
+        );
         let q = |x: f64, y: f64| DVec2::new(x, y);
-        close(&grid_221(&p).expect("pattern"), &[q(1.0, 2.0), q(11.0, 2.0), q(21.0, 2.0), q(21.0, 7.0), q(11.0, 7.0), q(1.0, 7.0)]);
+        close(
+            &grid_221(&p).expect("pattern"),
+            &[q(1.0, 2.0), q(11.0, 2.0), q(21.0, 2.0), q(21.0, 7.0), q(11.0, 7.0), q(1.0, 7.0)],
+        );
     }
 }

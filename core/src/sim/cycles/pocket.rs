@@ -88,7 +88,9 @@ fn rounded_rectangle(a: f64, b: f64, c: f64, dir: f64) -> Loop {
             .into_iter()
             .map(|p| match p {
                 Piece::Line(to) => Piece::Line(m(to)),
-                Piece::Arc { to, centre, sweep } => Piece::Arc { to: m(to), centre: m(centre), sweep: -sweep },
+                Piece::Arc { to, centre, sweep } => {
+                    Piece::Arc { to: m(to), centre: m(centre), sweep: -sweep }
+                }
             })
             .collect();
     }
@@ -262,7 +264,8 @@ fn mill(c: &Common, shape: &Shape, pos: DVec3, r: f64, out: &mut Vec<CycleMove>)
     if c.operation != 1 {
         let wall: Vec<Loop> = shape.finish.last().cloned().into_iter().collect();
         if c.side > 0.0 || c.operation == 2 {
-            let zs = if c.finish_step > 0.0 { levels(c.surface, bottom, c.finish_step) } else { vec![bottom] };
+            let zs =
+                if c.finish_step > 0.0 { levels(c.surface, bottom, c.finish_step) } else { vec![bottom] };
             for z in zs {
                 level(out, c, shape, &mut above, z, &wall, c.finish_feed, 0.0);
             }
@@ -515,14 +518,15 @@ mod tests {
         // centre is (0, 0) + turned((20, 15), 90°) = (−15, 20).
         let p = pocket(251, &[(218, 40.0), (219, 30.0), (220, 5.0), (367, 1.0), (224, 90.0)]);
         let moves = rectangular_251(&p, DVec3::new(0.0, 0.0, 30.0), 5.0).expect("cycle");
-        let want_first = vec![(-15.0, 20.0, 30.0, FMAX), (-15.0, 20.0, 2.0, FMAX), (-15.0, 20.0, -2.0, PLUNGE)];
+        let want_first = [(-15.0, 20.0, 30.0, FMAX), (-15.0, 20.0, 2.0, FMAX), (-15.0, 20.0, -2.0, PLUNGE)];
         assert_eq!(path(&moves)[..3], want_first[..]);
         // Finishing (Q215 = 0) with Q368 = 1: roughing stays 1 mm off the walls (x ≤ 14 along
         // the turned pocket: |Δy| ≤ 14 of the centre); the wall pass goes to 15 at F300.
         let p = pocket(251, &[(218, 40.0), (219, 30.0), (220, 5.0), (215, 0.0), (368, 1.0)]);
         let moves = rectangular_251(&p, DVec3::ZERO, 5.0).expect("cycle");
         let rough_x = moves.iter().filter(|m| m.feed == MILL).map(|m| m.target.x.abs()).fold(0.0, f64::max);
-        let finish_x = moves.iter().filter(|m| m.feed == Some(300.0)).map(|m| m.target.x.abs()).fold(0.0, f64::max);
+        let finish_x =
+            moves.iter().filter(|m| m.feed == Some(300.0)).map(|m| m.target.x.abs()).fold(0.0, f64::max);
         assert!((rough_x - 14.0).abs() < 1e-9 && (finish_x - 15.0).abs() < 1e-9, "{rough_x} {finish_x}");
         let p = pocket(251, &[(218, 8.0), (219, 30.0), (220, 0.0)]);
         assert_eq!(
@@ -539,12 +543,27 @@ mod tests {
         let p = pocket(252, &[(223, 30.0), (351, -1.0), (366, 1.0), (201, -2.0)]);
         let moves = circular_252(&p, DVec3::new(10.0, 0.0, 5.0), 5.0).expect("cycle");
         let got = path(&moves);
-        assert_eq!(got[..4], [(10.0, 0.0, 2.0, FMAX), (15.0, 0.0, 2.0, PLUNGE), (15.0, 0.0, -2.0, PLUNGE), (10.0, 0.0, -2.0, MILL)]);
+        assert_eq!(
+            got[..4],
+            [
+                (10.0, 0.0, 2.0, FMAX),
+                (15.0, 0.0, 2.0, PLUNGE),
+                (15.0, 0.0, -2.0, PLUNGE),
+                (10.0, 0.0, -2.0, MILL)
+            ]
+        );
         let helix = moves[2].arc.expect("helix");
         assert_eq!((helix.centre, helix.sweep), (DVec2::new(10.0, 0.0), -std::f64::consts::TAU));
-        let radii: Vec<f64> = moves.iter().filter(|m| m.arc.is_some() && m.feed == MILL).map(|m| (m.target.truncate() - DVec2::new(10.0, 0.0)).length()).collect();
+        let radii: Vec<f64> = moves
+            .iter()
+            .filter(|m| m.arc.is_some() && m.feed == MILL)
+            .map(|m| (m.target.truncate() - DVec2::new(10.0, 0.0)).length())
+            .collect();
         let r = |x: f64| (x * 1e9).round() / 1e9;
-        assert_eq!(radii.into_iter().map(r).collect::<Vec<_>>(), vec![5.0; 4].into_iter().chain(vec![10.0; 4]).collect::<Vec<_>>());
+        assert_eq!(
+            radii.into_iter().map(r).collect::<Vec<_>>(),
+            vec![5.0; 4].into_iter().chain(vec![10.0; 4]).collect::<Vec<_>>()
+        );
         assert!(moves.iter().filter_map(|m| m.arc).all(|a| a.sweep < 0.0));
     }
 
@@ -575,7 +594,17 @@ mod tests {
         // the tool runs the centre arc from (30, 0) to (0, 30) and back; two slots 180° apart.
         let p = pocket(
             254,
-            &[(219, 10.0), (375, 60.0), (376, 0.0), (248, 90.0), (216, 0.0), (217, 0.0), (377, 2.0), (378, 180.0), (201, -2.0)],
+            &[
+                (219, 10.0),
+                (375, 60.0),
+                (376, 0.0),
+                (248, 90.0),
+                (216, 0.0),
+                (217, 0.0),
+                (377, 2.0),
+                (378, 180.0),
+                (201, -2.0),
+            ],
         );
         let moves = circular_slot_254(&p, DVec3::new(0.0, 0.0, 30.0), 5.0).expect("cycle");
         let got = path(&moves);

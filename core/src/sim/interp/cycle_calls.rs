@@ -101,7 +101,13 @@ impl Interp {
     /// `CYCL DEF n …`: a machining cycle is stored for its calls; 220 and 221 are DEF-active and
     /// call the stored one at once. A new definition ends a modal `M89` call (manual, "Calling a
     /// cycle with M89").
-    pub(super) fn cycle_def(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, d: &CycleDef) -> R<()> {
+    pub(super) fn cycle_def(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        d: &CycleDef,
+    ) -> R<()> {
         self.m89 = false;
         if matches!(d.number, 220 | 221) {
             return self.pattern_cycle(cx, rec, idx, d);
@@ -109,7 +115,10 @@ impl Interp {
         self.cycle = Some(StoredCycle::New(idx));
         let n = d.number;
         note(rec, || {
-            Text::owned(format!("Zyklus {n} definiert, wirkt beim Aufruf"), format!("Cycle {n} defined, acts when called"))
+            Text::owned(
+                format!("Zyklus {n} definiert, wirkt beim Aufruf"),
+                format!("Cycle {n} defined, acts when called"),
+            )
         });
         Ok(())
     }
@@ -129,7 +138,9 @@ impl Interp {
         match self.cycle {
             None => Err(SimErrorCode::NoCycle),
             Some(StoredCycle::Old(n)) => {
-                note(rec, || Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+                note(rec, || {
+                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
+                });
                 Ok(None)
             }
             Some(StoredCycle::New(b)) => match cx.program.blocks.get(b).map(|b| &b.body) {
@@ -151,8 +162,11 @@ impl Interp {
         let Some(mut p) = self.stored_params(cx, rec)? else { return Ok(None) };
         adjust(&mut p);
         let n = p.cycle;
-        let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)? else {
-            note(rec, || Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated")));
+        let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)?
+        else {
+            note(rec, || {
+                Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
+            });
             return Ok(None);
         };
         if let Some(t) = simplified {
@@ -180,7 +194,13 @@ impl Interp {
     /// After an `L` block: `M89` starts the modal cycle call ([`unconfirmed::M89_CALLS_AT_ITS_BLOCK`]),
     /// which calls the cycle after every positioning block until `M99` (which calls it once
     /// more, in [`Self::line`]) or a new `CYCL DEF` ends it (manual, "Calling a cycle with M89").
-    pub(super) fn modal_call(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, line: &Line) -> R<()> {
+    pub(super) fn modal_call(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        line: &Line,
+    ) -> R<()> {
         if line.m.contains(&99) {
             self.m89 = false;
             return Ok(());
@@ -198,7 +218,13 @@ impl Interp {
     }
 
     /// The moves of a cycle, each recorded as a segment (arcs and helices exact at any fraction).
-    fn run_moves(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, moves: &[CycleMove]) -> R<()> {
+    fn run_moves(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        moves: &[CycleMove],
+    ) -> R<()> {
         for m in moves {
             let l = self.map.apply(m.target);
             self.check_linear(cx, l)?;
@@ -297,7 +323,8 @@ impl Interp {
             }
             pre.push(CycleMove { target: xy.extend(self.pos_i.z.max(height)), feed: rate, arc: None });
             self.run_moves(cx, rec, idx, &pre)?;
-            moves += pre.len() + self.run_stored(cx, rec, idx, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
+            moves +=
+                pre.len() + self.run_stored(cx, rec, idx, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
         }
         let (number, k) = (p.cycle, points.len());
         if rec.as_ref().is_some_and(|r| r.message.is_none()) {
@@ -317,7 +344,13 @@ impl Interp {
     /// the tool axis; below it first up to the clearance height
     /// ([`unconfirmed::CYCL_CALL_POS_CLEARANCE`]), then in the plane (manual, "Calling a cycle
     /// with CYCL CALL POS"). The block's feed acts only on these moves.
-    pub(super) fn call_pos(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, l: &Line) -> R<()> {
+    pub(super) fn call_pos(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        l: &Line,
+    ) -> R<()> {
         self.spindle_m(&l.m);
         let Some(p) = self.stored_params(cx, rec)? else {
             self.end_m(&l.m);
@@ -325,7 +358,9 @@ impl Interp {
         };
         let mut target = self.pos_i;
         for w in l.axes.iter() {
-            let Some(i) = linear_index(w.axis) else { return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) }) };
+            let Some(i) = linear_index(w.axis) else {
+                return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
+            };
             let v = self.value(&w.value)?;
             target[i] = if w.incremental { target[i] + v } else { v };
         }
@@ -389,9 +424,8 @@ impl Interp {
                 v.push(rapid(xy.extend(here.z.max(high))));
                 v
             } else {
-                let on_circle = circle.filter(|(c, _)| {
-                    ((here.truncate() - *c).length() - (xy - *c).length()).abs() < 1e-6
-                });
+                let on_circle = circle
+                    .filter(|(c, _)| ((here.truncate() - *c).length() - (xy - *c).length()).abs() < 1e-6);
                 let arc = on_circle.map(|(centre, step)| ArcTo { centre, sweep: step.to_radians() });
                 vec![CycleMove { target: xy.extend(here.z), feed: None, arc }]
             };
@@ -416,7 +450,9 @@ impl Interp {
         if rec.as_ref().is_some_and(|r| r.message.is_none()) {
             note(rec, || {
                 Text::owned(
-                    format!("Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
+                    format!(
+                        "Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"
+                    ),
                     format!("Cycle {number}: cycle {called} executed at {k} points ({moves} moves)"),
                 )
             });
