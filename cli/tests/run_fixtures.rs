@@ -123,7 +123,9 @@ fixtures! {
     contour_arcs: "ac-table";
     cr_too_small: "ac-table";
     cycle19_stay: "ac-table";
+    cycle_calls: "ac-table";
     datum_then_tilt: "ac-table";
+    drill_pattern_euler: "ac-table";
     endless: "ac-table", max_blocks = 25;
     endless_fn9: "ac-table", max_blocks = 25;
     fn_jump_loop: "ac-table";
@@ -132,6 +134,7 @@ fixtures! {
     m99_without_cycle: "ac-table";
     mirror_then_tilt: "ac-table";
     old_cycles_7_8_10: "ac-table";
+    pocket_spatial: "ac-table";
     polar_helix: "ac-table";
     relativ_chain: "ac-table";
     rotary_limit: "ca-head";
