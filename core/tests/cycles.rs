@@ -127,10 +127,8 @@ fn the_pocket_is_milled_in_the_tilted_plane_and_its_arcs_are_exact() {
                 assert!(q.z >= -6.0 - TOL && q.z <= 2.0 + TOL, "{id}: {q}");
             }
         }
-        let levels: BTreeSet<i64> = feeds
-            .iter()
-            .map(|g| (ics(&m, &s, g, 1.0).z * 1000.0).round() as i64)
-            .collect();
+        let levels: BTreeSet<i64> =
+            feeds.iter().map(|g| (ics(&m, &s, g, 1.0).z * 1000.0).round() as i64).collect();
         assert!([-3000, -5900, -6000].iter().all(|z| levels.contains(z)), "{id}: {levels:?}");
     }
 }

@@ -300,3 +300,21 @@ fn the_tiled_mesh_always_equals_the_mesh_made_from_scratch() {
     }
     assert!(checked > 20 && reused > checked, "{checked} meshes checked, {reused} tiles reused");
 }
+
+#[test]
+fn pocket_251_removes_its_volume() {
+    // Cycle 251 with roughing and finishing (Q215 = 0, allowances 0.2 side and 0.1 floor), 40 × 30
+    // with corner radius 8, 6 deep, turned by Q224 = 20° in a plane turned by SPC+30, about
+    // (50, 50): the finished pocket is the rounded rectangle × depth,
+    // V = 6 · (40 · 30 − (4 − π) · 8²), the flat end mill of tool 1 (radius 5 < 8).
+    let src = format!(
+        "{BLANK}TOOL CALL 1 Z S6000 F800\nL Z+0 R0 FMAX M91\nTRANS DATUM AXIS X+50 Y+50 Z+0\n\
+         PLANE SPATIAL SPA+0 SPB+0 SPC+30 TURN FMAX\n\
+         CYCL DEF 251 RECHTECKTASCHE ~\n  Q215=+0 ~\n  Q218=+40 ~\n  Q219=+30 ~\n  Q220=+8 ~\n  Q368=+0.2 ~\n  Q224=+20 ~\n  Q367=+0 ~\n  Q207=+500 ~\n  Q351=+1 ~\n  Q201=-6 ~\n  Q202=+2.5 ~\n  Q369=+0.1 ~\n  Q206=+150 ~\n  Q338=+0 ~\n  Q200=+2 ~\n  Q203=+0 ~\n  Q204=+20 ~\n  Q370=+1 ~\n  Q366=+1 ~\n  Q385=+300\n\
+         L X+0 Y+0 Z+30 R0 FMAX M99\nPLANE RESET TURN FMAX\nM30\n"
+    );
+    let (_, _, c) = run(&src, StockOptions::default());
+    let exact = 6.0 * (40.0 * 30.0 - (4.0 - std::f64::consts::PI) * 64.0);
+    within_one_percent(removed(&c), exact);
+    assert!(c.notes.is_empty(), "{:?}", c.notes);
+}
