@@ -169,8 +169,11 @@ fn drilling(body: &str) -> String {
     )
 }
 
-/// The hole bottoms (I-CS) each block drilled, by block number.
-fn holes(src: &str) -> Vec<(u32, BTreeSet<(i64, i64)>, f64)> {
+/// Per block: its number, the hole bottoms (I-CS, µm) it drilled and its lowest point.
+type Holes = Vec<(u32, BTreeSet<(i64, i64)>, f64)>;
+
+/// The holes each block drilled.
+fn holes(src: &str) -> Holes {
     let (p, m, sim) = run_on(src, "ac-table");
     assert!(sim.error.is_none(), "{:?}", sim.error);
     p.blocks
