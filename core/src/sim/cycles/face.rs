@@ -114,7 +114,6 @@ pub(super) fn face_mill_233(p: &Params, pos: DVec3, tool_radius: f64) -> Result<
     let (cx, cy) = (pos.x + centre_offset.0, pos.y + centre_offset.1);
     let across = p.or(350, 1.0) == 2.0;
     let mut q = p.clone();
-    q.cycle = 233;
     // 232's start point is the lower left corner; along the minor axis the rows run in Y, so
     // the rectangle is milled with X and Y exchanged and exchanged back.
     let swap = |v: DVec3| if across { DVec3::new(v.y, v.x, v.z) } else { v };

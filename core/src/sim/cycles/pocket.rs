@@ -258,6 +258,9 @@ fn mill(c: &Common, shape: &Shape, pos: DVec3, r: f64, out: &mut Vec<CycleMove>)
         let helix = if c.helix { shape.room.min(unconfirmed::POCKET_HELIX * r) } else { 0.0 };
         let floor = (bottom + c.floor).min(c.surface);
         for z in levels(c.surface, floor, c.step) {
+            if out.len() >= MAX_CYCLE_MOVES {
+                return;
+            }
             level(out, c, shape, &mut above, z, &shape.rough, c.mill_feed, helix);
         }
     }
@@ -267,6 +270,9 @@ fn mill(c: &Common, shape: &Shape, pos: DVec3, r: f64, out: &mut Vec<CycleMove>)
             let zs =
                 if c.finish_step > 0.0 { levels(c.surface, bottom, c.finish_step) } else { vec![bottom] };
             for z in zs {
+                if out.len() >= MAX_CYCLE_MOVES {
+                    return;
+                }
                 level(out, c, shape, &mut above, z, &wall, c.finish_feed, 0.0);
             }
         }

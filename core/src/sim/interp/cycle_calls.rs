@@ -259,7 +259,8 @@ impl Interp {
         Ok(())
     }
 
-    /// The words of a `PATTERN DEF` item as numbers (a word not written: 0, a count: 1).
+    /// The words of a `PATTERN DEF` item as numbers (a word left out, which the parser reports,
+    /// counts as 0, a count as 1).
     fn pattern_values(&self, item: &PatternItem) -> R<PatternValues> {
         let get = |k: PatternKey, default: f64| item.get(k).map_or(Ok(default), |v| self.value(&v));
         Ok(PatternValues {
