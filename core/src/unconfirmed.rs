@@ -631,7 +631,8 @@ pub const PATTERN_CYCLE_END: bool = true;
 pub const CYCL_CALL_POS_CLEARANCE: bool = true;
 
 /// `M89` (modal cycle call) calls the cycle at the end of its own block too, not only at every
-/// following positioning block. **UNCONFIRMED**.
+/// following positioning block (the TNC 306/406 technical manual: "modal cycle-call M89 at end
+/// of block", "for every following positioning block"). **UNCONFIRMED** for its own block.
 pub const M89_CALLS_AT_ITS_BLOCK: bool = true;
 
 /// `CYCL CALL PAT F…`: the feed applies to the moves between the points (FMAX or none: rapid).

@@ -189,17 +189,36 @@ fn holes(src: &str) -> Holes {
 }
 
 #[test]
-fn m89_calls_the_cycle_at_every_positioning_block_until_m99() {
+fn m89_calls_the_last_defined_cycle_at_every_positioning_block_until_m99_or_cycl_call() {
+    // "M89 as a cycle-call is modally effective, i.e. for every following positioning block
+    // there will be a call of the last-programmed machining-cycle. M89 is canceled by M99 or a
+    // CYCL CALL-block" (TNC 306/406 technical manual, "M-function M89").
     let src = drilling(
-        "4 L X+10 Y+10 Z+20 R0 FMAX M89\n5 L X+20\n6 L X+30 M99\n7 L X+40\n8 M89\n9 L X+50\n10 CYCL DEF 200 BOHREN ~\n  Q200=+2 ~\n  Q201=-7 ~\n  Q206=+150 ~\n  Q202=+5 ~\n  Q210=+0 ~\n  Q203=+0 ~\n  Q204=+10 ~\n  Q211=+0\n11 L X+60\n",
+        "4 L X+10 Y+10 Z+20 R0 FMAX M89\n5 L X+20\n6 L X+30 M99\n7 L X+40\n8 M89\n9 L X+50\n\
+         10 CYCL DEF 200 BOHREN ~\n  Q200=+2 ~\n  Q201=-7 ~\n  Q206=+150 ~\n  Q202=+5 ~\n  Q210=+0 ~\n  Q203=+0 ~\n  Q204=+10 ~\n  Q211=+0\n\
+         11 L X+60\n12 CYCL CALL\n13 L X+70\n",
     );
-    let got: Vec<(u32, bool)> =
-        holes(&src).into_iter().map(|(n, h, z)| (n, !h.is_empty() && z < -4.0)).collect();
+    let got: Vec<(u32, Option<i64>)> = holes(&src)
+        .into_iter()
+        .map(|(n, h, z)| (n, (!h.is_empty() && z < -4.0).then(|| z.round() as i64)))
+        .collect();
     // 4, 5: M89 active; 6: M99 calls once more and ends it; 7 not; 8 (M89 alone) starts it
-    // again without positioning; 9 drills; the new CYCL DEF 10 ends it: 11 does not drill.
+    // again but does not position; 9 drills; 10 defines a cycle 7 deep, which 11 drills; the
+    // CYCL CALL 12 drills and ends M89: 13 does not drill.
     assert_eq!(
         got,
-        vec![(4, true), (5, true), (6, true), (7, false), (8, false), (9, true), (10, false), (11, false)]
+        vec![
+            (4, Some(-5)),
+            (5, Some(-5)),
+            (6, Some(-5)),
+            (7, None),
+            (8, None),
+            (9, Some(-5)),
+            (10, None),
+            (11, Some(-7)),
+            (12, Some(-7)),
+            (13, None)
+        ]
     );
 }
 

@@ -426,6 +426,7 @@ impl Interp {
             BlockBody::CycleDef(d) => self.cycle_def(cx, &mut rec, idx, d)?,
             BlockBody::CycleDefOld(d) => self.old_cycle(cx, &mut rec, idx, d)?,
             BlockBody::CyclCall { m } => {
+                self.m89 = false;
                 self.spindle_m(m);
                 self.call_cycle(cx, &mut rec, idx)?;
                 self.end_m(m);

@@ -99,8 +99,7 @@ impl Interp {
     }
 
     /// `CYCL DEF n …`: a machining cycle is stored for its calls; 220 and 221 are DEF-active and
-    /// call the stored one at once. A new definition ends a modal `M89` call (manual, "Calling a
-    /// cycle with M89").
+    /// call the stored one at once.
     pub(super) fn cycle_def(
         &mut self,
         cx: &Cx<'_>,
@@ -108,7 +107,6 @@ impl Interp {
         idx: usize,
         d: &CycleDef,
     ) -> R<()> {
-        self.m89 = false;
         if matches!(d.number, 220 | 221) {
             return self.pattern_cycle(cx, rec, idx, d);
         }
@@ -191,9 +189,10 @@ impl Interp {
         Ok(())
     }
 
-    /// After an `L` block: `M89` starts the modal cycle call ([`unconfirmed::M89_CALLS_AT_ITS_BLOCK`]),
-    /// which calls the cycle after every positioning block until `M99` (which calls it once
-    /// more, in [`Self::line`]) or a new `CYCL DEF` ends it (manual, "Calling a cycle with M89").
+    /// After an `L` block: `M89` starts the modal cycle call ([`unconfirmed::M89_CALLS_AT_ITS_BLOCK`]):
+    /// "for every following positioning block there will be a call of the last-programmed
+    /// machining cycle. M89 is cancelled by M99 or a CYCL CALL block" (HEIDENHAIN TNC 306/406
+    /// technical manual, "M-function M89"; `M99` calls once more, in [`Self::line`]).
     pub(super) fn modal_call(
         &mut self,
         cx: &Cx<'_>,
