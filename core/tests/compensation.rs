@@ -1,0 +1,374 @@
+//! Tool radius compensation RL/RR and APPR/DEP through the whole simulator, against tool centre
+//! paths written out here by hand from the manual's description (not from the simulator's
+//! geometry): RL puts the tool centre R to the left of the contour in the direction of travel,
+//! RR to the right; at an outside corner the centre runs on a quarter circle of radius R around
+//! the corner point, at an inside corner to the intersection of the two offset paths; an arc's
+//! radius grows or shrinks by R (TNC 620 / iTNC 530 Klartext manuals, "Tool radius
+//! compensation"); the APPR/DEP auxiliary points as the TNC7 manual draws them. Tool 1 of
+//! `static/tools.json` has R = 5. Tolerance 1e-6 mm: the points go through the kinematics.
+
+use glam::DVec3;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::{
+    ApprDepReason, Kin, SegmentPath, SimErrorCode, SimOptions, Simulation, State, simulate,
+};
+use schwenkbar_core::{Program, parse};
+use schwenkbar_testkit::assert_close;
+
+const TOL: f64 = 1e-6;
+
+/// The contour's height on the tool axis.
+const H: f64 = -5.0;
+
+fn p(x: f64, y: f64) -> DVec3 {
+    DVec3::new(x, y, H)
+}
+
+/// One piece of an expected tool centre path.
+#[derive(Debug, Clone, Copy)]
+enum Piece {
+    Line(DVec3, DVec3),
+    /// Centre, radius, start angle and turned angle (degrees, + counter-clockwise), at height H.
+    Arc(DVec3, f64, f64, f64),
+}
+
+impl Piece {
+    fn at(self, f: f64) -> DVec3 {
+        match self {
+            Piece::Line(a, b) => a.lerp(b, f),
+            Piece::Arc(c, r, from, sweep) => {
+                let t = (from + f * sweep).to_radians();
+                c + r * DVec3::new(t.cos(), t.sin(), 0.0)
+            }
+        }
+    }
+}
+
+/// A program: `TOOL CALL 1` (with `tool_extra` words), then `body` numbered from 3.
+fn program(tool_extra: &str, body: &[&str]) -> String {
+    let mut s = format!("0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S1000 F500{tool_extra}\n2 L Z+0 R0 FMAX M91\n");
+    for (k, line) in body.iter().enumerate() {
+        s.push_str(&format!("{} {line}\n", k + 3));
+    }
+    s.push_str(&format!("{} END PGM T MM\n", body.len() + 3));
+    s
+}
+
+fn run(src: &str) -> (Program, Machine, Simulation) {
+    let (program, diags) = parse(src);
+    assert!(diags.iter().all(|d| !d.is_error()), "{src}\n{diags:?}");
+    let m = Machine::builtin("ac-table").expect("machine");
+    let sim = simulate(&program, &m, &SimOptions::default());
+    (program, m, sim)
+}
+
+fn after(program: &Program, sim: &Simulation, number: u32) -> State {
+    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+    let step = sim.first_step[idx].expect("executed") as usize;
+    sim.state_at(program, step).expect("state")
+}
+
+/// The block's segments against the expected pieces, each turned into the W-CS by `to_wcs`.
+fn check(
+    program: &Program,
+    m: &Machine,
+    sim: &Simulation,
+    number: u32,
+    want: &[Piece],
+    to_wcs: &dyn Fn(DVec3) -> DVec3,
+) {
+    let s = after(program, sim, number);
+    let kin = Kin::new(m, s.tool.length);
+    assert_eq!(s.segments.len(), want.len(), "block {number}: {:?}", s.segments);
+    for (k, (seg, piece)) in s.segments.iter().zip(want).enumerate() {
+        let arc = matches!(seg.path, SegmentPath::Arc(_));
+        assert_eq!(arc, matches!(piece, Piece::Arc(..)), "block {number} piece {k}: {:?}", seg.path);
+        for f in [0.0, 0.25, 0.5, 0.75, 1.0] {
+            assert_close!(
+                kin.tip_wcs(&seg.axes_at(f)),
+                to_wcs(piece.at(f)),
+                TOL,
+                "block {number} piece {k} at {f}"
+            );
+        }
+    }
+}
+
+fn untilted(v: DVec3) -> DVec3 {
+    v
+}
+
+/// The square (0,0)–(50,0)–(50,50)–(0,50), counter-clockwise or clockwise, with `comp` switched
+/// on in block 6 and off (R0) in block 11; block 3 is `first` (a PLANE or a comment).
+fn square(first: &str, comp: &str, ccw: bool) -> String {
+    let on = format!("L X+0 Y+0 {comp}");
+    let sides: [&str; 4] =
+        if ccw { ["L X+50", "L Y+50", "L X+0", "L Y+0"] } else { ["L Y+50", "L X+50", "L Y+0", "L X+0"] };
+    let mut body = vec![first, "L X-20 Y-20 Z+10 R0 FMAX", "L Z-5 F500", on.as_str()];
+    body.extend(sides);
+    body.extend(["L X-20 Y-20 R0", "L Z+10 FMAX"]);
+    program("", &body)
+}
+
+/// The hand-written centre paths of blocks 6…11 for each of the four cases (R = 5).
+fn square_paths(comp: &str, ccw: bool) -> Vec<Vec<Piece>> {
+    use Piece::{Arc, Line};
+    let ps = p(-20.0, -20.0);
+    match (comp, ccw) {
+        // Tool outside, the contour turns left at every corner: quarter circles, counter-clockwise.
+        ("RR", true) => vec![
+            vec![Line(ps, p(0.0, -5.0))],
+            vec![Line(p(0.0, -5.0), p(50.0, -5.0))],
+            vec![Arc(p(50.0, 0.0), 5.0, -90.0, 90.0), Line(p(55.0, 0.0), p(55.0, 50.0))],
+            vec![Arc(p(50.0, 50.0), 5.0, 0.0, 90.0), Line(p(50.0, 55.0), p(0.0, 55.0))],
+            vec![Arc(p(0.0, 50.0), 5.0, 90.0, 90.0), Line(p(-5.0, 50.0), p(-5.0, 0.0))],
+            vec![Line(p(-5.0, 0.0), ps)],
+        ],
+        // Tool outside, the contour turns right: quarter circles, clockwise.
+        ("RL", false) => vec![
+            vec![Line(ps, p(-5.0, 0.0))],
+            vec![Line(p(-5.0, 0.0), p(-5.0, 50.0))],
+            vec![Arc(p(0.0, 50.0), 5.0, 180.0, -90.0), Line(p(0.0, 55.0), p(50.0, 55.0))],
+            vec![Arc(p(50.0, 50.0), 5.0, 90.0, -90.0), Line(p(55.0, 50.0), p(55.0, 0.0))],
+            vec![Arc(p(50.0, 0.0), 5.0, 0.0, -90.0), Line(p(50.0, -5.0), p(0.0, -5.0))],
+            vec![Line(p(0.0, -5.0), ps)],
+        ],
+        // Tool inside: the corners of the square shrunk by R, no arcs.
+        ("RL", true) => vec![
+            vec![Line(ps, p(0.0, 5.0))],
+            vec![Line(p(0.0, 5.0), p(45.0, 5.0))],
+            vec![Line(p(45.0, 5.0), p(45.0, 45.0))],
+            vec![Line(p(45.0, 45.0), p(5.0, 45.0))],
+            vec![Line(p(5.0, 45.0), p(5.0, 0.0))],
+            vec![Line(p(5.0, 0.0), ps)],
+        ],
+        _ => vec![
+            vec![Line(ps, p(5.0, 0.0))],
+            vec![Line(p(5.0, 0.0), p(5.0, 45.0))],
+            vec![Line(p(5.0, 45.0), p(45.0, 45.0))],
+            vec![Line(p(45.0, 45.0), p(45.0, 5.0))],
+            vec![Line(p(45.0, 5.0), p(0.0, 5.0))],
+            vec![Line(p(0.0, 5.0), ps)],
+        ],
+    }
+}
+
+#[test]
+fn a_compensated_square_is_offset_by_r_with_quarter_circles_at_its_outside_corners() {
+    for (comp, ccw) in [("RR", true), ("RL", false), ("RL", true), ("RR", false)] {
+        let (prog, m, sim) = run(&square(";", comp, ccw));
+        assert!(sim.error.is_none(), "{comp} ccw={ccw}: {:?}", sim.error);
+        for (k, want) in square_paths(comp, ccw).iter().enumerate() {
+            check(&prog, &m, &sim, 6 + k as u32, want, &untilted);
+        }
+        // After R0 the tool centre is on the programmed point again.
+        assert_close!(after(&prog, &sim, 12).tip_ics, DVec3::new(-20.0, -20.0, 10.0), TOL);
+    }
+}
+
+/// Rz(c)·Ry(b)·Rx(a) applied to v, written out (DOMAIN.md §2.1).
+fn spatial(a: f64, b: f64, c: f64, v: DVec3) -> DVec3 {
+    let (sa, ca) = a.to_radians().sin_cos();
+    let (sb, cb) = b.to_radians().sin_cos();
+    let (sc, cc) = c.to_radians().sin_cos();
+    let x = DVec3::new(v.x, ca * v.y - sa * v.z, sa * v.y + ca * v.z);
+    let y = DVec3::new(cb * x.x + sb * x.z, x.y, -sb * x.x + cb * x.z);
+    DVec3::new(cc * y.x - sc * y.y, sc * y.x + cc * y.y, y.z)
+}
+
+#[test]
+fn on_a_tilted_plane_the_square_is_compensated_in_the_working_plane() {
+    for (a, b, c) in [(20.0, 15.0, 30.0), (-35.0, 10.0, -120.0), (0.0, -25.0, 75.0)] {
+        let plane = format!("PLANE SPATIAL SPA{a:+} SPB{b:+} SPC{c:+} TURN FMAX");
+        for (comp, ccw) in [("RR", true), ("RL", true)] {
+            let (prog, m, sim) = run(&square(&plane, comp, ccw));
+            assert!(sim.error.is_none(), "{plane} {comp}: {:?}", sim.error);
+            for (k, want) in square_paths(comp, ccw).iter().enumerate() {
+                check(&prog, &m, &sim, 6 + k as u32, want, &|v| spatial(a, b, c, v));
+            }
+        }
+    }
+}
+
+#[test]
+fn a_compensated_full_circle_has_the_radius_r_plus_or_minus_the_tool_radius() {
+    // Contour radius 30 around (50,50); RL with DR+ (counter-clockwise) keeps the tool inside,
+    // RL with DR− outside; RR the other way round. TOOL CALL DR+2 makes R = 5 + 2.
+    for (extra, r) in [("", 5.0), (" DL+0 DR+2", 7.0)] {
+        for (comp, dr, sign, inside) in [
+            ("RL", "DR+", 1.0, true),
+            ("RR", "DR+", 1.0, false),
+            ("RL", "DR-", -1.0, false),
+            ("RR", "DR-", -1.0, true),
+        ] {
+            let rho = if inside { 30.0 - r } else { 30.0 + r };
+            let src = program(
+                extra,
+                &[
+                    "L X+50 Y+50 Z+10 R0 FMAX",
+                    "L Z-5 F500",
+                    "CC X+50 Y+50",
+                    &format!("L X+80 Y+50 {comp}"),
+                    &format!("C X+80 Y+50 {dr}"),
+                    "L X+50 Y+50 R0",
+                ],
+            );
+            let (prog, m, sim) = run(&src);
+            assert!(sim.error.is_none(), "{comp} {dr}: {:?}", sim.error);
+            let want = [Piece::Arc(p(50.0, 50.0), rho, 0.0, sign * 360.0)];
+            check(&prog, &m, &sim, 7, &want, &untilted);
+            let s = after(&prog, &sim, 7);
+            let SegmentPath::Arc(a) = &s.segments[0].path else { panic!("an arc") };
+            assert_close!(a.radius(), rho, TOL, "{comp} {dr} R{r}");
+        }
+    }
+}
+
+fn error_of(src: &str) -> (u32, SimErrorCode, String) {
+    let (prog, _, sim) = run(src);
+    let e = sim.error.expect("an error");
+    (prog.blocks[e.block].number.expect("numbered"), e.code, e.message.de.to_string())
+}
+
+#[test]
+fn a_contour_too_small_for_the_tool_stops_at_its_block() {
+    // An inside arc of radius 3 with a tool of radius 5.
+    let (n, code, de) = error_of(&program(
+        "",
+        &["L X+50 Y+50 Z+10 R0 FMAX", "L Z-5 F500", "CC X+50 Y+50", "L X+53 Y+50 RL", "C X+53 Y+50 DR+"],
+    ));
+    assert_eq!((n, de.as_str()), (7, "Werkzeug-Radius zu groß"));
+    assert_eq!(code, SimErrorCode::ToolRadiusTooLarge { radius: 5.0, contour_radius: 3.0 });
+    // A step of 3 mm between two inside corners: the offset paths of its neighbours meet
+    // beyond it (y = 5 and y = 3 − 5), so it vanishes.
+    let (n, code, de) = error_of(&program(
+        "",
+        &["L X-20 Y+0 Z+10 R0 FMAX", "L Z-5 F500", "L X+0 Y+0 RL", "L X+50", "L Y+3", "L X+0", "L X-20 R0"],
+    ));
+    assert_eq!((n, de.as_str()), (7, "Werkzeug-Radius zu groß"));
+    assert_eq!(code, SimErrorCode::ContourElementTooSmall { radius: 5.0 });
+    // RL to RR without R0 between them (manual: a block with R0 must stand between).
+    let (n, code, _) = error_of(&program(
+        "",
+        &["L X-20 Y+0 Z+10 R0 FMAX", "L Z-5 F500", "L X+0 Y+0 RL", "L X+50", "L Y+50 RR"],
+    ));
+    assert_eq!((n, code), (7, SimErrorCode::CompensationChange));
+    // APPR without RL/RR.
+    let (n, code, _) =
+        error_of(&program("", &["L X-20 Y+0 Z-5 R0 FMAX", "APPR LT X+0 Y+0 LEN10 F300", "L X+50"]));
+    assert_eq!(
+        (n, code),
+        (4, SimErrorCode::ApprDep { word: "APPR", kind: "LT", reason: ApprDepReason::NoCompensation })
+    );
+}
+
+/// APPR in block 5, the contour `L X+50` from (0,0) in block 6, DEP in block 7; the tool stands
+/// at `ps` (height −5) before.
+fn appr_dep(ps: (f64, f64), appr: &str, dep: &str) -> String {
+    program(
+        "",
+        &[
+            &format!("L X{:+} Y{:+} Z+10 R0 FMAX", ps.0, ps.1),
+            "L Z-5 F500",
+            appr,
+            "L X+50",
+            dep,
+            "L Z+10 R0 FMAX",
+        ],
+    )
+}
+
+#[test]
+fn each_approach_kind_follows_its_auxiliary_point() {
+    use Piece::{Arc, Line};
+    // First contour element +X from PA = (0,0); RR puts the tool centre at PA_c = (0,−5).
+    let ps = p(-30.0, -30.0);
+    let pa_c = p(0.0, -5.0);
+    let cases: [(&str, (f64, f64), Vec<Piece>); 5] = [
+        // PH on the tangent, LEN before PA.
+        (
+            "APPR LT X+0 Y+0 LEN10 RR F300",
+            (-30.0, -30.0),
+            vec![Line(ps, p(-10.0, -5.0)), Line(p(-10.0, -5.0), pa_c)],
+        ),
+        // PH perpendicular, LEN + R from PA.
+        (
+            "APPR LN X+0 Y+0 LEN10 RR F300",
+            (-30.0, -30.0),
+            vec![Line(ps, p(0.0, -15.0)), Line(p(0.0, -15.0), pa_c)],
+        ),
+        // RR with R+: clockwise; centre R below PA_c, PH a quarter turn before.
+        (
+            "APPR CT X+0 Y+0 CCA90 R+10 RR F300",
+            (-30.0, -30.0),
+            vec![Line(ps, p(-10.0, -15.0)), Arc(p(0.0, -15.0), 10.0, 180.0, -90.0)],
+        ),
+        // RL with R+: counter-clockwise, centre above PA_c = (0,5).
+        (
+            "APPR CT X+0 Y+0 CCA90 R+10 RL F300",
+            (-30.0, -30.0),
+            vec![Line(ps, p(-10.0, 15.0)), Arc(p(0.0, 15.0), 10.0, 180.0, 90.0)],
+        ),
+        // The line from PS = (−10,−40) straight up touches the circle around (0,−15) at (−10,−15).
+        (
+            "APPR LCT X+0 Y+0 R10 RR F300",
+            (-10.0, -40.0),
+            vec![Line(p(-10.0, -40.0), p(-10.0, -15.0)), Arc(p(0.0, -15.0), 10.0, 180.0, -90.0)],
+        ),
+    ];
+    for (appr, start, want) in cases {
+        let (prog, m, sim) = run(&appr_dep(start, appr, "DEP LT LEN10 F300"));
+        assert!(sim.error.is_none(), "{appr}: {:?}", sim.error);
+        check(&prog, &m, &sim, 5, &want, &untilted);
+        let y = if appr.contains("RL") { 5.0 } else { -5.0 };
+        check(&prog, &m, &sim, 6, &[Line(p(0.0, y), p(50.0, y))], &untilted);
+    }
+    // The tool axis moves on the way to PH.
+    let src = program("", &["L X-30 Y-30 Z+10 R0 FMAX", "APPR LT X+0 Y+0 Z-5 LEN10 RR F300", "L X+50"]);
+    let (prog, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    check(
+        &prog,
+        &m,
+        &sim,
+        4,
+        &[Line(DVec3::new(-30.0, -30.0, 10.0), p(-10.0, -5.0)), Line(p(-10.0, -5.0), pa_c)],
+        &untilted,
+    );
+}
+
+#[test]
+fn each_departure_kind_leaves_from_the_last_contour_point() {
+    use Piece::{Arc, Line};
+    // The contour ends at PE = (50,0) heading +X; RR: the tool centre stands at (50,−5).
+    let pe_c = p(50.0, -5.0);
+    let cases: [(&str, Vec<Piece>, DVec3); 4] = [
+        ("DEP LT LEN10 F300", vec![Line(pe_c, p(60.0, -5.0))], p(60.0, -5.0)),
+        ("DEP LN LEN10 F300", vec![Line(pe_c, p(50.0, -15.0))], p(50.0, -15.0)),
+        ("DEP CT CCA90 R+10 F300", vec![Arc(p(50.0, -15.0), 10.0, 90.0, -90.0)], p(60.0, -15.0)),
+        (
+            "DEP LCT X+60 Y-40 Z+10 R10 F300",
+            vec![Arc(p(50.0, -15.0), 10.0, 90.0, -90.0), Line(p(60.0, -15.0), DVec3::new(60.0, -40.0, 10.0))],
+            DVec3::new(60.0, -40.0, 10.0),
+        ),
+    ];
+    for (dep, want, end) in cases {
+        let (prog, m, sim) = run(&appr_dep((-30.0, -30.0), "APPR LT X+0 Y+0 LEN10 RR F300", dep));
+        assert!(sim.error.is_none(), "{dep}: {:?}", sim.error);
+        check(&prog, &m, &sim, 7, &want, &untilted);
+        // The compensation is off: the next block moves the tool centre to its programmed point.
+        assert_close!(after(&prog, &sim, 8).tip_ics, DVec3::new(end.x, end.y, 10.0), TOL, "{dep}");
+    }
+}
+
+#[test]
+fn the_compensated_fixture_runs_without_errors_on_every_machine() {
+    let path = format!("{}/../tests/fixtures/sim/contour_rl.h", env!("CARGO_MANIFEST_DIR"));
+    let (p, d) = parse(&std::fs::read_to_string(&path).expect("fixture"));
+    assert!(d.is_empty(), "{d:?}");
+    for id in ["ac-table", "ba-table", "bc-head-table", "ca-head", "b45-nutating"] {
+        let m = Machine::builtin(id).expect("machine");
+        let sim = simulate(&p, &m, &SimOptions::default());
+        assert!(sim.error.is_none(), "contour_rl on {id}: {:?}", sim.error);
+    }
+}
