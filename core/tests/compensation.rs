@@ -372,3 +372,55 @@ fn the_compensated_fixture_runs_without_errors_on_every_machine() {
         assert!(sim.error.is_none(), "contour_rl on {id}: {:?}", sim.error);
     }
 }
+
+#[test]
+fn blocks_without_motion_between_two_elements_keep_the_inside_corner() {
+    use Piece::Line;
+    // RL on a left turn: an inside corner at (50,0), also with M8 and an `L` without axes
+    // between the two elements; the compensation stays on through them.
+    let src = program(
+        "",
+        &[
+            "L X-20 Y+0 Z+10 R0 FMAX",
+            "L Z-5 F500",
+            "L X+0 Y+0 RL",
+            "L X+50",
+            "M8",
+            "L F400",
+            "L Y+50",
+            "L X+70 Y+70 R0",
+        ],
+    );
+    let (prog, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    check(&prog, &m, &sim, 6, &[Line(p(0.0, 5.0), p(45.0, 5.0))], &untilted);
+    check(&prog, &m, &sim, 9, &[Line(p(45.0, 5.0), p(45.0, 50.0))], &untilted);
+    check(&prog, &m, &sim, 10, &[Line(p(45.0, 50.0), p(70.0, 70.0))], &untilted);
+}
+
+#[test]
+fn an_inside_corner_between_a_line_and_an_arc_ends_on_the_grown_circle() {
+    use Piece::{Arc, Line};
+    // RL: the line +X to (50,0), then clockwise around (70,0) (radius 20) heading +Y: a left
+    // turn, inside. The line's path y = 5 meets the arc's path, radius 20 + 5 (RL is outside a
+    // clockwise arc), at x = 70 − √(25² − 5²).
+    let x = 70.0 - (25.0_f64 * 25.0 - 25.0).sqrt();
+    let from = 5.0_f64.atan2(x - 70.0).to_degrees();
+    let src = program(
+        "",
+        &[
+            "L X-20 Y+0 Z+10 R0 FMAX",
+            "L Z-5 F500",
+            "L X+0 Y+0 RL",
+            "L X+50",
+            "CC X+70 Y+0",
+            "C X+90 Y+0 DR-",
+            "L X+120 R0",
+        ],
+    );
+    let (prog, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    check(&prog, &m, &sim, 6, &[Line(p(0.0, 5.0), p(x, 5.0))], &untilted);
+    check(&prog, &m, &sim, 8, &[Arc(p(70.0, 0.0), 25.0, from, -from)], &untilted);
+    check(&prog, &m, &sim, 9, &[Line(p(95.0, 0.0), p(120.0, 0.0))], &untilted);
+}

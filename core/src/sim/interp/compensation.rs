@@ -85,7 +85,10 @@ impl Interp {
         let mut pole = self.pole;
         for b in cx.program.blocks.iter().skip(idx + 1) {
             match &b.body {
-                BlockBody::Empty | BlockBody::Structure { .. } => {}
+                // Blocks that do not move the tool are looked over.
+                BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::CycleDef(_) => {}
+                BlockBody::MFunctions(m) if !m.contains(&99) => {}
+                BlockBody::L(l) if l.axes.is_empty() && !l.m.contains(&99) => {}
                 BlockBody::Cc(m) => pole = Some(self.pole_of(&m.axes, start).ok()?),
                 body => {
                     let e = self.element(body, start, pole, tangent).ok().flatten()?;
@@ -144,6 +147,11 @@ impl Interp {
             }
         }
         self.comp = side.map(|s| Comp { side: s, at: elem.end, centre: self.pos_i });
+        // A CT after it continues the contour, not the tool centre path (which may end before
+        // the contour's end, at an inside corner).
+        if let Some(t) = elem.tangent(&plane, true) {
+            self.tangent = Some(t);
+        }
         Ok(())
     }
 
@@ -246,6 +254,9 @@ impl Interp {
         });
         self.compensated(cx, rec, idx, piece, c.side, next.as_ref(), rate)?;
         self.comp = Some(Comp { side: c.side, at: piece.end, centre: self.pos_i });
+        if let Some(t) = piece.tangent(&plane, true) {
+            self.tangent = Some(t);
+        }
         Ok(true)
     }
 

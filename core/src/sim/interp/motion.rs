@@ -198,7 +198,9 @@ impl Interp {
             }
         }
         // Any other move ends the compensation.
-        self.comp = None;
+        if lin_prog || rot_prog {
+            self.comp = None;
+        }
         if lin_prog && !m91 {
             l = if rot_prog {
                 self.wcs_to_linear(rot).after(&self.tf.ics_to_wcs()).apply(p)
