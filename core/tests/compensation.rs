@@ -424,3 +424,30 @@ fn an_inside_corner_between_a_line_and_an_arc_ends_on_the_grown_circle() {
     check(&prog, &m, &sim, 8, &[Arc(p(70.0, 0.0), 25.0, from, -from)], &untilted);
     check(&prog, &m, &sim, 9, &[Line(p(95.0, 0.0), p(120.0, 0.0))], &untilted);
 }
+
+#[test]
+fn an_inside_rounding_of_the_tool_radius_leaves_the_tool_standing_at_its_centre() {
+    use Piece::Line;
+    // RND R5 at the inside corner (50,0) of RL with R = 5: its path shrinks to its centre (45,5).
+    let src = program(
+        "",
+        &[
+            "L X-20 Y+0 Z+10 R0 FMAX",
+            "L Z-5 F500",
+            "L X+0 Y+0 RL",
+            "L X+50",
+            "RND R5",
+            "L Y+50",
+            "L X+70 Y+70 R0",
+        ],
+    );
+    let (prog, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    check(&prog, &m, &sim, 6, &[Line(p(0.0, 5.0), p(45.0, 5.0))], &untilted);
+    check(&prog, &m, &sim, 7, &[], &untilted);
+    check(&prog, &m, &sim, 8, &[Line(p(45.0, 5.0), p(45.0, 50.0))], &untilted);
+    // R4.9 is smaller than the tool: the control's error on the RND block.
+    let (n, code, _) = error_of(&src.replace("RND R5", "RND R4.9"));
+    assert_eq!(n, 7);
+    assert!(matches!(code, SimErrorCode::ToolRadiusTooLarge { .. }), "{code:?}");
+}

@@ -406,7 +406,7 @@ impl Curve {
 pub enum OffsetError {
     /// The element moves along the tool axis only: no side to offset to.
     NoDirection,
-    /// An arc whose offset radius would be ≤ 0 (its radius, mm): the tool does not fit inside.
+    /// An arc whose offset radius would be < 0 (its radius, mm): the tool does not fit inside.
     RadiusGone { radius: f64 },
 }
 
@@ -427,10 +427,13 @@ pub fn offset(plane: &WorkPlane, e: &Elem, side: f64, r: f64) -> Result<Elem, Of
         }
         Shape::Arc { centre, sweep } => {
             let radius = e.radius(plane);
+            // Radius 0 (an inside arc exactly the tool's size) leaves the tool standing at the
+            // centre; only a negative one does not fit.
             let nr = radius - sweep.signum() * side * r;
-            if nr <= LENGTH_EPS {
+            if nr < -LENGTH_EPS {
                 return Err(OffsetError::RadiusGone { radius });
             }
+            let nr = nr.max(0.0);
             let at = |p: DVec3| {
                 let u = plane.planar(p - centre).normalize_or_zero();
                 plane.with_axial(plane.planar(centre) + nr * u, plane.axial(p))

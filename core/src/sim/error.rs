@@ -63,7 +63,7 @@ pub enum SimErrorCode {
     CornerTooLarge { word: &'static str, value: f64 },
     /// `CHF` between elements that are not both straight lines.
     ChamferNeedsLines,
-    /// RL/RR: an arc whose tool centre path would have a radius ≤ 0 (an inside arc smaller than
+    /// RL/RR: an arc whose tool centre path would have a radius < 0 (an inside arc smaller than
     /// the tool radius).
     ToolRadiusTooLarge { radius: f64, contour_radius: f64 },
     /// RL/RR: an element that vanishes between the intersections of its neighbours' tool
