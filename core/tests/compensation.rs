@@ -451,3 +451,118 @@ fn an_inside_rounding_of_the_tool_radius_leaves_the_tool_standing_at_its_centre(
     assert_eq!(n, 7);
     assert!(matches!(code, SimErrorCode::ToolRadiusTooLarge { .. }), "{code:?}");
 }
+
+proptest::proptest! {
+    /// Any mix of compensated contour blocks, approach and departure with random numbers never
+    /// panics; every segment stays finite and evaluable, and every recorded step can be stepped to.
+    #[test]
+    fn random_compensated_contours_never_panic(
+        picks in proptest::collection::vec((0usize..20, -80.0..80.0f64, 0u32..4), 1..24),
+        machine in 0usize..5,
+    ) {
+        let comp = |n: u32| ["RL", "RR", "R0", ""][n as usize % 4];
+        let vocab = |k: usize, v: f64, n: u32| -> String {
+            match k {
+                0 => format!("L X{v:+.2} Y{:+.2} {}", v / 3.0, comp(n)),
+                1 => format!("L X{v:+.2} {}", comp(n)),
+                2 => format!("L Y{v:+.2}"),
+                3 => format!("CC X{:+.2} Y{:+.2}", v / 2.0, v / 5.0),
+                4 => format!("C X{:+.2} Y{v:+.2} DR{} {}", v / 2.0, if n % 2 == 0 { '+' } else { '-' }, comp(n)),
+                5 => format!("CR X{v:+.2} Y{:+.2} R{:+.2} DR-", v / 3.0, v / (f64::from(n) - 1.5)),
+                6 => format!("CT X{:+.2} Y{v:+.2}", v / 7.0),
+                7 => format!("RND R{:+.2}", v.abs() / 10.0),
+                8 => format!("CHF {:+.2}", v.abs() / 20.0),
+                9 => format!("APPR LT X{v:+.2} Y+0 LEN{:+.1} RL F200", v.abs() / 8.0),
+                10 => format!("APPR LN X+0 Y{v:+.2} LEN{:+.1} RR F200", v.abs() / 8.0),
+                11 => format!("APPR CT X{v:+.2} Y+5 CCA{:.1} R{:+.1} {} F200", v.abs(), v / 9.0, comp(n)),
+                12 => format!("APPR LCT X{v:+.2} Y+0 R{:.1} RL F200", v.abs() / 6.0),
+                13 => format!("DEP LT LEN{:+.1} F200", v.abs() / 4.0),
+                14 => format!("DEP LN LEN{:+.1}", v.abs() / 4.0),
+                15 => format!("DEP CT CCA{:.1} R{:+.1}", v.abs() * 2.0, v / 7.0),
+                16 => format!("DEP LCT X{v:+.2} Y{:+.2} R{:.1}", v / 2.0, v.abs() / 9.0),
+                17 => format!("L Z{:+.2}", v / 20.0),
+                18 => format!("TOOL CALL 1 Z S1000 DL+0 DR{:+.2}", v / 40.0),
+                _ => format!("LP PR{:+.2} IPA{v:+.1} {}", v.abs() / 3.0, comp(n)),
+            }
+        };
+        let mut src = String::from("0 BEGIN PGM R MM\n1 TOOL CALL 1 Z S1000 F500\n2 L Z-5 R0 F500\n");
+        for (i, (k, v, n)) in picks.iter().enumerate() {
+            src.push_str(&format!("{} {}\n", i + 3, vocab(*k, *v, *n)));
+        }
+        src.push_str(&format!("{} END PGM R MM\n", picks.len() + 3));
+        let (p, _) = parse(&src);
+        let ids = Machine::builtin_ids();
+        let m = Machine::builtin(ids[machine % ids.len()]).expect("machine");
+        let sim = simulate(&p, &m, &SimOptions { max_steps: Some(2_000), checkpoint_interval: 5, ..SimOptions::default() });
+        let n = sim.len();
+        for s in sim.states(&p) {
+            for seg in &s.segments {
+                for f in [0.0, 0.5, 1.0] {
+                    proptest::prop_assert!(seg.axes_at(f).linear.is_finite(), "{src}");
+                }
+                proptest::prop_assert!(seg.duration.is_finite() && seg.duration >= 0.0);
+            }
+        }
+        if n > 0 {
+            proptest::prop_assert!(sim.state_at(&p, n - 1).is_some());
+        }
+    }
+}
+
+/// Distance from `q` to the segment `a`–`b` in the XY plane.
+fn to_segment(q: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let (q, a, b) = (q.truncate(), a.truncate(), b.truncate());
+    let d = b - a;
+    let f = ((q - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+    (a + f * d).distance(q)
+}
+
+proptest::proptest! {
+    /// RR around any convex polygon run counter-clockwise: every corner is an outside corner, so
+    /// every point of the tool centre path is exactly R + DR from the polygon (its distance to
+    /// the nearest edge, computed here), on every block of the contour.
+    #[test]
+    fn around_a_convex_polygon_the_tool_centre_keeps_the_distance_r(
+        angles in proptest::collection::btree_set(0u32..360, 3..8),
+        dr in -2.0..2.0f64,
+    ) {
+        let corners: Vec<DVec3> = angles
+            .iter()
+            .map(|&a| {
+                let t = f64::from(a).to_radians();
+                p(40.0 * t.cos(), 40.0 * t.sin())
+            })
+            .collect();
+        let edges = corners.len();
+        // Every edge must turn left at its end (a strictly convex polygon).
+        let turns_left = (0..edges).all(|i| {
+            let (a, b, c) = (corners[i], corners[(i + 1) % edges], corners[(i + 2) % edges]);
+            (b - a).truncate().perp_dot((c - b).truncate()) > 1e-3
+        });
+        proptest::prop_assume!(turns_left);
+        let mut body = vec!["L X-90 Y-90 Z+10 R0 FMAX".to_string(), "L Z-5 F500".to_string()];
+        body.push(format!("L X{:+.9} Y{:+.9} RR", corners[0].x, corners[0].y));
+        for k in 1..=edges {
+            let c = corners[k % edges];
+            body.push(format!("L X{:+.9} Y{:+.9}", c.x, c.y));
+        }
+        body.push("L X-90 Y-90 R0".to_string());
+        let refs: Vec<&str> = body.iter().map(String::as_str).collect();
+        let (prog, m, sim) = run(&program(&format!(" DL+0 DR{dr:+.6}"), &refs));
+        proptest::prop_assert!(sim.error.is_none(), "{:?}", sim.error);
+        let r = 5.0 + (dr * 1e6).round() / 1e6;
+        for k in 1..=edges {
+            let s = after(&prog, &sim, 5 + k as u32);
+            let kin = Kin::new(&m, s.tool.length);
+            for seg in &s.segments {
+                for i in 0..=10 {
+                    let q = kin.tip_wcs(&seg.axes_at(f64::from(i) / 10.0));
+                    let d = (0..edges)
+                        .map(|e| to_segment(q, corners[e], corners[(e + 1) % edges]))
+                        .fold(f64::INFINITY, f64::min);
+                    proptest::prop_assert!((d - r).abs() < 1e-6, "edge {k}: {q} is {d} from the polygon, not {r}");
+                }
+            }
+        }
+    }
+}
