@@ -566,3 +566,24 @@ proptest::proptest! {
         }
     }
 }
+
+#[test]
+fn a_reversal_is_an_outside_corner_with_a_half_circle() {
+    use Piece::{Arc, Line};
+    // RR: along +X to (50,0) and straight back: the tool goes round the end on a half circle.
+    let src = program(
+        "",
+        &["L X-20 Y-20 Z+10 R0 FMAX", "L Z-5 F500", "L X+0 Y+0 RR", "L X+50", "L X+10", "L X-20 Y-20 R0"],
+    );
+    let (prog, m, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    check(&prog, &m, &sim, 6, &[Line(p(0.0, -5.0), p(50.0, -5.0))], &untilted);
+    check(
+        &prog,
+        &m,
+        &sim,
+        7,
+        &[Arc(p(50.0, 0.0), 5.0, -90.0, 180.0), Line(p(50.0, 5.0), p(10.0, 5.0))],
+        &untilted,
+    );
+}

@@ -197,8 +197,11 @@ impl Interp {
                     return Err(too_small);
                 }
                 off = off.tail_from(&plane, f.clamp(0.0, 1.0), here);
-            } else if (from_corner.length() - r).abs() <= ON_PATH && turn * s < 0.0 {
-                // An outside corner: around the corner point, turning against the side.
+            } else if (from_corner.length() - r).abs() <= ON_PATH
+                && (turn * s < 0.0 || turn.abs() > std::f64::consts::PI - 1e-9)
+            {
+                // An outside corner (a reversal too): around the corner point, turning against
+                // the side.
                 let sweep = arc::directed(&plane, from_corner, off.start - corner, -s);
                 pieces.push(arc_piece(&plane, here, off.start, corner, sweep));
             } else {
@@ -212,7 +215,8 @@ impl Interp {
             let turn = t1.cross(t2).dot(plane.normal);
             let tangent = turn.abs() < 1e-9 && t1.dot(t2) > 0.0;
             if !tangent && let Ok(n_off) = arc::offset(&plane, n, s, r) {
-                if s * turn > 0.0 {
+                // A reversal (turn 0, opposite directions) is an outside corner.
+                if s * turn > 1e-9 {
                     // Inside corner: end at the intersection of the two tool centre paths.
                     let x = arc::meet(&plane, &off, &n_off, off.end).ok_or(too_small.clone())?;
                     let f = off.fraction_of(&plane, x);
