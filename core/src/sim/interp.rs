@@ -124,8 +124,9 @@ struct Cycle7 {
 type R<T> = Result<T, SimErrorCode>;
 
 /// M functions with a motion meaning the simulator does not model (M89 modal cycle call, M92 OEM
-/// position, M128/M129 TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 5] = [89, 92, 128, 129, 140];
+/// position, M128/M129 TCPM, M140 retract, M197 extending the elements at outside corners
+/// instead of the transition arc); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 6] = [89, 92, 128, 129, 140, 197];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
