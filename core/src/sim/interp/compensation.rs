@@ -122,7 +122,7 @@ impl Interp {
             (None, None) => self.follow(cx, rec, idx, &elem, rate)?,
             (None, Some(s)) => {
                 let t = match self.next_element(cx, idx, elem.end, elem.tangent(&plane, true)) {
-                    Some((n, w)) if w.and_then(side_of).is_none_or(|x| x == s) => n.tangent(&plane, false),
+                    Some((n, w)) if w.is_none_or(|w| side_of(w) == Some(s)) => n.tangent(&plane, false),
                     _ => None,
                 }
                 .or_else(|| elem.tangent(&plane, true));
