@@ -87,6 +87,9 @@ pub enum Decision {
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`], [`CIRCLE_END_TOLERANCE`],
     /// [`ARC_TOOL_AXIS_LINEAR`], [`CP_IPA_DIRECTION_FROM_DR`].
     ArcConventions,
+    /// Simulator: [`COMP_CORNER_ARC_WITH_NEXT_BLOCK`], [`APPR_DEP_RADIUS_OF_CENTRE_PATH`] and the
+    /// conventions of the radius compensation and APPR/DEP the manuals do not state (its text).
+    CompensationConventions,
     /// The dialog's German wording where no manual gives it (DOMAIN.md §7): the prompts of
     /// SPATIAL, PROJECTED, POINTS, RELATIV, AXIAL, DIST, MB and the positioning step, and the
     /// softkey labels other than SPATIAL/RESET. Confirmed, from the iTNC 530 German user
@@ -96,7 +99,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 35] = [
+    pub const ALL: [Decision; 36] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -131,6 +134,7 @@ impl Decision {
         Decision::DatumAbsoluteReplaces,
         Decision::Q120OnlySpatial,
         Decision::ArcConventions,
+        Decision::CompensationConventions,
         Decision::DialogWording,
     ];
 
@@ -273,6 +277,10 @@ impl Decision {
             Decision::ArcConventions => Text::new(
                 "Kreisbahnen: ohne DR gilt die zuletzt programmierte Drehrichtung (vor dem ersten DR: DR+); der Endpunkt von C darf 0,01 mm neben dem Kreis liegen; eine Werkzeugachs-Koordinate in C/CR/CT fährt linear mit (wie eine Helix); bei CP mit IPA und DR bestimmt DR die Richtung.",
                 "Arcs: without DR the last programmed direction applies (before the first DR: DR+); the end point of C may be 0.01 mm off the circle; a tool-axis coordinate in C/CR/CT moves linearly along (like a helix); CP with IPA and DR: DR gives the direction.",
+            ),
+            Decision::CompensationConventions => Text::new(
+                "Radiuskorrektur: der Übergangskreis an einer Außenecke gehört zum Satz nach der Ecke; RL/RR in einem Kreissatz fährt geradlinig senkrecht vor den Konturanfang; R0 in einem Kreissatz fährt geradlinig zum Kreisanfang; ein Satz, der das Werkzeug anders bewegt (Zyklus, M91, Drehachse, TOOL CALL, Transformation), beendet die Korrektur; RL↔RR ohne R0 ist ein Fehler. APPR/DEP: ohne RL/RR ein Fehler; R bei CT/LCT ist der Radius der Werkzeugmittelpunktsbahn; APPR fährt die Werkzeugachse auf der Geraden zum Hilfspunkt; DEP CT dreht wie APPR CT (RL mit R+ gegen den Uhrzeigersinn); alle Teilbahnen mit dem F des Satzes.",
+                "Radius compensation: the transition arc at an outside corner belongs to the block after the corner; RL/RR in an arc block moves straight to the point perpendicular to the start of the contour; R0 in an arc block moves straight to the arc's start; a block moving the tool otherwise (cycle, M91, rotary axis, TOOL CALL, transformation) ends the compensation; RL↔RR without R0 is an error. APPR/DEP: without RL/RR an error; R of CT/LCT is the radius of the tool centre path; APPR moves the tool axis on the line to the auxiliary point; DEP CT turns like APPR CT (RL with R+ counter-clockwise); every piece at the block's F.",
             ),
             Decision::DialogWording => Text::new(
                 "Wortlaut der Dialogfrage nicht aus einem Handbuch (bestätigt sind nur EULER und VECTOR).",
@@ -528,6 +536,18 @@ pub const ARC_TOOL_AXIS_LINEAR: bool = true;
 /// shows them with the same sign, `CP IPA-1800 IZ+5 DR-`); without DR the sign of IPA gives the
 /// direction. **UNCONFIRMED** when the signs disagree.
 pub const CP_IPA_DIRECTION_FROM_DR: bool = true;
+
+/// RL/RR: the transition arc around an outside corner (the control's default; M197 would
+/// extend the elements instead, not simulated) is run at the start of the block after the corner,
+/// so after each block the tool stands perpendicular to the end of its element (the manual's
+/// picture of the compensated path; which block the arc belongs to it does not say).
+/// **UNCONFIRMED**; `false` runs it at the end of the block before the corner.
+pub const COMP_CORNER_ARC_WITH_NEXT_BLOCK: bool = true;
+
+/// `APPR CT`/`LCT`, `DEP CT`/`LCT`: `R` is the radius of the tool centre path ("the tool moves
+/// on a circular path"); `false`: the radius on the contour side, the tool centre path then
+/// smaller or larger by the tool radius like any compensated arc. **UNCONFIRMED**.
+pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
 #[cfg(test)]
 mod tests {

@@ -24,6 +24,7 @@ use super::geometry::{Affine, Kin};
 use super::segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
 use super::tools;
 use super::transform::{Level, Transforms};
+mod compensation;
 mod contour;
 mod cycle_calls;
 mod motion;
@@ -108,6 +109,8 @@ pub(crate) struct Interp {
     corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
     /// The corner point a RND/CHF cut off: where the next element starts geometrically.
     geom_start: Option<DVec3>,
+    /// The tool radius compensation RL/RR (`None`: R0).
+    comp: Option<compensation::Comp>,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -121,8 +124,9 @@ struct Cycle7 {
 type R<T> = Result<T, SimErrorCode>;
 
 /// M functions with a motion meaning the simulator does not model (M89 modal cycle call, M92 OEM
-/// position, M128/M129 TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 5] = [89, 92, 128, 129, 140];
+/// position, M128/M129 TCPM, M140 retract, M197 extending the elements at outside corners
+/// instead of the transition arc); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 6] = [89, 92, 128, 129, 140, 197];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
@@ -203,6 +207,7 @@ impl Interp {
             tangent: None,
             corner: None,
             geom_start: None,
+            comp: None,
         };
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
@@ -334,7 +339,7 @@ impl Interp {
             BlockBody::ToolCall(t) => self.tool_call(t, &mut rec)?,
             BlockBody::L(line) => self.line(cx, &mut rec, idx, line)?,
             BlockBody::Cc(m) => {
-                let last = self.geom_start.unwrap_or(self.pos_i);
+                let last = self.geom_start.unwrap_or(self.programmed());
                 self.pole = Some(self.pole_of(&m.axes, last)?);
                 note(&mut rec, || {
                     Text::new(
@@ -352,22 +357,8 @@ impl Interp {
             BlockBody::Chf { feed, .. } => {
                 self.corner_block(cx, &mut rec, idx, "CHF", feed.as_ref(), pending_corner)?;
             }
-            BlockBody::Appr(a) | BlockBody::Dep(a) => {
-                let line = Line { axes: a.axes.clone(), comp: None, feed: a.feed, m: a.m.clone() };
-                self.line(cx, &mut rec, idx, &line)?;
-                let w = if matches!(block.body, BlockBody::Appr(_)) { "APPR" } else { "DEP" };
-                let k = a.kind.as_str();
-                note(&mut rec, || {
-                    Text::owned(
-                        format!(
-                            "{w} {k} nicht simuliert: Gerade zum programmierten Punkt, ohne Radiuskorrektur"
-                        ),
-                        format!(
-                            "{w} {k} not simulated: straight line to the programmed point, no radius compensation"
-                        ),
-                    )
-                });
-            }
+            BlockBody::Appr(a) => self.approach(cx, &mut rec, idx, a)?,
+            BlockBody::Dep(a) => self.depart(cx, &mut rec, idx, a)?,
             BlockBody::CyclCallPat { m, .. } => self.call_not_simulated(&mut rec, "PAT", m),
             BlockBody::CyclCallPos(l) => self.call_not_simulated(&mut rec, "POS", &l.m),
             BlockBody::PatternDef(items) => {
