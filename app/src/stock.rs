@@ -16,9 +16,9 @@ use crate::i18n::Text;
 use crate::run::SimRef;
 
 /// The cutting work of one animation frame, in rays ([`schwenkbar_core::stock::Removal::work`],
-/// meshing included): about 2 ms natively and 4 ms in a release wasm build, half the issue's
+/// meshing included): about 1.5 ms natively and 3 ms in a release wasm build, well inside the issue's
 /// 8 ms frame (`scripts/bench.sh`).
-pub const FRAME_RAYS: usize = 6_000;
+pub const FRAME_RAYS: usize = 4_000;
 
 /// What the view shows and where it is going.
 #[derive(Default)]

@@ -121,6 +121,7 @@ fixtures! {
     c_without_cc: "ac-table";
     call_lbl: "ac-table";
     contour_arcs: "ac-table";
+    contour_rl: "ac-table";
     cr_too_small: "ac-table";
     cycle19_stay: "ac-table";
     cycle_calls: "ac-table";

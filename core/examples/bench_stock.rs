@@ -96,4 +96,4 @@ fn main() {
 /// Frames per animated block.
 const FRAMES: u32 = 60;
 /// Rays per frame (`schwenkbar_app::stock::FRAME_RAYS`).
-const FRAME_RAYS: usize = 6_000;
+const FRAME_RAYS: usize = 4_000;

@@ -88,7 +88,7 @@ use crate::lang::Text;
 use crate::machine::Machine;
 use crate::solve::Explanation;
 
-pub use error::{SimError, SimErrorCode};
+pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
 pub use transform::{ActiveTransform, Level, Transforms};

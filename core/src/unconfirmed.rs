@@ -97,6 +97,9 @@ pub enum Decision {
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`], [`CIRCLE_END_TOLERANCE`],
     /// [`ARC_TOOL_AXIS_LINEAR`], [`CP_IPA_DIRECTION_FROM_DR`].
     ArcConventions,
+    /// Simulator: [`COMP_CORNER_ARC_WITH_NEXT_BLOCK`], [`APPR_DEP_RADIUS_OF_CENTRE_PATH`] and the
+    /// conventions of the radius compensation and APPR/DEP the manuals do not state (its text).
+    CompensationConventions,
     /// The dialog's German wording where no manual gives it (DOMAIN.md §7): the prompts of
     /// SPATIAL, PROJECTED, POINTS, RELATIV, AXIAL, DIST, MB and the positioning step, and the
     /// softkey labels other than SPATIAL/RESET. Confirmed, from the iTNC 530 German user
@@ -106,7 +109,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 37] = [
+    pub const ALL: [Decision; 38] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -143,6 +146,7 @@ impl Decision {
         Decision::ArcConventions,
         Decision::CycleConventions,
         Decision::PatternConventions,
+        Decision::CompensationConventions,
         Decision::DialogWording,
     ];
 
@@ -293,6 +297,10 @@ impl Decision {
             Decision::PatternConventions => Text::new(
                 "Muster und Zyklusaufrufe: PATTERN DEF PAT/FRAME Zeile für Zeile, jede zweite rückwärts (wie Zyklus 221); Zyklus 220 mit Q247 = 0: Vollkreis in Q241 gleiche Schritte, sonst Start- und Endwinkel eingeschlossen; nach dem letzten Punkt von 220/221 auf den 2. Sicherheitsabstand; CYCL CALL POS unterhalb der Oberfläche: zuerst auf den 2. Sicherheitsabstand; M89 ruft den Zyklus schon in seinem eigenen Satz auf; der Vorschub von CYCL CALL PAT gilt zwischen den Punkten.",
                 "Patterns and cycle calls: PATTERN DEF PAT/FRAME row by row, every other row backwards (like cycle 221); cycle 220 with Q247 = 0: a full circle in Q241 equal steps, otherwise start and stop angle both included; after the last point of 220/221 to the 2nd set-up clearance; CYCL CALL POS below the surface: first to the 2nd set-up clearance; M89 calls the cycle already in its own block; the feed of CYCL CALL PAT applies between the points.",
+            ),
+            Decision::CompensationConventions => Text::new(
+                "Radiuskorrektur: der Übergangskreis an einer Außenecke gehört zum Satz nach der Ecke; RL/RR in einem Kreissatz fährt geradlinig senkrecht vor den Konturanfang; R0 in einem Kreissatz fährt geradlinig zum Kreisanfang; ein Satz, der das Werkzeug anders bewegt (Zyklus, M91, Drehachse, TOOL CALL, Transformation), beendet die Korrektur; RL↔RR ohne R0 ist ein Fehler. APPR/DEP: ohne RL/RR ein Fehler; R bei CT/LCT ist der Radius der Werkzeugmittelpunktsbahn; APPR fährt die Werkzeugachse auf der Geraden zum Hilfspunkt; DEP CT dreht wie APPR CT (RL mit R+ gegen den Uhrzeigersinn); alle Teilbahnen mit dem F des Satzes.",
+                "Radius compensation: the transition arc at an outside corner belongs to the block after the corner; RL/RR in an arc block moves straight to the point perpendicular to the start of the contour; R0 in an arc block moves straight to the arc's start; a block moving the tool otherwise (cycle, M91, rotary axis, TOOL CALL, transformation) ends the compensation; RL↔RR without R0 is an error. APPR/DEP: without RL/RR an error; R of CT/LCT is the radius of the tool centre path; APPR moves the tool axis on the line to the auxiliary point; DEP CT turns like APPR CT (RL with R+ counter-clockwise); every piece at the block's F.",
             ),
             Decision::DialogWording => Text::new(
                 "Wortlaut der Dialogfrage nicht aus einem Handbuch (bestätigt sind nur EULER und VECTOR).",
@@ -638,6 +646,17 @@ pub const M89_CALLS_AT_ITS_BLOCK: bool = true;
 /// `CYCL CALL PAT F…`: the feed applies to the moves between the points (FMAX or none: rapid).
 /// **UNCONFIRMED**.
 pub const CYCL_CALL_PAT_FEED_BETWEEN_POINTS: bool = true;
+/// RL/RR: the transition arc around an outside corner (the control's default; M197 would
+/// extend the elements instead, not simulated) is run at the start of the block after the corner,
+/// so after each block the tool stands perpendicular to the end of its element (the manual's
+/// picture of the compensated path; which block the arc belongs to it does not say).
+/// **UNCONFIRMED**; `false` runs it at the end of the block before the corner.
+pub const COMP_CORNER_ARC_WITH_NEXT_BLOCK: bool = true;
+
+/// `APPR CT`/`LCT`, `DEP CT`/`LCT`: `R` is the radius of the tool centre path ("the tool moves
+/// on a circular path"); `false`: the radius on the contour side, the tool centre path then
+/// smaller or larger by the tool radius like any compensated arc. **UNCONFIRMED**.
+pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
 #[cfg(test)]
 mod tests {

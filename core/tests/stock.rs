@@ -2,6 +2,7 @@
 //! unless a test says otherwise. Volumes within 1 % (the figure), angles within 0.1°.
 
 use glam::DVec3;
+use proptest::prelude::*;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
 use schwenkbar_core::stock::{
@@ -317,4 +318,74 @@ fn pocket_251_removes_its_volume() {
     let exact = 6.0 * (40.0 * 30.0 - (4.0 - std::f64::consts::PI) * 64.0);
     within_one_percent(removed(&c), exact);
     assert!(c.notes.is_empty(), "{:?}", c.notes);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// Any blank (flat, huge, inside out), any tool of the table (and unknown ones), straight,
+    /// tilted, swivelling and arc moves with random numbers: cutting, stepping in random frames
+    /// and meshing never panic, the material stays between none and the blank, and the stock
+    /// after a step does not depend on how one got there.
+    #[test]
+    fn random_runs_cut_without_panic(
+        corner in (-200.0..200.0f64, -200.0..200.0f64, -200.0..0.0f64),
+        size in (0.0..150.0f64, 0.0..150.0f64, 0.0..80.0f64),
+        picks in proptest::collection::vec((0usize..9, -120.0..120.0f64, 0u32..6), 1..25),
+        resolution in 0.8..4.0f64,
+        budget in 200usize..20_000,
+        seeks in proptest::collection::vec((0.0..1.0f64, 0.0..1.0f64), 1..6),
+    ) {
+        let tools = [1, 8, 12, 16, 20, 99];
+        let (x, y, z) = corner;
+        let mut src = format!(
+            "BLK FORM 0.1 Z X{x:+.3} Y{y:+.3} Z{z:+.3}\nBLK FORM 0.2 X{:+.3} Y{:+.3} Z{:+.3}\n",
+            x + size.0, y + size.1, z + size.2
+        );
+        for (k, v, n) in &picks {
+            src.push_str(&match k {
+                0 => format!("TOOL CALL {} Z S1000", tools[*n as usize]),
+                1 => format!("L X{:+.2} Y{:+.2} Z{:+.2} R0 F500", x + v.abs() / 2.0, y + v / 3.0, z + v / 4.0),
+                2 => format!("L X{:+.2} Y{:+.2} Z{:+.2} R0 FMAX", x + v / 2.0, y + v.abs() / 2.0, z + size.2 + v / 8.0),
+                3 => format!("PLANE SPATIAL SPA+0 SPB{:+.2} SPC+0 TURN MB MAX FMAX", v / 4.0),
+                4 => format!("PLANE SPATIAL SPA{:+.2} SPB+0 SPC+0 MOVE DIST+50 F1000", v / 6.0),
+                5 => "PLANE RESET STAY".to_string(),
+                6 => format!("CC X{:+.2} Y{:+.2}", x + v.abs() / 3.0, y + size.1 / 2.0),
+                7 => format!("C X{:+.2} Y{:+.2} DR{}", x, y + size.1 / 2.0, if n % 2 == 0 { '+' } else { '-' }),
+                _ => format!("L A{:+.2} C{:+.2} R0 F1000", v / 3.0, v),
+            });
+            src.push('\n');
+        }
+        src.push_str("M30\n");
+        let (program, _) = parse(&src);
+        let machine = Machine::builtin("ac-table").expect("shipped machine");
+        let sim = simulate(&program, &machine, &SimOptions::default());
+        let c = Cutting::new(&program, &sim, StockOptions { resolution, checkpoints: 2 });
+        let n = sim.len();
+        prop_assume!(n > 0);
+        let mut cursor = StockCursor::default();
+        let mut tiled = TiledMesh::default();
+        for (at, fraction) in &seeks {
+            let step = ((at * n as f64) as usize).min(n - 1);
+            let mut calls = 0;
+            while !c.advance(&mut cursor, step, *fraction, budget) {
+                calls += 1;
+                prop_assert!(calls < 100_000, "no progress");
+            }
+            let mut whole = StockCursor::default();
+            c.seek(&mut whole, step, *fraction);
+            prop_assert_eq!(cursor.stock.as_ref().map(Stock::digest), whole.stock.as_ref().map(Stock::digest));
+            if let Some(stock) = &cursor.stock {
+                let (lo, hi) = stock.bounds();
+                let blank = (hi - lo).element_product();
+                let v = stock.volume();
+                prop_assert!(v.is_finite() && v >= -1e-6 && v <= blank * 1.0001 + 1e-6, "volume {} of {}", v, blank);
+                tiled.update(stock);
+                prop_assert!(tiled.tiles().iter().all(|t| t.1.positions.iter().flatten().all(|c| c.is_finite())));
+            }
+        }
+        for note in &c.notes {
+            prop_assert!(!note.message().de.is_empty() && note.step < n);
+        }
+    }
 }

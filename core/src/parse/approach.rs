@@ -7,7 +7,8 @@
 //! simulator's.
 
 use super::Cx;
-use super::words::{Stop, at_boundary, axis_word, feed, keyword, m_function, sp, word_value};
+use super::motion::{feed_or_comp, once};
+use super::words::{Stop, at_boundary, axis_word, keyword, m_function, sp, word_value};
 use crate::ast::{ApprDep, ApprKind, BlockBody, RadiusComp};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{Feed, Value};
@@ -23,15 +24,6 @@ struct Words<'a> {
     comp: At<'a, RadiusComp>,
     feed: At<'a, Feed>,
     first_axis: Option<&'a str>,
-}
-
-fn set<'a, T>(cx: &mut Cx, slot: &mut At<'a, T>, v: T, at: &'a str, len: usize) -> bool {
-    if slot.is_some() {
-        cx.error(at, len, DiagCode::Duplicate { word: at[..len.min(at.len())].to_owned() });
-        return false;
-    }
-    *slot = Some((v, at));
-    true
 }
 
 /// `APPR …` (`approach`) or `DEP …`; `rest` follows the keyword.
@@ -75,30 +67,24 @@ pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockB
             Err(e) => return cx.fail(e),
         }
         let valued = |key: &str| -> Option<&str> { i.strip_prefix(key).map(sp) };
-        let (r, ok) = if i.starts_with('F') {
-            match feed(i) {
-                Ok((r, f)) => (r, set(cx, &mut w.feed, f, at, i.len() - r.len())),
+        let (r, ok) = if let Some(read) = feed_or_comp(cx, i, &mut w.feed, &mut w.comp) {
+            match read {
+                Ok(read) => read,
                 Err(e) => return cx.fail(e),
             }
-        } else if let Some(r) = keyword(i, "R0") {
-            (r, set(cx, &mut w.comp, RadiusComp::R0, at, 2))
-        } else if let Some(r) = keyword(i, "RL") {
-            (r, set(cx, &mut w.comp, RadiusComp::Rl, at, 2))
-        } else if let Some(r) = keyword(i, "RR") {
-            (r, set(cx, &mut w.comp, RadiusComp::Rr, at, 2))
         } else if let Some(v) = valued("LEN") {
             match word_value(v) {
-                Ok((r, v)) => (r, set(cx, &mut w.len, v, at, 3)),
+                Ok((r, v)) => (r, once(cx, &mut w.len, v, at, 3)),
                 Err(e) => return cx.fail(e),
             }
         } else if let Some(v) = valued("CCA") {
             match word_value(v) {
-                Ok((r, v)) => (r, set(cx, &mut w.cca, v, at, 3)),
+                Ok((r, v)) => (r, once(cx, &mut w.cca, v, at, 3)),
                 Err(e) => return cx.fail(e),
             }
         } else if let Some(v) = i.strip_prefix('R') {
             match word_value(v) {
-                Ok((r, v)) => (r, set(cx, &mut w.radius, v, at, 1)),
+                Ok((r, v)) => (r, once(cx, &mut w.radius, v, at, 1)),
                 Err(e) => return cx.fail(e),
             }
         } else {

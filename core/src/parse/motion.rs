@@ -35,7 +35,13 @@ fn polar<'a>(i: &'a str, key: &'static str) -> Option<Step<'a, PolarWord>> {
 }
 
 /// Stores `v` in `slot` unless the word was already there.
-fn once<'a, T>(cx: &mut Cx, slot: &mut Option<(T, &'a str)>, v: T, at: &'a str, len: usize) -> bool {
+pub(super) fn once<'a, T>(
+    cx: &mut Cx,
+    slot: &mut Option<(T, &'a str)>,
+    v: T,
+    at: &'a str,
+    len: usize,
+) -> bool {
     if slot.is_some() {
         let word = at[..len.min(at.len())].to_owned();
         cx.error(at, len, DiagCode::Duplicate { word });
@@ -43,6 +49,23 @@ fn once<'a, T>(cx: &mut Cx, slot: &mut Option<(T, &'a str)>, v: T, at: &'a str, 
     }
     *slot = Some((v, at));
     true
+}
+
+/// The feed and radius-compensation words every path block may carry (`F…`, `R0`, `RL`, `RR`)
+/// at `i`: `None` if `i` starts neither, else the rest and whether the word was new.
+pub(super) fn feed_or_comp<'a>(
+    cx: &mut Cx,
+    i: &'a str,
+    feed_slot: &mut Option<(Feed, &'a str)>,
+    comp: &mut Option<(RadiusComp, &'a str)>,
+) -> Option<Result<(&'a str, bool), Stop<'a>>> {
+    if i.starts_with('F') {
+        return Some(feed(i).map(|(r, f)| (r, once(cx, feed_slot, f, i, i.len() - r.len()))));
+    }
+    let (r, c) = [("R0", RadiusComp::R0), ("RL", RadiusComp::Rl), ("RR", RadiusComp::Rr)]
+        .into_iter()
+        .find_map(|(word, c)| keyword(i, word).map(|r| (r, c)))?;
+    Some(Ok((r, once(cx, comp, c, i, 2))))
 }
 
 /// `L`, `CC`, `C`, `CR`, `CT`, `LP`, `CP`, `RND`, `CHF` (`rest` follows the keyword).
@@ -80,17 +103,11 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
             Err(Stop::Expected { .. }) => {}
             Err(e) => return cx.fail(e),
         }
-        let (r, ok) = if i.starts_with('F') {
-            match feed(i) {
-                Ok((r, f)) => (r, once(cx, &mut w.feed, f, at, i.len() - r.len())),
+        let (r, ok) = if let Some(read) = feed_or_comp(cx, i, &mut w.feed, &mut w.comp) {
+            match read {
+                Ok(read) => read,
                 Err(e) => return cx.fail(e),
             }
-        } else if let Some(r) = keyword(i, "R0") {
-            (r, once(cx, &mut w.comp, RadiusComp::R0, at, 2))
-        } else if let Some(r) = keyword(i, "RL") {
-            (r, once(cx, &mut w.comp, RadiusComp::Rl, at, 2))
-        } else if let Some(r) = keyword(i, "RR") {
-            (r, once(cx, &mut w.comp, RadiusComp::Rr, at, 2))
         } else if let Some(after) = i.strip_prefix("DR") {
             match sign(after) {
                 Ok((r, s)) if at_boundary(r) => (r, once(cx, &mut w.direction, s, at, 3)),

@@ -401,6 +401,92 @@ impl Curve {
     }
 }
 
+/// Why an element has no offset path.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OffsetError {
+    /// The element moves along the tool axis only: no side to offset to.
+    NoDirection,
+    /// An arc whose offset radius would be < 0 (its radius, mm): the tool does not fit inside.
+    RadiusGone { radius: f64 },
+}
+
+/// `e` moved by `r` to the left (`side` +1, RL) or right (−1, RR) of its direction of travel:
+/// a line is shifted along its normal, an arc keeps its centre and sweep and its radius grows
+/// or shrinks by `r` (a counter-clockwise arc has its centre on the left, so RL shrinks it;
+/// manual "Tool radius compensation": the tool centre path runs at the distance of the tool
+/// radius from the contour). The tool-axis coordinates stay.
+///
+/// # Errors
+/// [`OffsetError::NoDirection`], [`OffsetError::RadiusGone`].
+pub fn offset(plane: &WorkPlane, e: &Elem, side: f64, r: f64) -> Result<Elem, OffsetError> {
+    match e.shape {
+        Shape::Line => {
+            let t = e.tangent(plane, true).ok_or(OffsetError::NoDirection)?;
+            let shift = side * r * plane.normal.cross(t);
+            Ok(Elem::line(e.start + shift, e.end + shift))
+        }
+        Shape::Arc { centre, sweep } => {
+            let radius = e.radius(plane);
+            // Radius 0 (an inside arc exactly the tool's size) leaves the tool standing at the
+            // centre; only a negative one does not fit.
+            let nr = radius - sweep.signum() * side * r;
+            if nr < -LENGTH_EPS {
+                return Err(OffsetError::RadiusGone { radius });
+            }
+            let nr = nr.max(0.0);
+            let at = |p: DVec3| {
+                let u = plane.planar(p - centre).normalize_or_zero();
+                plane.with_axial(plane.planar(centre) + nr * u, plane.axial(p))
+            };
+            Ok(Elem { start: at(e.start), end: at(e.end), shape: e.shape })
+        }
+    }
+}
+
+/// Where the curves of `a` and `b` (lines taken infinite, arcs as full circles) meet, the
+/// intersection nearest to `near`, with `near`'s tool-axis coordinate. For the inside corner of
+/// two offset paths (manual: at inside corners the tool centre path ends at the intersection of
+/// the two offset paths).
+#[must_use]
+pub fn meet(plane: &WorkPlane, a: &Elem, b: &Elem, near: DVec3) -> Option<DVec3> {
+    let ca = Curve::of(plane, a, a.start)?;
+    let cb = Curve::of(plane, b, b.start)?;
+    let q = plane.planar(near);
+    intersect(plane, ca, cb)
+        .into_iter()
+        .min_by(|x, y| x.distance_squared(q).total_cmp(&y.distance_squared(q)))
+        .map(|x| plane.with_axial(x, plane.axial(near)))
+}
+
+/// `f` such that `e.at(f)` is `p`, when `p` lies on the curve of `e` within `tolerance` (mm).
+#[must_use]
+pub fn on_curve(plane: &WorkPlane, e: &Elem, p: DVec3, tolerance: f64) -> Option<f64> {
+    let f = e.fraction_of(plane, p);
+    (plane.planar(e.at(plane, f) - p).length() <= tolerance).then_some(f)
+}
+
+/// The point where a line through `q` touches the circle around `m` of radius `r` that is run
+/// in direction `dir` (+1 counter-clockwise): `x = m + r·u` with `u·(q − m) = r` (the radius
+/// is perpendicular to the tangent). `arrive`: the line runs from `q` into the circle (APPR
+/// LCT), else from the circle out to `q` (DEP LCT); of the two tangent points the one where
+/// the line and the circle run the same way. `None` when `q` lies inside the circle.
+#[must_use]
+pub fn tangent_point(plane: &WorkPlane, m: DVec3, r: f64, dir: f64, q: DVec3, arrive: bool) -> Option<DVec3> {
+    let d = plane.planar(q - m);
+    let dist = d.length();
+    if dist < r + LENGTH_EPS || r < LENGTH_EPS {
+        return None;
+    }
+    let phi = (r / dist).acos();
+    [phi, -phi].into_iter().find_map(|a| {
+        let u = plane.rotate(d / dist, a);
+        let x = m + r * u;
+        let run = dir * plane.normal.cross(u);
+        let line = if arrive { plane.planar(x - q) } else { plane.planar(q - x) };
+        (line.dot(run) > 0.0).then_some(x)
+    })
+}
+
 /// Intersections of two curves in the plane (planar points, 0, 1 or 2 of them).
 fn intersect(plane: &WorkPlane, a: Curve, b: Curve) -> Vec<DVec3> {
     match (a, b) {

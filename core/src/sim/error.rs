@@ -70,6 +70,32 @@ pub enum SimErrorCode {
     CornerTooLarge { word: &'static str, value: f64 },
     /// `CHF` between elements that are not both straight lines.
     ChamferNeedsLines,
+    /// RL/RR: an arc whose tool centre path would have a radius < 0 (an inside arc smaller than
+    /// the tool radius).
+    ToolRadiusTooLarge { radius: f64, contour_radius: f64 },
+    /// RL/RR: an element that vanishes between the intersections of its neighbours' tool
+    /// centre paths.
+    ContourElementTooSmall { radius: f64 },
+    /// RL after RR (or RR after RL) without a block with R0 between them.
+    CompensationChange,
+    /// `APPR`/`DEP` whose path cannot be built.
+    ApprDep { word: &'static str, kind: &'static str, reason: ApprDepReason },
+}
+
+/// Why an `APPR`/`DEP` path cannot be built.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ApprDepReason {
+    /// No radius compensation RL/RR (APPR: in the block; DEP: on the contour before it).
+    NoCompensation,
+    /// APPR with no contour element after it to approach.
+    NoContourAfter,
+    /// DEP with no contour element before it to leave.
+    NoContourBefore,
+    /// LCT: the start point (APPR) or end point (DEP) lies inside the arc's circle.
+    PointInsideArc,
+    /// CT/LCT: the arc has radius 0.
+    ZeroRadius,
 }
 
 /// The run stopped at this block; every state before it is kept.
@@ -140,6 +166,15 @@ impl SimErrorCode {
                 t(format!("{word} nicht möglich"), format!("{word} not possible"))
             }
             SimErrorCode::ChamferNeedsLines => t("CHF nicht möglich", "CHF not possible"),
+            SimErrorCode::ToolRadiusTooLarge { .. } | SimErrorCode::ContourElementTooSmall { .. } => {
+                t("Werkzeug-Radius zu groß", "Tool radius too large")
+            }
+            SimErrorCode::CompensationChange => {
+                t("Radiuskorrektur RL/RR ohne R0 gewechselt", "Radius compensation RL/RR changed without R0")
+            }
+            SimErrorCode::ApprDep { word, kind, .. } => {
+                t(format!("{word} {kind} nicht möglich"), format!("{word} {kind} not possible"))
+            }
         }
     }
 
@@ -291,6 +326,56 @@ impl SimErrorCode {
             SimErrorCode::ChamferNeedsLines => {
                 t("CHF verbindet nur zwei Geraden", "CHF joins two straight lines only")
             }
+            SimErrorCode::ToolRadiusTooLarge { radius, contour_radius } => t(
+                format!(
+                    "Kreis R{}: mit dem Werkzeugradius {} bleibt keine Werkzeugmittelpunktsbahn (Innenkreis kleiner als das Werkzeug)",
+                    prose(*contour_radius, Some(4), Lang::De),
+                    prose(*radius, Some(4), Lang::De)
+                ),
+                format!(
+                    "Arc R{}: with the tool radius {} no tool centre path is left (inside arc smaller than the tool)",
+                    prose(*contour_radius, Some(4), Lang::En),
+                    prose(*radius, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::ContourElementTooSmall { radius } => t(
+                format!(
+                    "Das Konturelement verschwindet zwischen den Schnittpunkten der korrigierten Nachbarelemente (Werkzeugradius {})",
+                    prose(*radius, Some(4), Lang::De)
+                ),
+                format!(
+                    "The contour element vanishes between the intersections of its neighbours' compensated paths (tool radius {})",
+                    prose(*radius, Some(4), Lang::En)
+                ),
+            ),
+            SimErrorCode::CompensationChange => t(
+                "Zwischen Sätzen mit RL und RR muss ein Verfahrsatz in der Bearbeitungsebene mit R0 stehen",
+                "Between blocks with RL and RR there must be a positioning block in the working plane with R0",
+            ),
+            SimErrorCode::ApprDep { word, kind, reason } => match reason {
+                ApprDepReason::NoCompensation => t(
+                    format!("{word} {kind}: An- und Abfahren brauchen die Radiuskorrektur RL oder RR"),
+                    format!("{word} {kind}: approaching and departing need radius compensation RL or RR"),
+                ),
+                ApprDepReason::NoContourAfter => t(
+                    format!(
+                        "{word} {kind}: danach folgt kein Konturelement, an das die Anfahrbahn anschließt"
+                    ),
+                    format!("{word} {kind}: no contour element follows for the approach path to join"),
+                ),
+                ApprDepReason::NoContourBefore => t(
+                    format!("{word} {kind}: davor steht kein Konturelement, von dem die Abfahrbahn ausgeht"),
+                    format!("{word} {kind}: no contour element precedes it for the departure path to leave"),
+                ),
+                ApprDepReason::PointInsideArc => t(
+                    format!("{word} {kind}: der Start- bzw. Endpunkt liegt innerhalb des Kreises"),
+                    format!("{word} {kind}: the start or end point lies inside the arc's circle"),
+                ),
+                ApprDepReason::ZeroRadius => t(
+                    format!("{word} {kind}: der Radius R ist 0"),
+                    format!("{word} {kind}: the radius R is 0"),
+                ),
+            },
         }
     }
 }

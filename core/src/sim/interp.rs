@@ -24,6 +24,7 @@ use super::geometry::{Affine, Kin};
 use super::segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
 use super::tools;
 use super::transform::{Level, Transforms};
+mod compensation;
 mod contour;
 mod cycle_calls;
 mod motion;
@@ -108,6 +109,8 @@ pub(crate) struct Interp {
     corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
     /// The corner point a RND/CHF cut off: where the next element starts geometrically.
     geom_start: Option<DVec3>,
+    /// The tool radius compensation RL/RR (`None`: R0).
+    comp: Option<compensation::Comp>,
     /// The block of the last `PATTERN DEF` (for `CYCL CALL PAT`).
     pattern: Option<usize>,
     /// `M89` is active: every positioning block calls the cycle.
@@ -125,8 +128,9 @@ struct Cycle7 {
 type R<T> = Result<T, SimErrorCode>;
 
 /// M functions with a motion meaning the simulator does not model (M92 OEM position, M128/M129
-/// TCPM, M140 retract); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 4] = [92, 128, 129, 140];
+/// TCPM, M140 retract, M197 extending the elements at outside corners instead of the transition
+/// arc); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 5] = [92, 128, 129, 140, 197];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
@@ -207,6 +211,7 @@ impl Interp {
             tangent: None,
             corner: None,
             geom_start: None,
+            comp: None,
             pattern: None,
             m89: false,
         };
@@ -343,7 +348,7 @@ impl Interp {
                 self.modal_call(cx, &mut rec, idx, line)?;
             }
             BlockBody::Cc(m) => {
-                let last = self.geom_start.unwrap_or(self.pos_i);
+                let last = self.geom_start.unwrap_or(self.programmed());
                 self.pole = Some(self.pole_of(&m.axes, last)?);
                 note(&mut rec, || {
                     Text::new(
@@ -361,22 +366,8 @@ impl Interp {
             BlockBody::Chf { feed, .. } => {
                 self.corner_block(cx, &mut rec, idx, "CHF", feed.as_ref(), pending_corner)?;
             }
-            BlockBody::Appr(a) | BlockBody::Dep(a) => {
-                let line = Line { axes: a.axes.clone(), comp: None, feed: a.feed, m: a.m.clone() };
-                self.line(cx, &mut rec, idx, &line)?;
-                let w = if matches!(block.body, BlockBody::Appr(_)) { "APPR" } else { "DEP" };
-                let k = a.kind.as_str();
-                note(&mut rec, || {
-                    Text::owned(
-                        format!(
-                            "{w} {k} nicht simuliert: Gerade zum programmierten Punkt, ohne Radiuskorrektur"
-                        ),
-                        format!(
-                            "{w} {k} not simulated: straight line to the programmed point, no radius compensation"
-                        ),
-                    )
-                });
-            }
+            BlockBody::Appr(a) => self.approach(cx, &mut rec, idx, a)?,
+            BlockBody::Dep(a) => self.depart(cx, &mut rec, idx, a)?,
             BlockBody::CyclCallPat { feed, m } => self.call_pattern(cx, &mut rec, idx, feed.as_ref(), m)?,
             BlockBody::CyclCallPos(l) => self.call_pos(cx, &mut rec, idx, l)?,
             BlockBody::PatternDef(items) => {

@@ -59,7 +59,7 @@ impl Interp {
     }
 
     /// `start` with the linear axis words applied (absolute or incremental to `start`).
-    fn target(&self, axes: &[AxisWord], start: DVec3) -> R<DVec3> {
+    pub(super) fn target(&self, axes: &[AxisWord], start: DVec3) -> R<DVec3> {
         let mut p = start;
         for w in axes {
             if let Some(i) = linear_index(w.axis) {
@@ -194,17 +194,18 @@ impl Interp {
     ) -> R<()> {
         self.spindle_m(&m.m);
         let rate = self.rate(m.feed.as_ref())?;
-        let geometric = self.geom_start.take().unwrap_or(self.pos_i);
+        let here = self.programmed();
+        let geometric = self.geom_start.take().unwrap_or(here);
         let Some(elem) = self.element(body, geometric, self.pole, self.tangent)? else { return Ok(()) };
         if let Some(d) = m.direction {
             self.last_dr = Some(sign_of(d));
         }
         let plane = self.work_plane();
         // After a rounding the element starts at the tangent point, not at the corner.
-        let elem = if geometric == self.pos_i {
+        let elem = if geometric == here {
             elem
         } else {
-            elem.tail_from(&plane, elem.fraction_of(&plane, self.pos_i), self.pos_i)
+            elem.tail_from(&plane, elem.fraction_of(&plane, here), here)
         };
         let elem = self.before_corner(cx, idx, elem)?;
         if m.axes.iter().any(|w| linear_index(w.axis).is_none()) {
@@ -215,7 +216,7 @@ impl Interp {
                 )
             });
         }
-        self.follow(cx, rec, idx, &elem, rate)?;
+        self.run_element(cx, rec, idx, elem, m.comp, rate)?;
         if m.m.contains(&99) {
             self.call_cycle(cx, rec, idx)?;
         }
@@ -290,7 +291,9 @@ impl Interp {
             _ if self.feed > 0.0 => Rate::Feed(self.feed),
             _ => Rate::Rapid,
         };
-        self.follow(cx, rec, idx, &p.piece, rate)?;
+        if !self.compensated_piece(cx, rec, idx, &p.piece, p.corner, rate)? {
+            self.follow(cx, rec, idx, &p.piece, rate)?;
+        }
         self.geom_start = Some(p.corner);
         Ok(())
     }

@@ -152,7 +152,7 @@ impl Interp {
         self.spindle_m(&line.m);
         let m91 = line.m.contains(&91);
         let rate = self.rate(line.feed.as_ref())?;
-        let mut p = self.pos_i;
+        let mut p = self.programmed();
         let mut l = self.axes.linear;
         let mut rot = self.axes.rotary;
         let (mut lin_prog, mut rot_prog) = (false, false);
@@ -174,14 +174,6 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
-        if matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
-            note(rec, || {
-                Text::new(
-                    "Radiuskorrektur RL/RR nicht simuliert: Werkzeugmittelpunkt auf der Kontur",
-                    "Radius compensation RL/RR not simulated: tool centre on the contour",
-                )
-            });
-        }
         if let Some(&m) = line.m.iter().find(|&&m| NOT_SIMULATED_M.contains(&m)) {
             note(rec, || Text::owned(format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
         }
@@ -190,11 +182,24 @@ impl Interp {
         // RND/CHF follows, and leaves its direction for a CT.
         self.geom_start = None;
         if lin_prog && !m91 && !rot_prog {
-            let elem = self.before_corner(cx, idx, Elem::line(self.pos_i, p))?;
+            let elem = self.before_corner(cx, idx, Elem::line(self.programmed(), p))?;
+            if self.active_comp().is_some() || matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
+                // A contour element with the tool radius compensation on, switched on or off.
+                self.run_element(cx, rec, idx, elem, line.comp, rate)?;
+                if line.m.contains(&99) {
+                    self.call_cycle(cx, rec, idx)?;
+                }
+                self.end_m(&line.m);
+                return Ok(());
+            }
             p = elem.end;
             if let Some(t) = elem.tangent(&self.work_plane(), true) {
                 self.tangent = Some(t);
             }
+        }
+        // Any other move ends the compensation.
+        if lin_prog || rot_prog {
+            self.comp = None;
         }
         if lin_prog && !m91 {
             l = if rot_prog {
