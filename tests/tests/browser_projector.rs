@@ -92,6 +92,8 @@ async fn projector_type_scales_and_the_program_and_view_take_the_why_panels_colu
     }
     // A program run keeps the position display in its own column.
     click(&root, "[data-key=run]").await;
+    // The run row comes with the next render; on a loaded machine that can take a while.
+    wait_for(&root, "[data-key=run-next]", 3_000).await.expect("the run row");
     click(&root, "[data-key=run-next]").await;
     let side = wait_for(&root, ".side .position", 3_000).await.expect("position display");
     assert!(side.get_bounding_client_rect().width() >= 250.0, "the position display is readable");
