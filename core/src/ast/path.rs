@@ -1,0 +1,87 @@
+//! Path blocks: straight lines, arcs and polar moves, radius compensation, approaching and
+//! departing the contour.
+
+use serde::Serialize;
+
+use super::AxisWord;
+use crate::plane::{Feed, Sign, Value};
+
+/// Tool radius compensation `R0`, `RL`, `RR`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum RadiusComp {
+    R0,
+    Rl,
+    Rr,
+}
+
+/// A straight line `L X… Y… Z… A… R0 FMAX M91 M3`. Kept small and inline: CAM programs are
+/// millions of these (memory budget in issue 3).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Line {
+    pub axes: Box<[AxisWord]>,
+    pub comp: Option<RadiusComp>,
+    pub feed: Option<Feed>,
+    pub m: Box<[u32]>,
+}
+
+/// `PR…`/`PA…` of a polar block, `IPR`/`IPA` incremental.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PolarWord {
+    pub value: Value,
+    pub incremental: bool,
+}
+
+/// Words of the arc and polar path blocks (`CC`, `C`, `CR`, `CT`, `LP`, `CP`); which of them a
+/// block may carry depends on its kind.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Motion {
+    pub axes: Box<[AxisWord]>,
+    pub polar_radius: Option<PolarWord>,
+    pub polar_angle: Option<PolarWord>,
+    /// `R…` of `CR`.
+    pub radius: Option<Value>,
+    /// `DR+` / `DR-`: direction of rotation.
+    pub direction: Option<Sign>,
+    pub comp: Option<RadiusComp>,
+    pub feed: Option<Feed>,
+    pub m: Box<[u32]>,
+}
+
+/// The path of an approach or departure: `LT` straight tangential, `LN` straight perpendicular,
+/// `CT` arc tangential, `LCT` arc tangential to the contour and a straight line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum ApprKind {
+    Lt,
+    Ln,
+    Ct,
+    Lct,
+}
+
+impl ApprKind {
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ApprKind::Lt => "LT",
+            ApprKind::Ln => "LN",
+            ApprKind::Ct => "CT",
+            ApprKind::Lct => "LCT",
+        }
+    }
+}
+
+/// `APPR CT X+10 Y+20 Z-10 CCA180 R+10 RR F100`, `DEP LT LEN12.5 F100`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ApprDep {
+    pub kind: ApprKind,
+    /// APPR: the first contour point; DEP LCT: the end point.
+    pub axes: Box<[AxisWord]>,
+    /// `LEN`: distance to the auxiliary point (LT, LN).
+    pub len: Option<Value>,
+    /// `CCA`: central angle of the arc (CT).
+    pub cca: Option<Value>,
+    /// `R`: radius of the arc (CT, LCT).
+    pub radius: Option<Value>,
+    pub comp: Option<RadiusComp>,
+    pub feed: Option<Feed>,
+    pub m: Box<[u32]>,
+}

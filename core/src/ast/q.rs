@@ -1,0 +1,192 @@
+//! Q parameters: formulas, FN maths, conditional jumps and the labels they jump to.
+
+use serde::Serialize;
+
+use crate::plane::Value;
+
+/// `FN 1: ADDITION` … `FN 5: SQUARE ROOT` (`FN 4: Q4 = +8 DIV +Q2`, `FN 5: Q20 = SQRT 4`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum FnOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Sqrt,
+}
+
+impl FnOp {
+    /// The FN number.
+    #[must_use]
+    pub fn number(self) -> u32 {
+        match self {
+            FnOp::Add => 1,
+            FnOp::Sub => 2,
+            FnOp::Mul => 3,
+            FnOp::Div => 4,
+            FnOp::Sqrt => 5,
+        }
+    }
+
+    /// The operator word as the control writes it between the operands (`SQRT` before the one).
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            FnOp::Add => "+",
+            FnOp::Sub => "-",
+            FnOp::Mul => "*",
+            FnOp::Div => "DIV",
+            FnOp::Sqrt => "SQRT",
+        }
+    }
+}
+
+/// `FN n: Q<target> = a op b`; `FN 5` has only `a` (`SQRT a`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FnMath {
+    pub op: FnOp,
+    pub target: u32,
+    pub a: Value,
+    pub b: Option<Value>,
+}
+
+/// The condition of a jump: `FN 9` EQU, `FN 10` NE, `FN 11` GT, `FN 12` LT.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum JumpIf {
+    Equ,
+    Ne,
+    Gt,
+    Lt,
+}
+
+impl JumpIf {
+    #[must_use]
+    pub fn number(self) -> u32 {
+        match self {
+            JumpIf::Equ => 9,
+            JumpIf::Ne => 10,
+            JumpIf::Gt => 11,
+            JumpIf::Lt => 12,
+        }
+    }
+
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            JumpIf::Equ => "EQU",
+            JumpIf::Ne => "NE",
+            JumpIf::Gt => "GT",
+            JumpIf::Lt => "LT",
+        }
+    }
+
+    /// Whether the jump is taken for the values `a`, `b`.
+    #[must_use]
+    pub fn holds(self, a: f64, b: f64) -> bool {
+        match self {
+            JumpIf::Equ => a == b,
+            JumpIf::Ne => a != b,
+            JumpIf::Gt => a > b,
+            JumpIf::Lt => a < b,
+        }
+    }
+}
+
+/// `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FnJump {
+    pub condition: JumpIf,
+    pub a: Value,
+    pub b: Value,
+    pub label: Label,
+}
+
+/// `LBL 1`, `LBL "name"`.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub enum Label {
+    Number(u32),
+    Name(String),
+}
+
+/// A Q parameter formula (`Q36 = TAN Q8 * Q9`). Parentheses are not kept: the tree says what
+/// they meant, the formatter writes back the ones that are needed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Expr {
+    /// A number; a sign written before a number is folded into it.
+    Num(f64),
+    Param(u32),
+    Pi,
+    Neg(Box<Expr>),
+    Func(Func, Box<Expr>),
+    Bin(BinOp, Box<Expr>, Box<Expr>),
+}
+
+/// Binary operators of Q formulas.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Pow,
+}
+
+/// Functions of Q formulas (applied to the operand that follows).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Sqrt,
+    Sq,
+    Abs,
+    Int,
+    Frac,
+    Ln,
+    Log,
+    Exp,
+    Sgn,
+}
+
+impl Func {
+    pub const ALL: [Func; 15] = [
+        Func::Asin,
+        Func::Acos,
+        Func::Atan,
+        Func::Sin,
+        Func::Cos,
+        Func::Tan,
+        Func::Sqrt,
+        Func::Sq,
+        Func::Abs,
+        Func::Int,
+        Func::Frac,
+        Func::Ln,
+        Func::Log,
+        Func::Exp,
+        Func::Sgn,
+    ];
+
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Func::Sin => "SIN",
+            Func::Cos => "COS",
+            Func::Tan => "TAN",
+            Func::Asin => "ASIN",
+            Func::Acos => "ACOS",
+            Func::Atan => "ATAN",
+            Func::Sqrt => "SQRT",
+            Func::Sq => "SQ",
+            Func::Abs => "ABS",
+            Func::Int => "INT",
+            Func::Frac => "FRAC",
+            Func::Ln => "LN",
+            Func::Log => "LOG",
+            Func::Exp => "EXP",
+            Func::Sgn => "SGN",
+        }
+    }
+}
