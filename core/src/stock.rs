@@ -328,10 +328,11 @@ impl Stock {
         self.renames.iter().rev().find(|(tile, from, _)| *tile == k && *from == stamp).map(|(_, _, to)| *to)
     }
 
-    /// Index of the tile holding ray `(i, j)` of grid `d`.
-    fn tile_index(&self, d: usize, i: usize, j: usize) -> usize {
-        let offset: usize = (0..d).map(|g| tiles_of(self.n, g)).map(|(ta, tb)| ta * tb).sum();
-        offset + i / TILE + tiles_of(self.n, d).0 * (j / TILE)
+    /// Grid `d`'s first tile index and its tiles per row: ray `(i, j)` is in tile
+    /// `first + i / TILE + per_row * (j / TILE)`.
+    fn tile_base(&self, d: usize) -> (usize, usize) {
+        let first = (0..d).map(|g| tiles_of(self.n, g)).map(|(ta, tb)| ta * tb).sum();
+        (first, tiles_of(self.n, d).0)
     }
 
     /// The material of ray `(i, j)` of grid `d` (rays along axis `d`; `i`, `j` over the next two
@@ -414,17 +415,19 @@ impl Stock {
             + heap
     }
 
-    /// Removes the volume `cutter` sweeps moving straight from tip `p0` to tip `p1` with tool
-    /// axis `axis` (all W-CS). The tests cut this way; a run's cuts go through [`Cutting`].
+    /// [`Stock::cut_part`] whole, with a stamp of its own. The tests cut this way; a run's cuts
+    /// go through [`Cutting`].
     #[cfg(test)]
     pub(crate) fn cut(&mut self, cutter: &Cutter, axis: DVec3, p0: DVec3, p1: DVec3) -> Removal {
         self.cut_part(cutter, axis, p0, p1, RowAt::default(), usize::MAX, Stamp::fresh()).0
     }
 
-    /// [`Stock::cut`] from row `start` on, stopping after the row in which its work
-    /// ([`Removal::work`]) reached `budget`: returns what was removed and the row to go on from (`None`: done). Each
-    /// ray's result depends only on that ray's material and the sweep, so a cut made in parts
-    /// leaves exactly the stock of the cut made at once. Tiles it changes get `stamp`.
+    /// Removes the volume `cutter` sweeps moving straight from tip `p0` to tip `p1` with tool
+    /// axis `axis` (all W-CS), from row `start` on, stopping after the row in which its work
+    /// ([`Removal::work`]) reached `budget`: returns what was removed and the row to go on from
+    /// (`None`: done). Each ray's result depends only on that ray's material and the sweep, so
+    /// a cut made in parts leaves exactly the stock of the cut made at once. Tiles it changes
+    /// get `stamp`.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn cut_part(
         &mut self,
@@ -472,6 +475,7 @@ impl Stock {
             let first_row = if d == start.d { start.j.max(*rj.start()) } else { *rj.start() };
             let dir = DVec3::from_array(std::array::from_fn(|k| if k == d { 1.0 } else { 0.0 }));
             let area = self.h[a] * self.h[b];
+            let (tile_first, tiles_per_row) = self.tile_base(d);
             for j in first_row..=*rj.end() {
                 out.visited += ri.end() + 1 - ri.start();
                 for i in ri.clone() {
@@ -498,7 +502,7 @@ impl Stock {
                         out.volume += removed * area / 3.0;
                         out.depth = out.depth.max(removed);
                         if removed > 0.0 {
-                            let k = self.tile_index(d, i, j);
+                            let k = tile_first + i / TILE + tiles_per_row * (j / TILE);
                             if self.stamps[k] != stamp.0 {
                                 self.stamps[k] = stamp.0;
                                 out.tiles += 1;
