@@ -80,18 +80,23 @@ impl Interp {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
             let duration = duration(cx, rate, lin, rot);
-            r.segments.push(Segment {
-                step: self.step_count.saturating_sub(1),
-                block,
-                kind,
-                start: self.axes,
-                end: target,
-                rotary_delta,
-                duration,
-                path: path(),
-            });
+            r.segments.push(self.segment(block, kind, target, rotary_delta, duration, path()));
         }
         self.axes = target;
+    }
+
+    /// The segment of this step from the axes now to `target`.
+    fn segment(
+        &self,
+        block: usize,
+        kind: SegmentKind,
+        target: MachineAxes,
+        rotary_delta: [f64; 2],
+        duration: f64,
+        path: SegmentPath,
+    ) -> Segment {
+        let step = self.step_count.saturating_sub(1);
+        Segment { step, block, kind, start: self.axes, end: target, rotary_delta, duration, path }
     }
 
     /// Moves the linear axes to `target` along `path` of `length` mm (an arc may end where it
@@ -109,16 +114,14 @@ impl Interp {
         path: SegmentPath,
     ) {
         if let Some(r) = rec.as_deref_mut().filter(|_| length > 0.0) {
-            r.segments.push(Segment {
-                step: self.step_count.saturating_sub(1),
+            r.segments.push(self.segment(
                 block,
                 kind,
-                start: self.axes,
-                end: target,
-                rotary_delta: [0.0; 2],
-                duration: duration(cx, rate, length, 0.0),
+                target,
+                [0.0; 2],
+                duration(cx, rate, length, 0.0),
                 path,
-            });
+            ));
         }
         self.axes = target;
     }
