@@ -61,7 +61,7 @@ impl Document {
     #[must_use]
     pub fn block_at_line(&self, line: usize) -> Option<usize> {
         let line1 = u32::try_from(line + 1).ok()?;
-        match self.program.blocks.binary_search_by_key(&line1, |b| b.line) {
+        match self.program.blocks.binary_search_by_key(&line1, |b| b.line()) {
             Ok(i) => Some(i),
             Err(0) => None,
             Err(i) => Some(i - 1),
@@ -72,8 +72,8 @@ impl Document {
     #[must_use]
     pub fn block_lines(&self, index: usize) -> Option<(usize, usize)> {
         let b = self.program.blocks.get(index)?;
-        let first = (b.line as usize).saturating_sub(1);
-        let end = b.span.end.saturating_sub(1).max(b.span.start);
+        let first = (b.line() as usize).saturating_sub(1);
+        let end = b.span().end.saturating_sub(1).max(b.span().start);
         let last = self.line_starts.partition_point(|&s| s <= end).saturating_sub(1);
         Some((first, last.max(first)))
     }

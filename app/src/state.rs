@@ -393,7 +393,7 @@ impl AppState {
     }
 
     fn open_cursor_block(&mut self) {
-        match self.doc.program.blocks.get(self.cursor).map(|b| &b.body) {
+        match self.doc.program.blocks.get(self.cursor).and_then(schwenkbar_core::Block::stored_body) {
             Some(BlockBody::Plane(plane)) => self.dialog = Some((Dialog::reopen(plane), Some(self.cursor))),
             _ => {
                 self.message = Some(Text::new(

@@ -127,7 +127,7 @@ mod tests {
     }
 
     fn step_of(doc: &Document, sim: &SimRef, number: u32) -> usize {
-        let block = doc.program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+        let block = doc.program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
         sim.0.step_of_block(block).expect("executed")
     }
 

@@ -91,7 +91,7 @@ pub fn for_block(
     machine: &Machine,
     l: Lang,
 ) -> Option<PlaneWhy> {
-    let BlockBody::Plane(block) = &program.blocks.get(index)?.body else { return None };
+    let BlockBody::Plane(block) = program.blocks.get(index)?.stored_body()? else { return None };
     if let Some(e) = sim.and_then(|s| s.error.as_ref()).filter(|e| e.block == index) {
         return Some(PlaneWhy {
             error: Some(format!("{} — {}", e.message.get(l), e.detail.get(l))),

@@ -52,7 +52,7 @@ fn block_text<'a>(src: &'a str, program: &Program, block: usize) -> &'a str {
     program
         .blocks
         .get(block)
-        .and_then(|b| src.get(b.span.start..b.span.end))
+        .and_then(|b| src.get(b.span().start..b.span().end))
         .and_then(|t| t.lines().next())
         .unwrap_or("")
         .trim()
@@ -149,7 +149,7 @@ fn write_stock(
     let options = StockOptions { resolution: args.stock_resolution, ..StockOptions::default() };
     let cutting = Cutting::new(program, sim, options);
     for note in &cutting.notes {
-        let line = program.blocks.get(note.block).map_or(0, |b| b.line);
+        let line = program.blocks.get(note.block).map_or(0, |b| b.line());
         eprintln!("{}:{line}: {}", args.file.display(), note.message().get(Lang::from(args.lang)));
     }
     let Some(stock) = cutting.final_stock() else {
@@ -172,7 +172,7 @@ fn write_stock(
 fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: Lang) -> JsonState<'a> {
     JsonState {
         line: s.line,
-        number: program.blocks.get(s.block).and_then(|b| b.number),
+        number: program.blocks.get(s.block).and_then(|b| b.number()),
         block: block_text(src, program, s.block),
         axes: axes_map(s),
         tool_tip_wcs: s.tip_wcs.to_array().map(num),

@@ -17,15 +17,15 @@ pub fn insert_after(src: &str, program: &Program, cursor: usize, body: &str) -> 
     let blocks = &program.blocks;
     let mut at = (cursor + 1).min(blocks.len());
     if let Some(b) = blocks.get(cursor)
-        && matches!(b.body, BlockBody::EndPgm { .. })
+        && matches!(b.stored_body(), Some(BlockBody::EndPgm { .. }))
     {
         at = cursor;
     }
     let number = match at.checked_sub(1).and_then(|i| blocks.get(i)) {
-        Some(prev) => prev.number.map_or(at as u32, |n| n.saturating_add(1)),
+        Some(prev) => prev.number().map_or(at as u32, |n| n.saturating_add(1)),
         None => 0,
     };
-    let offset = blocks.get(at).map_or(src.len(), |b| line_start(src, b.span.start));
+    let offset = blocks.get(at).map_or(src.len(), |b| line_start(src, b.span().start));
     let mut out = String::with_capacity(src.len() + body.len() + 8);
     out.push_str(&src[..offset]);
     if !out.is_empty() && !out.ends_with('\n') {
@@ -36,11 +36,11 @@ pub fn insert_after(src: &str, program: &Program, cursor: usize, body: &str) -> 
     let mut prev = number;
     let mut copied = offset;
     for b in &blocks[at..] {
-        let Some(n) = b.number else { continue };
+        let Some(n) = b.number() else { continue };
         if n > prev {
             break;
         }
-        let start = b.span.start + usize::from(src[b.span.start..].starts_with('/'));
+        let start = b.span().start + usize::from(src[b.span().start..].starts_with('/'));
         let digits = src[start..].bytes().take_while(u8::is_ascii_digit).count();
         out.push_str(&src[copied..start]);
         prev = prev.saturating_add(1);
@@ -57,22 +57,22 @@ pub fn insert_after(src: &str, program: &Program, cursor: usize, body: &str) -> 
 pub fn replace_block(src: &str, program: &Program, index: usize, body: &str) -> String {
     let Some(b) = program.blocks.get(index) else { return src.to_owned() };
     let mut line = String::new();
-    if b.skip {
+    if b.skip() {
         line.push('/');
     }
-    if let Some(n) = b.number {
+    if let Some(n) = b.number() {
         line.push_str(&format!("{n} "));
     }
     line.push_str(body);
-    if let Some(c) = &b.comment {
+    if let Some(c) = b.comment() {
         line.push_str(" ;");
         if !c.is_empty() {
             line.push(' ');
             line.push_str(c);
         }
     }
-    let end = b.span.end.min(src.len());
-    format!("{}{line}{}", &src[..b.span.start.min(end)], &src[end..])
+    let end = b.span().end.min(src.len());
+    format!("{}{line}{}", &src[..b.span().start.min(end)], &src[end..])
 }
 
 #[cfg(test)]

@@ -35,21 +35,22 @@ pub fn plane_text(p: &PlaneBlock) -> String {
 }
 
 fn block(out: &mut String, n: usize, b: &Block) {
-    if b.skip {
+    if b.skip() {
         out.push('/');
     }
     let _ = write!(out, "{n}");
     let start = out.len();
     out.push(' ');
-    if let BlockBody::CycleDef(c) = &b.body {
-        cycle_def(out, c, b.comment.as_deref());
+    let said = b.body();
+    if let BlockBody::CycleDef(c) = &*said {
+        cycle_def(out, c, b.comment());
         return;
     }
-    body(out, &b.body);
+    body(out, &said);
     if out.len() == start + 1 {
         out.pop();
     }
-    if let Some(c) = &b.comment {
+    if let Some(c) = b.comment() {
         out.push_str(" ;");
         if !c.is_empty() {
             out.push(' ');

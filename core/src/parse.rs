@@ -10,6 +10,7 @@
 
 mod approach;
 mod cycles;
+mod fast;
 mod frame;
 mod labels_q;
 mod motion;
@@ -21,7 +22,7 @@ mod words;
 
 use std::borrow::Cow;
 
-use crate::ast::{AxisWord, Block, BlockBody, Program, Span};
+use crate::ast::{AxisWord, AxisWords, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
 use crate::plane::Value;
 
@@ -99,6 +100,13 @@ impl Cx {
         b
     }
 
+    /// Takes the collected axis words of a straight line.
+    pub(crate) fn take_line_axes(&mut self) -> AxisWords {
+        let words = AxisWords::from(&self.axes[..]);
+        self.axes.clear();
+        words
+    }
+
     pub(crate) fn take_m(&mut self) -> Box<[u32]> {
         let b = Box::from(&self.m[..]);
         self.m.clear();
@@ -166,6 +174,18 @@ fn starts_new_block(text: &str) -> bool {
 /// Returns the blocks that could be read and every finding; never panics.
 #[must_use]
 pub fn parse(src: &str) -> (Program, Vec<Diagnostic>) {
+    parse_with(src, true)
+}
+
+/// [`parse`] without its fast path for straight lines: every block through the general
+/// parser. The same program and diagnostics (the differential tests compare the two).
+#[doc(hidden)]
+#[must_use]
+pub fn parse_general(src: &str) -> (Program, Vec<Diagnostic>) {
+    parse_with(src, false)
+}
+
+fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     let src = src.strip_prefix('\u{feff}').unwrap_or(src);
     let mut p = Parser { src, blocks: Vec::new(), diags: Vec::new(), cx: Cx::new(), block_lines: Vec::new() };
     // One block per line in the common case: reserve once instead of doubling (memory budget).
@@ -196,30 +216,38 @@ pub fn parse(src: &str) -> (Program, Vec<Diagnostic>) {
                 _ => break,
             }
         }
-        let block = p.block();
-        if let Some(n) = block.number {
+        let fast = if fast_path && p.block_lines.len() == 1 { fast::straight_line(text) } else { None };
+        let block = match fast {
+            Some(f) => {
+                let span = Span::new(first.start + f.lead, first.end);
+                Block::compact(f.number, span, first.number, f.line)
+            }
+            None => p.block(),
+        };
+        if let Some(n) = block.number() {
             if let Some(prev) = previous_number
                 && n <= prev
             {
                 p.diag_at(
                     Severity::Error,
                     DiagCode::BlockNumberNotAscending { previous: prev, number: n },
-                    block.span.start,
-                    block.span.start + digits_len(&src[block.span.start..]),
+                    block.span().start,
+                    block.span().start + digits_len(&src[block.span().start..]),
                     None,
                 );
             }
             previous_number = Some(n);
         }
-        match &block.body {
-            BlockBody::BeginPgm { name, .. } if begin.is_none() => begin = Some(name.clone()),
-            BlockBody::EndPgm { name, .. } => {
+        match block.stored_body() {
+            Some(BlockBody::BeginPgm { name, .. }) if begin.is_none() => begin = Some(name.clone()),
+            Some(BlockBody::EndPgm { name, .. }) => {
                 end_seen = true;
                 if let Some(b) = &begin
                     && !b.eq_ignore_ascii_case(name)
                 {
                     let code = DiagCode::PgmNameMismatch { begin: b.clone(), end: name.clone() };
-                    p.diag_at(Severity::Error, code, block.span.start, block.span.end, None);
+                    let span = block.span();
+                    p.diag_at(Severity::Error, code, span.start, span.end, None);
                 }
             }
             _ => {}
@@ -407,7 +435,7 @@ impl Parser<'_> {
         }
         self.cx.issues = issues;
         self.cx.issues.clear();
-        Block { number, skip, body, comment, span, line, column }
+        Block::new(number, skip, body, comment, span, line, column)
     }
 }
 
@@ -528,7 +556,7 @@ pub fn plane_block(text: &str) -> Result<crate::plane::PlaneBlock, PlaneTextErro
     if let Some(d) = diags.into_iter().find(Diagnostic::is_error) {
         return Err(PlaneTextError::Invalid(Box::new(d)));
     }
-    let mut planes = program.blocks.into_iter().filter_map(|b| match b.body {
+    let mut planes = program.blocks.into_iter().filter_map(|b| match b.into_body() {
         BlockBody::Plane(p) => Some(p),
         _ => None,
     });

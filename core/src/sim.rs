@@ -378,14 +378,14 @@ pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> S
 }
 
 fn make_error(program: &Program, step: usize, block: usize, code: SimErrorCode) -> SimError {
-    let line = program.blocks.get(block).map_or(0, |b| b.line);
+    let line = program.blocks.get(block).map_or(0, |b| b.line());
     SimError { step, block, line, message: code.message(), detail: code.detail(), code }
 }
 
 fn label_table(program: &Program) -> BTreeMap<LabelKey, usize> {
     let mut m = BTreeMap::new();
     for (i, b) in program.blocks.iter().enumerate() {
-        if let BlockBody::Lbl(l) = &b.body
+        if let Some(BlockBody::Lbl(l)) = b.stored_body()
             && *l != Label::Number(0)
         {
             m.entry(LabelKey::from(l)).or_insert(i);

@@ -25,7 +25,7 @@ fn run(src: &str) -> (Program, Machine, Simulation) {
 
 /// The state after the block with this number.
 fn after(program: &Program, sim: &Simulation, number: u32) -> State {
-    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+    let idx = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
     let step = sim.first_step[idx].expect("executed") as usize;
     sim.state_at(program, step).expect("state")
 }
@@ -329,7 +329,7 @@ fn rnd_between_a_line_and_an_arc() {
 fn error_of(src: &str) -> (u32, SimErrorCode) {
     let (p, _, sim) = run(src);
     let e = sim.error.expect("an error");
-    (p.blocks[e.block].number.expect("numbered"), e.code)
+    (p.blocks[e.block].number().expect("numbered"), e.code)
 }
 
 #[test]
@@ -374,7 +374,7 @@ fn fn_jumps_loop_and_fn_maths_compute() {
             .expect("fixture");
     let (p, _, sim) = run(&src);
     assert!(sim.error.is_none(), "{:?}", sim.error);
-    let idx = p.blocks.iter().position(|b| b.number == Some(10)).expect("block 10") as u32;
+    let idx = p.blocks.iter().position(|b| b.number() == Some(10)).expect("block 10") as u32;
     assert_eq!(sim.records.iter().filter(|r| r.block == idx && r.executed).count(), 3, "three passes");
     let last = sim.state_at(&p, sim.len() - 1).expect("state");
     // Q1 = 3 after three passes; Q3 = 30, Q4 = 15, Q5 = √15, Q6 = 2; block 13 and 18 skipped.
@@ -383,7 +383,7 @@ fn fn_jumps_loop_and_fn_maths_compute() {
     }
     assert_close!(last.tip_ics, DVec3::new(30.0, 15f64.sqrt(), 50.0), TOL);
     for n in [13, 18] {
-        let idx = p.blocks.iter().position(|b| b.number == Some(n)).expect("block") as u32;
+        let idx = p.blocks.iter().position(|b| b.number() == Some(n)).expect("block") as u32;
         assert!(sim.records.iter().all(|r| r.block != idx || !r.executed), "block {n} jumped over");
     }
 }
@@ -393,7 +393,7 @@ fn fn_blocks_are_typed_nodes() {
     let (p, d) =
         parse("1 FN 12: IF +Q25 LT +Q35 GOTO LBL 2\n2 FN 4: Q4 = +8 DIV +Q2\n3 FN 5: Q20 = SQRT 4\n");
     assert!(d.is_empty(), "{d:?}");
-    assert!(p.blocks.iter().all(|b| matches!(b.body, BlockBody::FnJump(_) | BlockBody::FnMath(_))));
+    assert!(p.blocks.iter().all(|b| matches!(*b.body(), BlockBody::FnJump(_) | BlockBody::FnMath(_))));
 }
 
 #[test]

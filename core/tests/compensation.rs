@@ -63,7 +63,7 @@ fn run(src: &str) -> (Program, Machine, Simulation) {
 }
 
 fn after(program: &Program, sim: &Simulation, number: u32) -> State {
-    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+    let idx = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
     let step = sim.first_step[idx].expect("executed") as usize;
     sim.state_at(program, step).expect("state")
 }
@@ -227,7 +227,7 @@ fn a_compensated_full_circle_has_the_radius_r_plus_or_minus_the_tool_radius() {
 fn error_of(src: &str) -> (u32, SimErrorCode, String) {
     let (prog, _, sim) = run(src);
     let e = sim.error.expect("an error");
-    (prog.blocks[e.block].number.expect("numbered"), e.code, e.message.de.to_string())
+    (prog.blocks[e.block].number().expect("numbered"), e.code, e.message.de.to_string())
 }
 
 #[test]

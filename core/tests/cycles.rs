@@ -31,7 +31,7 @@ fn run_on(src: &str, machine: &str) -> (Program, Machine, Simulation) {
 }
 
 fn after(program: &Program, sim: &Simulation, number: u32) -> State {
-    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+    let idx = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
     let step = sim.first_step[idx].expect("executed") as usize;
     sim.state_at(program, step).expect("state")
 }
@@ -178,7 +178,7 @@ fn holes(src: &str) -> Holes {
     assert!(sim.error.is_none(), "{:?}", sim.error);
     p.blocks
         .iter()
-        .filter_map(|b| b.number)
+        .filter_map(|b| b.number())
         .filter(|&n| n > 3 && n < 99)
         .map(|n| {
             let s = after(&p, &sim, n);
@@ -264,7 +264,7 @@ fn cycle_220_arcs_between_the_points_and_overrides_the_surface() {
 fn error_of(src: &str) -> (u32, SimErrorCode, String) {
     let (p, _, sim) = run_on(src, "ac-table");
     let e = sim.error.expect("an error");
-    let number = p.blocks[e.block].number.expect("numbered");
+    let number = p.blocks[e.block].number().expect("numbered");
     (number, e.code, format!("{} {}", e.message.de, e.detail.de))
 }
 

@@ -9,7 +9,7 @@ use schwenkbar_core::{BlockBody, Severity, parse};
 fn plane(src: &str) -> (PlaneBlock, Vec<schwenkbar_core::Diagnostic>) {
     let (p, d) = parse(src);
     assert_eq!(p.blocks.len(), 1, "{src}");
-    match &p.blocks[0].body {
+    match &*p.blocks[0].body() {
         BlockBody::Plane(b) => ((**b).clone(), d),
         other => panic!("{src}: {other:?}"),
     }
@@ -27,8 +27,8 @@ fn oracle_31_spatial_turn_fmax_with_comment() {
     assert_eq!(b.def, PlaneDef::Spatial { spa: num(0.0), spb: num(15.0), spc: num(0.0) });
     assert_eq!(b.positioning, Some(Positioning::Turn { move_back: None, feed: Some(Feed::Max) }));
     let (p, _) = parse(src);
-    assert_eq!(p.blocks[0].number, Some(10));
-    assert_eq!(p.blocks[0].comment.as_deref(), Some("Einschwenken"));
+    assert_eq!(p.blocks[0].number(), Some(10));
+    assert_eq!(p.blocks[0].comment().as_deref(), Some("Einschwenken"));
 }
 
 #[test]
@@ -71,8 +71,8 @@ fn oracle_33_range_and_mandatory_word_errors() {
 fn single_block_without_number_parses_with_a_warning_only() {
     let (p, d) = parse("PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN FMAX");
     assert_eq!(p.blocks.len(), 1);
-    assert_eq!(p.blocks[0].number, None);
-    assert!(matches!(p.blocks[0].body, BlockBody::Plane(_)));
+    assert_eq!(p.blocks[0].number(), None);
+    assert!(matches!(*p.blocks[0].body(), BlockBody::Plane(_)));
     assert!(d.iter().all(|d| d.severity == Severity::Warning), "{d:?}");
 }
 

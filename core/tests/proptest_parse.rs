@@ -41,7 +41,7 @@ fn line() -> impl Strategy<Value = BlockBody> {
     let comp = prop::option::of(prop::sample::select(vec![RadiusComp::R0, RadiusComp::Rl, RadiusComp::Rr]));
     (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(
         |(a, comp, feed, m)| {
-            BlockBody::L(Line { axes: a.into_boxed_slice(), comp, feed, m: m.into_boxed_slice() })
+            BlockBody::L(Line { axes: a.into(), comp, feed, m: m.into_boxed_slice() })
         },
     )
 }
@@ -119,15 +119,7 @@ fn program() -> impl Strategy<Value = Program> {
                 // An empty block always carries its `;`.
                 let comment =
                     if body == BlockBody::Empty { Some(comment.unwrap_or_default()) } else { comment };
-                Block {
-                    number: Some(n as u32),
-                    skip: false,
-                    body,
-                    comment,
-                    span: Default::default(),
-                    line: 0,
-                    column: 0,
-                }
+                Block::new(Some(n as u32), false, body, comment, Default::default(), 0, 0)
             })
             .collect(),
     })

@@ -44,13 +44,13 @@ fn run_with(rel: &str, machine: &str, opts: &SimOptions) -> (Program, Machine, S
 
 /// The state after the (first) execution of the block with this block number.
 fn after(program: &Program, sim: &Simulation, number: u32) -> State {
-    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block exists");
+    let idx = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block exists");
     let step = sim.first_step[idx].expect("block executed") as usize;
     sim.state_at(program, step).expect("state")
 }
 
 fn executions(program: &Program, sim: &Simulation, number: u32) -> usize {
-    let idx = program.blocks.iter().position(|b| b.number == Some(number)).expect("block exists") as u32;
+    let idx = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block exists") as u32;
     sim.records.iter().filter(|r| r.block == idx && r.executed).count()
 }
 
@@ -298,7 +298,7 @@ fn relativ_chains_match_the_orientation_oracles() {
 fn unreachable_plane_stops_at_its_block_and_keeps_the_states_before() {
     let (p, _, sim) = run("tests/fixtures/sim/unreachable.h", "ca-head");
     let err = sim.error.as_ref().expect("the control refuses block 5");
-    assert_eq!(p.blocks[err.block].number, Some(5));
+    assert_eq!(p.blocks[err.block].number(), Some(5));
     assert_eq!(err.line, 6);
     assert_eq!(err.message.de, "Winkel nicht erlaubt");
     assert_eq!(err.message.en, "Entered angle not permitted");
@@ -325,7 +325,7 @@ fn call_lbl_with_rep_and_subprograms() {
 fn undefined_q_parameter_stops_the_run() {
     let (p, _, sim) = run("tests/fixtures/sim/undefined_q.h", "ac-table");
     let err = sim.error.as_ref().expect("Q7 is undefined");
-    assert_eq!(p.blocks[err.block].number, Some(4));
+    assert_eq!(p.blocks[err.block].number(), Some(4));
     assert_eq!(err.code, SimErrorCode::UndefinedQ { index: 7 });
     assert_eq!(err.message.de, "Q-Parameter nicht definiert");
     assert_close!(sim.state_at(&p, 3).expect("state").tip_ics.x, 5.0, EXACT, "X+Q1 with Q1 = 5");
@@ -335,7 +335,7 @@ fn undefined_q_parameter_stops_the_run() {
 fn m99_without_a_cycle_stops_the_run() {
     let (p, _, sim) = run("tests/fixtures/sim/m99_without_cycle.h", "ac-table");
     let err = sim.error.as_ref().expect("no cycle");
-    assert_eq!(p.blocks[err.block].number, Some(3));
+    assert_eq!(p.blocks[err.block].number(), Some(3));
     assert_eq!(err.code, SimErrorCode::NoCycle);
     assert_eq!(sim.len(), 3);
 }
@@ -354,7 +354,7 @@ fn endless_loop_is_cut_off_by_the_block_budget() {
 fn elided_cycle_parameters_stop_the_call_with_a_clear_message() {
     let (p, _, sim) = run("tests/fixtures/ok/musterprogramm1_as_printed.h", "ac-table");
     let err = sim.error.as_ref().expect("the printed program lacks the Q parameters");
-    assert_eq!(p.blocks[err.block].number, Some(13));
+    assert_eq!(p.blocks[err.block].number(), Some(13));
     assert_eq!(err.code, SimErrorCode::CycleParamsMissing { cycle: 232 });
     assert!(err.detail.de.contains("CYCL DEF 232"));
     assert_eq!(sim.len(), 13);
@@ -459,12 +459,12 @@ fn plane_axial_ignores_a_preceding_mirror_and_leaves_q120_alone() {
 fn axes_outside_their_limit_switches_stop_the_run() {
     let (p, _, sim) = run("tests/fixtures/sim/rotary_limit.h", "ca-head");
     let err = sim.error.as_ref().expect("A+200 beyond +110");
-    assert_eq!(p.blocks[err.block].number, Some(3));
+    assert_eq!(p.blocks[err.block].number(), Some(3));
     assert_eq!(err.code, SimErrorCode::RotaryLimit { axis: 'A', value: 200.0, min: -110.0, max: 110.0 });
     assert_eq!(err.message.de, "Endschalter A+");
     let (p, _, sim) = run("tests/fixtures/sim/linear_limit.h", "ac-table");
     let err = sim.error.as_ref().expect("X+2000 beyond +700");
-    assert_eq!(p.blocks[err.block].number, Some(3));
+    assert_eq!(p.blocks[err.block].number(), Some(3));
     assert_eq!(err.message.en, "Limit switch X+");
     assert_eq!(sim.len(), 3);
 }

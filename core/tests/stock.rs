@@ -200,7 +200,7 @@ fn solve3(m: [[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
 fn a_rapid_into_the_blank_is_reported_on_its_block_and_cuts() {
     let src = format!("{BLANK}TOOL CALL 1 Z\nL X+50 Y+50 Z+10 R0 FMAX\nL Z-5 FMAX\nL Z+10 FMAX\nM30\n");
     let (program, sim, c) = run(&src, StockOptions::default());
-    let block = program.blocks.iter().position(|b| b.line == 5).expect("block of line 5");
+    let block = program.blocks.iter().position(|b| b.line() == 5).expect("block of line 5");
     let step = sim.step_of_block(block).expect("ran");
     let notes: Vec<_> = c.notes.iter().map(|n| (n.step, n.kind)).collect();
     assert_eq!(notes, vec![(step, StockNoteKind::RapidIntoMaterial)]);

@@ -56,11 +56,11 @@ fn render(src: &str) -> String {
     }
     s.push_str("blocks:\n");
     for b in &program.blocks {
-        let number = b.number.map_or_else(|| "-".to_owned(), |n| n.to_string());
-        let skip = if b.skip { "/" } else { "" };
+        let number = b.number().map_or_else(|| "-".to_owned(), |n| n.to_string());
+        let skip = if b.skip() { "/" } else { "" };
         // A cycle definition's `~` lines indented under their block.
         let text = canonical(b).replace('\n', "\n      ");
-        let _ = writeln!(s, "  {}:{} [{skip}{number}] {text}", b.line, b.column);
+        let _ = writeln!(s, "  {}:{} [{skip}{number}] {text}", b.line(), b.column());
     }
     s
 }
@@ -79,7 +79,7 @@ fn assert_formatting_stable(dir: &str, name: &str, src: &str) {
     assert_eq!(format_program(&again), once, "{dir}/{name}");
     if dir == "ok" {
         let strip =
-            |p: Program| p.blocks.into_iter().map(|b| (b.skip, b.body, b.comment)).collect::<Vec<_>>();
+            |p: Program| p.blocks.into_iter().map(|b| (b.skip(), b.comment().map(str::to_owned), b.into_body())).collect::<Vec<_>>();
         assert!(strip(again) == strip(parse(src).0), "{name}: reformatted program differs");
     }
 }
@@ -181,7 +181,7 @@ fn as_printed_musterprogramm_warns_exactly_about_both_elided_cycles() {
         ]
     );
     assert_eq!(p.blocks.len(), 38);
-    assert_eq!(p.blocks.last().and_then(|b| b.number), Some(37));
+    assert_eq!(p.blocks.last().and_then(|b| b.number()), Some(37));
 }
 
 #[test]
@@ -190,9 +190,9 @@ fn completed_musterprogramm_has_all_cycle_parameters() {
     let src = source("ok", "musterprogramm1");
     let (p, diags) = parse(&src);
     assert!(diags.is_empty(), "{diags:?}");
-    let numbers: Vec<Option<u32>> = p.blocks.iter().map(|b| b.number).collect();
+    let numbers: Vec<Option<u32>> = p.blocks.iter().map(|b| b.number()).collect();
     assert_eq!(numbers, (0..=37).map(Some).collect::<Vec<_>>());
-    let params = |n: usize| match &p.blocks[n].body {
+    let params = |n: usize| match &*p.blocks[n].body() {
         BlockBody::CycleDef(c) => c.params.iter().map(|q| q.index).collect::<Vec<_>>(),
         other => panic!("block {n} is {other:?}"),
     };

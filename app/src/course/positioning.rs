@@ -31,7 +31,7 @@ pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>
         .map(|(text, name)| {
             let doc = Rc::new(Document::new((*text).to_owned()));
             let sim = machine.as_ref().map(|m| SimRef::of(&doc.program, m));
-            let index = doc.program.blocks.iter().position(|b| b.number == Some(block));
+            let index = doc.program.blocks.iter().position(|b| b.number() == Some(block));
             let state = sim
                 .as_ref()
                 .zip(index)

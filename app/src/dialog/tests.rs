@@ -183,7 +183,7 @@ fn relativ_and_axial_and_points() {
 #[test]
 fn reopened_block_shows_its_values_and_finishes_unchanged() {
     let text = "PLANE SPATIAL SPA+0 SPB+15 SPC+0 MOVE DIST+50 F500 SEQ- TABLE ROT";
-    let block = match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(|b| b.body) {
+    let block = match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(schwenkbar_core::Block::into_body) {
         Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
         other => panic!("{other:?}"),
     };
@@ -206,7 +206,7 @@ fn preview_follows_the_value_being_typed() {
 
 /// The block of a one-line PLANE text, as the parser reads it.
 fn parsed(text: &str) -> schwenkbar_core::plane::PlaneBlock {
-    match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(|b| b.body) {
+    match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(schwenkbar_core::Block::into_body) {
         Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
         other => panic!("{text}: {other:?}"),
     }

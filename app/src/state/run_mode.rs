@@ -16,7 +16,7 @@ use crate::run::Run;
 fn swivels(sim: &Simulation, program: &Program, step: usize) -> bool {
     let Some(record) = sim.records.get(step).filter(|r| r.executed) else { return false };
     matches!(
-        program.blocks.get(record.block as usize).map(|b| &b.body),
+        program.blocks.get(record.block as usize).and_then(schwenkbar_core::Block::stored_body),
         Some(BlockBody::Plane(p)) if matches!(p.positioning, Some(Positioning::Move { .. } | Positioning::Turn { .. }))
     )
 }

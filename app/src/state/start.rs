@@ -173,7 +173,7 @@ impl AppState {
         let mut state = AppState { lang, projector: classroom, embedded: true, ..AppState::default() };
         state.doc = Rc::new(Document::new(program.to_owned()));
         state.cursor =
-            state.doc.program.blocks.iter().position(|b| matches!(b.body, BlockBody::Plane(_))).unwrap_or(0);
+            state.doc.program.blocks.iter().position(|b| matches!(b.stored_body(), Some(BlockBody::Plane(_)))).unwrap_or(0);
         state.select_machine(machine);
         let state = state.simulated();
         let mut fx = Vec::new();
@@ -185,8 +185,8 @@ impl AppState {
     #[must_use]
     pub fn cursor_plane_text(&self) -> Option<String> {
         let block = self.doc.program.blocks.get(self.cursor)?;
-        matches!(block.body, BlockBody::Plane(_))
-            .then(|| self.doc.text.get(block.span.start..block.span.end))?
+        matches!(block.stored_body(), Some(BlockBody::Plane(_)))
+            .then(|| self.doc.text.get(block.span().start..block.span().end))?
             .map(str::to_owned)
     }
 
@@ -204,7 +204,7 @@ impl AppState {
     /// File name for the download: the program's name from `BEGIN PGM`.
     #[must_use]
     pub fn file_name(&self) -> String {
-        let name = self.doc.program.blocks.iter().find_map(|b| match &b.body {
+        let name = self.doc.program.blocks.iter().find_map(|b| match b.stored_body()? {
             BlockBody::BeginPgm { name, .. } => Some(name.as_str()),
             _ => None,
         });

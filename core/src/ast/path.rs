@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::AxisWord;
+use super::{AxisWord, AxisWords};
 use crate::plane::{Feed, Sign, Value};
 
 /// Tool radius compensation `R0`, `RL`, `RR`.
@@ -14,11 +14,11 @@ pub enum RadiusComp {
     Rr,
 }
 
-/// A straight line `L X… Y… Z… A… R0 FMAX M91 M3`. Kept small and inline: CAM programs are
-/// millions of these (memory budget in issue 3).
+/// A straight line `L X… Y… Z… A… R0 FMAX M91 M3`. Its axis words are inline, so a compact
+/// block's line is made without allocating (see [`super::Block::body`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Line {
-    pub axes: Box<[AxisWord]>,
+    pub axes: AxisWords,
     pub comp: Option<RadiusComp>,
     pub feed: Option<Feed>,
     pub m: Box<[u32]>,

@@ -212,7 +212,7 @@ fn typed_plane(text: &str) -> PlaneBlock<f64> {
     let (program, diags) = crate::parse(text);
     assert!(!diags.iter().any(|d| d.is_error()), "{text}: {diags:?}");
     let [block] = program.blocks.as_slice() else { panic!("{text}: not one block") };
-    let crate::BlockBody::Plane(plane) = &block.body else { panic!("{text}: not a PLANE block") };
+    let Some(crate::BlockBody::Plane(plane)) = block.stored_body() else { panic!("{text}: not a PLANE block") };
     plane
         .try_map(|v| match v {
             crate::plane::Value::Number(x) => Ok(*x),
@@ -363,8 +363,8 @@ fn candidates_of(ex: &Exercise, number: u32) -> (AxisValues, AxisValues) {
     let block = program
         .blocks
         .iter()
-        .find(|b| b.number == Some(number))
-        .and_then(|b| match &b.body {
+        .find(|b| b.number() == Some(number))
+        .and_then(|b| match b.stored_body()? {
             crate::BlockBody::Plane(p) => p
                 .try_map(|v| match v {
                     crate::plane::Value::Number(x) => Ok(*x),

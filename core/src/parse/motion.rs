@@ -184,7 +184,7 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
     let comp = w.comp.map(|c| c.0);
     let feed = w.feed.map(|f| f.0);
     if kw == "L" {
-        return Some(BlockBody::L(Line { axes: cx.take_axes(), comp, feed, m: cx.take_m() }));
+        return Some(BlockBody::L(Line { axes: cx.take_line_axes(), comp, feed, m: cx.take_m() }));
     }
     let motion = Box::new(Motion {
         axes: cx.take_axes(),

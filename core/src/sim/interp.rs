@@ -314,8 +314,9 @@ impl Interp {
         self.pc += 1;
         self.step_count += 1;
         self.last = idx;
+        let body = block.body();
         if self.ended {
-            if matches!(block.body, BlockBody::EndPgm { .. }) {
+            if matches!(*body, BlockBody::EndPgm { .. }) {
                 self.pc = cx.program.blocks.len();
             }
             note(&mut rec, || {
@@ -326,16 +327,16 @@ impl Interp {
             });
             return Ok(false);
         }
-        if block.skip && cx.options.block_skip {
+        if block.skip() && cx.options.block_skip {
             note(&mut rec, || Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
             return Ok(false);
         }
-        if !matches!(&block.body, BlockBody::CycleDefOld(d) if d.number == 7) {
+        if !matches!(&*body, BlockBody::CycleDefOld(d) if d.number == 7) {
             self.c7 = None;
         }
         // A prepared rounding belongs to the block right after the element that prepared it.
         let pending_corner = self.corner.take();
-        match &block.body {
+        match &*body {
             BlockBody::BeginPgm { .. } | BlockBody::Empty | BlockBody::Structure { .. } => {}
             BlockBody::EndPgm { .. } => {
                 self.ended = true;
@@ -358,7 +359,7 @@ impl Interp {
                 });
             }
             BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
-                self.contour(cx, &mut rec, idx, &block.body, m)?;
+                self.contour(cx, &mut rec, idx, &body, m)?;
             }
             BlockBody::Rnd { feed, .. } => {
                 self.corner_block(cx, &mut rec, idx, "RND", feed.as_ref(), pending_corner)?;

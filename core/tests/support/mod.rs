@@ -25,7 +25,7 @@ pub fn plane_block(src: &str) -> PlaneBlock<f64> {
     let (program, diags) = parse(src);
     assert!(!diags.iter().any(|d| d.is_error()), "{src}: {diags:?}");
     match program.blocks.as_slice() {
-        [b] => match &b.body {
+        [b] => match &*b.body() {
             BlockBody::Plane(p) => p
                 .try_map(|v| match v {
                     Value::Number(x) => Ok(*x),

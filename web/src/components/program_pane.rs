@@ -134,7 +134,7 @@ fn where_label(doc: &Document, line: u32, l: Lang) -> String {
     let number = doc
         .block_at_line((line as usize).saturating_sub(1))
         .and_then(|b| doc.program.blocks.get(b))
-        .and_then(|b| b.number);
+        .and_then(|b| b.number());
     match number {
         Some(n) => format!("{} {n}: ", l.t("Satz", "Block")),
         None => format!("{} {line}: ", l.t("Zeile", "Line")),

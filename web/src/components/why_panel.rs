@@ -66,7 +66,7 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
     html! {
         <aside class="why-panel" aria-label={l.t("Warum?", "Why?")}>
             <h2>{ l.t("Warum?", "Why?") }</h2>
-            <p class="why-block">{ describe(&block.body, l) }</p>
+            <p class="why-block">{ describe(&block.body(), l) }</p>
             if let Some(w) = plane {
                 <div class="why-plane">
                     if let Some(e) = &w.error {

@@ -126,7 +126,7 @@ mod tests {
     }
 
     fn step_of_block(sim: &Simulation, program: &Program, number: u32) -> usize {
-        let block = program.blocks.iter().position(|b| b.number == Some(number)).expect("block");
+        let block = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
         sim.step_of_block(block).expect("executed")
     }
 

@@ -84,7 +84,7 @@ impl Interp {
         }
         let mut pole = self.pole;
         for b in cx.program.blocks.iter().skip(idx + 1) {
-            match &b.body {
+            match &*b.body() {
                 // Blocks that do not move the tool are looked over.
                 BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::CycleDef(_) => {}
                 BlockBody::MFunctions(m) if !m.contains(&99) => {}

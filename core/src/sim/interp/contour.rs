@@ -229,7 +229,7 @@ impl Interp {
     /// to the corner).
     pub(super) fn before_corner(&mut self, cx: &Cx<'_>, idx: usize, elem: Elem) -> R<Elem> {
         let blocks = &cx.program.blocks;
-        let (word, kind) = match blocks.get(idx + 1).map(|b| &b.body) {
+        let (word, kind) = match blocks.get(idx + 1).and_then(crate::Block::stored_body) {
             Some(BlockBody::Rnd { radius, .. }) => ("RND", CornerKind::Round(self.value(radius)?)),
             Some(BlockBody::Chf { length, .. }) => ("CHF", CornerKind::Chamfer(self.value(length)?)),
             _ => return Ok(elem),
@@ -242,7 +242,7 @@ impl Interp {
         // The next contour element, from the corner; a CC in between sets its pole.
         let (mut pole, mut next) = (self.pole, None);
         for b in blocks.iter().skip(idx + 2) {
-            match &b.body {
+            match &*b.body() {
                 BlockBody::Empty | BlockBody::Structure { .. } => {}
                 BlockBody::Cc(m) => pole = Some(self.pole_of(&m.axes, corner)?),
                 body => {

@@ -141,7 +141,7 @@ impl Interp {
                 });
                 Ok(None)
             }
-            Some(StoredCycle::New(b)) => match cx.program.blocks.get(b).map(|b| &b.body) {
+            Some(StoredCycle::New(b)) => match cx.program.blocks.get(b).and_then(crate::Block::stored_body) {
                 Some(BlockBody::CycleDef(d)) => self.params_of(d).map(Some),
                 _ => Err(SimErrorCode::NoCycle),
             },
@@ -295,7 +295,7 @@ impl Interp {
         m: &[u32],
     ) -> R<()> {
         self.spindle_m(m);
-        let items = match self.pattern.and_then(|b| cx.program.blocks.get(b)).map(|b| &b.body) {
+        let items = match self.pattern.and_then(|b| cx.program.blocks.get(b)).and_then(crate::Block::stored_body) {
             Some(BlockBody::PatternDef(items)) => items,
             _ => return Err(SimErrorCode::NoPattern),
         };

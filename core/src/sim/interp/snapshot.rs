@@ -14,7 +14,7 @@ impl Interp {
         rec: Rec,
     ) -> State {
         let block = self.last;
-        let line = program.blocks.get(block).map_or(0, |b| b.line);
+        let line = program.blocks.get(block).map_or(0, |b| b.line());
         let rot = self.axes.rotary;
         let wpose = if self.compensating() { self.kin.workpiece_pose(rot) } else { Affine::IDENTITY };
         let preset = self.kin.preset;

@@ -1,0 +1,145 @@
+//! The fast path: the common straight line, read in one pass over its bytes into the compact
+//! block, without the general parser's word readers, scratch buffers or allocations.
+//!   line := blank* [/ blank*] digits blank+ [/ blank*] L { blank+ (X|Y|Z)num | Fnum | FMAX | R0|RL|RR } blank*
+//!   num  := [+|-] digits [. digits] | [+|-] . digits       (at most 9 digits, m < 2^27, ≤ 15 decimals)
+//! Anything else (a comment, a Q parameter, an M function, `I`, another axis, an error) is
+//! left to the general parser, which reads the same text to the same block: the differential
+//! tests (`core/tests/fast_path.rs`) compare both on fixtures and generated programs.
+
+use crate::ast::{CompactLine, Decimal, FEED_MAX, FEED_VALUE, HAS_NUMBER, RadiusComp, SKIP};
+
+/// A line the fast path read: leading blanks, block number, the compact line.
+pub(super) struct FastLine {
+    pub(super) lead: usize,
+    pub(super) number: u32,
+    pub(super) line: CompactLine,
+}
+
+fn is_blank(b: u8) -> bool {
+    b == b' ' || b == b'\t'
+}
+
+/// Reads `text` (one physical line without its break), or `None` for the general parser.
+pub(super) fn straight_line(text: &str) -> Option<FastLine> {
+    let b = text.as_bytes();
+    let mut i = blanks(b, 0);
+    let lead = i;
+    let mut present = HAS_NUMBER;
+    if b.get(i) == Some(&b'/') {
+        present |= SKIP;
+        i = blanks(b, i + 1);
+    }
+    let digits_start = i;
+    let mut number = 0u32;
+    while let Some(&d) = b.get(i).filter(|d| d.is_ascii_digit()) {
+        // Nine digits always fit a u32; longer numbers are the general parser's.
+        if i - digits_start == 9 {
+            return None;
+        }
+        number = number * 10 + u32::from(d - b'0');
+        i += 1;
+    }
+    if i == digits_start || !b.get(i).copied().is_some_and(is_blank) {
+        return None;
+    }
+    i = blanks(b, i);
+    if b.get(i) == Some(&b'/') {
+        present |= SKIP;
+        i = blanks(b, i + 1);
+    }
+    if b.get(i) != Some(&b'L') {
+        return None;
+    }
+    i += 1;
+    let mut words = [Decimal::default(); 4];
+    let mut comp = None;
+    let mut last_axis = None;
+    loop {
+        let after = blanks(b, i);
+        let Some(&key) = b.get(after) else { break };
+        if after == i {
+            return None;
+        }
+        i = after + 1;
+        let slot = match key {
+            b'X' => 0,
+            b'Y' => 1,
+            b'Z' => 2,
+            b'F' if b[i..].starts_with(b"MAX") && b.get(i + 3).is_none_or(|&c| is_blank(c)) => {
+                if present & (FEED_MAX | FEED_VALUE) != 0 {
+                    return None;
+                }
+                present |= FEED_MAX;
+                i += 3;
+                continue;
+            }
+            b'F' => 3,
+            b'R' => {
+                let c = match b.get(i) {
+                    Some(b'0') => RadiusComp::R0,
+                    Some(b'L') => RadiusComp::Rl,
+                    Some(b'R') => RadiusComp::Rr,
+                    _ => return None,
+                };
+                if comp.is_some() {
+                    return None;
+                }
+                comp = Some(c);
+                i += 1;
+                continue;
+            }
+            _ => return None,
+        };
+        if slot < 3 {
+            // Axes in the order X, Y, Z, each once; any other order is kept as written by the
+            // general form.
+            if last_axis.is_some_and(|last| slot <= last) {
+                return None;
+            }
+            last_axis = Some(slot);
+        } else if present & (FEED_MAX | FEED_VALUE) != 0 {
+            return None;
+        }
+        let (decimal, end) = decimal(b, i)?;
+        words[slot] = decimal;
+        present |= 1 << slot;
+        i = end;
+    }
+    let column = u8::try_from(lead + 1).ok()?;
+    Some(FastLine { lead, number, line: CompactLine { words, present, comp, column } })
+}
+
+fn blanks(b: &[u8], mut i: usize) -> usize {
+    while b.get(i).copied().is_some_and(is_blank) {
+        i += 1;
+    }
+    i
+}
+
+/// `[+|-] digits [. digits]` ending its word, as a [`Decimal`], and where it ended.
+fn decimal(b: &[u8], mut i: usize) -> Option<(Decimal, usize)> {
+    let negative = b.get(i) == Some(&b'-');
+    i += usize::from(matches!(b.get(i), Some(b'+' | b'-')));
+    let (mut mantissa, mut digits, mut decimals, mut dot) = (0u32, 0u32, 0u32, false);
+    loop {
+        match b.get(i) {
+            Some(&d @ b'0'..=b'9') => {
+                if digits == 9 {
+                    return None;
+                }
+                mantissa = mantissa * 10 + u32::from(d - b'0');
+                digits += 1;
+                decimals += u32::from(dot);
+            }
+            Some(b'.') if !dot => dot = true,
+            Some(&c) if is_blank(c) => break,
+            None => break,
+            Some(_) => return None,
+        }
+        i += 1;
+    }
+    if digits == 0 || mantissa >= Decimal::MANTISSA_LIMIT || decimals > Decimal::MAX_DECIMALS {
+        return None;
+    }
+    Some((Decimal::new(negative, mantissa, decimals), i))
+}
