@@ -98,7 +98,7 @@ pub(crate) struct Decimal(pub(crate) u32);
 
 impl Decimal {
     pub(crate) const MANTISSA_LIMIT: u32 = 1 << 27;
-    pub(crate) const MAX_DECIMALS: u32 = 15;
+    pub(crate) const MAX_DECIMALS: usize = 15;
 
     pub(crate) fn new(negative: bool, mantissa: u32, decimals: u32) -> Self {
         Decimal(u32::from(negative) << 31 | decimals << 27 | mantissa)

@@ -29,4 +29,4 @@ pub use ast::{Block, BlockBody, Program};
 pub use diag::{Diagnostic, Severity};
 pub use format::format_program;
 pub use lang::{Lang, Text};
-pub use parse::parse;
+pub use parse::{parse, parse_general};

@@ -137,7 +137,7 @@ impl Iterator for Lines<'_> {
             return None;
         }
         let rest = &self.src.as_bytes()[self.pos..];
-        let (len, next) = match rest.iter().position(|&b| b == b'\n') {
+        let (len, next) = match find_newline(rest) {
             Some(i) => (i, self.pos + i + 1),
             None => (rest.len(), self.src.len()),
         };
@@ -150,6 +150,30 @@ impl Iterator for Lines<'_> {
         self.pos = next;
         Some(line)
     }
+}
+
+fn newlines(run: &[u8]) -> u8 {
+    run.iter().fold(0, |n, &b| n + u8::from(b == b'\n'))
+}
+
+/// Index of the first `\n`, eight bytes at a time: the parser's fast path spends a quarter of its
+/// time finding line ends byte by byte otherwise.
+fn find_newline(b: &[u8]) -> Option<usize> {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    const HIGH: u64 = 0x8080_8080_8080_8080;
+    let mut chunks = b.chunks_exact(8);
+    let mut at = 0;
+    for chunk in &mut chunks {
+        let word = u64::from_le_bytes(chunk.try_into().unwrap_or_default()) ^ (ONES * u64::from(b'\n'));
+        // The lowest high bit set marks the first zero byte, i.e. the first `\n` (a borrow only
+        // carries upwards, so the false hits are above a true one).
+        let zero = word.wrapping_sub(ONES) & !word & HIGH;
+        if zero != 0 {
+            return Some(at + (zero.trailing_zeros() / 8) as usize);
+        }
+        at += 8;
+    }
+    chunks.remainder().iter().position(|&c| c == b'\n').map(|i| at + i)
 }
 
 /// Splits `text` at the first `;` outside double quotes: (body, comment).
@@ -189,40 +213,41 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     let src = src.strip_prefix('\u{feff}').unwrap_or(src);
     let mut p = Parser { src, blocks: Vec::new(), diags: Vec::new(), cx: Cx::new(), block_lines: Vec::new() };
     // One block per line in the common case: reserve once instead of doubling (memory budget).
-    p.blocks.reserve_exact(src.bytes().filter(|&b| b == b'\n').count() + 1);
+    // (Counted in runs of 255 bytes with a byte-sized count, which vectorises well.)
+    let lines: usize = src.as_bytes().chunks(255).map(|run| usize::from(newlines(run))).sum();
+    p.blocks.reserve_exact(lines + 1);
     let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
     let mut previous_number: Option<u32> = None;
     let mut begin: Option<String> = None;
     let mut end_seen = false;
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
-        if text.trim().is_empty() {
-            continue;
-        }
-        // A block ending in `~` owns the following lines that do not start a new block.
         p.block_lines.clear();
         p.block_lines.push(first);
-        let mut last = first;
-        while src[last.start..last.end].trim_end().ends_with('~') {
-            match lines.peek() {
-                Some(next)
-                    if !src[next.start..next.end].trim().is_empty()
-                        && !starts_new_block(&src[next.start..next.end]) =>
-                {
-                    last = *next;
-                    p.block_lines.push(last);
-                    lines.next();
+        // Tried first: its lines are never blank and never continued (it refuses `~`).
+        let fast = if fast_path { fast::straight_line(text) } else { None };
+        let block = if let Some(f) = fast {
+            let span = Span::new(first.start + f.lead, first.end);
+            Block::compact(f.number, span, first.number, f.line)
+        } else if text.trim().is_empty() {
+            continue;
+        } else {
+            // A block ending in `~` owns the following lines that do not start a new block.
+            let mut last = first;
+            while src[last.start..last.end].trim_end().ends_with('~') {
+                match lines.peek() {
+                    Some(next)
+                        if !src[next.start..next.end].trim().is_empty()
+                            && !starts_new_block(&src[next.start..next.end]) =>
+                    {
+                        last = *next;
+                        p.block_lines.push(last);
+                        lines.next();
+                    }
+                    _ => break,
                 }
-                _ => break,
             }
-        }
-        let fast = if fast_path && p.block_lines.len() == 1 { fast::straight_line(text) } else { None };
-        let block = match fast {
-            Some(f) => {
-                let span = Span::new(first.start + f.lead, first.end);
-                Block::compact(f.number, span, first.number, f.line)
-            }
-            None => p.block(),
+            p.block()
         };
         if let Some(n) = block.number() {
             if let Some(prev) = previous_number

@@ -120,26 +120,25 @@ fn blanks(b: &[u8], mut i: usize) -> usize {
 fn decimal(b: &[u8], mut i: usize) -> Option<(Decimal, usize)> {
     let negative = b.get(i) == Some(&b'-');
     i += usize::from(matches!(b.get(i), Some(b'+' | b'-')));
-    let (mut mantissa, mut digits, mut decimals, mut dot) = (0u32, 0u32, 0u32, false);
-    loop {
-        match b.get(i) {
-            Some(&d @ b'0'..=b'9') => {
-                if digits == 9 {
-                    return None;
-                }
-                mantissa = mantissa * 10 + u32::from(d - b'0');
-                digits += 1;
-                decimals += u32::from(dot);
-            }
-            Some(b'.') if !dot => dot = true,
-            Some(&c) if is_blank(c) => break,
-            None => break,
-            Some(_) => return None,
+    let start = i;
+    let (mut mantissa, mut dot) = (0u32, None);
+    while let Some(&c) = b.get(i) {
+        let digit = c.wrapping_sub(b'0');
+        if digit < 10 {
+            // May wrap only beyond nine digits, which are refused below.
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(u32::from(digit));
+        } else if c == b'.' && dot.is_none() {
+            dot = Some(i);
+        } else {
+            break;
         }
         i += 1;
     }
-    if digits == 0 || mantissa >= Decimal::MANTISSA_LIMIT || decimals > Decimal::MAX_DECIMALS {
+    let digits = i - start - usize::from(dot.is_some());
+    let decimals = dot.map_or(0, |d| i - d - 1);
+    // Whatever stopped the number must be a blank: the caller refuses words that run together.
+    if digits == 0 || digits > 9 || mantissa >= Decimal::MANTISSA_LIMIT || decimals > Decimal::MAX_DECIMALS {
         return None;
     }
-    Some((Decimal::new(negative, mantissa, decimals), i))
+    Some((Decimal::new(negative, mantissa, decimals as u32), i))
 }
