@@ -246,6 +246,19 @@ pub struct State {
     pub executed: bool,
 }
 
+/// One executed step as a listing shows it ([`Simulation::listing`]): the same values as the
+/// step's [`State`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListingRow {
+    pub step: usize,
+    pub block: usize,
+    pub line: u32,
+    pub axes: MachineAxes,
+    /// The active plane's spatial angles SPA, SPB, SPC.
+    pub spatial: Option<[f64; 3]>,
+    pub message: Option<Text>,
+}
+
 impl State {
     /// How long the block's motion takes, seconds (sum of its segments).
     #[must_use]
@@ -448,6 +461,33 @@ impl Simulation {
             let s = interp.state(program, &self.machine, step, executed, rec);
             step += 1;
             Some(s)
+        })
+    }
+
+    /// Every step as a listing row (the command line's table), re-simulated once from the
+    /// start: what [`Simulation::states`] gives of the block, the axes, the plane's spatial
+    /// angles and the message, without building frames, pivots, tool tips and segments for
+    /// every step (they were most of a 100,000-block listing's time).
+    pub fn listing<'a>(&'a self, program: &'a Program) -> impl Iterator<Item = ListingRow> + 'a {
+        let cx_ok = program.blocks.len() == self.blocks;
+        let mut it = self.checkpoints.first().cloned();
+        let mut rec = Rec::default();
+        std::iter::from_fn(move || {
+            let interp = it.as_mut().filter(|i| cx_ok && i.step_count < self.records.len())?;
+            let step = interp.step_count;
+            let cx =
+                interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
+            // One record reused: its segment list keeps its capacity from step to step.
+            rec.segments.clear();
+            interp.step(&cx, Some(&mut rec)).ok()?;
+            Some(ListingRow {
+                step,
+                block: interp.last,
+                line: program.blocks.get(interp.last).map_or(0, |b| b.line),
+                axes: interp.axes,
+                spatial: interp.plane.as_ref().map(|p| p.spatial),
+                message: rec.message.take(),
+            })
         })
     }
 
