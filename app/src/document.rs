@@ -1,7 +1,10 @@
 //! The program being edited: its text, what the core's parser read from it, and a line index.
-//! Parsed once per change of text; every view reads the same result.
+//! Parsed once per change of text (only the changed blocks again, [`Document::edited`]); every
+//! view reads the same result.
 
 use schwenkbar_core::{Diagnostic, Program, parse};
+
+mod splice;
 
 #[derive(Debug, Clone)]
 pub struct Document {
