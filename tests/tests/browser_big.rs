@@ -4,7 +4,9 @@
 //! a 100,000-block program → screen (≤ 50 ms).
 #![cfg(target_arch = "wasm32")]
 
-use schwenkbar_tests::browser::{clear_storage, key_on, median, mount, now, paste_program, query, settle, text, timed_key};
+use schwenkbar_tests::browser::{
+    clear_storage, key_on, median, mount, now, paste_program, query, settle, text, timed_key,
+};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{console_log, wasm_bindgen_test, wasm_bindgen_test_configure};
 
@@ -19,7 +21,8 @@ fn cursor_line(root: &web_sys::Element) -> String {
 async fn import(root: &web_sys::Element, name: &str, program: &str) -> f64 {
     key_on(root, ".tnc", "F5").await;
     let bytes = js_sys::Uint8Array::from(program.as_bytes());
-    let file = web_sys::File::new_with_u8_array_sequence(&js_sys::Array::of1(&bytes.into()), name).expect("file");
+    let file =
+        web_sys::File::new_with_u8_array_sequence(&js_sys::Array::of1(&bytes.into()), name).expect("file");
     let transfer = web_sys::DataTransfer::new().expect("data transfer");
     transfer.items().add_with_file(&file).expect("add");
     let input: web_sys::HtmlInputElement =
@@ -51,10 +54,29 @@ async fn a_million_block_import_steps_and_jumps() {
         settle().await;
         assert_ne!(cursor_line(&root), before, "the cursor moved on screen");
     }
+    // A jump: scrolled to the end of the list, a click on a line there.
+    let mut jumps = Vec::new();
+    for k in 0..5 {
+        let lines: web_sys::Element = query(&root, ".program-pane .lines").expect("the list");
+        lines.set_scroll_top(lines.scroll_height() - k * 5000);
+        lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
+        settle().await;
+        let line = query(&root, ".program-pane .line:nth-child(3)").expect("a drawn line");
+        let want = line.get_attribute("data-line");
+        let t0 = now();
+        line.dyn_into::<web_sys::HtmlElement>().expect("el").click();
+        yew::platform::time::sleep(std::time::Duration::from_millis(0)).await;
+        jumps.push(now() - t0);
+        settle().await;
+        assert_eq!(Some(cursor_line(&root)), want, "the clicked far line is the cursor block");
+        assert!(want.and_then(|w| w.parse::<usize>().ok()).is_some_and(|w| w > 900_000), "far down");
+    }
+    assert!(root.query_selector_all(".program-pane .line").expect("lines").length() < 200, "virtualised");
     console_log!(
-        "BENCH 1,000,000 blocks ({:.0} MB): IMPORT → first screen {open:.0} ms (budget 3000); step median {:.1} ms (budget 50)",
+        "BENCH 1,000,000 blocks ({:.0} MB): IMPORT → first screen {open:.0} ms (budget 3000); step median {:.1} ms, jump to a far block median {:.1} ms (budget 50)",
         program.len() as f64 / 1e6,
-        median(steps)
+        median(steps),
+        median(jumps)
     );
     clear_storage();
 }
@@ -65,7 +87,11 @@ async fn a_keystroke_in_the_text_editor_of_100000_blocks() {
     let root = mount().await;
     let program = schwenkbar_core::sample::cam_program(100_000);
     paste_program(&root, &program).await;
-    query(&root, "[data-key=text-edit]").expect("text edit").dyn_into::<web_sys::HtmlElement>().expect("el").click();
+    query(&root, "[data-key=text-edit]")
+        .expect("text edit")
+        .dyn_into::<web_sys::HtmlElement>()
+        .expect("el")
+        .click();
     settle().await;
     let area: web_sys::HtmlTextAreaElement =
         query(&root, ".program-text").expect("text area").dyn_into().expect("a text area");
@@ -88,6 +114,44 @@ async fn a_keystroke_in_the_text_editor_of_100000_blocks() {
         let summary = text(&root, ".program-pane .summary");
         assert_eq!(summary != "keine Fehler", broken_now, "the screen followed the keystroke: {summary}");
     }
-    console_log!("BENCH keystroke in the text editor, 100,000 blocks → screen: median {:.1} ms (budget 50)", median(samples));
+    console_log!(
+        "BENCH keystroke in the text editor, 100,000 blocks → screen: median {:.1} ms (budget 50)",
+        median(samples)
+    );
+    clear_storage();
+}
+
+#[wasm_bindgen_test]
+async fn the_program_list_draws_only_the_lines_in_sight() {
+    clear_storage();
+    let root = mount().await;
+    let program = schwenkbar_core::sample::cam_program(100_000);
+    paste_program(&root, &program).await;
+    let drawn = || root.query_selector_all(".program-pane .line").expect("lines").length();
+    assert!(drawn() > 5 && drawn() < 200, "only the lines in sight: {}", drawn());
+    let lines = query(&root, ".program-pane .lines").expect("the list");
+    let first = query(&root, ".program-pane .line").expect("a line");
+    let height = f64::from(first.client_height());
+    // Scrolled to line 50,001: that line is drawn, with its own text.
+    lines.set_scroll_top((50_000.0 * height) as i32);
+    lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
+    settle().await;
+    let want = program.lines().nth(50_000).expect("line");
+    assert_eq!(text(&root, ".program-pane .line[data-line='50001']"), want);
+    assert!(drawn() < 200, "still bounded: {}", drawn());
+    // A click selects its block; the cursor keys move on from there and stay in sight.
+    let line = query(&root, ".program-pane .line[data-line='50003']").expect("drawn");
+    line.dyn_into::<web_sys::HtmlElement>().expect("el").click();
+    settle().await;
+    assert_eq!(cursor_line(&root), "50003");
+    for _ in 0..60 {
+        key_on(&root, ".tnc", "ArrowDown").await;
+    }
+    assert_eq!(cursor_line(&root), "50063", "the cursor block is drawn after 60 steps down");
+    let (view, cur) = (
+        lines.get_bounding_client_rect(),
+        query(&root, ".line.cursor").expect("cursor").get_bounding_client_rect(),
+    );
+    assert!(cur.top() >= view.top() && cur.bottom() <= view.bottom(), "the cursor block is in sight");
     clear_storage();
 }
