@@ -5,7 +5,7 @@
 #![cfg(target_arch = "wasm32")]
 
 use schwenkbar_tests::browser::{
-    clear_storage, key_on, median, mount, now, paste_program, query, settle, text, timed_key,
+    clear_storage, inject_app_css, key_on, median, mount, now, paste_program, query, settle, text, timed_key,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{console_log, wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -44,6 +44,7 @@ async fn import(root: &web_sys::Element, name: &str, program: &str) -> f64 {
 #[wasm_bindgen_test]
 async fn a_million_block_import_steps_and_jumps() {
     clear_storage();
+    inject_app_css();
     let root = mount().await;
     let program = schwenkbar_core::sample::cam_program(1_000_000);
     let open = import(&root, "cam.h", &program).await;
@@ -84,6 +85,7 @@ async fn a_million_block_import_steps_and_jumps() {
 #[wasm_bindgen_test]
 async fn a_keystroke_in_the_text_editor_of_100000_blocks() {
     clear_storage();
+    inject_app_css();
     let root = mount().await;
     let program = schwenkbar_core::sample::cam_program(100_000);
     paste_program(&root, &program).await;
@@ -124,6 +126,7 @@ async fn a_keystroke_in_the_text_editor_of_100000_blocks() {
 #[wasm_bindgen_test]
 async fn the_program_list_draws_only_the_lines_in_sight() {
     clear_storage();
+    inject_app_css();
     let root = mount().await;
     let program = schwenkbar_core::sample::cam_program(100_000);
     paste_program(&root, &program).await;

@@ -14,6 +14,8 @@ use schwenkbar_app::syntax::highlight;
 
 /// Lines drawn beyond the visible ones, above and below.
 const OVERSCAN: usize = 4;
+/// Lines drawn at most (a pane without its stylesheet is as tall as its content).
+const MAX_ROWS: usize = 160;
 /// The list's tallest scroll height in px: browsers cap an element's height (Firefox near
 /// 17.9 million px); beyond it the scroll position maps to lines in proportion.
 const MAX_HEIGHT: f64 = 8_000_000.0;
@@ -115,7 +117,7 @@ struct View {
 impl View {
     /// Lines that fit.
     fn rows(&self) -> usize {
-        (self.height / self.line).ceil() as usize
+        ((self.height / self.line).ceil() as usize).min(MAX_ROWS)
     }
 
     /// The scroll height of `lines` lines.

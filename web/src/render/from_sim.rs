@@ -99,6 +99,9 @@ pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
 /// run is all in (a long run is drawn in parts, between frames).
 pub fn toolpath_part(sim: &Simulation, program: &Program, path: &mut RunPath, steps: usize) -> bool {
     let done = path.segments_after.len();
+    if done >= sim.len() {
+        return true;
+    }
     for st in sim.states_from(program, done).take(steps) {
         let kin = Kin::new(&sim.machine, st.tool.length);
         for seg in &st.segments {
@@ -114,7 +117,8 @@ pub fn toolpath_part(sim: &Simulation, program: &Program, path: &mut RunPath, st
         }
         path.segments_after.push(path.points.len().saturating_sub(1));
     }
-    path.segments_after.len() >= sim.len()
+    // A step that cannot be re-run (never after a finished simulation) ends the path there.
+    path.segments_after.len() >= sim.len() || path.segments_after.len() == done
 }
 
 #[cfg(test)]
