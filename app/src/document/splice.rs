@@ -101,7 +101,9 @@ impl Document {
             self.diagnostics.iter().filter(|d| !across_blocks(&d.code)).cloned().collect();
         let (d0, d1) = (
             own.partition_point(|d| d.span.start < r.start),
-            own.partition_point(|d| d.span.start < r.old_end),
+            // A finding at the very end of the region's last block (a word missing at the end
+            // of the text) stands at `old_end`: the findings after are the next block's.
+            own.partition_point(|d| d.span.start < old.get(i1).map_or(usize::MAX, |b| b.span.start)),
         );
         let region_diags =
             diagnostics.into_iter().filter(|d| !across_blocks(&d.code)).map(|d| shift_diag(d, start, line0));
