@@ -157,7 +157,7 @@ impl AppState {
             });
         }
         // The default's simulation is of the default program: simulate what was restored.
-        state = state.simulated();
+        state = state.simulated(None);
         if run {
             state.start_run();
         }
@@ -175,7 +175,7 @@ impl AppState {
         state.cursor =
             state.doc.program.blocks.iter().position(|b| matches!(b.body, BlockBody::Plane(_))).unwrap_or(0);
         state.select_machine(machine);
-        let state = state.simulated();
+        let state = state.simulated(None);
         let mut fx = Vec::new();
         state.follow_ups(None, &mut fx);
         (state, fx)
