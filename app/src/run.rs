@@ -18,6 +18,13 @@ impl SimRef {
     pub fn of(program: &Program, machine: &Machine) -> SimRef {
         SimRef(Rc::new(simulate(program, machine, &SimOptions::default())))
     }
+
+    /// The simulation of `program`, an edit of the simulated program that kept its blocks
+    /// before `unchanged` ([`Simulation::resumed`]).
+    #[must_use]
+    pub fn resumed(&self, program: &Program, unchanged: usize) -> SimRef {
+        SimRef(Rc::new(self.0.resumed(program, unchanged)))
+    }
 }
 
 impl PartialEq for SimRef {

@@ -115,7 +115,7 @@ impl Default for AppState {
             stock_shown: false,
             stock: None,
         }
-        .simulated()
+        .simulated(None)
     }
 }
 
@@ -198,6 +198,8 @@ impl Reducer for AppState {
 impl AppState {
     fn transition(&self, action: Action, fx: &mut Vec<Effect>) -> AppState {
         let mut next = self.clone();
+        // After a text edit: the blocks before this index are the old ones.
+        let mut unchanged = None;
         next.message = None;
         if self.link.is_some() && !action.allowed_in_link_preview() {
             next.message = Some(Text::new(
@@ -238,7 +240,9 @@ impl AppState {
             Action::CursorDown => next.cursor = (self.cursor + 1).min(self.doc.last_index()),
             Action::CursorTo(i) => next.cursor = i.min(self.doc.last_index()),
             Action::SetText(text) => {
-                next.doc = Rc::new(Document::new(text));
+                let (doc, same) = self.doc.edited(text);
+                next.doc = Rc::new(doc);
+                unchanged = Some(same);
                 next.cursor = self.cursor.min(next.doc.last_index());
             }
             Action::ToggleTextEditing => {
@@ -331,16 +335,18 @@ impl AppState {
             (a, b) => a.is_some() != b.is_some(),
         };
         if !Rc::ptr_eq(&self.doc, &next.doc) || machine_changed {
-            next = next.simulated();
+            next = next.simulated(unchanged.filter(|_| !machine_changed));
         }
         next
     }
 
-    /// Re-runs the simulation (after the program or the machine changed) and keeps an open run
-    /// at the same step where it still exists.
+    /// Re-runs the simulation (after the program or the machine changed; after a text edit
+    /// that kept the blocks before `unchanged`, from the checkpoint before the first step that
+    /// reaches a changed block) and keeps an open run at the same step where it still exists.
     #[must_use]
-    fn simulated(mut self) -> AppState {
-        self.sim = self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m));
+    fn simulated(mut self, unchanged: Option<usize>) -> AppState {
+        let resumed = unchanged.zip(self.sim.as_ref()).map(|(u, sim)| sim.resumed(&self.doc.program, u));
+        self.sim = resumed.or_else(|| self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m)));
         self.stock = None;
         match (&self.sim, self.run.as_mut()) {
             (Some(sim), Some(run)) => run.go_to(&sim.0, &self.doc.program, run.step),

@@ -35,7 +35,8 @@ fn write_program(dir: &Path, blocks: usize) -> PathBuf {
 }
 
 fn main() {
-    let Some(dir) = std::env::current_exe().ok().and_then(|e| Some(e.parent()?.parent()?.to_path_buf())) else {
+    let Some(dir) = std::env::current_exe().ok().and_then(|e| Some(e.parent()?.parent()?.to_path_buf()))
+    else {
         eprintln!("cannot locate the target directory");
         std::process::exit(2);
     };
@@ -48,7 +49,11 @@ fn main() {
     let mb = std::fs::metadata(&big).map_or(0.0, |m| m.len() as f64 / 1e6);
     let file = big.to_string_lossy();
     let (secs, ok) = best_of_3(&exe, &["check", &file]);
-    println!("check 1,000,000 blocks ({mb:.1} MB): {secs:.3} s = {:.0} MB/s end to end (budget >= 200){}", mb / secs, if ok { "" } else { " FAILED" });
+    println!(
+        "check 1,000,000 blocks ({mb:.1} MB): {secs:.3} s = {:.0} MB/s end to end (budget >= 200){}",
+        mb / secs,
+        if ok { "" } else { " FAILED" }
+    );
 
     let small = write_program(&dir, 100_000);
     let file = small.to_string_lossy();

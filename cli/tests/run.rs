@@ -105,3 +105,54 @@ fn run_json_lists_axes_in_display_order() {
     let i = |k: &str| text.find(&format!("\"{k}\":")).expect("axis key");
     assert!(i("X") < i("Y") && i("Y") < i("Z") && i("Z") < i("A") && i("A") < i("C"), "{text}");
 }
+
+/// The table (written with the exact fixed-point writer into one reused row) says, byte for
+/// byte, what `format!` makes of the JSON report's numbers: `{:>5}` line, `{:<44}` block,
+/// `{:>10.4}` per axis, `{:+.4}` plane angles, then the message.
+#[test]
+fn run_table_rows_are_the_json_states_formatted() {
+    for (file, machine) in [
+        ("static/programs/musterprogramm1.h", "ac-table"),
+        ("tests/fixtures/sim/swivel_turn.h", "ac-table"),
+        ("tests/fixtures/sim/pocket_spatial.h", "bc-head-table"),
+        ("tests/fixtures/sim/relativ_chain.h", "ba-table"),
+        ("tests/fixtures/sim/unreachable.h", "ca-head"),
+    ] {
+        let f = repo(file);
+        let table = String::from_utf8(run(&["run", &f, "--machine", machine]).stdout).expect("UTF-8");
+        let report = json(&run(&["run", &f, "--machine", machine, "--json"]));
+        let states = report["states"].as_array().expect("states");
+        // The header names the axes in the table's order (JSON objects here are sorted).
+        let letters: Vec<&str> = table
+            .lines()
+            .next()
+            .unwrap_or("")
+            .split_whitespace()
+            .skip(2)
+            .take_while(|w| *w != "SPA/SPB/SPC")
+            .collect();
+        assert!(letters.len() >= 5, "{file}: {letters:?}");
+        let rows: Vec<&str> = table.lines().skip(1).take(states.len()).collect();
+        assert_eq!(rows.len(), states.len(), "{file}");
+        for (row, s) in rows.iter().zip(states) {
+            let text: String = s["block"].as_str().unwrap_or("").chars().take(44).collect();
+            let mut expected = format!("{:>5}  {text:<44}", s["line"].as_u64().unwrap_or(0));
+            for c in &letters {
+                expected.push_str(&format!(" {:>10.4}", s["axes"][c].as_f64().unwrap_or(f64::NAN)));
+            }
+            let plane = match s["plane"]["spatial"].as_array() {
+                Some(a) => {
+                    let a: Vec<f64> = a.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)).collect();
+                    format!("{:+.4} {:+.4} {:+.4}", a[0], a[1], a[2])
+                }
+                None => "-".to_owned(),
+            };
+            expected.push_str(&format!("  {plane:<26}"));
+            if let Some(m) = s["message"].as_str() {
+                expected.push_str("  ");
+                expected.push_str(m);
+            }
+            assert_eq!(*row, expected.trim_end(), "{file} on {machine}");
+        }
+    }
+}

@@ -223,6 +223,13 @@ impl Block {
         Span::new(self.start as usize, self.end as usize)
     }
 
+    /// The same block moved by an edit before it: `bytes` further in the text, `lines` further down.
+    pub fn shift(&mut self, bytes: isize, lines: i32) {
+        self.start = to_u32((self.start as usize).wrapping_add_signed(bytes));
+        self.end = to_u32((self.end as usize).wrapping_add_signed(bytes));
+        self.line = self.line.wrapping_add_signed(lines);
+    }
+
     /// 1-based line of the block's first character.
     #[must_use]
     pub fn line(&self) -> u32 {

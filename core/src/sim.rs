@@ -246,6 +246,19 @@ pub struct State {
     pub executed: bool,
 }
 
+/// One executed step as a listing shows it ([`Simulation::listing`]): the same values as the
+/// step's [`State`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListingRow {
+    pub step: usize,
+    pub block: usize,
+    pub line: u32,
+    pub axes: MachineAxes,
+    /// The active plane's spatial angles SPA, SPB, SPC.
+    pub spatial: Option<[f64; 3]>,
+    pub message: Option<Text>,
+}
+
 impl State {
     /// How long the block's motion takes, seconds (sum of its segments).
     #[must_use]
@@ -326,54 +339,29 @@ pub struct Simulation {
 /// Runs a program on a machine.
 #[must_use]
 pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> Simulation {
-    let labels = Arc::new(label_table(program));
     let mut options = options.clone();
     options.checkpoint_interval = options.checkpoint_interval.max(1);
-    let budget = options.max_steps.unwrap_or(1_000_000 + 20 * program.blocks.len());
-    let mut it = Interp::new(machine);
-    let mut records = Vec::with_capacity(program.blocks.len());
-    let mut checkpoints = Vec::new();
-    let mut first_step = vec![None; program.blocks.len()];
-    let mut error = None;
-    let cx = interp::Cx { program, machine, options: &options, labels: &labels };
-    while !it.done(program) {
-        let step = records.len();
-        if step % options.checkpoint_interval == 0 {
-            checkpoints.push(it.clone());
-        }
-        let block = it.pc;
-        if step >= budget {
-            error = Some(make_error(program, step, block, SimErrorCode::BlockBudget { steps: budget }));
-            break;
-        }
-        match it.step(&cx, None) {
-            Ok(executed) => {
-                if let Some(slot) = first_step.get_mut(block)
-                    && slot.is_none()
-                {
-                    *slot = u32::try_from(step).ok();
-                }
-                records.push(Record {
-                    block: u32::try_from(block).unwrap_or(u32::MAX),
-                    executed,
-                    axes: it.axes,
-                });
-            }
-            Err(code) => {
-                error = Some(make_error(program, step, block, code));
-                break;
-            }
-        }
-    }
     Simulation {
         machine: machine.clone(),
         options,
-        records,
-        error,
-        first_step,
-        checkpoints,
-        labels,
+        records: Vec::with_capacity(program.blocks.len()),
+        error: None,
+        first_step: vec![None; program.blocks.len()],
+        checkpoints: Vec::new(),
+        labels: Arc::new(label_table(program)),
         blocks: program.blocks.len(),
+    }
+    .run_on(program, Interp::new(machine))
+}
+
+/// Blocks a contour element looks ahead over to the next element (`next_element`,
+/// `before_corner` in `sim/interp/`): they do not move the tool.
+fn looked_over(body: &BlockBody) -> bool {
+    match body {
+        BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::CycleDef(_) | BlockBody::Cc(_) => true,
+        BlockBody::MFunctions(m) => !m.contains(&99),
+        BlockBody::L(l) => l.axes.is_empty() && !l.m.contains(&99),
+        _ => false,
     }
 }
 
@@ -395,6 +383,92 @@ fn label_table(program: &Program) -> BTreeMap<LabelKey, usize> {
 }
 
 impl Simulation {
+    /// Runs on from `it` (the state after `self.records`), recording and checkpointing as
+    /// [`simulate`] does.
+    fn run_on(mut self, program: &Program, mut it: Interp) -> Simulation {
+        let budget = self.options.max_steps.unwrap_or(1_000_000 + 20 * program.blocks.len());
+        let Simulation { machine, options, records, error, first_step, checkpoints, labels, .. } = &mut self;
+        let cx = interp::Cx { program, machine, options, labels };
+        while !it.done(program) {
+            let step = records.len();
+            if step % options.checkpoint_interval == 0 {
+                checkpoints.push(it.clone());
+            }
+            let block = it.pc;
+            if step >= budget {
+                *error = Some(make_error(program, step, block, SimErrorCode::BlockBudget { steps: budget }));
+                break;
+            }
+            match it.step(&cx, None) {
+                Ok(executed) => {
+                    if let Some(slot) = first_step.get_mut(block)
+                        && slot.is_none()
+                    {
+                        *slot = u32::try_from(step).ok();
+                    }
+                    records.push(Record {
+                        block: u32::try_from(block).unwrap_or(u32::MAX),
+                        executed,
+                        axes: it.axes,
+                    });
+                }
+                Err(code) => {
+                    *error = Some(make_error(program, step, block, code));
+                    break;
+                }
+            }
+        }
+        self
+    }
+
+    /// The run of `program` after an edit that kept its blocks before `unchanged` (the same
+    /// blocks as in the simulated program), equal to [`simulate`] of it: re-run from the last
+    /// checkpoint before the first step that executed a changed block or looked ahead to one
+    /// (a contour element looks over blocks that do not move to the next element), or jumped to
+    /// one. The labels are read anew; the steps before never reached a changed block, so they
+    /// stay.
+    #[must_use]
+    pub fn resumed(&self, program: &Program, unchanged: usize) -> Simulation {
+        let blocks = &program.blocks;
+        let mut from = unchanged.min(blocks.len()).min(self.blocks);
+        while from > 0 && looked_over(&blocks[from - 1].body()) {
+            from -= 1;
+        }
+        from = from.saturating_sub(1);
+        if from > 0
+            && matches!(blocks[from].stored_body(), Some(BlockBody::Rnd { .. } | BlockBody::Chf { .. }))
+        {
+            from -= 1;
+        }
+        let reached = self.first_step.get(from..).unwrap_or(&[]).iter().flatten().min();
+        // The step before may have jumped there: its label look-up read the changed blocks.
+        let until =
+            reached.map_or(self.records.len(), |&s| (s as usize).saturating_sub(1)).min(self.records.len());
+        let n = self.options.checkpoint_interval;
+        let c = (until / n).min(self.checkpoints.len().saturating_sub(1));
+        let Some(it) = self.checkpoints.get(c).cloned() else {
+            return simulate(program, &self.machine, &self.options);
+        };
+        let start = c * n;
+        let mut first_step = vec![None; blocks.len()];
+        for (slot, old) in first_step.iter_mut().zip(&self.first_step).take(from) {
+            *slot = old.filter(|&s| (s as usize) < start);
+        }
+        let mut records = Vec::with_capacity(blocks.len().max(start));
+        records.extend_from_slice(&self.records[..start]);
+        Simulation {
+            machine: self.machine.clone(),
+            options: self.options.clone(),
+            records,
+            error: None,
+            first_step,
+            checkpoints: self.checkpoints[..c].to_vec(),
+            labels: Arc::new(label_table(program)),
+            blocks: blocks.len(),
+        }
+        .run_on(program, it)
+    }
+
     /// Number of executed blocks with a state.
     #[must_use]
     pub fn len(&self) -> usize {
@@ -433,9 +507,15 @@ impl Simulation {
 
     /// Every state in order, re-simulated once from the start (for listings of a whole run).
     pub fn states<'a>(&'a self, program: &'a Program) -> impl Iterator<Item = State> + 'a {
+        self.states_from(program, 0)
+    }
+
+    /// The states from step `first` on, in order, re-simulated once from the checkpoint before
+    /// it (a long listing in parts).
+    pub fn states_from<'a>(&'a self, program: &'a Program, first: usize) -> impl Iterator<Item = State> + 'a {
         let cx_ok = program.blocks.len() == self.blocks;
-        let mut it = self.checkpoints.first().cloned();
-        let mut step = 0usize;
+        let mut it = self.checkpoints.get(first / self.options.checkpoint_interval).cloned();
+        let mut step = first;
         std::iter::from_fn(move || {
             if !cx_ok || step >= self.records.len() {
                 return None;
@@ -443,11 +523,41 @@ impl Simulation {
             let interp = it.as_mut()?;
             let cx =
                 interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
+            while interp.step_count < step {
+                interp.step(&cx, None).ok()?;
+            }
             let mut rec = Rec::default();
             let executed = interp.step(&cx, Some(&mut rec)).ok()?;
             let s = interp.state(program, &self.machine, step, executed, rec);
             step += 1;
             Some(s)
+        })
+    }
+
+    /// Every step as a listing row (the command line's table), re-simulated once from the
+    /// start: what [`Simulation::states`] gives of the block, the axes, the plane's spatial
+    /// angles and the message, without building frames, pivots, tool tips and segments for
+    /// every step (they were most of a 100,000-block listing's time).
+    pub fn listing<'a>(&'a self, program: &'a Program) -> impl Iterator<Item = ListingRow> + 'a {
+        let cx_ok = program.blocks.len() == self.blocks;
+        let mut it = self.checkpoints.first().cloned();
+        let mut rec = Rec::default();
+        std::iter::from_fn(move || {
+            let interp = it.as_mut().filter(|i| cx_ok && i.step_count < self.records.len())?;
+            let step = interp.step_count;
+            let cx =
+                interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
+            // One record reused: its segment list keeps its capacity from step to step.
+            rec.segments.clear();
+            interp.step(&cx, Some(&mut rec)).ok()?;
+            Some(ListingRow {
+                step,
+                block: interp.last,
+                line: program.blocks.get(interp.last).map_or(0, |b| b.line()),
+                axes: interp.axes,
+                spatial: interp.plane.as_ref().map(|p| p.spatial),
+                message: rec.message.take(),
+            })
         })
     }
 

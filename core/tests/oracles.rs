@@ -28,7 +28,7 @@ fn oracle_31_spatial_turn_fmax_with_comment() {
     assert_eq!(b.positioning, Some(Positioning::Turn { move_back: None, feed: Some(Feed::Max) }));
     let (p, _) = parse(src);
     assert_eq!(p.blocks[0].number(), Some(10));
-    assert_eq!(p.blocks[0].comment().as_deref(), Some("Einschwenken"));
+    assert_eq!(p.blocks[0].comment(), Some("Einschwenken"));
 }
 
 #[test]

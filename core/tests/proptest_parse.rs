@@ -40,9 +40,7 @@ fn line() -> impl Strategy<Value = BlockBody> {
     });
     let comp = prop::option::of(prop::sample::select(vec![RadiusComp::R0, RadiusComp::Rl, RadiusComp::Rr]));
     (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(
-        |(a, comp, feed, m)| {
-            BlockBody::L(Line { axes: a.into(), comp, feed, m: m.into_boxed_slice() })
-        },
+        |(a, comp, feed, m)| BlockBody::L(Line { axes: a.into(), comp, feed, m: m.into_boxed_slice() }),
     )
 }
 

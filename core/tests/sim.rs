@@ -519,3 +519,36 @@ fn display_during_a_move_follows_the_motion() {
     assert_close!(quarter.x, start.x + 0.25 * (20.0 - start.x), 1e-6);
     assert_close!(quarter.y, start.y, 1e-6);
 }
+
+/// The listing (`Simulation::listing`, the CLI's table) is the states' block, axes, plane
+/// angles and message, step by step, on every fixture and every shipped machine (runs that
+/// stop with an error included), and on a small checkpoint interval.
+#[test]
+fn the_listing_shows_what_the_states_say() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures/sim");
+    let mut files: Vec<_> = std::fs::read_dir(&dir).expect("fixtures").flatten().map(|e| e.path()).collect();
+    files.sort();
+    let mut rows = 0;
+    for path in files {
+        let (program, _) = parse(&std::fs::read_to_string(&path).expect("fixture"));
+        for id in Machine::builtin_ids() {
+            let machine = Machine::builtin(id).expect("shipped");
+            // Endless loops stop at the step budget; 2,000 steps show them well enough.
+            let opts = SimOptions { checkpoint_interval: 7, max_steps: Some(2000), ..SimOptions::default() };
+            let sim = simulate(&program, &machine, &opts);
+            let listed: Vec<_> = sim.listing(&program).collect();
+            let states: Vec<State> = sim.states(&program).collect();
+            assert_eq!(listed.len(), states.len(), "{} on {id}", path.display());
+            assert_eq!(listed.len(), sim.len(), "{} on {id}", path.display());
+            for (r, s) in listed.iter().zip(&states) {
+                let what = format!("{} on {id}, step {}", path.display(), s.step);
+                assert_eq!((r.step, r.block, r.line), (s.step, s.block, s.line), "{what}");
+                assert_eq!(r.axes, s.axes, "{what}");
+                assert_eq!(r.spatial, s.plane.as_ref().map(|p| p.spatial), "{what}");
+                assert_eq!(r.message, s.message, "{what}");
+            }
+            rows += listed.len();
+        }
+    }
+    assert!(rows > 1000, "the fixtures list {rows} steps");
+}

@@ -78,8 +78,12 @@ fn assert_formatting_stable(dir: &str, name: &str, src: &str) {
     let (again, _) = parse(&once);
     assert_eq!(format_program(&again), once, "{dir}/{name}");
     if dir == "ok" {
-        let strip =
-            |p: Program| p.blocks.into_iter().map(|b| (b.skip(), b.comment().map(str::to_owned), b.into_body())).collect::<Vec<_>>();
+        let strip = |p: Program| {
+            p.blocks
+                .into_iter()
+                .map(|b| (b.skip(), b.comment().map(str::to_owned), b.into_body()))
+                .collect::<Vec<_>>()
+        };
         assert!(strip(again) == strip(parse(src).0), "{name}: reformatted program differs");
     }
 }

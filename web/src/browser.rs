@@ -31,8 +31,8 @@ pub fn load_course() -> (Option<String>, Option<String>) {
 }
 
 const REFUSED: Text = Text::new(
-    "Programm kann im Browser nicht gespeichert werden (Speicher voll oder gesperrt)",
-    "The program cannot be kept in the browser (storage full or blocked)",
+    "Programm im Browser nicht gespeichert (zu groß, Speicher voll oder gesperrt): es bleibt geöffnet, mit HERUNTERLADEN sichern",
+    "The program is not kept in the browser (too large, storage full or blocked): it stays open, keep it with DOWNLOAD",
 );
 
 /// Keeps `value` under `key`; a full (programs of several MB) or blocked storage is reported.

@@ -99,10 +99,36 @@ pub fn use_effects(pending: &Pending, shell: Shell) {
     });
 }
 
+/// Texts longer than this (bytes) are saved after a pause of `SAVE_PAUSE_MS`.
+const BIG_SAVE: usize = 256 * 1024;
+const SAVE_PAUSE_MS: u64 = 1000;
+
+thread_local! {
+    /// The big text waiting to be saved.
+    static LATER: std::cell::RefCell<Option<(&'static str, String)>> = const { std::cell::RefCell::new(None) };
+}
+
 fn run(effect: &Effect, shell: &Shell) {
     let root = || shell.root.cast::<web_sys::Element>();
     match effect {
+        // A big program is written once typing pauses (megabytes a keystroke would cost more
+        // than the keystroke); the latest text wins.
+        Effect::Save { key, value } if value.len() > BIG_SAVE => {
+            let first = LATER.with(|l| l.borrow_mut().replace((key, value.clone())).is_none());
+            if first {
+                let notice = shell.notice.clone();
+                yew::platform::spawn_local(async move {
+                    yew::platform::time::sleep(std::time::Duration::from_millis(SAVE_PAUSE_MS)).await;
+                    if let Some((key, value)) = LATER.with(|l| l.borrow_mut().take())
+                        && let Err(message) = browser::save(key, &value)
+                    {
+                        notice.emit(message);
+                    }
+                });
+            }
+        }
         Effect::Save { key, value } => {
+            LATER.with(|l| l.borrow_mut().take_if(|(k, _)| k == key));
             if let Err(message) = browser::save(key, value) {
                 shell.notice.emit(message);
             }

@@ -183,10 +183,12 @@ fn relativ_and_axial_and_points() {
 #[test]
 fn reopened_block_shows_its_values_and_finishes_unchanged() {
     let text = "PLANE SPATIAL SPA+0 SPB+15 SPC+0 MOVE DIST+50 F500 SEQ- TABLE ROT";
-    let block = match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(schwenkbar_core::Block::into_body) {
-        Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
-        other => panic!("{other:?}"),
-    };
+    let block =
+        match schwenkbar_core::parse(text).0.blocks.into_iter().next().map(schwenkbar_core::Block::into_body)
+        {
+            Some(schwenkbar_core::BlockBody::Plane(p)) => *p,
+            other => panic!("{other:?}"),
+        };
     let mut d = Dialog::reopen(&block);
     assert_eq!(d.input, "0");
     d.key(Key::Ent);

@@ -157,7 +157,7 @@ impl AppState {
             });
         }
         // The default's simulation is of the default program: simulate what was restored.
-        state = state.simulated();
+        state = state.simulated(None);
         if run {
             state.start_run();
         }
@@ -172,10 +172,15 @@ impl AppState {
     pub fn embedded(program: &str, machine: &str, lang: Lang, classroom: bool) -> (AppState, Vec<Effect>) {
         let mut state = AppState { lang, projector: classroom, embedded: true, ..AppState::default() };
         state.doc = Rc::new(Document::new(program.to_owned()));
-        state.cursor =
-            state.doc.program.blocks.iter().position(|b| matches!(b.stored_body(), Some(BlockBody::Plane(_)))).unwrap_or(0);
+        state.cursor = state
+            .doc
+            .program
+            .blocks
+            .iter()
+            .position(|b| matches!(b.stored_body(), Some(BlockBody::Plane(_))))
+            .unwrap_or(0);
         state.select_machine(machine);
-        let state = state.simulated();
+        let state = state.simulated(None);
         let mut fx = Vec::new();
         state.follow_ups(None, &mut fx);
         (state, fx)

@@ -179,7 +179,9 @@ fn run_value(program: &str, machine: &str, number: u32, letter: char) -> Option<
     let state_of = |i: usize| sim.state_at(&program, sim.step_of_block(i)?);
     let decider = (0..=index)
         .rev()
-        .filter(|&i| matches!(program.blocks.get(i).and_then(crate::Block::stored_body), Some(BlockBody::Plane(_))))
+        .filter(|&i| {
+            matches!(program.blocks.get(i).and_then(crate::Block::stored_body), Some(BlockBody::Plane(_)))
+        })
         .filter_map(|i| state_of(i)?.explanation)
         .find(|e| e.candidates.len() >= 2 && e.chosen.is_some())
         .map(|e| (*e).clone());

@@ -212,7 +212,9 @@ fn typed_plane(text: &str) -> PlaneBlock<f64> {
     let (program, diags) = crate::parse(text);
     assert!(!diags.iter().any(|d| d.is_error()), "{text}: {diags:?}");
     let [block] = program.blocks.as_slice() else { panic!("{text}: not one block") };
-    let Some(crate::BlockBody::Plane(plane)) = block.stored_body() else { panic!("{text}: not a PLANE block") };
+    let Some(crate::BlockBody::Plane(plane)) = block.stored_body() else {
+        panic!("{text}: not a PLANE block")
+    };
     plane
         .try_map(|v| match v {
             crate::plane::Value::Number(x) => Ok(*x),

@@ -76,7 +76,7 @@ pub(crate) struct Interp {
     /// Executed steps so far.
     pub step_count: usize,
     /// The block of the step just executed.
-    last: usize,
+    pub last: usize,
     /// M30/M2 reached: the rest is listed, not executed.
     ended: bool,
     pub axes: MachineAxes,
@@ -88,7 +88,7 @@ pub(crate) struct Interp {
     blank_min: Option<DVec3>,
     blank: Option<Blank>,
     tf: Transforms,
-    plane: Option<Arc<ActivePlane>>,
+    pub plane: Option<Arc<ActivePlane>>,
     q: BTreeMap<u32, f64>,
     cycle: Option<StoredCycle>,
     calls: Vec<usize>,

@@ -1,7 +1,7 @@
-//! The NC program: the lines around the cursor block (like the control's program display, and
-//! fast for programs of 100,000 blocks), syntax colours, the parser's diagnostics at their line,
-//! a click selects a block. With "edit as text" on, a text area holds the whole program and
-//! every change is parsed at once.
+//! The NC program: a virtualised list of the whole program (only the lines in sight are in
+//! the DOM, so a 1,000,000-block program scrolls), syntax colours, the parser's diagnostics at
+//! their line, a click selects a block, the cursor block stays in sight. With "edit as text" on,
+//! a text area holds the whole program and every change is parsed (only where it changed).
 
 use std::rc::Rc;
 
@@ -12,9 +12,13 @@ use schwenkbar_app::document::Document;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::syntax::highlight;
 
-/// Lines shown above the cursor block and in all.
-const ABOVE: usize = 12;
-const WINDOW: usize = 48;
+/// Lines drawn beyond the visible ones, above and below.
+const OVERSCAN: usize = 4;
+/// Lines drawn at most (a pane without its stylesheet is as tall as its content).
+const MAX_ROWS: usize = 160;
+/// The list's tallest scroll height in px: browsers cap an element's height (Firefox near
+/// 17.9 million px); beyond it the scroll position maps to lines in proportion.
+const MAX_HEIGHT: f64 = 8_000_000.0;
 
 #[derive(Properties, PartialEq)]
 pub struct ProgramPaneProps {
@@ -28,45 +32,178 @@ pub struct ProgramPaneProps {
 
 #[function_component(ProgramPane)]
 pub fn program_pane(props: &ProgramPaneProps) -> Html {
-    let pane = use_node_ref();
-    {
-        // The cursor block stays in sight however the lines wrap (large type on a projector).
-        let pane = pane.clone();
-        use_effect(move || {
-            if let Some(pane) = pane.cast::<web_sys::Element>() {
-                keep_cursor_in_sight(&pane);
-            }
-        });
-    }
     let l = props.lang;
     let doc = &props.doc;
     let title = l.t("NC-Programm", "NC program");
     let summary = summary(doc.error_count(), doc.diagnostics.len() - doc.error_count(), l);
-    if props.text_editing {
-        let on_text = props.on_text.clone();
-        let oninput = Callback::from(move |e: InputEvent| {
-            if let Some(area) = e.target_dyn_into::<HtmlTextAreaElement>() {
-                on_text.emit(area.value());
+    let class = classes!("program-pane", props.text_editing.then_some("editing"));
+    html! {
+        <section {class} aria-label={title}>
+            <div class="pane-title">{ title }<span class="summary">{ summary }</span></div>
+            if props.text_editing {
+                <ProgramText doc={doc.clone()} lang={l} on_text={props.on_text.clone()} />
+                { diagnostics_list(doc, 0, usize::MAX, l) }
+            } else {
+                <ProgramList doc={doc.clone()} cursor={props.cursor} lang={l} on_select={props.on_select.clone()} />
+            }
+        </section>
+    }
+}
+
+/// A document compared by identity (the effects below run once per new document).
+#[derive(Clone)]
+struct Same(Rc<Document>);
+
+impl PartialEq for Same {
+    fn eq(&self, other: &Same) -> bool {
+        Rc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+#[derive(Properties, PartialEq)]
+struct TextProps {
+    doc: Rc<Document>,
+    lang: Lang,
+    on_text: Callback<String>,
+}
+
+/// The text area, uncontrolled: its own typing is not written back into it (a 100,000-block
+/// program is 4 MB a keystroke); a document from elsewhere (a sample, an import) is.
+#[function_component(ProgramText)]
+fn program_text(props: &TextProps) -> Html {
+    let area = use_node_ref();
+    let typed = use_mut_ref(|| false);
+    {
+        let (area, typed) = (area.clone(), typed.clone());
+        use_effect_with(Same(props.doc.clone()), move |doc| {
+            if !std::mem::take(&mut *typed.borrow_mut())
+                && let Some(area) = area.cast::<HtmlTextAreaElement>()
+            {
+                area.set_value(&doc.0.text);
             }
         });
-        return html! {
-            <section class="program-pane editing" aria-label={title}>
-                <div class="pane-title">{ title }<span class="summary">{ summary }</span></div>
-                <textarea class="program-text" spellcheck="false" value={doc.text.clone()} {oninput}
-                    aria-label={l.t("Programmtext", "Program text")} />
-                { diagnostics_list(doc, 0, usize::MAX, l) }
-            </section>
-        };
     }
+    let oninput = {
+        let (on_text, typed) = (props.on_text.clone(), typed.clone());
+        Callback::from(move |e: InputEvent| {
+            if let Some(area) = e.target_dyn_into::<HtmlTextAreaElement>() {
+                *typed.borrow_mut() = true;
+                on_text.emit(area.value());
+            }
+        })
+    };
+    html! {
+        <textarea class="program-text" spellcheck="false" ref={area} {oninput}
+            aria-label={props.lang.t("Programmtext", "Program text")} />
+    }
+}
+
+#[derive(Properties, PartialEq)]
+struct ListProps {
+    doc: Rc<Document>,
+    cursor: usize,
+    lang: Lang,
+    on_select: Callback<usize>,
+}
+
+/// The scroller's size and position and the height of a line, px (measured after a render).
+#[derive(Clone, Copy, PartialEq)]
+struct View {
+    top: f64,
+    height: f64,
+    line: f64,
+}
+
+impl View {
+    /// Lines that fit.
+    fn rows(&self) -> usize {
+        ((self.height / self.line).ceil() as usize).min(MAX_ROWS)
+    }
+
+    /// The scroll height of `lines` lines.
+    fn total(&self, lines: usize) -> f64 {
+        (lines as f64 * self.line).min(MAX_HEIGHT)
+    }
+
+    /// The first line in sight at scroll position `top`.
+    fn first(&self, lines: usize, top: f64) -> usize {
+        let (total, room) = (self.total(lines), lines.saturating_sub(self.rows()) as f64);
+        let at =
+            if total < MAX_HEIGHT { top / self.line } else { top / (total - self.height).max(1.0) * room };
+        (at.max(0.0) as usize).min(lines.saturating_sub(1))
+    }
+
+    /// The scroll position that shows line `line` first.
+    fn top_of(&self, lines: usize, line: usize) -> f64 {
+        let total = self.total(lines);
+        if total < MAX_HEIGHT {
+            line as f64 * self.line
+        } else {
+            line as f64 / lines.saturating_sub(self.rows()).max(1) as f64 * (total - self.height)
+        }
+    }
+}
+
+#[function_component(ProgramList)]
+fn program_list(props: &ListProps) -> Html {
+    let scroller = use_node_ref();
+    let view = use_state_eq(|| View { top: 0.0, height: 600.0, line: 21.0 });
+    let doc = &props.doc;
+    let lines = doc.line_count();
     let (cur_first, cur_last) = doc.block_lines(props.cursor).unwrap_or((0, 0));
-    let first = cur_first.saturating_sub(ABOVE);
-    let last = (first + WINDOW).min(doc.line_count());
+    {
+        // Measures the scroller and a line, and brings the cursor block into sight (a third of
+        // the way down) when it moved out of it.
+        let (scroller, view) = (scroller.clone(), view.clone());
+        use_effect_with((props.cursor, Same(doc.clone())), move |_| {
+            let Some(el) = scroller.cast::<web_sys::Element>() else { return };
+            let line =
+                el.query_selector(".line").ok().flatten().map_or(0.0, |l| f64::from(l.client_height()));
+            let mut v =
+                View { top: f64::from(el.scroll_top()), height: f64::from(el.client_height()), ..*view };
+            if line > 0.0 {
+                v.line = line;
+            }
+            let first = v.first(lines, v.top);
+            if cur_first < first || cur_last + 1 > first + v.rows().saturating_sub(1) {
+                v.top = v.top_of(lines, cur_first.saturating_sub(v.rows() / 3)).round();
+                el.set_scroll_top(v.top as i32);
+            }
+            view.set(v);
+        });
+    }
+    let onscroll = {
+        let view = view.clone();
+        Callback::from(move |e: Event| {
+            if let Some(el) = e.target_dyn_into::<web_sys::Element>() {
+                view.set(View {
+                    top: f64::from(el.scroll_top()),
+                    height: f64::from(el.client_height()),
+                    ..*view
+                });
+            }
+        })
+    };
+    let v = *view;
+    let first = v.first(lines, v.top).saturating_sub(OVERSCAN);
+    let last = (v.first(lines, v.top) + v.rows() + OVERSCAN).min(lines);
+    // The list stands where its first line belongs (in proportion: at the scroll position).
+    let offset = if v.total(lines) < MAX_HEIGHT {
+        first as f64 * v.line
+    } else {
+        v.top - (v.first(lines, v.top) - first) as f64 * v.line
+    };
+    // Diagnostics come in line order: those of the drawn lines by binary search.
+    let diags = &doc.diagnostics;
+    let shown = &diags[diags.partition_point(|d| (d.line as usize) < first + 1)..];
+    let shown = &shown[..shown.partition_point(|d| (d.line as usize) <= last)];
+    let l = props.lang;
     let rows = (first..last).map(|i| {
         let block = doc.block_at_line(i);
         let current = (cur_first..=cur_last).contains(&i) && block == Some(props.cursor);
         // An error outranks a warning on the same line (a missing block number must not hide
         // why the control refuses the block).
-        let on_line = || doc.diagnostics.iter().filter(|d| d.line as usize == i + 1);
+        let on_line = || shown.iter().filter(|d| d.line as usize == i + 1);
         let diag = on_line().find(|d| d.is_error()).or_else(|| on_line().next());
         let mut class = classes!("line");
         if current {
@@ -87,26 +224,10 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
         }
     });
     html! {
-        <section class="program-pane" aria-label={title} ref={pane}>
-            <div class="pane-title">{ title }<span class="summary">{ summary }</span></div>
-            <ol class="blocks">{ for rows }</ol>
-        </section>
-    }
-}
-
-/// Scrolls the pane (only the pane, never the page around it) so that the cursor block's
-/// lines are inside it, a third of the way down if they were not.
-fn keep_cursor_in_sight(pane: &web_sys::Element) {
-    let Ok(Some(first)) = pane.query_selector(".line.cursor") else { return };
-    let mut last = first.clone();
-    while let Some(next) = last.next_element_sibling().filter(|n| n.matches(".cursor").unwrap_or(false)) {
-        last = next;
-    }
-    let (view, top, bottom) =
-        (pane.get_bounding_client_rect(), first.get_bounding_client_rect(), last.get_bounding_client_rect());
-    if top.top() < view.top() || bottom.bottom() > view.bottom() {
-        let offset = top.top() - view.top() - view.height() / 3.0;
-        pane.set_scroll_top(pane.scroll_top() + offset as i32);
+        <div class="lines" ref={scroller} {onscroll}>
+            <div class="spacer" style={format!("height:{}px", v.total(lines))} />
+            <ol class="blocks" style={format!("top:{offset}px")} start={(first + 1).to_string()}>{ for rows }</ol>
+        </div>
     }
 }
 

@@ -15,7 +15,7 @@ use schwenkbar_core::sim::State;
 use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
-use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath};
+use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath_part};
 use schwenkbar_app::document::Document;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
@@ -49,6 +49,9 @@ pub struct ScenePaneProps {
     pub on_fraction: Callback<f64>,
 }
 
+/// Steps of the toolpath made at a time (a few ms) before the browser gets a turn.
+const PATH_STEPS: usize = 2000;
+
 /// Frame interval of the animation, ms.
 const FRAME_MS: u64 = 33;
 
@@ -63,18 +66,35 @@ pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
 
 #[function_component(ScenePane)]
 pub fn scene_pane(props: &ScenePaneProps) -> Html {
-    // The run's toolpath, once per simulation.
+    // The run's toolpath, once per simulation, made in parts between frames (a run of
+    // 1,000,000 steps takes seconds) and shown when all in; a new simulation ends the old work.
     let sim_ptr = props.sim.as_ref().map_or(0, |s| Rc::as_ptr(&s.0) as usize);
-    let path = {
-        let (sim, doc) = (props.sim.clone(), props.doc.clone());
-        use_memo(sim_ptr, move |_| match sim {
-            Some(sim) => {
-                let p = toolpath(&sim.0, &doc.program);
-                (SharedPath(p.points.clone().into()), p)
-            }
-            None => (SharedPath::default(), RunPath::default()),
-        })
-    };
+    let path = use_state(|| (SharedPath::default(), Rc::new(RunPath::default())));
+    let path_gen = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
+    {
+        let (sim, doc, path) = (props.sim.clone(), props.doc.clone(), path.clone());
+        let generation = path_gen.borrow().clone();
+        use_effect_with(sim_ptr, move |_| {
+            let gen_now = generation.get() + 1;
+            generation.set(gen_now);
+            let Some(sim) = sim else {
+                path.set((SharedPath::default(), Rc::default()));
+                return;
+            };
+            yew::platform::spawn_local(async move {
+                let mut p = RunPath::default();
+                while !toolpath_part(&sim.0, &doc.program, &mut p, PATH_STEPS) {
+                    yew::platform::time::sleep(Duration::from_millis(0)).await;
+                    if generation.get() != gen_now {
+                        return;
+                    }
+                }
+                if generation.get() == gen_now {
+                    path.set((SharedPath(p.points.clone().into()), Rc::new(p)));
+                }
+            });
+        });
+    }
     let fraction = use_state(|| 1.0_f64);
     // Each new block (or a scrub) ends the previous animation loop.
     let generation = use_mut_ref(|| Rc::new(Cell::new(0_u64)));

@@ -87,10 +87,22 @@ fn pieces(seg: &Segment) -> u32 {
 }
 
 /// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
+#[cfg(test)]
 #[must_use]
 pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
     let mut path = RunPath::default();
-    for st in sim.states(program) {
+    toolpath_part(sim, program, &mut path, usize::MAX);
+    path
+}
+
+/// Adds up to `steps` more steps of the run to `path` (from where it stands); `true` when the
+/// run is all in (a long run is drawn in parts, between frames).
+pub fn toolpath_part(sim: &Simulation, program: &Program, path: &mut RunPath, steps: usize) -> bool {
+    let done = path.segments_after.len();
+    if done >= sim.len() {
+        return true;
+    }
+    for st in sim.states_from(program, done).take(steps) {
         let kin = Kin::new(&sim.machine, st.tool.length);
         for seg in &st.segments {
             if path.points.is_empty() {
@@ -105,7 +117,8 @@ pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
         }
         path.segments_after.push(path.points.len().saturating_sub(1));
     }
-    path
+    // A step that cannot be re-run (never after a finished simulation) ends the path there.
+    path.segments_after.len() >= sim.len() || path.segments_after.len() == done
 }
 
 #[cfg(test)]

@@ -295,10 +295,11 @@ impl Interp {
         m: &[u32],
     ) -> R<()> {
         self.spindle_m(m);
-        let items = match self.pattern.and_then(|b| cx.program.blocks.get(b)).and_then(crate::Block::stored_body) {
-            Some(BlockBody::PatternDef(items)) => items,
-            _ => return Err(SimErrorCode::NoPattern),
-        };
+        let items =
+            match self.pattern.and_then(|b| cx.program.blocks.get(b)).and_then(crate::Block::stored_body) {
+                Some(BlockBody::PatternDef(items)) => items,
+                _ => return Err(SimErrorCode::NoPattern),
+            };
         let mut points = Vec::new();
         for item in items.iter() {
             points.extend(cycles::pattern_points(&self.pattern_values(item)?));

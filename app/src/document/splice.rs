@@ -1,0 +1,186 @@
+//! A changed text parsed again only where it changed (issue 16: typing in a 100,000-block
+//! program). The changed bytes (common prefix and suffix of the old and new text) are widened
+//! to lines where the parser starts afresh — after a line that does not end in `~`, before a
+//! line that starts a block or is blank — and only that region is parsed; the blocks, the
+//! diagnostics and the line index after it move by the change in length and lines. The checks
+//! across blocks (ascending block numbers, BEGIN/END PGM names, a missing END PGM) are made
+//! again over the whole program, in the order the parser makes them. Checked against
+//! [`Document::new`] by `tests/edit_properties.rs`.
+
+use schwenkbar_core::ast::Span;
+use schwenkbar_core::diag::DiagCode;
+use schwenkbar_core::{Block, BlockBody, Diagnostic, Program, Severity, parse};
+
+use super::Document;
+
+/// The region of the text parsed again: `start..old_end` of the old text is `start..new_end`
+/// of the new one.
+struct Region {
+    start: usize,
+    old_end: usize,
+    new_end: usize,
+}
+
+/// Where the parser starts afresh around the change from `old` to `new`, or `None` when only
+/// a full parse is right (a byte order mark, which the parser strips).
+fn region(old: &str, new: &str) -> Option<Region> {
+    if old.starts_with('\u{feff}') || new.starts_with('\u{feff}') {
+        return None;
+    }
+    let (o, n) = (old.as_bytes(), new.as_bytes());
+    let prefix = o.iter().zip(n).take_while(|(a, b)| a == b).count();
+    let room = o.len().min(n.len()) - prefix;
+    let suffix = o.iter().rev().zip(n.iter().rev()).take(room).take_while(|(a, b)| a == b).count();
+    // Back to a line whose line above (unchanged) does not continue into it.
+    let line_start = |at: usize| n[..at].iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+    let mut start = line_start(prefix);
+    while start > 0 {
+        let above = line_start(start - 1);
+        if !new[above..start - 1].trim_end().ends_with('~') {
+            break;
+        }
+        start = above;
+    }
+    // On to a line (unchanged, in the common suffix) that starts a block or is blank.
+    let mut new_end = new.len();
+    let mut at = new.len() - suffix;
+    while let Some(i) = n[at..].iter().position(|&b| b == b'\n') {
+        let line = at + i + 1;
+        let rest = &new[line..];
+        let text = &rest[..rest.find('\n').unwrap_or(rest.len())];
+        if text.trim().is_empty() || matches!(text.trim_start().as_bytes().first(), Some(b'0'..=b'9' | b'/'))
+        {
+            new_end = line;
+            break;
+        }
+        at = line;
+    }
+    if new[start..new_end].starts_with('\u{feff}') {
+        return None;
+    }
+    Some(Region { start, old_end: new_end + old.len() - new.len(), new_end })
+}
+
+/// The checks across blocks are the parser's; they are made again over the spliced program.
+fn across_blocks(code: &DiagCode) -> bool {
+    matches!(
+        code,
+        DiagCode::BlockNumberNotAscending { .. } | DiagCode::PgmNameMismatch { .. } | DiagCode::MissingEndPgm
+    )
+}
+
+fn shift_block(mut b: Block, bytes: isize, lines: isize) -> Block {
+    b.shift(bytes, lines as i32);
+    b
+}
+
+fn shift_diag(mut d: Diagnostic, bytes: isize, lines: isize) -> Diagnostic {
+    d.span = Span::new(d.span.start.wrapping_add_signed(bytes), d.span.end.wrapping_add_signed(bytes));
+    d.line = d.line.wrapping_add_signed(lines as i32);
+    d
+}
+
+impl Document {
+    /// The document after its text became `text`, parsed again only around the change, and the
+    /// index of the first block that may differ (every block before it is the same block).
+    #[must_use]
+    pub fn edited(&self, text: String) -> (Document, usize) {
+        let Some(r) = region(&self.text, &text) else { return (Document::new(text), 0) };
+        let (mut program, diagnostics) = parse(&text[r.start..r.new_end]);
+        let first_line = self.line_starts.partition_point(|&s| s < r.start);
+        let old_lines = self.line_starts.partition_point(|&s| s <= r.old_end) - first_line;
+        let old = &self.program.blocks;
+        let (i0, i1) = (
+            old.partition_point(|b| b.span().start < r.start),
+            old.partition_point(|b| b.span().start < r.old_end),
+        );
+        // The region's own findings and blocks, placed in the text.
+        let (start, line0) = (r.start as isize, first_line as isize);
+        let mut own: Vec<Diagnostic> =
+            self.diagnostics.iter().filter(|d| !across_blocks(&d.code)).cloned().collect();
+        let (d0, d1) = (
+            own.partition_point(|d| d.span.start < r.start),
+            // A finding at the very end of the region's last block (a word missing at the end
+            // of the text) stands at `old_end`: the findings after are the next block's.
+            own.partition_point(|d| d.span.start < old.get(i1).map_or(usize::MAX, |b| b.span().start)),
+        );
+        let region_diags =
+            diagnostics.into_iter().filter(|d| !across_blocks(&d.code)).map(|d| shift_diag(d, start, line0));
+        let mut line_starts = self.line_starts[..=first_line.min(self.line_starts.len() - 1)].to_vec();
+        line_starts.extend(text[r.start..r.new_end].match_indices('\n').map(|(i, _)| r.start + i + 1));
+        let new_lines = line_starts.len() - first_line;
+        let (bytes, lines) =
+            (text.len() as isize - self.text.len() as isize, new_lines as isize - old_lines as isize);
+        let tail = own.split_off(d1).into_iter().map(|d| shift_diag(d, bytes, lines));
+        own.truncate(d0);
+        own.extend(region_diags);
+        own.extend(tail);
+        line_starts.extend(
+            self.line_starts.iter().filter(|&&s| s > r.old_end).map(|&s| s.wrapping_add_signed(bytes)),
+        );
+
+        let mut blocks = Vec::with_capacity(old.len() - (i1 - i0) + program.blocks.len());
+        blocks.extend_from_slice(&old[..i0]);
+        blocks.extend(program.blocks.drain(..).map(|b| shift_block(b, start, line0)));
+        blocks.extend(old[i1..].iter().cloned().map(|b| shift_block(b, bytes, lines)));
+        let first_changed = i0 + old[i0..i1].iter().zip(&blocks[i0..]).take_while(|(a, b)| a == b).count();
+        let mut doc = Document { text, program: Program { blocks }, diagnostics: Vec::new(), line_starts };
+        doc.diagnostics = doc.with_checks_across_blocks(own);
+        (doc, first_changed)
+    }
+
+    /// `own` (every block's own findings, in block order) with the parser's checks across
+    /// blocks after each block's own, as `parse` orders them.
+    fn with_checks_across_blocks(&self, own: Vec<Diagnostic>) -> Vec<Diagnostic> {
+        let blocks = &self.program.blocks;
+        let mut out = Vec::with_capacity(own.len());
+        let mut own = own.into_iter().peekable();
+        let (mut previous, mut begin, mut end_seen) = (None::<u32>, None::<&str>, false);
+        for (i, b) in blocks.iter().enumerate() {
+            let next_start = blocks.get(i + 1).map_or(usize::MAX, |n| n.span().start);
+            while let Some(d) = own.next_if(|d| d.span.start < next_start) {
+                out.push(d);
+            }
+            let at = |code, end| {
+                Diagnostic::new(Severity::Error, code, Span::new(b.span().start, end), b.line(), b.column())
+            };
+            if let Some(n) = b.number() {
+                if let Some(prev) = previous.filter(|&p| n <= p) {
+                    let head = self.text.get(b.span().start..).unwrap_or("");
+                    let t = head.trim_start_matches('/');
+                    let digits = head.len() - t.len() + t.bytes().take_while(u8::is_ascii_digit).count();
+                    let code = DiagCode::BlockNumberNotAscending { previous: prev, number: n };
+                    out.push(at(code, b.span().start + digits));
+                }
+                previous = Some(n);
+            }
+            match b.stored_body() {
+                Some(BlockBody::BeginPgm { name, .. }) if begin.is_none() => begin = Some(name),
+                Some(BlockBody::EndPgm { name, .. }) => {
+                    end_seen = true;
+                    if let Some(first) = begin.filter(|f| !f.eq_ignore_ascii_case(name)) {
+                        let code = DiagCode::PgmNameMismatch { begin: first.to_owned(), end: name.clone() };
+                        out.push(at(code, b.span().end));
+                    }
+                }
+                _ => {}
+            }
+        }
+        out.extend(own);
+        if begin.is_some() && !end_seen {
+            // Where the parser puts it: after the last block's last line, counted from there.
+            let last_line = self.block_lines(blocks.len().saturating_sub(1)).map_or(0, |(_, l)| l);
+            let from = self.line_starts.get(last_line).copied().unwrap_or(0);
+            let column = self.text.get(from..).map_or(0, |s| s.chars().count()) as u32 + 1;
+            let at = self.text.len();
+            out.push(Diagnostic::new(
+                Severity::Warning,
+                DiagCode::MissingEndPgm,
+                Span::new(at, at),
+                last_line as u32 + 1,
+                column,
+            ));
+        }
+        out
+    }
+}

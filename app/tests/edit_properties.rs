@@ -1,0 +1,121 @@
+//! Issue 16: a text edit parsed again only where it changed, and the run resumed from a
+//! checkpoint, give exactly what parsing and simulating the new text from scratch gives.
+
+use proptest::prelude::*;
+use schwenkbar_app::document::Document;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
+
+/// Programs with cycles and their `~` lines, labels, calls and jumps, contours with RND/CHF and
+/// radius compensation (look-ahead), a missing END PGM, blank and unnumbered lines.
+const PROGRAMS: [&str; 6] = [
+    include_str!("../../tests/fixtures/sim/contour_rl.h"),
+    include_str!("../../tests/fixtures/sim/cycle_calls.h"),
+    include_str!("../../tests/fixtures/sim/fn_jump_loop.h"),
+    include_str!("../../tests/fixtures/sim/call_lbl.h"),
+    include_str!("../../static/programs/musterprogramm1.h"),
+    "0 BEGIN PGM K MM\n\n1 TOOL CALL 1 Z S1000\nL X+0 Y+0 R0 FMAX\n2 CYCL DEF 200 BOHREN ~\n\n  Q200=+2 ~\n3 L X+10 RND R2\n",
+];
+
+/// What is typed or pasted: parts of blocks, line breaks, `~`, numbers, labels, corners, junk.
+const PIECES: [&str; 18] = [
+    "",
+    "\n",
+    "~",
+    " ~\n",
+    "  Q201=-5 ;TIEFE",
+    "1",
+    "9 ",
+    "/",
+    "LBL 1\n",
+    "CALL LBL 1 REP 2\n",
+    "RND R3\n",
+    "CHF 2\n",
+    "L X+5 Y+5 RL F100\n",
+    "Ü",
+    "\r\n",
+    ";x",
+    "END PGM K MM\n",
+    "7 FN 12: IF +Q1 LT +3 GOTO LBL 1\n",
+];
+
+fn edit(text: &str, at: usize, cut: usize, piece: &str) -> String {
+    let mut at = at % (text.len() + 1);
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    let mut end = (at + cut).min(text.len());
+    while !text.is_char_boundary(end) {
+        end += 1;
+    }
+    format!("{}{piece}{}", &text[..at], &text[end..])
+}
+
+fn assert_same(got: &Document, want: &Document) {
+    assert_eq!(got.text, want.text);
+    assert_eq!(got.program, want.program);
+    let place =
+        |d: &Document| d.program.blocks.iter().map(|b| (b.span(), b.line(), b.column())).collect::<Vec<_>>();
+    assert_eq!(place(got), place(want), "spans and lines");
+    assert_eq!(got.diagnostics, want.diagnostics);
+    assert_eq!(got.line_count(), want.line_count());
+    for i in 0..=want.line_count() {
+        assert_eq!(got.line(i), want.line(i));
+        assert_eq!(got.block_at_line(i), want.block_at_line(i));
+    }
+    for b in 0..want.program.blocks.len() {
+        assert_eq!(got.block_lines(b), want.block_lines(b));
+    }
+}
+
+fn assert_same_run(got: &Simulation, want: &Simulation, doc: &Document) {
+    assert_eq!(got.records, want.records);
+    assert_eq!(got.first_step, want.first_step);
+    assert_eq!(got.error, want.error);
+    let states = |s: &Simulation| s.states(&doc.program).collect::<Vec<_>>();
+    assert_eq!(states(got), states(want));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn an_edit_parsed_and_run_again_in_part_equals_a_fresh_parse_and_run(
+        program in 0..PROGRAMS.len(),
+        edits in prop::collection::vec((any::<usize>(), 0usize..40, 0..PIECES.len()), 1..4),
+        interval in 1usize..6,
+    ) {
+        let machine = Machine::builtin("ac-table").expect("shipped");
+        let options = SimOptions { checkpoint_interval: interval, ..SimOptions::default() };
+        let mut doc = Document::new(PROGRAMS[program].to_owned());
+        let mut sim = simulate(&doc.program, &machine, &options);
+        for (at, cut, piece) in edits {
+            let text = edit(&doc.text, at, cut, PIECES[piece]);
+            let (next, unchanged) = doc.edited(text.clone());
+            let fresh = Document::new(text);
+            assert_same(&next, &fresh);
+            prop_assert!(next.program.blocks[..unchanged] == doc.program.blocks[..unchanged]);
+            let resumed = sim.resumed(&next.program, unchanged);
+            assert_same_run(&resumed, &simulate(&fresh.program, &machine, &options), &fresh);
+            (doc, sim) = (next, resumed);
+        }
+    }
+}
+
+#[test]
+fn emptied_and_refilled_text_and_an_edit_at_either_end() {
+    let machine = Machine::builtin("ac-table").expect("shipped");
+    let options = SimOptions { checkpoint_interval: 2, ..SimOptions::default() };
+    let mut doc = Document::new(PROGRAMS[0].to_owned());
+    let mut sim = simulate(&doc.program, &machine, &options);
+    for text in
+        ["", PROGRAMS[1], &PROGRAMS[1].replace("0 BEGIN", "BEGIN"), &format!("{}21 L X+1\n", PROGRAMS[1])]
+    {
+        let (next, unchanged) = doc.edited(text.to_owned());
+        let fresh = Document::new(text.to_owned());
+        assert_same(&next, &fresh);
+        let resumed = sim.resumed(&next.program, unchanged);
+        assert_same_run(&resumed, &simulate(&fresh.program, &machine, &options), &fresh);
+        (doc, sim) = (next, resumed);
+    }
+}
