@@ -152,15 +152,25 @@ impl Iterator for Lines<'_> {
     }
 }
 
-fn newlines(run: &[u8]) -> u8 {
-    run.iter().fold(0, |n, &b| n + u8::from(b == b'\n'))
+const ONES: u64 = 0x0101_0101_0101_0101;
+const HIGH: u64 = 0x8080_8080_8080_8080;
+
+/// `\n`s in `b`, eight bytes at a time (wasm32 has no vectorised byte loop).
+fn count_newlines(b: &[u8]) -> usize {
+    let mut chunks = b.chunks_exact(8);
+    let mut n = 0;
+    for chunk in &mut chunks {
+        let word = u64::from_le_bytes(chunk.try_into().unwrap_or_default()) ^ (ONES * u64::from(b'\n'));
+        // Exactly the high bit of each zero byte (no carries between bytes).
+        let low7 = !HIGH;
+        n += (!(((word & low7) + low7) | word | low7)).count_ones() as usize;
+    }
+    n + chunks.remainder().iter().filter(|&&c| c == b'\n').count()
 }
 
 /// Index of the first `\n`, eight bytes at a time: the parser's fast path spends a quarter of its
 /// time finding line ends byte by byte otherwise.
 fn find_newline(b: &[u8]) -> Option<usize> {
-    const ONES: u64 = 0x0101_0101_0101_0101;
-    const HIGH: u64 = 0x8080_8080_8080_8080;
     let mut chunks = b.chunks_exact(8);
     let mut at = 0;
     for chunk in &mut chunks {
@@ -213,9 +223,7 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     let src = src.strip_prefix('\u{feff}').unwrap_or(src);
     let mut p = Parser { src, blocks: Vec::new(), diags: Vec::new(), cx: Cx::new(), block_lines: Vec::new() };
     // One block per line in the common case: reserve once instead of doubling (memory budget).
-    // (Counted in runs of 255 bytes with a byte-sized count, which vectorises well.)
-    let lines: usize = src.as_bytes().chunks(255).map(|run| usize::from(newlines(run))).sum();
-    p.blocks.reserve_exact(lines + 1);
+    p.blocks.reserve_exact(count_newlines(src.as_bytes()) + 1);
     let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
     let mut previous_number: Option<u32> = None;
     let mut begin: Option<String> = None;
