@@ -219,7 +219,7 @@ impl Interp {
             let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
             let target = MachineAxes { linear: l, rotary: rot, letters: self.axes.letters };
             let (ics_to_wcs, from) = (self.tf.ics_to_wcs(), self.programmed());
-            let kin = tcpm.then(|| self.kin.clone());
+            let kin = tcpm.then_some(self.kin);
             self.go(cx, rec, idx, kind, target, delta, rate, || match kin {
                 // The tip on the straight line between the programmed points (W-CS).
                 Some(kin) => SegmentPath::Tcpm(Box::new(TcpmPath {
