@@ -230,10 +230,13 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     let mut end_seen = false;
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
-        p.block_lines.clear();
-        p.block_lines.push(first);
         // Tried first: its lines are never blank and never continued (it refuses `~`).
         let fast = if fast_path { fast::straight_line(text) } else { None };
+        if fast.is_some() || !text.trim().is_empty() {
+            // A blank line keeps the last block's lines: a missing END PGM is placed after them.
+            p.block_lines.clear();
+            p.block_lines.push(first);
+        }
         let block = if let Some(f) = fast {
             let span = Span::new(first.start + f.lead, first.end);
             Block::compact(f.number, span, first.number, f.line)
