@@ -6,7 +6,11 @@
 #   Stock: time to cut Musterprogramm 1 at 0.25 mm (≤ 300 ms), its memory (≤ 64 MB) and the worst
 #   animation frame's cutting and meshing natively; in the browser the whole cut (≤ 1 s) and block 13
 #   animated at 1920×1080, worst and mean frame (≤ 8 ms) (issue 14).
-#   Browser: key press → updated screen, Musterprogramm 1 and 100,000 blocks (issue 6), and the
+#   Command line: `run` and `check` on 100,000 blocks against the JS peer tnc-sim, when
+#   TNC_SIM_DIR names a checkout of it (scripts/bench_peer.sh; issue 16).
+#   Browser: key press → updated screen, Musterprogramm 1 and 100,000 blocks (issue 6); IMPORT of
+#   1,000,000 blocks → first screen, stepping and jumping there, a keystroke in the 100,000-block
+#   text editor (issue 16); and the
 #   bundle size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,6 +21,7 @@ cargo run --release -p schwenkbar-core --example bench_parse
 cargo run --release -p schwenkbar-core --example bench_solve
 cargo run --release -p schwenkbar-core --example bench_sim
 cargo run --release -p schwenkbar-core --example bench_stock
-wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_render --test browser_stock -- --nocapture \
+bash scripts/bench_peer.sh
+wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_big --test browser_render --test browser_stock -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'
 bash scripts/bundle.sh | tail -1

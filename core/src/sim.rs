@@ -39,6 +39,11 @@
 //! * `STAY`: nothing moves; Q120–Q122 hold the axis angles for a later `L A+Q120 C+Q122`. The
 //!   block still gets a [`SegmentKind::SwivelStay`] segment (axes constant, the plane's turn in
 //!   [`SegmentPath::Stay`]) so the view can show the coordinate system turning.
+//! * TCPM (`M128` … `M129`, issue 17): a block with rotary axes keeps the tool tip on the
+//!   programmed point; the linear axes are `L(θ) = W_θ(preset + p(f)) − H_θ(0)` with the rotary
+//!   axes linear in time and the tip `p(f)` straight from the start to the programmed end (W-CS)
+//!   ([`SegmentPath::Tcpm`]); timing in [`crate::unconfirmed::TCPM_FROM_BLOCK_START`].
+//!   `FUNCTION TCPM` is not read yet.
 //!
 //! # Contour (issue 15)
 //! `CC`, `C`, `CR`, `CT`, polar `LP`/`CP` (helix with `IZ`), `RND` and `CHF` run in the main
@@ -90,7 +95,7 @@ use crate::solve::Explanation;
 
 pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
-pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath};
+pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
 pub use transform::{ActiveTransform, Level, Transforms};
 
 use interp::{Interp, Rec};

@@ -60,6 +60,8 @@ pub enum Decision {
     CompensationOnlyWhenTilted,
     /// Simulator: [`MOVE_DEFAULT_DIST`].
     MoveDefaultDist,
+    /// Simulator: [`TCPM_FROM_BLOCK_START`].
+    TcpmTiming,
     /// Simulator: [`MB_RETRACT_AT_RAPID`].
     MbRetractRapid,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
@@ -109,7 +111,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 38] = [
+    pub const ALL: [Decision; 39] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -131,6 +133,7 @@ impl Decision {
         Decision::TransformLevels,
         Decision::CompensationOnlyWhenTilted,
         Decision::MoveDefaultDist,
+        Decision::TcpmTiming,
         Decision::MbRetractRapid,
         Decision::RotaryFeed,
         Decision::Cycle19Spatial,
@@ -237,6 +240,10 @@ impl Decision {
             Decision::MoveDefaultDist => Text::new(
                 "MOVE ohne DIST: Drehpunkt = Werkzeugspitze (DIST 0), die Spitze bleibt auf dem Werkstück stehen.",
                 "MOVE without DIST: centre of rotation = tool tip (DIST 0), the tip stays on the workpiece.",
+            ),
+            Decision::TcpmTiming => Text::new(
+                "M128 wirkt ab Satzanfang (eine Drehachsbewegung im selben Satz wird schon ausgeglichen), M129 am Satzende; TCPM gleicht auch ohne Schwenkung aus, die Werkzeugspitze fährt geradlinig zwischen den programmierten Punkten.",
+                "M128 acts from the start of its block (a rotary move in the same block is already compensated), M129 at its end; TCPM compensates with or without a tilt, the tool tip runs straight between programmed points.",
             ),
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken.",
@@ -469,6 +476,12 @@ pub const TRANSFORM_LEVELS: bool = true;
 /// cycle 19) is active; without it, the rotary axes are ignored (3-axis behaviour, `L Z…` moves
 /// the Z axis) even after `PLANE RESET STAY` left them tilted. **UNCONFIRMED**.
 pub const COMPENSATION_ONLY_WHEN_TILTED: bool = true;
+
+/// `M128` (TCPM) acts from the start of its block, so a rotary move in the same block is
+/// already compensated; `M129` acts at the end of its block. TCPM compensates whether or not a
+/// tilt is active, and the tool tip runs straight between programmed points (as `FUNCTION TCPM
+/// F TCP AXIS POS` would). DOMAIN.md §6 names M128/M129, not when they act. **UNCONFIRMED**.
+pub const TCPM_FROM_BLOCK_START: bool = true;
 
 /// `PLANE … MOVE` without `DIST`: the centre of rotation is the tool tip itself (DIST = 0), so
 /// the tool tip keeps its place on the workpiece. **UNCONFIRMED** default.

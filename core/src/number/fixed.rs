@@ -37,29 +37,32 @@ pub fn write_fixed(out: &mut String, value: f64, decimals: usize, plus: bool) {
     let up = above_half > -err || (above_half == -err && floor % 2.0 == 1.0);
     // Below 2^52 + 1: fits u64 exactly.
     let n = floor as u64 + u64::from(up);
-    if value.is_sign_negative() {
-        out.push('-');
-    } else if plus {
-        out.push('+');
-    }
-    let unit = 10u64.pow(decimals as u32);
-    push_u64(out, n / unit, 1);
-    if decimals > 0 {
-        out.push('.');
-        push_u64(out, n % unit, decimals);
-    }
-}
-
-/// Appends `n` in decimal with at least `width` digits (leading zeros).
-fn push_u64(out: &mut String, mut n: u64, width: usize) {
-    let mut buf = [b'0'; 20];
-    let mut i = buf.len();
-    while n > 0 || buf.len() - i < width {
+    // Written backwards into one buffer: at most 16 integer digits (n < 2^53), 15 decimals,
+    // the point and the sign.
+    let mut buf = [b'0'; 34];
+    let (mut i, mut m, mut k) = (buf.len(), n, 0);
+    // The decimals, the point, then the integer digits (at least one).
+    loop {
+        if k == decimals && decimals > 0 {
+            i -= 1;
+            buf[i] = b'.';
+        }
         i -= 1;
-        buf[i] = b'0' + (n % 10) as u8;
-        n /= 10;
+        buf[i] = b'0' + (m % 10) as u8;
+        m /= 10;
+        k += 1;
+        if k > decimals && m == 0 {
+            break;
+        }
     }
-    // Only ASCII digits were written.
+    if value.is_sign_negative() {
+        i -= 1;
+        buf[i] = b'-';
+    } else if plus {
+        i -= 1;
+        buf[i] = b'+';
+    }
+    // Only ASCII was written.
     out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
 }
 

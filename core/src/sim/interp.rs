@@ -115,6 +115,8 @@ pub(crate) struct Interp {
     pattern: Option<usize>,
     /// `M89` is active: every positioning block calls the cycle.
     m89: bool,
+    /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
+    tcpm: bool,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -127,14 +129,31 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
-/// M functions with a motion meaning the simulator does not model (M92 OEM position, M128/M129
-/// TCPM, M140 retract, M197 extending the elements at outside corners instead of the transition
-/// arc); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 5] = [92, 128, 129, 140, 197];
+/// M functions with a motion meaning the simulator does not model (M92 OEM position, M140
+/// retract, M197 extending the elements at outside corners instead of the transition arc); a
+/// block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 3] = [92, 140, 197];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
 pub const STAY_SECONDS: f64 = 1.0;
+
+/// What a block's M functions tell the trainee: TCPM switched on or off, or a function the
+/// simulator does not model.
+fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
+    if m.contains(&128) {
+        note(rec, || {
+            Text::new(
+                "M128: TCPM aktiv – die Werkzeugspitze bleibt auf dem programmierten Punkt, die Linearachsen gleichen die Drehachsen aus",
+                "M128: TCPM on – the tool tip stays on the programmed point, the linear axes compensate the rotary axes",
+            )
+        });
+    } else if m.contains(&129) {
+        note(rec, || Text::new("M129: TCPM aus", "M129: TCPM off"));
+    } else if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
+        note(rec, || Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
+    }
+}
 
 fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
     if let Some(r) = rec.as_deref_mut() {
@@ -214,6 +233,7 @@ impl Interp {
             comp: None,
             pattern: None,
             m89: false,
+            tcpm: false,
         };
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
@@ -224,8 +244,10 @@ impl Interp {
         self.pc >= program.blocks.len()
     }
 
+    /// The linear axes follow the rotary axes: with a tilt, and always with TCPM (M128), which
+    /// is the kinematic transformation itself (DOMAIN.md §6).
     fn compensating(&self) -> bool {
-        self.tf.tilt.is_some() || !unconfirmed::COMPENSATION_ONLY_WHEN_TILTED
+        self.tcpm || self.tf.tilt.is_some() || !unconfirmed::COMPENSATION_ONLY_WHEN_TILTED
     }
 
     /// W-CS → linear axes as the control computes it for rotary axes `rotary`.
@@ -403,11 +425,7 @@ impl Interp {
             }
             BlockBody::MFunctions(m) => {
                 self.spindle_m(m);
-                if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
-                    note(&mut rec, || {
-                        Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated"))
-                    });
-                }
+                m_note(&mut rec, m);
                 if m.contains(&99) {
                     self.call_cycle(cx, &mut rec, idx)?;
                 }
@@ -495,12 +513,23 @@ impl Interp {
                 5 => self.spindle.dir = SpindleDir::Off,
                 126 => self.m126 = true,
                 127 => self.m126 = false,
+                // From the block's start (unconfirmed::TCPM_FROM_BLOCK_START); the programmed
+                // position is taken anew from where the tool tip is.
+                128 if !self.tcpm && unconfirmed::TCPM_FROM_BLOCK_START => {
+                    self.tcpm = true;
+                    self.sync_pos();
+                }
                 _ => {}
             }
         }
     }
 
     fn end_m(&mut self, m: &[u32]) {
+        let on = if m.contains(&129) { false } else { self.tcpm || m.contains(&128) };
+        if on != self.tcpm {
+            self.tcpm = on;
+            self.sync_pos();
+        }
         if m.iter().any(|&f| f == 30 || f == 2) {
             self.spindle.dir = SpindleDir::Off;
             self.ended = true;

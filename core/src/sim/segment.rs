@@ -84,6 +84,19 @@ pub enum SegmentPath {
     /// the linear axes at fraction f are `centre + u·cos(f·sweep) + v·sin(f·sweep) + f·lead`
     /// ([`ArcPath`]), so every fraction is exactly on the arc.
     Arc(Box<ArcPath>),
+    /// A block with rotary axes under TCPM (M128): the rotary axes linear in time; the linear
+    /// axes follow so that the tool tip runs straight from `from` to `to` (W-CS) — standing
+    /// still when the block programs only rotary axes.
+    Tcpm(Box<TcpmPath>),
+}
+
+/// The tool tip's path under TCPM ([`SegmentPath::Tcpm`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TcpmPath {
+    pub kin: Kin,
+    /// The tip in W-CS at the start and at the end.
+    pub from: DVec3,
+    pub to: DVec3,
 }
 
 /// An arc in the linear axes (M-CS): the I-CS arc carried through the fixed I-CS → axes map,
@@ -160,6 +173,8 @@ impl Segment {
             SegmentPath::Linear | SegmentPath::Stay { .. } => self.start.linear.lerp(self.end.linear, f),
             SegmentPath::Move(m) => move_linear(m, rotary),
             SegmentPath::Arc(a) => a.at(f),
+            // L = W(preset + tip) − H(0), as for MOVE (sim.rs doc).
+            SegmentPath::Tcpm(t) => t.kin.wcs_to_linear(rotary).apply(t.from.lerp(t.to, f)),
         };
         MachineAxes { linear, rotary, letters: self.start.letters }
     }

@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::sim::arc::Elem;
+use crate::sim::segment::TcpmPath;
 
 /// Duration (s) = distance / (feed per minute) · 60; the longer of the linear (`lin`, mm) and
 /// rotary (`rot`, °) shares wins (sim.rs doc).
@@ -177,9 +178,7 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
-        if let Some(&m) = line.m.iter().find(|&&m| NOT_SIMULATED_M.contains(&m)) {
-            note(rec, || Text::owned(format!("M{m} nicht simuliert"), format!("M{m} not simulated")));
-        }
+        m_note(rec, &line.m);
         self.check_rotary(cx, rot)?;
         // A straight contour element in the working plane: it ends at the tangent point when a
         // RND/CHF follows, and leaves its direction for a CT.
@@ -204,7 +203,10 @@ impl Interp {
         if lin_prog || rot_prog {
             self.comp = None;
         }
-        if lin_prog && !m91 {
+        // TCPM: the tip keeps the programmed point while the rotary axes move, whether or not
+        // the block also programs linear axes.
+        let tcpm = self.tcpm && rot_prog && !m91;
+        if (lin_prog && !m91) || tcpm {
             l = if rot_prog {
                 self.wcs_to_linear(rot).after(&self.tf.ics_to_wcs()).apply(p)
             } else {
@@ -216,11 +218,21 @@ impl Interp {
             let delta = self.rotary_delta(cx, rot, self.m126);
             let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
             let target = MachineAxes { linear: l, rotary: rot, letters: self.axes.letters };
-            self.go(cx, rec, idx, kind, target, delta, rate, || SegmentPath::Linear);
+            let (ics_to_wcs, from) = (self.tf.ics_to_wcs(), self.programmed());
+            let kin = tcpm.then_some(self.kin);
+            self.go(cx, rec, idx, kind, target, delta, rate, || match kin {
+                // The tip on the straight line between the programmed points (W-CS).
+                Some(kin) => SegmentPath::Tcpm(Box::new(TcpmPath {
+                    kin,
+                    from: ics_to_wcs.apply(from),
+                    to: ics_to_wcs.apply(p),
+                })),
+                None => SegmentPath::Linear,
+            });
             if rot_prog {
                 self.refresh();
             }
-            if lin_prog && !m91 {
+            if (lin_prog && !m91) || tcpm {
                 self.pos_i = p;
             } else {
                 self.pos_i = self.map.inverse_orthogonal().apply(self.axes.linear);

@@ -1,0 +1,154 @@
+//! TCPM (M128/M129, issue 17): with M128 active a block with rotary axes keeps the tool tip on
+//! the programmed point in the W-CS while the linear axes compensate, at the block's end and all
+//! along its motion; M129 cancels it. The oracle is the rigid-body forward model
+//! (`Kin::tip_wcs` of the simulated axes), not the inverse map the simulator uses.
+
+use glam::DVec3;
+use proptest::prelude::*;
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::parse;
+use schwenkbar_core::sim::{Kin, SegmentPath, SimOptions, Simulation, simulate};
+use schwenkbar_testkit::assert_close;
+
+/// The tool tip along a compensated rotary move (issue 17).
+const TIP: f64 = 1e-6;
+
+fn machines() -> Vec<Machine> {
+    Machine::builtin_ids().iter().filter_map(|id| Machine::builtin(id).ok()).collect()
+}
+
+/// `A+12.5 C-30` for the machine's two rotary axes.
+fn rotary_words(m: &Machine, a: [f64; 2]) -> String {
+    let j = m.joints();
+    format!("{}{:+} {}{:+}", j[0].axis.letter(), a[0], j[1].axis.letter(), a[1])
+}
+
+/// A rotary target inside the axis' limits: `u` ∈ [0, 1) across the range (±120° when endless
+/// or unlimited).
+fn inside(m: &Machine, u: [f64; 2]) -> [f64; 2] {
+    let j = m.joints();
+    let pick = |k: usize| match j[k].limits.filter(|_| !j[k].endless) {
+        Some(l) => {
+            let (lo, hi) = (l.min.max(-120.0), l.max.min(120.0));
+            lo + u[k] * (hi - lo)
+        }
+        None => -120.0 + u[k] * 240.0,
+    };
+    // Four decimals, as a program writes them.
+    [(pick(0) * 1e4).round() / 1e4, (pick(1) * 1e4).round() / 1e4]
+}
+
+/// The tip (W-CS) after each step and along every segment, by the forward model.
+fn tips_along(m: &Machine, program: &str) -> (Simulation, Vec<(DVec3, Vec<DVec3>)>) {
+    let (p, diags) = parse(program);
+    assert!(diags.iter().all(|d| !d.is_error()), "{program}: {diags:?}");
+    let sim = simulate(&p, m, &SimOptions::default());
+    let tips = sim
+        .states(&p)
+        .map(|s| {
+            let kin = Kin::new(m, s.tool.length);
+            let along = s
+                .segments
+                .iter()
+                .flat_map(|seg| (0..=8).map(move |k| seg.axes_at(f64::from(k) / 8.0)))
+                .map(|a| kin.tip_wcs(&a))
+                .collect();
+            (s.tip_wcs, along)
+        })
+        .collect();
+    (sim, tips)
+}
+
+fn program(m: &Machine, start: DVec3, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> String {
+    format!(
+        "0 BEGIN PGM TCPM MM\n1 TOOL CALL 1 Z S2000\n2 L X{:+.4} Y{:+.4} Z{:+.4} R0 FMAX\n3 L {} F1000 M128\n4 L {} F1000\n5 L X{:+.4} {} F1000\n6 M129\n7 L {} FMAX\n8 END PGM TCPM MM\n",
+        start.x,
+        start.y,
+        start.z,
+        rotary_words(m, a),
+        rotary_words(m, b),
+        start.x + 5.0,
+        rotary_words(m, c),
+        rotary_words(m, a),
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// M128 keeps the tip: blocks 3 and 4 (rotary axes only) hold it at the programmed point,
+    /// block 5 (X and rotary axes) runs it straight by +5 mm in X; after M129, block 7 moves
+    /// the rotary axes alone and the tip goes with them.
+    #[test]
+    fn m128_keeps_the_tool_tip_on_the_programmed_point(
+        x in -40.0..40.0f64, y in -40.0..40.0f64, z in 0.0..60.0f64,
+        u in prop::array::uniform6(0.0..1.0f64),
+    ) {
+        let mut checked = 0;
+        for m in machines() {
+            // Near the table, or 150 mm higher where a swivel head would leave the Z travel.
+            let runs = [0.0, 150.0].into_iter().find_map(|lift| {
+                let start = DVec3::new((x * 1e4).round() / 1e4, (y * 1e4).round() / 1e4, (z * 1e4).round() / 1e4 + lift);
+                let (a, b, c) = (inside(&m, [u[0], u[1]]), inside(&m, [u[2], u[3]]), inside(&m, [u[4], u[5]]));
+                let text = program(&m, start, a, b, c);
+                let (sim, tips) = tips_along(&m, &text);
+                // A compensated position outside the travel is the control's limit error.
+                sim.error.is_none().then_some((text, tips))
+            });
+            let Some((text, tips)) = runs else { continue };
+            checked += 1;
+            let tip = tips[2].0;
+            for step in [3, 4] {
+                assert_close!(tips[step].0, tip, TIP, "{} step {step}\n{text}", m.id);
+                for along in &tips[step].1 {
+                    assert_close!(*along, tip, TIP, "{} along step {step}\n{text}", m.id);
+                }
+            }
+            let moved = tip + DVec3::X * 5.0;
+            assert_close!(tips[5].0, moved, TIP, "{} step 5\n{text}", m.id);
+            let n = tips[5].1.len();
+            for (k, along) in tips[5].1.iter().enumerate() {
+                // Evenly spaced on the straight line from `tip` to `moved`.
+                let expected = tip.lerp(moved, k as f64 / (n - 1) as f64);
+                assert_close!(*along, expected, TIP, "{} along step 5\n{text}", m.id);
+            }
+            assert_close!(tips[6].0, moved, TIP, "{} M129 block\n{text}", m.id);
+        }
+        prop_assert!(checked >= 4, "only {checked} machines could run the case");
+    }
+}
+
+/// Without M128 (and without a tilt) a rotary move leaves the linear axes where they are: the
+/// tip travels with the table or the head. With M128 the same block keeps it; after M129 it
+/// travels again.
+#[test]
+fn without_m128_a_rotary_move_carries_the_tip_along() {
+    let m = Machine::builtin("ac-table").expect("shipped");
+    let text = "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S2000\n2 L X+20 Y+10 Z+30 R0 FMAX\n3 L A+30 C+45 FMAX\n4 L A+0 C+0 FMAX M128\n5 L A+30 C+45 FMAX\n6 L A+0 C+0 FMAX M129\n7 L A+30 C+45 FMAX\n8 END PGM T MM\n";
+    let (sim, tips) = tips_along(&m, text);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let start = tips[2].0;
+    assert!((tips[3].0 - start).length() > 10.0, "the tip went with the table: {:?}", tips[3].0);
+    assert_close!(tips[4].0, tips[3].0, TIP, "M128 from the block's start holds the tip");
+    assert_close!(tips[5].0, tips[3].0, TIP, "TCPM holds it");
+    assert_close!(tips[6].0, tips[3].0, TIP, "M129 acts at the block's end");
+    assert!((tips[7].0 - tips[6].0).length() > 10.0, "after M129 the tip moves again");
+    // The compensated blocks are drawn as TCPM paths, the others as straight axis moves.
+    let (p, _) = parse(text);
+    let kinds: Vec<bool> =
+        sim.states(&p).map(|s| s.segments.iter().any(|g| matches!(g.path, SegmentPath::Tcpm(_)))).collect();
+    assert_eq!(kinds, [false, false, false, false, true, true, true, false, false]);
+}
+
+/// The run says when TCPM goes on and off, in German and English.
+#[test]
+fn m128_and_m129_are_said_in_the_run() {
+    let m = Machine::builtin("ac-table").expect("shipped");
+    let (p, _) = parse("0 BEGIN PGM T MM\n1 M128\n2 L A+10 FMAX\n3 M129\n4 END PGM T MM\n");
+    let sim = simulate(&p, &m, &SimOptions::default());
+    let messages: Vec<_> = sim.states(&p).map(|s| s.message).collect();
+    let on = messages[1].as_ref().expect("M128 said");
+    assert!(on.de.contains("TCPM aktiv") && on.en.contains("TCPM on"), "{on:?}");
+    let off = messages[3].as_ref().expect("M129 said");
+    assert!(off.de.contains("TCPM aus") && off.en.contains("TCPM off"), "{off:?}");
+}
