@@ -166,12 +166,19 @@ async fn the_program_list_draws_only_the_lines_in_sight() {
 
 /// Brings line `line` (0-based) of the list into sight and returns its drawn row.
 async fn list_line(root: &web_sys::Element, line: usize) -> web_sys::Element {
-    let lines = query(root, ".program-pane .lines").expect("the list");
-    let height = f64::from(query(root, ".program-pane .line").expect("a line").client_height());
-    lines.set_scroll_top((line.saturating_sub(2) as f64 * height) as i32);
-    lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
-    settle().await;
-    query(root, &format!(".program-pane .line[data-line='{}']", line + 1)).expect("the line is drawn")
+    // Scrolled again when the list was still placing itself (it brings the cursor block into
+    // sight once it is drawn).
+    for _ in 0..5 {
+        let lines = query(root, ".program-pane .lines").expect("the list");
+        let height = f64::from(query(root, ".program-pane .line").expect("a line").client_height());
+        lines.set_scroll_top((line.saturating_sub(2) as f64 * height) as i32);
+        lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
+        settle().await;
+        if let Some(drawn) = query(root, &format!(".program-pane .line[data-line='{}']", line + 1)) {
+            return drawn;
+        }
+    }
+    panic!("line {line} is never drawn");
 }
 
 /// Issue 16: the text editor of a 100,000-block program holds a window around the cursor
