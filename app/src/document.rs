@@ -5,6 +5,9 @@
 use schwenkbar_core::{Diagnostic, Program, parse};
 
 mod splice;
+mod window;
+
+pub use window::{WHOLE_UP_TO, byte_of_utf16, utf16_of_byte};
 
 #[derive(Debug, Clone)]
 pub struct Document {

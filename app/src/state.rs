@@ -144,6 +144,11 @@ pub enum Action {
     CursorTo(usize),
     /// The program text changed (typed or pasted in the editor).
     SetText(String),
+    /// The text editor's window, bytes `at` of the program text, now reads `text`.
+    EditText {
+        at: std::ops::Range<usize>,
+        text: String,
+    },
     ToggleTextEditing,
     ShowMachines,
     SelectMachine(String),
@@ -245,6 +250,18 @@ impl AppState {
                 unchanged = Some(same);
                 next.cursor = self.cursor.min(next.doc.last_index());
             }
+            Action::EditText { at, text } => match self.doc.replaced(at, &text) {
+                Some((doc, same)) => {
+                    next.doc = Rc::new(doc);
+                    unchanged = Some(same);
+                    next.cursor = self.cursor.min(next.doc.last_index());
+                }
+                // The editor's window is made from this document, so this cannot happen; if
+                // it does, the typing is said lost rather than put in the wrong place.
+                None => {
+                    next.message = Some(Text::new("Eingabe nicht übernommen", "Input not taken"));
+                }
+            },
             Action::ToggleTextEditing => {
                 next.text_editing = !self.text_editing;
                 if next.text_editing {

@@ -119,3 +119,38 @@ fn emptied_and_refilled_text_and_an_edit_at_either_end() {
         (doc, sim) = (next, resumed);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// What the text editor does (issue 16): a window of the text typed in and put back in
+    /// place is the same document as the whole text edited the same way.
+    #[test]
+    fn an_edit_in_the_window_equals_the_same_edit_of_the_whole_text(
+        program in 0..PROGRAMS.len(),
+        window in (any::<usize>(), any::<usize>()),
+        edits in prop::collection::vec((any::<usize>(), 0usize..40, 0..PIECES.len()), 1..4),
+    ) {
+        let mut doc = Document::new(PROGRAMS[program].to_owned());
+        for (at, cut, piece) in edits {
+            // Any window of whole lines, as the editor's are.
+            let lines = doc.line_count() + 1;
+            let (a, b) = (window.0 % lines, window.1 % lines);
+            let starts: Vec<usize> = (0..=lines).map(|l| doc.text.match_indices('\n').take(l).last().map_or(0, |(i, _)| i + 1)).collect();
+            let w = starts[a.min(b)]..if a.max(b) + 1 >= lines { doc.text.len() } else { starts[a.max(b) + 1] };
+            let typed = edit(&doc.text[w.clone()], at, cut, PIECES[piece]);
+            let whole = format!("{}{typed}{}", &doc.text[..w.start], &doc.text[w.end..]);
+            let (next, unchanged) = doc.replaced(w, &typed).expect("a window of the text");
+            assert_same(&next, &Document::new(whole));
+            prop_assert!(next.program.blocks[..unchanged] == doc.program.blocks[..unchanged]);
+            doc = next;
+        }
+    }
+}
+
+#[test]
+fn a_window_that_is_not_in_the_text_is_refused() {
+    let doc = Document::new("0 BEGIN PGM Ü MM\n".to_owned());
+    assert!(doc.replaced(0..99, "x").is_none());
+    assert!(doc.replaced(13..14, "x").is_none(), "not a char boundary");
+}

@@ -5,7 +5,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use schwenkbar_tests::browser::{
-    clear_storage, inject_app_css, key_on, median, mount, now, paste_program, query, settle, text, timed_key,
+    clear_storage, click, inject_app_css, key_on, median, mount, now, paste_program, query, settle, text,
+    timed_key,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{console_log, wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -89,18 +90,18 @@ async fn a_keystroke_in_the_text_editor_of_100000_blocks() {
     let root = mount().await;
     let program = schwenkbar_core::sample::cam_program(100_000);
     paste_program(&root, &program).await;
-    query(&root, "[data-key=text-edit]")
-        .expect("text edit")
-        .dyn_into::<web_sys::HtmlElement>()
-        .expect("el")
-        .click();
-    settle().await;
+    // The block in the middle selected, then "edit as text": the editor's window is around it.
+    let line = program.lines().count() / 2;
+    list_line(&root, line).await.dyn_into::<web_sys::HtmlElement>().expect("el").click();
+    click(&root, "[data-key=text-edit]").await;
     let area: web_sys::HtmlTextAreaElement =
         query(&root, ".program-text").expect("text area").dyn_into().expect("a text area");
-    // A character typed into a line in the middle makes it an error; deleting it heals it
-    // (edited in place, as typing does, not by replacing the 4 MB value).
-    let at = program.len() / 2;
-    let at = u32::try_from(at + program[at..].find('\n').expect("a line") + 1).expect("small");
+    // A character typed at the start of that line makes it an error; deleting it heals it
+    // (edited in place, as typing does, not by replacing the value).
+    let value = area.value();
+    let want = program.lines().nth(line).expect("line");
+    let at = value.find(&format!("\n{want}\n")).expect("the line is in the window") + 1;
+    let at = u32::try_from(value[..at].encode_utf16().count()).expect("small");
     let mut samples = Vec::new();
     for i in 0..10 {
         let broken_now = i % 2 == 0;
@@ -160,5 +161,72 @@ async fn the_program_list_draws_only_the_lines_in_sight() {
         query(&root, ".line.cursor").expect("cursor").get_bounding_client_rect(),
     );
     assert!(cur.top() >= view.top() && cur.bottom() <= view.bottom(), "the cursor block is in sight");
+    clear_storage();
+}
+
+/// Brings line `line` (0-based) of the list into sight and returns its drawn row.
+async fn list_line(root: &web_sys::Element, line: usize) -> web_sys::Element {
+    // Scrolled again when the list was still placing itself (it brings the cursor block into
+    // sight once it is drawn).
+    for _ in 0..5 {
+        let lines = query(root, ".program-pane .lines").expect("the list");
+        let height = f64::from(query(root, ".program-pane .line").expect("a line").client_height());
+        lines.set_scroll_top((line.saturating_sub(2) as f64 * height) as i32);
+        lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
+        settle().await;
+        if let Some(drawn) = query(root, &format!(".program-pane .line[data-line='{}']", line + 1)) {
+            return drawn;
+        }
+    }
+    panic!("line {line} is never drawn");
+}
+
+/// Issue 16: the text editor of a 100,000-block program holds a window around the cursor
+/// block; what is typed at the start, in the middle and at the end lands exactly there.
+#[wasm_bindgen_test]
+async fn typing_in_the_window_of_a_big_program_changes_exactly_what_was_typed() {
+    clear_storage();
+    inject_app_css();
+    let root = mount().await;
+    let program = schwenkbar_core::sample::cam_program(100_000);
+    paste_program(&root, &program).await;
+    let count = program.lines().count();
+    let mut want: Vec<String> = program.lines().map(str::to_owned).collect();
+    let mut before = text(&root, ".program-pane .summary");
+    for line in [0, count / 2, count - 1] {
+        // The block there selected in the list, then "edit as text": the window is around it.
+        list_line(&root, line).await.dyn_into::<web_sys::HtmlElement>().expect("el").click();
+        settle().await;
+        click(&root, "[data-key=text-edit]").await;
+        let area: web_sys::HtmlTextAreaElement =
+            query(&root, ".program-text").expect("text area").dyn_into().expect("a text area");
+        let value = area.value();
+        assert!(value.len() < program.len() / 50, "a window, not the whole program: {} bytes", value.len());
+        let said = text(&root, ".text-window");
+        assert!(said.contains(&format!("von {count}")), "the window is said: {said:?} {count}");
+        let at = value.find(&format!("\n{}\n", want[line])).map_or(0, |i| i + 1);
+        assert!(value[at..].starts_with(&want[line]), "line {line} is in the window");
+        let at = u32::try_from(value[..at].encode_utf16().count()).expect("small");
+        area.set_range_text_with_start_and_end("Ü", at, at).expect("type");
+        let init = web_sys::InputEventInit::new();
+        init.set_bubbles(true);
+        area.dispatch_event(&web_sys::InputEvent::new_with_event_init_dict("input", &init).expect("event"))
+            .expect("dispatch");
+        settle().await;
+        want[line] = format!("Ü{}", want[line]);
+        let summary = text(&root, ".program-pane .summary");
+        assert!(summary.contains("Fehler") && summary != before, "the screen followed: {summary}");
+        before = summary;
+        click(&root, "[data-key=text-edit]").await;
+    }
+    // The program list shows the typed lines and their neighbours unchanged; the end is where it was.
+    for line in [0, 1, count / 2 - 1, count / 2, count / 2 + 1, count - 2, count - 1] {
+        let shown = list_line(&root, line).await.text_content().unwrap_or_default();
+        assert!(shown.starts_with(&want[line]), "line {line}: {shown:?} is not {:?}", want[line]);
+    }
+    assert!(
+        query(&root, &format!(".program-pane .line[data-line='{}']", count + 1)).is_none(),
+        "no line more"
+    );
     clear_storage();
 }

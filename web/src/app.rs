@@ -105,7 +105,7 @@ pub fn app(props: &AppProps) -> Html {
         });
     }
     let on_select = on_action.reform(Action::CursorTo);
-    let on_text = on_action.reform(Action::SetText);
+    let on_edit = on_action.reform(|(at, text)| Action::EditText { at, text });
     let l = state.lang;
     let machine_name = state.machine.as_ref().map_or_else(
         || l.t("keine Maschine", "no machine").to_owned(),
@@ -141,7 +141,7 @@ pub fn app(props: &AppProps) -> Html {
                 <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
                     <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
-                        text_editing={state.text_editing} {on_select} {on_text} />
+                        text_editing={state.text_editing} {on_select} {on_edit} />
     if state.right_hand {
                         <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {

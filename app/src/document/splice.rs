@@ -21,16 +21,22 @@ struct Region {
     new_end: usize,
 }
 
-/// Where the parser starts afresh around the change from `old` to `new`, or `None` when only
-/// a full parse is right (a byte order mark, which the parser strips).
-fn region(old: &str, new: &str) -> Option<Region> {
+/// The common prefix and suffix of `old` and `new` in bytes (together at most the shorter).
+fn common(old: &[u8], new: &[u8]) -> (usize, usize) {
+    let prefix = old.iter().zip(new).take_while(|(a, b)| a == b).count();
+    let room = old.len().min(new.len()) - prefix;
+    let suffix = old.iter().rev().zip(new.iter().rev()).take(room).take_while(|(a, b)| a == b).count();
+    (prefix, suffix)
+}
+
+/// Where the parser starts afresh around a change of `old` (`old_len` bytes) into `new` that
+/// kept the first `prefix` and the last `suffix` bytes, or `None` when only a full parse is
+/// right (a byte order mark, which the parser strips).
+fn region(old: &str, new: &str, prefix: usize, suffix: usize) -> Option<Region> {
     if old.starts_with('\u{feff}') || new.starts_with('\u{feff}') {
         return None;
     }
-    let (o, n) = (old.as_bytes(), new.as_bytes());
-    let prefix = o.iter().zip(n).take_while(|(a, b)| a == b).count();
-    let room = o.len().min(n.len()) - prefix;
-    let suffix = o.iter().rev().zip(n.iter().rev()).take(room).take_while(|(a, b)| a == b).count();
+    let n = new.as_bytes();
     // Back to a line whose line above (unchanged) does not continue into it.
     let line_start = |at: usize| n[..at].iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
     let mut start = line_start(prefix);
@@ -85,7 +91,28 @@ impl Document {
     /// index of the first block that may differ (every block before it is the same block).
     #[must_use]
     pub fn edited(&self, text: String) -> (Document, usize) {
-        let Some(r) = region(&self.text, &text) else { return (Document::new(text), 0) };
+        let (prefix, suffix) = common(self.text.as_bytes(), text.as_bytes());
+        self.spliced(text, prefix, suffix)
+    }
+
+    /// The document after the bytes `at` of its text became `insert` (the text area's window
+    /// typed in), or `None` when `at` is not a range of the text. Only `at` is compared, not
+    /// the megabytes around it.
+    #[must_use]
+    pub fn replaced(&self, at: std::ops::Range<usize>, insert: &str) -> Option<(Document, usize)> {
+        let old = self.text.get(at.clone())?;
+        let (prefix, suffix) = common(old.as_bytes(), insert.as_bytes());
+        let mut text = String::with_capacity(self.text.len() - old.len() + insert.len());
+        text.push_str(&self.text[..at.start]);
+        text.push_str(insert);
+        text.push_str(&self.text[at.end..]);
+        Some(self.spliced(text, at.start + prefix, self.text.len() - at.end + suffix))
+    }
+
+    /// [`Document::edited`] with the change known: the first `prefix` and last `suffix` bytes
+    /// of the text are kept.
+    fn spliced(&self, text: String, prefix: usize, suffix: usize) -> (Document, usize) {
+        let Some(r) = region(&self.text, &text, prefix, suffix) else { return (Document::new(text), 0) };
         let (mut program, diagnostics) = parse(&text[r.start..r.new_end]);
         let first_line = self.line_starts.partition_point(|&s| s < r.start);
         let old_lines = self.line_starts.partition_point(|&s| s <= r.old_end) - first_line;

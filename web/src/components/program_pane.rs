@@ -1,14 +1,16 @@
 //! The NC program: a virtualised list of the whole program (only the lines in sight are in
 //! the DOM, so a 1,000,000-block program scrolls), syntax colours, the parser's diagnostics at
 //! their line, a click selects a block, the cursor block stays in sight. With "edit as text" on,
-//! a text area holds the whole program and every change is parsed (only where it changed).
+//! a text area holds the program (a window of it around the caret for a big one) and every
+//! change is parsed (only where it changed).
 
+use std::ops::Range;
 use std::rc::Rc;
 
 use web_sys::HtmlTextAreaElement;
 use yew::prelude::*;
 
-use schwenkbar_app::document::Document;
+use schwenkbar_app::document::{Document, byte_of_utf16, utf16_of_byte};
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::syntax::highlight;
 
@@ -27,7 +29,8 @@ pub struct ProgramPaneProps {
     pub lang: Lang,
     pub text_editing: bool,
     pub on_select: Callback<usize>,
-    pub on_text: Callback<String>,
+    /// The editor's window, bytes `.0` of the program, now reads `.1`.
+    pub on_edit: Callback<(Range<usize>, String)>,
 }
 
 #[function_component(ProgramPane)]
@@ -41,7 +44,7 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
         <section {class} aria-label={title}>
             <div class="pane-title">{ title }<span class="summary">{ summary }</span></div>
             if props.text_editing {
-                <ProgramText doc={doc.clone()} lang={l} on_text={props.on_text.clone()} />
+                <ProgramText doc={doc.clone()} cursor={props.cursor} lang={l} on_edit={props.on_edit.clone()} />
                 { diagnostics_list(doc, 0, usize::MAX, l) }
             } else {
                 <ProgramList doc={doc.clone()} cursor={props.cursor} lang={l} on_select={props.on_select.clone()} />
@@ -63,38 +66,113 @@ impl PartialEq for Same {
 #[derive(Properties, PartialEq)]
 struct TextProps {
     doc: Rc<Document>,
+    cursor: usize,
     lang: Lang,
-    on_text: Callback<String>,
+    on_edit: Callback<(Range<usize>, String)>,
 }
 
-/// The text area, uncontrolled: its own typing is not written back into it (a 100,000-block
-/// program is 4 MB a keystroke); a document from elsewhere (a sample, an import) is.
+/// The text area, uncontrolled: its own typing is not written back into it; a document from
+/// elsewhere (a sample, an import) is. It holds the window of the program around the caret
+/// (all of it up to `WHOLE_UP_TO` lines, `app/src/document/window.rs`): a 4 MB text area costs
+/// the browser seconds of layout per keystroke.
 #[function_component(ProgramText)]
 fn program_text(props: &TextProps) -> Html {
     let area = use_node_ref();
     let typed = use_mut_ref(|| false);
-    {
-        let (area, typed) = (area.clone(), typed.clone());
-        use_effect_with(Same(props.doc.clone()), move |doc| {
-            if !std::mem::take(&mut *typed.borrow_mut())
-                && let Some(area) = area.cast::<HtmlTextAreaElement>()
-            {
-                area.set_value(&doc.0.text);
+    // The bytes of the program the text area holds.
+    let window = use_mut_ref(|| 0..0);
+    let shown = use_state_eq(|| None::<(usize, usize)>);
+    let follow = {
+        let (area, window, shown) = (area.clone(), window.clone(), shown.clone());
+        move |doc: &Document, fresh: Option<usize>| {
+            let Some(area) = area.cast::<HtmlTextAreaElement>() else { return };
+            let mut window = window.borrow_mut();
+            let caret = |end: bool| {
+                let units = if end { area.selection_end() } else { area.selection_start() };
+                let value = area.value();
+                window.start + byte_of_utf16(&value, units.ok().flatten().unwrap_or(0) as usize)
+            };
+            let (line, selection) = match fresh {
+                Some(line) => (line, None),
+                None => {
+                    let (from, to) = (caret(false), caret(true));
+                    if !doc.window_moves(&window, from) {
+                        return;
+                    }
+                    (doc.line_of(from), Some((from, to)))
+                }
+            };
+            let next = doc.window_at(line);
+            let (old_first, new_first) = (doc.line_of(window.start), doc.line_of(next.start));
+            let top = f64::from(area.scroll_top());
+            let text = &doc.text[next.clone()];
+            area.set_value(text);
+            let lines = doc.line_of(next.end).saturating_sub(new_first).max(1);
+            let line_px = f64::from(area.scroll_height()) / lines as f64;
+            if let Some((from, to)) = selection {
+                // The caret and the selection stay where they were in the program, and on screen.
+                let unit =
+                    |at: usize| utf16_of_byte(text, at.clamp(next.start, next.end) - next.start) as u32;
+                let _ = area.set_selection_range(unit(from), unit(to));
+                let moved = old_first as f64 - new_first as f64;
+                area.set_scroll_top((top + moved * line_px).max(0.0) as i32);
+            } else if next.start > 0 {
+                // Opened at the cursor block: the caret at its start, a few lines below the top.
+                let unit = utf16_of_byte(text, doc.line_start(line) - next.start) as u32;
+                let _ = area.set_selection_range(unit, unit);
+                let above = (line - new_first).saturating_sub(3);
+                area.set_scroll_top((above as f64 * line_px) as i32);
             }
+            let whole = next.start == 0 && next.end == doc.text.len();
+            shown.set((!whole).then(|| (new_first + 1, doc.line_of(next.end.saturating_sub(1)) + 1)));
+            *window = next;
+        }
+    };
+    {
+        let (typed, follow) = (typed.clone(), follow.clone());
+        let line = props.doc.block_lines(props.cursor).map_or(0, |(first, _)| first);
+        use_effect_with(Same(props.doc.clone()), move |doc| {
+            let fresh = !std::mem::take(&mut *typed.borrow_mut());
+            follow(&doc.0, fresh.then_some(line));
         });
     }
     let oninput = {
-        let (on_text, typed) = (props.on_text.clone(), typed.clone());
+        let (on_edit, typed, window) = (props.on_edit.clone(), typed.clone(), window.clone());
         Callback::from(move |e: InputEvent| {
             if let Some(area) = e.target_dyn_into::<HtmlTextAreaElement>() {
                 *typed.borrow_mut() = true;
-                on_text.emit(area.value());
+                let text = area.value();
+                let at = window.borrow().clone();
+                *window.borrow_mut() = at.start..at.start + text.len();
+                on_edit.emit((at, text));
             }
         })
     };
+    // The caret moved by a key or a click: the window follows it.
+    let on_caret = {
+        let doc = props.doc.clone();
+        move || follow(&doc, None)
+    };
+    let onkeyup = {
+        let on_caret = on_caret.clone();
+        Callback::from(move |_: KeyboardEvent| on_caret())
+    };
+    let onmouseup = Callback::from(move |_: MouseEvent| on_caret());
+    let l = props.lang;
     html! {
-        <textarea class="program-text" spellcheck="false" ref={area} {oninput}
-            aria-label={props.lang.t("Programmtext", "Program text")} />
+        <>
+            if let Some((first, last)) = *shown {
+                <div class="text-window">{ format!(
+                    "{} {first}–{last} {} {} · {}",
+                    l.t("Zeilen", "Lines"),
+                    l.t("von", "of"),
+                    props.doc.line_count(),
+                    l.t("der Ausschnitt folgt dem Cursor", "the window follows the cursor"),
+                ) }</div>
+            }
+            <textarea class="program-text" spellcheck="false" ref={area} {oninput} {onkeyup} {onmouseup}
+                aria-label={l.t("Programmtext", "Program text")} />
+        </>
     }
 }
 
