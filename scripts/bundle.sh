@@ -9,10 +9,12 @@ cd "$(dirname "$0")/.."
 source scripts/env.sh
 BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # The ceilings were raised when issue 15 landed (arcs, compensation, 15 cycles: +37 KB gzip on
-# the trainer, which is now over its 240 KB budget; see the session note): they stop a blow-up,
-# the budget line above reports the overrun.
-BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-285}"
-COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-365}"
+# the trainer) and again with issue 16 (typed edits re-parsed and re-run in part, the windowed
+# text editor, the virtualised program list, the toolpath made in parts: +19 KB) and TCPM: the
+# trainer is 294.7 KB, over its 240 KB budget (see the session notes). The ceilings stop a
+# blow-up; the budget line above reports the overrun.
+BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-300}"
+COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-380}"
 build_pages
 # The files a page loads: the page itself and what it references (trunk's hashed names).
 page_size() {
