@@ -301,8 +301,8 @@ fn other_solution(ex: &Exercise, number: u32) -> schwenkbar_core::axes::AxisValu
     let block = program
         .blocks
         .iter()
-        .find(|b| b.number == Some(number))
-        .and_then(|b| match &b.body {
+        .find(|b| b.number() == Some(number))
+        .and_then(|b| match b.stored_body()? {
             schwenkbar_core::BlockBody::Plane(p) => p
                 .try_map(|v| match v {
                     Value::Number(x) => Ok(*x),

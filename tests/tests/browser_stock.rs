@@ -65,7 +65,7 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
     let t0 = perf.now();
     let stock = StockRef::of(&sim, &doc.program);
     let cut_ms = perf.now() - t0;
-    let block = doc.program.blocks.iter().position(|b| b.number == Some(13)).expect("block 13");
+    let block = doc.program.blocks.iter().position(|b| b.number() == Some(13)).expect("block 13");
     let after = sim.0.step_of_block(block).expect("executed");
     let c = canvas(640, 480);
     let mut r = Renderer::new(&c).expect("WebGL2");
