@@ -3,8 +3,9 @@
 //! The JSON files stay the single source: this script reads them, checks them as strictly as
 //! [`Machine::from_json`](../src/machine.rs) does (unknown or missing fields, wrong types fail
 //! the build), and writes
-//!   - `builtin_machines.rs`: `BUILTIN_IDS` and `BUILTIN`, the raw machine descriptions, validated at run time
-//!     by the same code as a JSON file from the command line;
+//!   - `builtin_machines.rs`: `BUILTIN_IDS` and `BUILTIN`, the machine descriptions as written,
+//!     validated at run time by the same code as a JSON file from the command line (so a wrong
+//!     axis letter or carrier is left to that check, with its message);
 //!   - `tools.rs`: `DEFAULT_TOOL` and `TOOLS`, the tool table.
 //!
 //! Native unit tests compare both with what serde_json makes of the same files.
@@ -27,7 +28,7 @@ fn main() {
     code.push_str("/// The shipped machines, compiled from `static/machines/*.json` by `build.rs`.\n");
     // The numbers are the files' (e.g. 0.7071067811865476 for a 45° axis), not constants to name.
     code.push_str("#[allow(clippy::approx_constant)]\n");
-    let _ = writeln!(code, "static BUILTIN: [RawMachine; {}] = [", MACHINES.len());
+    let _ = writeln!(code, "static BUILTIN: [MachineDef; {}] = [", MACHINES.len());
     for id in MACHINES {
         let path = static_dir.join(format!("machines/{id}.json"));
         let v = read_json(&path);
@@ -63,7 +64,7 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
     let m = object(ctx, v, &["id", "name", "description", "chain", "geometry"]);
     let json_id = string(ctx, required(ctx, m, "id"));
     assert_eq!(json_id, id, "{ctx}: id does not match the file name");
-    let mut s = format!("    RawMachine {{\n        id: Cow::Borrowed({id:?}),\n");
+    let mut s = format!("    MachineDef {{\n        id: Cow::Borrowed({id:?}),\n");
     for key in ["name", "description"] {
         let t = object(ctx, required(ctx, m, key), &["de", "en"]);
         let (de, en) = (string(ctx, required(ctx, t, "de")), string(ctx, required(ctx, t, "en")));
@@ -72,15 +73,11 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
     s.push_str("        chain: Cow::Borrowed(&[\n");
     for j in array(ctx, required(ctx, m, "chain")) {
         let j = object(ctx, j, &["axis", "carrier", "direction", "pivot", "limits", "endless"]);
-        let carrier = match string(ctx, required(ctx, j, "carrier")) {
-            "table" => "Table",
-            "head" => "Head",
-            other => panic!("{ctx}: carrier {other:?} (table or head)"),
-        };
         let _ = writeln!(
             s,
-            "            RawJoint {{ axis: Cow::Borrowed({:?}), carrier: Carrier::{carrier}, direction: {}, pivot: {}, limits: {}, endless: {} }},",
+            "            JointDef {{ axis: Cow::Borrowed({:?}), carrier: Cow::Borrowed({:?}), direction: {}, pivot: {}, limits: {}, endless: {} }},",
             string(ctx, required(ctx, j, "axis")),
+            string(ctx, required(ctx, j, "carrier")),
             vec3(ctx, required(ctx, j, "direction")),
             j.get("pivot").map_or_else(|| "[0.0, 0.0, 0.0]".to_string(), |p| vec3(ctx, p)),
             option(j.get("limits"), |l| limits(ctx, l)),
@@ -93,14 +90,14 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
         let linear = option(g.get("linear_limits"), |l| {
             let l = object(ctx, l, &["X", "Y", "Z"]);
             format!(
-                "RawLinearLimits {{ x: {}, y: {}, z: {} }}",
+                "LinearLimitsDef {{ x: {}, y: {}, z: {} }}",
                 option(l.get("X"), |x| limits(ctx, x)),
                 option(l.get("Y"), |x| limits(ctx, x)),
                 option(l.get("Z"), |x| limits(ctx, x)),
             )
         });
         format!(
-            "RawGeometry {{ preset: {}, linear_limits: {linear}, rapid_linear: {}, rapid_rotary: {}, start: {} }}",
+            "GeometryDef {{ preset: {}, linear_limits: {linear}, rapid_linear: {}, rapid_rotary: {}, start: {} }}",
             option(g.get("preset"), |p| vec3(ctx, p)),
             option(g.get("rapid_linear"), |x| float(ctx, x)),
             option(g.get("rapid_rotary"), |x| float(ctx, x)),

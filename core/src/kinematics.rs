@@ -76,7 +76,7 @@ pub fn solve_tool_axis(machine: &Machine, t: DVec3) -> ToolAxisSolution {
         }
         return match rotation_angle(um, ez, t) {
             Some(m) => ToolAxisSolution::SlaveFree { master: wrap180(m) },
-            // ez ∥ u_m is excluded by Machine::from_json (MasterAlongTool); t ∥ u_m ∥ … cannot
+            // ez ∥ u_m is excluded by the machine check (Problem::MasterAlongTool); t ∥ u_m ∥ … cannot
             // happen with u_s ∦ u_m. Report it as unreachable rather than guess.
             None => ToolAxisSolution::Unreachable,
         };

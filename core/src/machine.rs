@@ -28,12 +28,32 @@ use crate::axes::AxisValues;
 use crate::lang::Text;
 use crate::plane::RotaryAxis;
 
+mod validate;
+pub use validate::{MachineIssue, Problem};
+
 /// Whether a rotary axis turns the workpiece (table) or the tool (head).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Carrier {
     Table,
     Head,
+}
+
+impl Carrier {
+    /// Its word in the JSON: `table` or `head`.
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            Carrier::Table => "table",
+            Carrier::Head => "head",
+        }
+    }
+
+    /// The carrier of a JSON word.
+    #[must_use]
+    pub fn from_word(word: &str) -> Option<Carrier> {
+        [Carrier::Table, Carrier::Head].into_iter().find(|c| c.word() == word)
+    }
 }
 
 /// Software limit switches of a rotary axis, degrees.
@@ -128,65 +148,28 @@ impl Default for MachineGeometry {
     }
 }
 
-/// A machine description that cannot be used. Every variant carries the numbers.
+/// Why a machine could not be had.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "code", rename_all = "snake_case")]
 pub enum MachineError {
-    /// Not valid JSON for the machine schema.
-    Json { message: String, line: usize, column: usize },
     /// No built-in machine with this id.
     UnknownId { id: String },
-    /// An axis letter other than A, B, C.
-    UnknownAxis { letter: String },
-    /// The same letter twice in the chain.
-    DuplicateAxis { axis: RotaryAxis },
-    /// The solver handles exactly two rotary axes.
-    AxisCount { count: usize },
-    /// A number that is NaN or infinite.
-    NotFinite { axis: RotaryAxis, field: &'static str, value: f64 },
-    /// `direction` is not a unit vector (tolerance 1e-6).
-    DirectionNotUnit { axis: RotaryAxis, direction: [f64; 3], length: f64 },
-    /// `limits.min` is not below `limits.max`.
-    LimitsInverted { axis: RotaryAxis, min: f64, max: f64 },
-    /// An endless (modulo) axis cannot have limit switches.
-    EndlessWithLimits { axis: RotaryAxis, min: f64, max: f64 },
-    /// A bad value in `geometry` (not finite, inverted limits, rapid ≤ 0).
-    Geometry { field: &'static str, value: f64 },
-    /// A table axis listed after a head axis (the chain runs workpiece → table → bed → head → tool).
-    TableAfterHead { axis: RotaryAxis },
-    /// The two axes are parallel: they cannot tilt the tool in two directions.
-    ParallelAxes { slave: RotaryAxis, master: RotaryAxis, sine: f64 },
-    /// The master axis is parallel to the tool axis at home: it cannot tilt the tool.
-    MasterAlongTool { axis: RotaryAxis, sine: f64 },
+    /// The description cannot be read or used: every problem found, each with its field.
+    Invalid { issues: Vec<MachineIssue> },
 }
 
 impl std::fmt::Display for MachineError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            MachineError::Json { message, line, column } => {
-                write!(f, "machine JSON {line}:{column}: {message}")
-            }
             MachineError::UnknownId { id } => write!(f, "no built-in machine {id:?}"),
-            MachineError::UnknownAxis { letter } => write!(f, "unknown rotary axis {letter:?} (A, B or C)"),
-            MachineError::DuplicateAxis { axis } => write!(f, "axis {axis} appears twice"),
-            MachineError::AxisCount { count } => write!(f, "{count} rotary axes; exactly 2 are supported"),
-            MachineError::NotFinite { axis, field, value } => write!(f, "axis {axis}: {field} = {value}"),
-            MachineError::DirectionNotUnit { axis, direction, length } => {
-                write!(f, "axis {axis}: direction {direction:?} has length {length}, not 1")
-            }
-            MachineError::LimitsInverted { axis, min, max } => {
-                write!(f, "axis {axis}: limits min {min} ≥ max {max}")
-            }
-            MachineError::EndlessWithLimits { axis, min, max } => {
-                write!(f, "axis {axis}: endless but limited to {min} … {max}")
-            }
-            MachineError::Geometry { field, value } => write!(f, "geometry: {field} = {value}"),
-            MachineError::TableAfterHead { axis } => write!(f, "table axis {axis} listed after a head axis"),
-            MachineError::ParallelAxes { slave, master, sine } => {
-                write!(f, "axes {slave} and {master} are parallel (sine {sine})")
-            }
-            MachineError::MasterAlongTool { axis, sine } => {
-                write!(f, "master axis {axis} is parallel to the tool axis at home (sine {sine})")
+            MachineError::Invalid { issues } => {
+                for (i, issue) in issues.iter().enumerate() {
+                    if i > 0 {
+                        f.write_str("; ")?;
+                    }
+                    write!(f, "{issue}")?;
+                }
+                Ok(())
             }
         }
     }
@@ -194,69 +177,94 @@ impl std::fmt::Display for MachineError {
 
 impl std::error::Error for MachineError {}
 
-/// A machine description as written, before validation: read from JSON by
-/// [`Machine::from_json`], or compiled in from `static/machines/*.json` by `build.rs` (the
-/// borrowed `Cow`s), so that both go through the same checks and the wasm needs no JSON parser.
-#[derive(Deserialize)]
+/// A machine description as written, before validation ([`MachineDef::validate`]): read from
+/// JSON ([`MachineDef::from_json`]), compiled in from `static/machines/*.json` by `build.rs` (the
+/// borrowed `Cow`s, so the wasm needs no JSON parser), or made by an editor. Every field is kept
+/// as typed (the axis letter and carrier as strings) so that a wrong value is reported with its
+/// field path instead of failing the whole read.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawMachine {
-    id: Cow<'static, str>,
-    name: Text,
-    description: Text,
-    chain: Cow<'static, [RawJoint]>,
-    #[serde(default)]
-    geometry: Option<RawGeometry>,
+pub struct MachineDef {
+    pub id: Cow<'static, str>,
+    pub name: Text,
+    pub description: Text,
+    pub chain: Cow<'static, [JointDef]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub geometry: Option<GeometryDef>,
 }
 
-#[derive(Clone, Copy, Deserialize)]
+/// `geometry` as written; a missing field keeps its default ([`MachineGeometry::default`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawGeometry {
-    #[serde(default)]
-    preset: Option<[f64; 3]>,
+pub struct GeometryDef {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preset: Option<[f64; 3]>,
     /// `{"X": {"min", "max"}, "Y": …, "Z": …}`; a missing axis keeps its default.
-    #[serde(default)]
-    linear_limits: Option<RawLinearLimits>,
-    #[serde(default)]
-    rapid_linear: Option<f64>,
-    #[serde(default)]
-    rapid_rotary: Option<f64>,
-    #[serde(default)]
-    start: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub linear_limits: Option<LinearLimitsDef>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rapid_linear: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rapid_rotary: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start: Option<[f64; 3]>,
 }
 
-#[derive(Clone, Copy, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawLinearLimits {
-    #[serde(rename = "X", default)]
-    x: Option<Limits>,
-    #[serde(rename = "Y", default)]
-    y: Option<Limits>,
-    #[serde(rename = "Z", default)]
-    z: Option<Limits>,
+pub struct LinearLimitsDef {
+    #[serde(rename = "X", default, skip_serializing_if = "Option::is_none")]
+    pub x: Option<Limits>,
+    #[serde(rename = "Y", default, skip_serializing_if = "Option::is_none")]
+    pub y: Option<Limits>,
+    #[serde(rename = "Z", default, skip_serializing_if = "Option::is_none")]
+    pub z: Option<Limits>,
 }
 
-#[derive(Clone, Deserialize)]
+/// One entry of `chain` as written.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawJoint {
-    axis: Cow<'static, str>,
-    carrier: Carrier,
-    direction: [f64; 3],
+pub struct JointDef {
+    /// `"A"`, `"B"` or `"C"`.
+    pub axis: Cow<'static, str>,
+    /// `"table"` or `"head"`.
+    pub carrier: Cow<'static, str>,
+    pub direction: [f64; 3],
     #[serde(default)]
-    pivot: [f64; 3],
-    #[serde(default)]
-    limits: Option<Limits>,
-    #[serde(default)]
-    endless: bool,
+    pub pivot: [f64; 3],
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limits: Option<Limits>,
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub endless: bool,
 }
 
-// `BUILTIN_IDS: [&str; 5]` and `static BUILTIN: [RawMachine; 5]`, generated by build.rs from
+impl MachineDef {
+    /// Reads a description without validating it. A JSON or schema error (a missing field, a
+    /// string where a number belongs) is one issue at the top level.
+    pub fn from_json(json: &str) -> Result<MachineDef, MachineIssue> {
+        serde_json::from_str(json).map_err(|e| MachineIssue {
+            path: String::new(),
+            problem: Problem::Json { message: e.to_string(), line: e.line(), column: e.column() },
+        })
+    }
+
+    /// The description as pretty JSON, in the form [`MachineDef::from_json`] reads.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        // Plain structs with string keys: serde_json cannot fail on them (a NaN is written null).
+        serde_json::to_string_pretty(self).expect("a machine description serialises")
+    }
+
+    /// Checks the description and builds the machine, or lists every problem found
+    /// ([`validate`]).
+    pub fn validate(&self) -> Result<Machine, Vec<MachineIssue>> {
+        validate::validate(self)
+    }
+}
+
+// `BUILTIN_IDS: [&str; 5]` and `static BUILTIN: [MachineDef; 5]`, generated by build.rs from
 // `static/machines/*.json`.
 include!(concat!(env!("OUT_DIR"), "/builtin_machines.rs"));
-
-/// Direction tolerance: |direction| must be 1 within this (so 0.7071067811865476 works).
-const UNIT_TOL: f64 = 1e-6;
-/// Sine below which two axis directions count as parallel (derived, numerical).
-const PARALLEL_TOL: f64 = 1e-6;
 
 impl Machine {
     /// The ids of the shipped machines, in display order.
@@ -267,56 +275,57 @@ impl Machine {
 
     /// A shipped machine by id.
     pub fn builtin(id: &str) -> Result<Machine, MachineError> {
-        let raw = BUILTIN
+        let def = BUILTIN
             .iter()
             .find(|m| m.id == id)
             .ok_or_else(|| MachineError::UnknownId { id: id.to_string() })?;
-        Machine::from_raw(raw)
+        def.validate().map_err(|issues| MachineError::Invalid { issues })
     }
 
     /// Reads and validates a machine description.
     pub fn from_json(json: &str) -> Result<Machine, MachineError> {
-        let raw: RawMachine = serde_json::from_str(json).map_err(|e| MachineError::Json {
-            message: e.to_string(),
-            line: e.line(),
-            column: e.column(),
-        })?;
-        Machine::from_raw(&raw)
+        MachineDef::from_json(json)
+            .map_err(|issue| vec![issue])
+            .and_then(|def| def.validate())
+            .map_err(|issues| MachineError::Invalid { issues })
     }
 
-    /// Validates a machine description, from a JSON file or compiled in.
-    fn from_raw(raw: &RawMachine) -> Result<Machine, MachineError> {
-        let mut joints = Vec::with_capacity(raw.chain.len());
-        for j in raw.chain.iter() {
-            joints.push(validate_joint(j)?);
+    /// The description this machine is read from, every geometry field written out: the
+    /// editor's export, which [`MachineDef::validate`] turns back into an equal machine.
+    #[must_use]
+    pub fn to_def(&self) -> MachineDef {
+        let g = &self.geometry;
+        let [x, y, z] = g.linear_limits;
+        MachineDef {
+            id: Cow::Owned(self.id.clone()),
+            name: self.name.clone(),
+            description: self.description.clone(),
+            chain: self
+                .chain
+                .iter()
+                .map(|j| JointDef {
+                    axis: Cow::Borrowed(j.axis.word()),
+                    carrier: Cow::Borrowed(j.carrier.word()),
+                    direction: j.direction.to_array(),
+                    pivot: j.pivot.to_array(),
+                    limits: j.limits,
+                    endless: j.endless,
+                })
+                .collect(),
+            geometry: Some(GeometryDef {
+                preset: Some(g.preset.to_array()),
+                linear_limits: Some(LinearLimitsDef { x: Some(x), y: Some(y), z: Some(z) }),
+                rapid_linear: Some(g.rapid_linear),
+                rapid_rotary: Some(g.rapid_rotary),
+                start: Some(g.start.to_array()),
+            }),
         }
-        let chain: [RotaryJoint; 2] =
-            joints.try_into().map_err(|v: Vec<RotaryJoint>| MachineError::AxisCount { count: v.len() })?;
-        let [slave, master] = &chain;
-        if slave.axis == master.axis {
-            return Err(MachineError::DuplicateAxis { axis: slave.axis });
-        }
-        if slave.carrier == Carrier::Head && master.carrier == Carrier::Table {
-            return Err(MachineError::TableAfterHead { axis: master.axis });
-        }
-        let sine = slave.direction.cross(master.direction).length();
-        if sine < PARALLEL_TOL {
-            return Err(MachineError::ParallelAxes { slave: slave.axis, master: master.axis, sine });
-        }
-        let sine = master.direction.cross(DVec3::Z).length();
-        if sine < PARALLEL_TOL {
-            return Err(MachineError::MasterAlongTool { axis: master.axis, sine });
-        }
-        let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
-        let geometry = validate_geometry(raw.geometry)?;
-        Ok(Machine {
-            id: raw.id.to_string(),
-            name: raw.name.clone(),
-            description: raw.description.clone(),
-            chain,
-            symmetry,
-            geometry,
-        })
+    }
+
+    /// [`Machine::to_def`] as JSON.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        self.to_def().to_json()
     }
 
     /// The rotary axes in chain order workpiece → tool.
@@ -371,80 +380,6 @@ impl Machine {
     pub fn limits_of(&self, axis: RotaryAxis, overrides: &[(RotaryAxis, Limits)]) -> Option<Limits> {
         overrides.iter().rev().find(|(a, _)| *a == axis).map(|(_, l)| *l).or_else(|| self.joint(axis)?.limits)
     }
-}
-
-fn validate_geometry(raw: Option<RawGeometry>) -> Result<MachineGeometry, MachineError> {
-    let mut g = MachineGeometry::default();
-    let Some(raw) = raw else { return Ok(g) };
-    let finite3 = |field: &'static str, v: [f64; 3]| match v.iter().find(|x| !x.is_finite()) {
-        Some(&value) => Err(MachineError::Geometry { field, value }),
-        None => Ok(DVec3::from_array(v)),
-    };
-    if let Some(p) = raw.preset {
-        g.preset = finite3("preset", p)?;
-    }
-    if let Some(p) = raw.start {
-        g.start = finite3("start", p)?;
-    }
-    if let Some(l) = raw.linear_limits {
-        for (i, (lim, field)) in
-            [(l.x, "linear_limits.X"), (l.y, "linear_limits.Y"), (l.z, "linear_limits.Z")]
-                .into_iter()
-                .enumerate()
-        {
-            if let Some(lim) = lim {
-                if !(lim.min.is_finite() && lim.max.is_finite()) || lim.min >= lim.max {
-                    return Err(MachineError::Geometry { field, value: lim.min });
-                }
-                g.linear_limits[i] = lim;
-            }
-        }
-    }
-    for (v, field, slot) in [
-        (raw.rapid_linear, "rapid_linear", &mut g.rapid_linear),
-        (raw.rapid_rotary, "rapid_rotary", &mut g.rapid_rotary),
-    ] {
-        if let Some(v) = v {
-            if !v.is_finite() || v <= 0.0 {
-                return Err(MachineError::Geometry { field, value: v });
-            }
-            *slot = v;
-        }
-    }
-    Ok(g)
-}
-
-fn validate_joint(j: &RawJoint) -> Result<RotaryJoint, MachineError> {
-    let axis = RotaryAxis::from_letter(&j.axis)
-        .ok_or_else(|| MachineError::UnknownAxis { letter: j.axis.to_string() })?;
-    let finite = |field: &'static str, v: &[f64]| match v.iter().find(|x| !x.is_finite()) {
-        Some(&value) => Err(MachineError::NotFinite { axis, field, value }),
-        None => Ok(()),
-    };
-    finite("direction", &j.direction)?;
-    finite("pivot", &j.pivot)?;
-    let direction = DVec3::from_array(j.direction);
-    let length = direction.length();
-    if (length - 1.0).abs() > UNIT_TOL {
-        return Err(MachineError::DirectionNotUnit { axis, direction: j.direction, length });
-    }
-    if let Some(l) = j.limits {
-        finite("limits", &[l.min, l.max])?;
-        if l.min >= l.max {
-            return Err(MachineError::LimitsInverted { axis, min: l.min, max: l.max });
-        }
-        if j.endless {
-            return Err(MachineError::EndlessWithLimits { axis, min: l.min, max: l.max });
-        }
-    }
-    Ok(RotaryJoint {
-        axis,
-        carrier: j.carrier,
-        direction: direction / length,
-        pivot: DVec3::from_array(j.pivot),
-        limits: j.limits,
-        endless: j.endless,
-    })
 }
 
 #[cfg(test)]

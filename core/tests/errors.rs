@@ -5,7 +5,7 @@ mod support;
 
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;
-use schwenkbar_core::machine::{Limits, Machine, MachineError};
+use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::orientation::{self, Context, PlaneError, VectorName};
 use schwenkbar_core::plane::{AxialAngle, PlaneDef, RotaryAxis};
 use schwenkbar_core::solve::{self, SolveError, SolveOptions};
@@ -154,50 +154,6 @@ fn non_finite_solver_input() {
         SolveOptions { limits: vec![(RotaryAxis::A, Limits { min: f64::NEG_INFINITY, max: 0.0 })], ..opts };
     let e = solve::solve(&m, &DMat3::from_cols_array(&[f64::NAN; 9]), &opts);
     assert!(matches!(e.error, Some(SolveError::NotFinite { what: "orientation", .. })));
-}
-
-fn machine_json(chain: &str) -> String {
-    format!(
-        r#"{{"id":"x","name":{{"de":"x","en":"x"}},"description":{{"de":"x","en":"x"}},"chain":[{chain}]}}"#
-    )
-}
-
-#[test]
-fn machine_validation() {
-    let c = r#"{"axis":"C","carrier":"table","direction":[0,0,1]}"#;
-    let a = r#"{"axis":"A","carrier":"table","direction":[1,0,0]}"#;
-    let bad = |chain: String| Machine::from_json(&machine_json(&chain)).expect_err("invalid machine");
-    assert!(Machine::from_json(&machine_json(&format!("{c},{a}"))).is_ok());
-    assert_eq!(
-        bad(format!(r#"{c},{{"axis":"D","carrier":"table","direction":[1,0,0]}}"#)),
-        MachineError::UnknownAxis { letter: "D".into() }
-    );
-    assert_eq!(
-        bad(format!(r#"{c},{{"axis":"A","carrier":"table","direction":[2,0,0]}}"#)),
-        MachineError::DirectionNotUnit { axis: RotaryAxis::A, direction: [2.0, 0.0, 0.0], length: 2.0 }
-    );
-    assert_eq!(
-        bad(format!(
-            r#"{c},{{"axis":"A","carrier":"table","direction":[1,0,0],"limits":{{"min":10,"max":-10}}}}"#
-        )),
-        MachineError::LimitsInverted { axis: RotaryAxis::A, min: 10.0, max: -10.0 }
-    );
-    assert_eq!(bad(c.to_string()), MachineError::AxisCount { count: 1 });
-    assert_eq!(bad(format!("{c},{c}")), MachineError::DuplicateAxis { axis: RotaryAxis::C });
-    assert!(matches!(
-        bad(format!(r#"{c},{{"axis":"B","carrier":"table","direction":[0,0,1]}}"#)),
-        MachineError::ParallelAxes { .. }
-    ));
-    assert!(matches!(
-        bad(format!(r#"{a},{{"axis":"C","carrier":"head","direction":[0,0,1]}}"#)),
-        MachineError::MasterAlongTool { axis: RotaryAxis::C, .. }
-    ));
-    assert_eq!(
-        bad(format!(r#"{{"axis":"C","carrier":"head","direction":[0,0,1]}},{a}"#)),
-        MachineError::TableAfterHead { axis: RotaryAxis::A }
-    );
-    assert!(matches!(bad("{".into()), MachineError::Json { .. }));
-    assert!(matches!(Machine::builtin("nope"), Err(MachineError::UnknownId { .. })));
 }
 
 #[test]
