@@ -4,6 +4,7 @@
 mod check;
 mod fmt;
 mod input;
+mod machine_arg;
 mod machines;
 mod run;
 mod solve;

@@ -1,4 +1,4 @@
-//! `schwenkbar run FILE.h --machine ID [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
+//! `schwenkbar run FILE.h --machine ID|FILE.json [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
 //! per executed block; with `--stock-stl` also the stock after the run as binary STL, and the
 //! stock's notes (a rapid into the material, …) on stderr.
 
@@ -21,7 +21,8 @@ use crate::LangArg;
 pub(crate) struct Args {
     /// The NC program (`.h`, UTF-8 or Latin-1).
     file: PathBuf,
-    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating).
+    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating) or a machine
+    /// description `.json` file.
     #[arg(long)]
     machine: String,
     /// Print `{"machine", "states": […], "error": null | {"line", "message"}}`.
@@ -106,10 +107,10 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         Ok(s) => s,
         Err(code) => return code,
     };
-    let machine = match Machine::builtin(&args.machine) {
+    let machine = match crate::machine_arg::load(&args.machine) {
         Ok(m) => m,
         Err(e) => {
-            eprintln!("error: {e} (known: {})", Machine::builtin_ids().join(", "));
+            e.lines().for_each(|line| eprintln!("error: {line}"));
             return ExitCode::from(2);
         }
     };

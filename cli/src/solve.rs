@@ -1,4 +1,4 @@
-//! `schwenkbar solve --machine ID [--start "A+0 C-105"] [--limit "A=-90..10"] "PLANE …"`:
+//! `schwenkbar solve --machine ID|FILE.json [--start "A+0 C-105"] [--limit "A=-90..10"] "PLANE …"`:
 //! the control's choice of rotary axis positions for one PLANE block, as JSON (issue 4).
 //!
 //! Exit code: 0 = a position was chosen, 1 = the control refuses ("Winkel nicht erlaubt"; the
@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use glam::DMat3;
 use schwenkbar_core::Lang;
 use schwenkbar_core::axes::AxisValues;
-use schwenkbar_core::machine::{Limits, Machine};
+use schwenkbar_core::machine::Limits;
 use schwenkbar_core::number::tidy;
 use schwenkbar_core::parse::{self, PlaneTextError};
 use schwenkbar_core::plane::{PlaneBlock, RotaryAxis};
@@ -114,17 +114,6 @@ pub(crate) fn parse_limit(s: &str) -> Result<(RotaryAxis, Limits), String> {
     Ok((axis, Limits { min, max }))
 }
 
-fn machine(id: &str) -> Result<Machine, String> {
-    match Machine::builtin(id) {
-        Ok(m) => Ok(m),
-        Err(_) if id.ends_with(".json") => {
-            let text = std::fs::read_to_string(id).map_err(|e| format!("{id}: {e}"))?;
-            Machine::from_json(&text).map_err(|e| format!("{id}: {e}"))
-        }
-        Err(e) => Err(format!("{e}; known: {}", Machine::builtin_ids().join(", "))),
-    }
-}
-
 /// The single PLANE block of `src`, numbers only.
 fn plane_block(src: &str, lang: Lang) -> Result<PlaneBlock<f64>, String> {
     let block = parse::plane_block(src).map_err(|e| match e {
@@ -134,14 +123,15 @@ fn plane_block(src: &str, lang: Lang) -> Result<PlaneBlock<f64>, String> {
     block.numbers().map_err(|index| format!("Q{index}: Q parameters have no value here"))
 }
 
+/// `msg` on stderr, each line marked (a machine file's problems are one a line).
 fn fail(msg: &str) -> ExitCode {
-    eprintln!("schwenkbar solve: {msg}");
+    msg.lines().for_each(|line| eprintln!("schwenkbar solve: {line}"));
     ExitCode::from(2)
 }
 
 pub(crate) fn run(args: &Args) -> ExitCode {
     let lang: Lang = args.lang.into();
-    let machine = match machine(&args.machine) {
+    let machine = match crate::machine_arg::load(&args.machine) {
         Ok(m) => m,
         Err(e) => return fail(&e),
     };
