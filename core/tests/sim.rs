@@ -14,7 +14,7 @@ use schwenkbar_core::orientation;
 use schwenkbar_core::plane::{RelAxis, RotaryAxis};
 use schwenkbar_core::sim::{
     ActiveTransform, Kin, Level, SegmentKind, SegmentPath, SimErrorCode, SimOptions, Simulation, State,
-    simulate,
+    simulate, simulate_listed,
 };
 use schwenkbar_core::solve::{self, SolveOptions};
 use schwenkbar_core::unconfirmed::MB_MAX_CLEARANCE;
@@ -561,9 +561,9 @@ fn display_during_a_move_follows_the_motion() {
     assert_close!(quarter.y, start.y, 1e-6);
 }
 
-/// The listing (`Simulation::listing`, the CLI's table) is the states' block, axes, plane
-/// angles and message, step by step, on every fixture and every shipped machine (runs that
-/// stop with an error included), and on a small checkpoint interval.
+/// The listing (`simulate_listed`, the CLI's table) is the states' block, axes, plane angles
+/// and message, step by step, on every fixture and every shipped machine (runs that stop with
+/// an error included), and on a small checkpoint interval; the listed run is the run.
 #[test]
 fn the_listing_shows_what_the_states_say() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures/sim");
@@ -576,8 +576,11 @@ fn the_listing_shows_what_the_states_say() {
             let machine = Machine::builtin(id).expect("shipped");
             // Endless loops stop at the step budget; 2,000 steps show them well enough.
             let opts = SimOptions { checkpoint_interval: 7, max_steps: Some(2000), ..SimOptions::default() };
-            let sim = simulate(&program, &machine, &opts);
-            let listed: Vec<_> = sim.listing(&program).collect();
+            let mut listed = Vec::new();
+            let sim = simulate_listed(&program, &machine, &opts, Some(&mut |row| listed.push(row)));
+            let plain = simulate(&program, &machine, &opts);
+            assert_eq!(sim.records, plain.records, "{} on {id}", path.display());
+            assert_eq!(sim.error, plain.error, "{} on {id}", path.display());
             let states: Vec<State> = sim.states(&program).collect();
             assert_eq!(listed.len(), states.len(), "{} on {id}", path.display());
             assert_eq!(listed.len(), sim.len(), "{} on {id}", path.display());
