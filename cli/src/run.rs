@@ -10,7 +10,7 @@ use std::process::ExitCode;
 use schwenkbar_core::Lang;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{tidy, write_fixed};
-use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
+use schwenkbar_core::sim::{ListingRow, SimOptions, Simulation, State, simulate, simulate_listed};
 use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
 use schwenkbar_core::{Program, parse};
 use serde::Serialize;
@@ -115,15 +115,37 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     };
     let (program, _) = parse(&src);
     let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
-    let sim = simulate(&program, &machine, &opts);
     let lang = Lang::from(args.lang);
 
     let out = std::io::stdout();
     let mut out = std::io::BufWriter::new(out.lock());
-    let written = if args.json {
-        write_json(&mut out, &src, &program, &machine, &sim, lang)
+    let (sim, written) = if args.json {
+        let sim = simulate(&program, &machine, &opts);
+        let written = write_json(&mut out, &src, &program, &machine, &sim, lang);
+        (sim, written)
     } else {
-        write_table(&mut out, &src, &program, &sim, lang, &args.file)
+        let mut table = Table {
+            out: &mut out,
+            src: &src,
+            lang,
+            row: String::with_capacity(256),
+            cell: String::with_capacity(32),
+            head_written: false,
+        };
+        // The first write error is kept; the run goes on (it is needed for the exit code).
+        let mut written = Ok(());
+        let sim = simulate_listed(
+            &program,
+            &machine,
+            &opts,
+            Some(&mut |row: ListingRow| {
+                if written.is_ok() {
+                    written = table.write(&program, &row);
+                }
+            }),
+        );
+        let written = written.and_then(|()| table.finish(&sim, &args.file));
+        (sim, written)
     };
     if let Err(e) = written.and_then(|()| out.flush()) {
         eprintln!("error: {e}");
@@ -209,39 +231,49 @@ fn write_json(
     writeln!(out, "],\"error\":{}}}", serde_json::to_string(&error)?)
 }
 
-/// One row per executed block. Rows are written into one reused buffer with the exact
-/// fixed-point writer (`write_fixed`, the same bytes as `{:.4}`): a 100,000-block run spent
-/// most of its time in `format!` of floats and in per-row allocations.
-fn write_table(
-    out: &mut impl Write,
-    src: &str,
-    program: &Program,
-    sim: &Simulation,
+/// One row per executed block, written as the run makes it (one pass: the run is not repeated
+/// for the listing). Rows are written into one reused buffer with the exact fixed-point writer
+/// (`write_fixed`, the same bytes as `{:.4}`): a 100,000-block run spent most of its time in
+/// `format!` of floats and in per-row allocations.
+struct Table<'a, W: Write> {
+    out: &'a mut W,
+    src: &'a str,
     lang: Lang,
-    file: &std::path::Path,
-) -> std::io::Result<()> {
-    let letters = sim.records.first().map(|r| r.axes.named()).unwrap_or_default();
-    let mut head = format!("{:>5}  {:<44}", "line", "block");
-    for (c, _) in &letters {
-        head.push_str(&format!(" {c:>10}"));
+    row: String,
+    cell: String,
+    head_written: bool,
+}
+
+impl<W: Write> Table<'_, W> {
+    /// The head line; the axis columns are the machine's axes in the first row.
+    fn head(&mut self, letters: &[(char, f64)]) -> std::io::Result<()> {
+        self.head_written = true;
+        let mut head = format!("{:>5}  {:<44}", "line", "block");
+        for (c, _) in letters {
+            head.push_str(&format!(" {c:>10}"));
+        }
+        head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
+        writeln!(self.out, "{head}")
     }
-    head.push_str(&format!("  {:<26}  message", "SPA/SPB/SPC"));
-    writeln!(out, "{head}")?;
-    let mut row = String::with_capacity(256);
-    let mut cell = String::with_capacity(32);
-    for s in sim.listing(program) {
+
+    fn write(&mut self, program: &Program, s: &ListingRow) -> std::io::Result<()> {
+        let axes = s.axes.named();
+        if !self.head_written {
+            self.head(&axes)?;
+        }
+        let Table { row, cell, .. } = self;
         row.clear();
-        pad_left(&mut row, itoa(&mut cell, s.line), 5);
+        pad_left(row, itoa(cell, s.line), 5);
         row.push_str("  ");
-        let text = block_text(src, program, s.block);
+        let text = block_text(self.src, program, s.block);
         let shown = text.char_indices().nth(44).map_or(text, |(i, _)| &text[..i]);
         row.push_str(shown);
-        pad(&mut row, 44 - shown.chars().count());
-        for (_, v) in s.axes.named() {
+        pad(row, 44 - shown.chars().count());
+        for (_, v) in axes {
             row.push(' ');
             cell.clear();
-            write_fixed(&mut cell, num(v), 4, false);
-            pad_left(&mut row, &cell, 10);
+            write_fixed(cell, num(v), 4, false);
+            pad_left(row, cell, 10);
         }
         row.push_str("  ");
         let start = row.len();
@@ -251,24 +283,39 @@ fn write_table(
                     if i > 0 {
                         row.push(' ');
                     }
-                    write_fixed(&mut row, num(*a), 4, true);
+                    write_fixed(row, num(*a), 4, true);
                 }
             }
             None => row.push('-'),
         }
         let width = row[start..].chars().count();
-        pad(&mut row, 26usize.saturating_sub(width));
+        pad(row, 26usize.saturating_sub(width));
         if let Some(m) = &s.message {
             row.push_str("  ");
-            row.push_str(m.get(lang));
+            row.push_str(m.get(self.lang));
         }
-        out.write_all(row.trim_end().as_bytes())?;
-        out.write_all(b"\n")?;
+        self.out.write_all(row.trim_end().as_bytes())?;
+        self.out.write_all(b"\n")
     }
-    if let Some(e) = &sim.error {
-        writeln!(out, "{}:{}: {}: {}", file.display(), e.line, e.message.get(lang), e.detail.get(lang))?;
+
+    /// After the last row: the head if there was no row, and the run's error.
+    fn finish(&mut self, sim: &Simulation, file: &std::path::Path) -> std::io::Result<()> {
+        if !self.head_written {
+            self.head(&[])?;
+        }
+        if let Some(e) = &sim.error {
+            let lang = self.lang;
+            writeln!(
+                self.out,
+                "{}:{}: {}: {}",
+                file.display(),
+                e.line,
+                e.message.get(lang),
+                e.detail.get(lang)
+            )?;
+        }
+        Ok(())
     }
-    Ok(())
 }
 
 /// `n` in decimal, written into `buf` (cleared first).

@@ -226,9 +226,7 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     // One block per line in the common case: reserve once instead of doubling (memory budget).
     p.blocks.reserve_exact(count_newlines(src.as_bytes()) + 1);
     let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
-    let mut previous_number: Option<u32> = None;
-    let mut begin: Option<String> = None;
-    let mut end_seen = false;
+    let mut across = AcrossBlocks::default();
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
         // Tried first: its lines are never blank and never continued (it refuses `~`).
@@ -261,41 +259,58 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
             }
             p.block()
         };
-        if let Some(n) = block.number() {
-            if let Some(prev) = previous_number
-                && n <= prev
-            {
-                p.diag_at(
-                    Severity::Error,
-                    DiagCode::BlockNumberNotAscending { previous: prev, number: n },
-                    block.span().start,
-                    block.span().start + digits_len(&src[block.span().start..]),
-                    None,
-                );
-            }
-            previous_number = Some(n);
-        }
-        match block.stored_body() {
-            Some(BlockBody::BeginPgm { name, .. }) if begin.is_none() => begin = Some(name.clone()),
-            Some(BlockBody::EndPgm { name, .. }) => {
-                end_seen = true;
-                if let Some(b) = &begin
-                    && !b.eq_ignore_ascii_case(name)
-                {
-                    let code = DiagCode::PgmNameMismatch { begin: b.clone(), end: name.clone() };
-                    let span = block.span();
-                    p.diag_at(Severity::Error, code, span.start, span.end, None);
-                }
-            }
-            _ => {}
-        }
+        across.check(src, &block, |code, span| p.diag_at(Severity::Error, code, span.start, span.end, None));
         p.blocks.push(block);
     }
-    if begin.is_some() && !end_seen {
+    if across.end_missing() {
         let at = src.len();
         p.diag_at(Severity::Warning, DiagCode::MissingEndPgm, at, at, None);
     }
     (Program { blocks: p.blocks }, p.diags)
+}
+
+/// The checks across blocks, made block by block in program order: block numbers ascending,
+/// the END PGM name equal to the BEGIN PGM name, a BEGIN PGM without END PGM. The parser makes
+/// them, and an edit that re-read only some blocks makes them again over the whole program
+/// (`Document::edited` in the app).
+#[derive(Debug, Default)]
+pub struct AcrossBlocks {
+    previous: Option<u32>,
+    begin: Option<String>,
+    end_seen: bool,
+}
+
+impl AcrossBlocks {
+    /// The errors `block` (of the text `src`) adds, each with its span.
+    pub fn check(&mut self, src: &str, block: &Block, mut error: impl FnMut(DiagCode, Span)) {
+        let span = block.span();
+        if let Some(n) = block.number() {
+            if let Some(previous) = self.previous.filter(|&p| n <= p) {
+                let digits = digits_len(src.get(span.start..).unwrap_or(""));
+                error(
+                    DiagCode::BlockNumberNotAscending { previous, number: n },
+                    Span::new(span.start, span.start + digits),
+                );
+            }
+            self.previous = Some(n);
+        }
+        match block.stored_body() {
+            Some(BlockBody::BeginPgm { name, .. }) if self.begin.is_none() => self.begin = Some(name.clone()),
+            Some(BlockBody::EndPgm { name, .. }) => {
+                self.end_seen = true;
+                if let Some(begin) = self.begin.as_ref().filter(|b| !b.eq_ignore_ascii_case(name)) {
+                    error(DiagCode::PgmNameMismatch { begin: begin.clone(), end: name.clone() }, span);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// After the last block: a BEGIN PGM without END PGM (a warning at the end of the text).
+    #[must_use]
+    pub fn end_missing(&self) -> bool {
+        self.begin.is_some() && !self.end_seen
+    }
 }
 
 fn digits_len(s: &str) -> usize {

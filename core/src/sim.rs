@@ -252,7 +252,7 @@ pub struct State {
     pub executed: bool,
 }
 
-/// One executed step as a listing shows it ([`Simulation::listing`]): the same values as the
+/// One executed step as a listing shows it ([`simulate_listed`]): the same values as the
 /// step's [`State`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct ListingRow {
@@ -345,6 +345,17 @@ pub struct Simulation {
 /// Runs a program on a machine.
 #[must_use]
 pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> Simulation {
+    simulate_listed(program, machine, options, None)
+}
+
+/// [`simulate`], handing each executed step's [`ListingRow`] to `row` as it runs: a listing
+/// (the CLI's table) in one pass instead of a run and a re-run of every step.
+pub fn simulate_listed(
+    program: &Program,
+    machine: &Machine,
+    options: &SimOptions,
+    row: Option<&mut dyn FnMut(ListingRow)>,
+) -> Simulation {
     let mut options = options.clone();
     options.checkpoint_interval = options.checkpoint_interval.max(1);
     Simulation {
@@ -357,7 +368,7 @@ pub fn simulate(program: &Program, machine: &Machine, options: &SimOptions) -> S
         labels: Arc::new(label_table(program)),
         blocks: program.blocks.len(),
     }
-    .run_on(program, Interp::new(machine))
+    .run_on(program, Interp::new(machine), row)
 }
 
 /// Blocks a contour element looks ahead over to the next element (`next_element`,
@@ -390,11 +401,18 @@ fn label_table(program: &Program) -> BTreeMap<LabelKey, usize> {
 
 impl Simulation {
     /// Runs on from `it` (the state after `self.records`), recording and checkpointing as
-    /// [`simulate`] does.
-    fn run_on(mut self, program: &Program, mut it: Interp) -> Simulation {
+    /// [`simulate`] does, and listing each step to `row` if given.
+    fn run_on(
+        mut self,
+        program: &Program,
+        mut it: Interp,
+        mut row: Option<&mut dyn FnMut(ListingRow)>,
+    ) -> Simulation {
         let budget = self.options.max_steps.unwrap_or(1_000_000 + 20 * program.blocks.len());
         let Simulation { machine, options, records, error, first_step, checkpoints, labels, .. } = &mut self;
         let cx = interp::Cx { program, machine, options, labels };
+        // One record reused for the listing: its segment list keeps its capacity.
+        let mut rec = Rec::default();
         while !it.done(program) {
             let step = records.len();
             if step % options.checkpoint_interval == 0 {
@@ -405,8 +423,19 @@ impl Simulation {
                 *error = Some(make_error(program, step, block, SimErrorCode::BlockBudget { steps: budget }));
                 break;
             }
-            match it.step(&cx, None) {
+            rec.segments.clear();
+            match it.step(&cx, row.is_some().then_some(&mut rec)) {
                 Ok(executed) => {
+                    if let Some(row) = row.as_mut() {
+                        row(ListingRow {
+                            step,
+                            block: it.last,
+                            line: program.blocks.get(it.last).map_or(0, |b| b.line()),
+                            axes: it.axes,
+                            spatial: it.plane.as_ref().map(|p| p.spatial),
+                            message: rec.message.take(),
+                        });
+                    }
                     if let Some(slot) = first_step.get_mut(block)
                         && slot.is_none()
                     {
@@ -472,7 +501,7 @@ impl Simulation {
             labels: Arc::new(label_table(program)),
             blocks: blocks.len(),
         }
-        .run_on(program, it)
+        .run_on(program, it, None)
     }
 
     /// Number of executed blocks with a state.
@@ -537,33 +566,6 @@ impl Simulation {
             let s = interp.state(program, &self.machine, step, executed, rec);
             step += 1;
             Some(s)
-        })
-    }
-
-    /// Every step as a listing row (the command line's table), re-simulated once from the
-    /// start: what [`Simulation::states`] gives of the block, the axes, the plane's spatial
-    /// angles and the message, without building frames, pivots, tool tips and segments for
-    /// every step (they were most of a 100,000-block listing's time).
-    pub fn listing<'a>(&'a self, program: &'a Program) -> impl Iterator<Item = ListingRow> + 'a {
-        let cx_ok = program.blocks.len() == self.blocks;
-        let mut it = self.checkpoints.first().cloned();
-        let mut rec = Rec::default();
-        std::iter::from_fn(move || {
-            let interp = it.as_mut().filter(|i| cx_ok && i.step_count < self.records.len())?;
-            let step = interp.step_count;
-            let cx =
-                interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
-            // One record reused: its segment list keeps its capacity from step to step.
-            rec.segments.clear();
-            interp.step(&cx, Some(&mut rec)).ok()?;
-            Some(ListingRow {
-                step,
-                block: interp.last,
-                line: program.blocks.get(interp.last).map_or(0, |b| b.line()),
-                axes: interp.axes,
-                spatial: interp.plane.as_ref().map(|p| p.spatial),
-                message: rec.message.take(),
-            })
         })
     }
 

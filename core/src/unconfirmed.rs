@@ -65,7 +65,7 @@ pub enum Decision {
     /// Simulator: [`TCPM_REFUSES_TOOL_CALL_M91_M92`] and the `FUNCTION TCPM` modes the simulator
     /// does not tell apart (its text).
     TcpmFunction,
-    /// Simulator: [`MB_RETRACT_AT_RAPID`].
+    /// Simulator: [`MB_RETRACT_AT_RAPID`], [`MB_MAX_CLEARANCE`].
     MbRetractRapid,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
     RotaryFeed,
@@ -254,8 +254,8 @@ impl Decision {
                 "TOOL CALL, M91 and M92 with TCPM active are an error (the manual has TCPM reset before them). FUNCTION RESET TCPM and M129 switch off either kind of TCPM. PATHCTRL VECTOR is simulated as PATHCTRL AXIS (the same tool tip, only the tool axis' intermediate orientations differ); F TCP and F CONT are not told apart (only the animation time would depend on them).",
             ),
             Decision::MbRetractRapid => Text::new(
-                "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken.",
-                "MB/MB MAX: retract at rapid traverse before the swivel.",
+                "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",
+                "MB/MB MAX: retract at rapid traverse before the swivel; MB MAX ends 1 mm before each linear axis's software limit switch.",
             ),
             Decision::RotaryFeed => Text::new(
                 "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",
@@ -504,6 +504,11 @@ pub const MOVE_DEFAULT_DIST: f64 = 0.0;
 /// `MB`/`MB MAX` retract at rapid traverse (FMAX), before the swivel at the block's feed.
 /// **UNCONFIRMED** (DOMAIN.md §4 gives no feed for the retract).
 pub const MB_RETRACT_AT_RAPID: bool = true;
+
+/// `MB MAX` retracts "to just before the software limit switch" (DOMAIN.md §4): how far before
+/// is machine data the sources do not give; each linear axis stops this many mm inside its
+/// limits. **UNCONFIRMED**.
+pub const MB_MAX_CLEARANCE: f64 = 1.0;
 
 /// `PLANE … MOVE|TURN` and `L` blocks that move rotary axes: a programmed F counts as °/min for
 /// the rotary share of the motion (the duration is the longer of the linear and rotary shares);

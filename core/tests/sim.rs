@@ -14,9 +14,10 @@ use schwenkbar_core::orientation;
 use schwenkbar_core::plane::{RelAxis, RotaryAxis};
 use schwenkbar_core::sim::{
     ActiveTransform, Kin, Level, SegmentKind, SegmentPath, SimErrorCode, SimOptions, Simulation, State,
-    simulate,
+    simulate, simulate_listed,
 };
 use schwenkbar_core::solve::{self, SolveOptions};
+use schwenkbar_core::unconfirmed::MB_MAX_CLEARANCE;
 use schwenkbar_core::{Program, parse};
 use schwenkbar_testkit::assert_close;
 use support::{block, spatial};
@@ -194,9 +195,9 @@ fn move_keeps_the_tool_tip_on_the_workpiece_turn_does_not() {
     let turn = &s5.segments[1];
     let drift = (kin.tip_wcs(&turn.axes_at(1.0)) - kin.tip_wcs(&turn.axes_at(0.0))).length();
     assert!(drift > 1.0, "TURN: the tip moves on the workpiece by {drift} mm");
-    // PLANE RESET TURN MB MAX: up to the Z limit switch (0), then the rotary axes home.
+    // PLANE RESET TURN MB MAX: up to just before the Z limit switch (0), then the rotary axes home.
     let s6 = after(&p, &sim, 6);
-    assert_close!(s6.segments[0].end.linear.z, m.geometry.linear_limits[2].max, EXACT);
+    assert_close!(s6.segments[0].end.linear.z, m.geometry.linear_limits[2].max - MB_MAX_CLEARANCE, EXACT);
     assert_close!(s6.axes.rotary, [0.0, 0.0], EXACT);
 }
 
@@ -455,6 +456,46 @@ fn plane_axial_ignores_a_preceding_mirror_and_leaves_q120_alone() {
     assert_close!(s7.axes.rotary, [90.0, 30.0], EXACT, "[C, A] in chain order");
 }
 
+/// Issue 17: `MB MAX` with a tilted tool axis on a head machine retracts along that axis and
+/// stops just before the first linear limit switch it would reach: the end is on the tool
+/// axis line, inside every limit by the clearance, and on the clearance of at least one limit
+/// (the longest such retract).
+#[test]
+fn mb_max_along_a_tilted_tool_axis_stops_inside_the_limits() {
+    let src = "0 BEGIN PGM MBMAX MM\n1 TOOL CALL 1 Z S1000\n2 L X+300 Y+0 Z+20 R0 FMAX\n\
+               3 PLANE SPATIAL SPA+40 SPB+0 SPC+0 TURN FMAX\n4 PLANE RESET TURN MB MAX FMAX\n5 END PGM MBMAX MM\n";
+    for machine in ["ca-head", "bc-head-table", "b45-nutating"] {
+        let (p, diags) = parse(src);
+        assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+        let m = Machine::builtin(machine).expect("shipped machine");
+        let sim = simulate(&p, &m, &SimOptions::default());
+        assert!(sim.error.is_none(), "{machine}: {:?}", sim.error);
+        let s3 = after(&p, &sim, 3);
+        let s4 = after(&p, &sim, 4);
+        let retract = &s4.segments[0];
+        assert_eq!(retract.kind, SegmentKind::Retract, "{machine}");
+        let (from, to) = (s3.axes.linear, retract.end.linear);
+        let d = kin_of(&m, &s3).tool_axis_mcs(s3.axes.rotary);
+        let moved = to - from;
+        assert!(moved.length() > 1.0, "{machine}: a retract happened");
+        assert_close!(moved.cross(d).length(), 0.0, TIP, "{machine}: along the tool axis");
+        assert!(moved.dot(d) > 0.0, "{machine}: away from the workpiece");
+        let mut on_clearance = false;
+        for (i, lim) in m.geometry.linear_limits.iter().enumerate() {
+            assert!(
+                to[i] <= lim.max - MB_MAX_CLEARANCE + TIP && to[i] >= lim.min + MB_MAX_CLEARANCE - TIP,
+                "{machine}: axis {i} at {} inside [{}, {}] by the clearance",
+                to[i],
+                lim.min,
+                lim.max
+            );
+            on_clearance |= (to[i] - (lim.max - MB_MAX_CLEARANCE)).abs() < TIP
+                || (to[i] - (lim.min + MB_MAX_CLEARANCE)).abs() < TIP;
+        }
+        assert!(on_clearance, "{machine}: the longest retract ends on a limit's clearance: {to}");
+    }
+}
+
 #[test]
 fn axes_outside_their_limit_switches_stop_the_run() {
     let (p, _, sim) = run("tests/fixtures/sim/rotary_limit.h", "ca-head");
@@ -520,9 +561,9 @@ fn display_during_a_move_follows_the_motion() {
     assert_close!(quarter.y, start.y, 1e-6);
 }
 
-/// The listing (`Simulation::listing`, the CLI's table) is the states' block, axes, plane
-/// angles and message, step by step, on every fixture and every shipped machine (runs that
-/// stop with an error included), and on a small checkpoint interval.
+/// The listing (`simulate_listed`, the CLI's table) is the states' block, axes, plane angles
+/// and message, step by step, on every fixture and every shipped machine (runs that stop with
+/// an error included), and on a small checkpoint interval; the listed run is the run.
 #[test]
 fn the_listing_shows_what_the_states_say() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures/sim");
@@ -535,8 +576,11 @@ fn the_listing_shows_what_the_states_say() {
             let machine = Machine::builtin(id).expect("shipped");
             // Endless loops stop at the step budget; 2,000 steps show them well enough.
             let opts = SimOptions { checkpoint_interval: 7, max_steps: Some(2000), ..SimOptions::default() };
-            let sim = simulate(&program, &machine, &opts);
-            let listed: Vec<_> = sim.listing(&program).collect();
+            let mut listed = Vec::new();
+            let sim = simulate_listed(&program, &machine, &opts, Some(&mut |row| listed.push(row)));
+            let plain = simulate(&program, &machine, &opts);
+            assert_eq!(sim.records, plain.records, "{} on {id}", path.display());
+            assert_eq!(sim.error, plain.error, "{} on {id}", path.display());
             let states: Vec<State> = sim.states(&program).collect();
             assert_eq!(listed.len(), states.len(), "{} on {id}", path.display());
             assert_eq!(listed.len(), sim.len(), "{} on {id}", path.display());

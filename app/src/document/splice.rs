@@ -9,7 +9,8 @@
 
 use schwenkbar_core::ast::Span;
 use schwenkbar_core::diag::DiagCode;
-use schwenkbar_core::{Block, BlockBody, Diagnostic, Program, Severity, parse};
+use schwenkbar_core::parse::AcrossBlocks;
+use schwenkbar_core::{Block, Diagnostic, Program, Severity, parse};
 
 use super::Document;
 
@@ -162,39 +163,18 @@ impl Document {
         let blocks = &self.program.blocks;
         let mut out = Vec::with_capacity(own.len());
         let mut own = own.into_iter().peekable();
-        let (mut previous, mut begin, mut end_seen) = (None::<u32>, None::<&str>, false);
+        let mut across = AcrossBlocks::default();
         for (i, b) in blocks.iter().enumerate() {
             let next_start = blocks.get(i + 1).map_or(usize::MAX, |n| n.span().start);
             while let Some(d) = own.next_if(|d| d.span.start < next_start) {
                 out.push(d);
             }
-            let at = |code, end| {
-                Diagnostic::new(Severity::Error, code, Span::new(b.span().start, end), b.line(), b.column())
-            };
-            if let Some(n) = b.number() {
-                if let Some(prev) = previous.filter(|&p| n <= p) {
-                    let head = self.text.get(b.span().start..).unwrap_or("");
-                    let t = head.trim_start_matches('/');
-                    let digits = head.len() - t.len() + t.bytes().take_while(u8::is_ascii_digit).count();
-                    let code = DiagCode::BlockNumberNotAscending { previous: prev, number: n };
-                    out.push(at(code, b.span().start + digits));
-                }
-                previous = Some(n);
-            }
-            match b.stored_body() {
-                Some(BlockBody::BeginPgm { name, .. }) if begin.is_none() => begin = Some(name),
-                Some(BlockBody::EndPgm { name, .. }) => {
-                    end_seen = true;
-                    if let Some(first) = begin.filter(|f| !f.eq_ignore_ascii_case(name)) {
-                        let code = DiagCode::PgmNameMismatch { begin: first.to_owned(), end: name.clone() };
-                        out.push(at(code, b.span().end));
-                    }
-                }
-                _ => {}
-            }
+            across.check(&self.text, b, |code, span| {
+                out.push(Diagnostic::new(Severity::Error, code, span, b.line(), b.column()));
+            });
         }
         out.extend(own);
-        if begin.is_some() && !end_seen {
+        if across.end_missing() {
             // Where the parser puts it: after the last block's last line, counted from there.
             let last_line = self.block_lines(blocks.len().saturating_sub(1)).map_or(0, |(_, l)| l);
             let from = self.line_starts.get(last_line).copied().unwrap_or(0);

@@ -183,15 +183,17 @@ impl Interp {
         }
     }
 
-    /// `MB MAX`: the longest retract along `d` that stays inside every linear limit (derived).
+    /// `MB MAX`: the longest retract along `d` that ends "just before the software limit
+    /// switch" (DOMAIN.md §4): every linear axis stays `MB_MAX_CLEARANCE` inside its limits.
     pub(super) fn mb_max(&self, cx: &Cx<'_>, d: DVec3) -> f64 {
         let l = self.axes.linear;
+        let margin = unconfirmed::MB_MAX_CLEARANCE;
         let mut s = f64::INFINITY;
         for (i, lim) in cx.machine.geometry.linear_limits.iter().enumerate() {
             if d[i] > 1e-12 {
-                s = s.min((lim.max - l[i]) / d[i]);
+                s = s.min((lim.max - margin - l[i]) / d[i]);
             } else if d[i] < -1e-12 {
-                s = s.min((lim.min - l[i]) / d[i]);
+                s = s.min((lim.min + margin - l[i]) / d[i]);
             }
         }
         if s.is_finite() { s.max(0.0) } else { 0.0 }
