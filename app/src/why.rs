@@ -250,6 +250,10 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
             "Drehung in der Bearbeitungsebene (um die Werkzeugachse).",
             "Rotation in the working plane (about the tool axis).",
         ),
+        BlockBody::FunctionTcpm(_) | BlockBody::FunctionResetTcpm => l.t(
+            "TCPM: die Werkzeugspitze bleibt auf dem programmierten Punkt, während die Drehachsen drehen; FUNCTION RESET TCPM schaltet es aus.",
+            "TCPM: the tool tip stays on the programmed point while the rotary axes turn; FUNCTION RESET TCPM switches it off.",
+        ),
         BlockBody::Lbl(_) | BlockBody::CallLbl { .. } | BlockBody::CallPgm { .. } => {
             l.t("Unterprogramm: Marke oder Aufruf.", "Subprogram: label or call.")
         }

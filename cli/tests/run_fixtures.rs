@@ -131,6 +131,7 @@ fixtures! {
     endless_fn9: "ac-table", max_blocks = 25;
     fn_jump_loop: "ac-table";
     fn_math_loop: "ac-table";
+    function_tcpm: "ac-table";
     linear_limit: "ac-table";
     m99_without_cycle: "ac-table";
     mirror_then_tilt: "ac-table";

@@ -455,6 +455,10 @@ pub enum BlockBody {
         incremental: bool,
     },
     TransRotationReset,
+    /// `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS`: TCPM on, with its three modes.
+    FunctionTcpm(Tcpm),
+    /// `FUNCTION RESET TCPM`.
+    FunctionResetTcpm,
     /// `LBL n|"name"`; `LBL 0` ends a subprogram.
     Lbl(Label),
     /// `CALL LBL n [REP m]`.
@@ -551,6 +555,62 @@ pub struct AxisWord {
     pub value: Value,
     /// Written with a leading `I` (incremental).
     pub incremental: bool,
+}
+
+/// The modes of `FUNCTION TCPM`, each always written (the control's dialog asks for all three).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Tcpm {
+    pub feed: TcpmFeed,
+    pub axis: TcpmAxis,
+    pub path: PathCtrl,
+}
+
+/// How the programmed feed rate acts under `FUNCTION TCPM`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum TcpmFeed {
+    /// `F TCP`: the relative speed of the tool tip to the workpiece.
+    Tcp,
+    /// `F CONT`: the contouring feed rate of the axes programmed in the block.
+    Cont,
+}
+
+/// What the rotary axis coordinates of a block mean under `FUNCTION TCPM`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum TcpmAxis {
+    /// `AXIS POS`: axis angles (as with `M128`).
+    Pos,
+    /// `AXIS SPAT`: spatial angles.
+    Spat,
+}
+
+/// How `FUNCTION TCPM` interpolates between start and target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum PathCtrl {
+    /// `PATHCTRL AXIS`: the rotary axes linear in time.
+    Axis,
+    /// `PATHCTRL VECTOR`: the tool axis in the plane of its start and end orientation.
+    Vector,
+}
+
+impl Tcpm {
+    /// The three mode words as the control writes them (`F TCP AXIS POS PATHCTRL AXIS`).
+    #[must_use]
+    pub fn words(self) -> [&'static str; 3] {
+        [
+            match self.feed {
+                TcpmFeed::Tcp => "F TCP",
+                TcpmFeed::Cont => "F CONT",
+            },
+            match self.axis {
+                TcpmAxis::Pos => "AXIS POS",
+                TcpmAxis::Spat => "AXIS SPAT",
+            },
+            match self.path {
+                PathCtrl::Axis => "PATHCTRL AXIS",
+                PathCtrl::Vector => "PATHCTRL VECTOR",
+            },
+        ]
+    }
 }
 
 /// `BLK FORM 0.1 Z X… Y… Z…` (MIN point, with the tool axis) or `0.2 …` (MAX point).

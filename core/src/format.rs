@@ -299,6 +299,14 @@ fn body(out: &mut String, b: &BlockBody) {
             value(out, *rot);
         }
         BlockBody::TransRotationReset => out.push_str("TRANS ROTATION RESET"),
+        BlockBody::FunctionTcpm(t) => {
+            out.push_str("FUNCTION TCPM");
+            for w in t.words() {
+                out.push(' ');
+                out.push_str(w);
+            }
+        }
+        BlockBody::FunctionResetTcpm => out.push_str("FUNCTION RESET TCPM"),
         BlockBody::Lbl(l) => {
             out.push_str("LBL ");
             label(out, l);

@@ -12,6 +12,7 @@ mod approach;
 mod cycles;
 mod fast;
 mod frame;
+mod function;
 mod labels_q;
 mod motion;
 mod pattern;
@@ -532,6 +533,7 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         "CYCL" => cycles::cycle_other(cx, body),
         "PLANE" => plane::plane(cx, rest),
         "TRANS" => transforms::trans(cx, body),
+        "FUNCTION" => function::function(cx, body),
         "LBL" | "CALL" => labels_q::label_or_call(cx, body),
         "FN" => labels_q::fn_block(cx, body),
         "Q" if digit_follows => labels_q::assign(cx, body, false),

@@ -62,6 +62,9 @@ pub enum Decision {
     MoveDefaultDist,
     /// Simulator: [`TCPM_FROM_BLOCK_START`].
     TcpmTiming,
+    /// Simulator: [`TCPM_REFUSES_TOOL_CALL_M91_M92`] and the `FUNCTION TCPM` modes the simulator
+    /// does not tell apart (its text).
+    TcpmFunction,
     /// Simulator: [`MB_RETRACT_AT_RAPID`], [`MB_MAX_CLEARANCE`].
     MbRetractRapid,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
@@ -111,7 +114,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 39] = [
+    pub const ALL: [Decision; 40] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -134,6 +137,7 @@ impl Decision {
         Decision::CompensationOnlyWhenTilted,
         Decision::MoveDefaultDist,
         Decision::TcpmTiming,
+        Decision::TcpmFunction,
         Decision::MbRetractRapid,
         Decision::RotaryFeed,
         Decision::Cycle19Spatial,
@@ -244,6 +248,10 @@ impl Decision {
             Decision::TcpmTiming => Text::new(
                 "M128 wirkt ab Satzanfang (eine Drehachsbewegung im selben Satz wird schon ausgeglichen), M129 am Satzende; TCPM gleicht auch ohne Schwenkung aus, die Werkzeugspitze fährt geradlinig zwischen den programmierten Punkten.",
                 "M128 acts from the start of its block (a rotary move in the same block is already compensated), M129 at its end; TCPM compensates with or without a tilt, the tool tip runs straight between programmed points.",
+            ),
+            Decision::TcpmFunction => Text::new(
+                "TOOL CALL, M91 und M92 bei aktivem TCPM sind ein Fehler (das Handbuch verlangt, TCPM vorher zurückzusetzen). FUNCTION RESET TCPM und M129 schalten jedes TCPM aus. PATHCTRL VECTOR wird wie PATHCTRL AXIS simuliert (gleiche Werkzeugspitze, nur die Zwischenstellungen der Werkzeugachse weichen ab); F TCP und F CONT werden nicht unterschieden (nur die Animationsdauer hinge davon ab).",
+                "TOOL CALL, M91 and M92 with TCPM active are an error (the manual has TCPM reset before them). FUNCTION RESET TCPM and M129 switch off either kind of TCPM. PATHCTRL VECTOR is simulated as PATHCTRL AXIS (the same tool tip, only the tool axis' intermediate orientations differ); F TCP and F CONT are not told apart (only the animation time would depend on them).",
             ),
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",
@@ -482,6 +490,12 @@ pub const COMPENSATION_ONLY_WHEN_TILTED: bool = true;
 /// tilt is active, and the tool tip runs straight between programmed points (as `FUNCTION TCPM
 /// F TCP AXIS POS` would). DOMAIN.md §6 names M128/M129, not when they act. **UNCONFIRMED**.
 pub const TCPM_FROM_BLOCK_START: bool = true;
+
+/// `TOOL CALL`, and a block with `M91` or `M92`, while TCPM (`M128` or `FUNCTION TCPM`) is on
+/// stop the run with an error; `false` would switch TCPM off before the block instead. The
+/// manuals say to reset TCPM before them [M:scribd-TCPM] (DOMAIN.md §6), not what the control
+/// does when it is not. **UNCONFIRMED**.
+pub const TCPM_REFUSES_TOOL_CALL_M91_M92: bool = true;
 
 /// `PLANE … MOVE` without `DIST`: the centre of rotation is the tool tip itself (DIST = 0), so
 /// the tool tip keeps its place on the workpiece. **UNCONFIRMED** default.

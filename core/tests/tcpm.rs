@@ -1,13 +1,16 @@
-//! TCPM (M128/M129, issue 17): with M128 active a block with rotary axes keeps the tool tip on
-//! the programmed point in the W-CS while the linear axes compensate, at the block's end and all
-//! along its motion; M129 cancels it. The oracle is the rigid-body forward model
-//! (`Kin::tip_wcs` of the simulated axes), not the inverse map the simulator uses.
+//! TCPM (M128/M129 and FUNCTION TCPM / FUNCTION RESET TCPM, issue 17): with TCPM active a
+//! block with rotary axes keeps the tool tip on the programmed point in the W-CS while the
+//! linear axes compensate, at the block's end and all along its motion; M129 and FUNCTION RESET
+//! TCPM cancel it. The oracle is the rigid-body forward model (`Kin::tip_wcs` of the simulated
+//! axes), not the inverse map the simulator uses.
 
 use glam::DVec3;
 use proptest::prelude::*;
+use schwenkbar_core::ast::{PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
+use schwenkbar_core::diag::{DiagCode, Expected};
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::parse;
-use schwenkbar_core::sim::{Kin, SegmentPath, SimOptions, Simulation, simulate};
+use schwenkbar_core::sim::{Kin, SegmentPath, SimErrorCode, SimOptions, Simulation, simulate};
+use schwenkbar_core::{BlockBody, Lang, format_program, parse};
 use schwenkbar_testkit::assert_close;
 
 /// The tool tip along a compensated rotary move (issue 17).
@@ -151,4 +154,191 @@ fn m128_and_m129_are_said_in_the_run() {
     assert!(on.de.contains("TCPM aktiv") && on.en.contains("TCPM on"), "{on:?}");
     let off = messages[3].as_ref().expect("M129 said");
     assert!(off.de.contains("TCPM aus") && off.en.contains("TCPM off"), "{off:?}");
+}
+
+/// `FUNCTION TCPM` with the start, three moves under TCPM and a rotary move after `FUNCTION
+/// RESET TCPM` (blocks 4–6 as in [`program`], block 8 the move after the reset).
+fn function_program(m: &Machine, start: DVec3, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> String {
+    format!(
+        "0 BEGIN PGM FTCPM MM\n1 TOOL CALL 1 Z S2000\n2 L X{:+.4} Y{:+.4} Z{:+.4} R0 FMAX\n3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n4 L {} F1000\n5 L {} F1000\n6 L X{:+.4} {} F1000\n7 FUNCTION RESET TCPM\n8 L {} FMAX\n9 END PGM FTCPM MM\n",
+        start.x,
+        start.y,
+        start.z,
+        rotary_words(m, a),
+        rotary_words(m, b),
+        start.x + 5.0,
+        rotary_words(m, c),
+        rotary_words(m, a),
+    )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
+
+    /// FUNCTION TCPM keeps the tip as M128 does, on every machine: blocks 4 and 5 hold it, block
+    /// 6 runs it straight by +5 mm in X. FUNCTION RESET TCPM cancels it: block 8 moves only the
+    /// rotary axes, the linear axes stay where they are.
+    #[test]
+    fn function_tcpm_keeps_the_tool_tip_and_reset_cancels_it(
+        x in -40.0..40.0f64, y in -40.0..40.0f64, z in 0.0..60.0f64,
+        u in prop::array::uniform6(0.0..1.0f64),
+    ) {
+        let mut checked = 0;
+        for m in machines() {
+            let runs = [0.0, 150.0].into_iter().find_map(|lift| {
+                let start = DVec3::new((x * 1e4).round() / 1e4, (y * 1e4).round() / 1e4, (z * 1e4).round() / 1e4 + lift);
+                let (a, b, c) = (inside(&m, [u[0], u[1]]), inside(&m, [u[2], u[3]]), inside(&m, [u[4], u[5]]));
+                let text = function_program(&m, start, a, b, c);
+                let (sim, tips) = tips_along(&m, &text);
+                sim.error.is_none().then_some((text, sim, tips))
+            });
+            let Some((text, sim, tips)) = runs else { continue };
+            checked += 1;
+            let tip = tips[2].0;
+            assert_close!(tips[3].0, tip, TIP, "{} FUNCTION TCPM block\n{text}", m.id);
+            for step in [4, 5] {
+                assert_close!(tips[step].0, tip, TIP, "{} step {step}\n{text}", m.id);
+                for along in &tips[step].1 {
+                    assert_close!(*along, tip, TIP, "{} along step {step}\n{text}", m.id);
+                }
+            }
+            let moved = tip + DVec3::X * 5.0;
+            assert_close!(tips[6].0, moved, TIP, "{} step 6\n{text}", m.id);
+            let n = tips[6].1.len();
+            for (k, along) in tips[6].1.iter().enumerate() {
+                assert_close!(*along, tip.lerp(moved, k as f64 / (n - 1) as f64), TIP, "{} along step 6\n{text}", m.id);
+            }
+            assert_close!(tips[7].0, moved, TIP, "{} FUNCTION RESET TCPM block\n{text}", m.id);
+            let (p, _) = parse(&text);
+            let states: Vec<_> = sim.states(&p).collect();
+            assert_close!(states[8].axes.linear, states[7].axes.linear, 1e-9, "{} after the reset\n{text}", m.id);
+        }
+        prop_assert!(checked >= 4, "only {checked} machines could run the case");
+    }
+}
+
+/// The same moves under FUNCTION TCPM … AXIS POS and under M128 give the same axes, step by step.
+#[test]
+fn function_tcpm_moves_the_axes_as_m128_does() {
+    let m = Machine::builtin("ac-table").expect("shipped");
+    let moves = "2 L X+20 Y+10 Z+30 R0 FMAX\n4 L A+30 C+45 F1000\n5 L X+25 A-10 C+90 F1000\n";
+    let with = |on: &str, off: &str| {
+        let text = format!(
+            "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S2000\n3 {on}\n{moves}6 {off}\n7 L A+0 C+0 FMAX\n8 END PGM T MM\n"
+        );
+        let (p, _) = parse(&text);
+        let sim = simulate(&p, &m, &SimOptions::default());
+        assert!(sim.error.is_none(), "{:?}", sim.error);
+        sim.states(&p).map(|s| (s.axes.linear, s.axes.rotary)).collect::<Vec<_>>()
+    };
+    let function = with("FUNCTION TCPM F CONT AXIS POS PATHCTRL VECTOR", "FUNCTION RESET TCPM");
+    let m128 = with("M128", "M129");
+    assert_eq!(function.len(), m128.len());
+    for (k, (f, m)) in function.iter().zip(&m128).enumerate() {
+        assert_close!(f.0, m.0, 1e-9, "linear axes at step {k}");
+        assert_eq!(f.1, m.1, "rotary axes at step {k}");
+    }
+}
+
+fn run_error(text: &str) -> (usize, SimErrorCode, schwenkbar_core::Text) {
+    let m = Machine::builtin("ac-table").expect("shipped");
+    let (p, diags) = parse(text);
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let e = simulate(&p, &m, &SimOptions::default()).error.expect("the run stops");
+    (e.block, e.code, e.message)
+}
+
+/// AXIS SPAT is refused on its block with the trainer's message, not run as axis angles.
+#[test]
+fn axis_spat_stops_the_run_on_its_block() {
+    let (block, code, message) = run_error(
+        "0 BEGIN PGM T MM\n1 FUNCTION TCPM F TCP AXIS SPAT PATHCTRL AXIS\n2 L A+30 F1000\n3 END PGM T MM\n",
+    );
+    assert_eq!((block, code), (1, SimErrorCode::TcpmAxisSpat));
+    assert_eq!((&*message.de, &*message.en), ("AXIS SPAT nicht simuliert", "AXIS SPAT not simulated"));
+}
+
+/// TOOL CALL, M91 and M92 with TCPM on (either kind) stop the run (DOMAIN.md §6: reset
+/// before them); after the reset they run.
+#[test]
+fn tool_call_and_m91_m92_need_tcpm_reset_first() {
+    for (on, block, word) in [
+        ("FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS", "TOOL CALL 2 Z S3000", "TOOL CALL"),
+        ("M128", "TOOL CALL 2 Z S3000", "TOOL CALL"),
+        ("FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS", "L Z-10 R0 FMAX M91", "M91"),
+        ("M128", "L Z-10 R0 FMAX M92", "M92"),
+    ] {
+        let text = format!("0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S2000\n2 {on}\n3 {block}\n4 END PGM T MM\n");
+        let (at, code, message) = run_error(&text);
+        assert_eq!((at, code), (3, SimErrorCode::TcpmActive { word }), "{text}");
+        assert!(message.de.contains("TCPM") && message.en.contains("TCPM"), "{message:?}");
+        for off in ["FUNCTION RESET TCPM", "M129"] {
+            let text = format!(
+                "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S2000\n2 {on}\n3 {off}\n4 {block}\n5 END PGM T MM\n"
+            );
+            let m = Machine::builtin("ac-table").expect("shipped");
+            let (p, _) = parse(&text);
+            let error = simulate(&p, &m, &SimOptions::default()).error;
+            assert!(error.is_none(), "{text}{error:?}");
+        }
+    }
+}
+
+/// Every combination of the three modes is read into the typed block and written back exactly.
+#[test]
+fn function_tcpm_parses_and_formats_back_exactly() {
+    for feed in [TcpmFeed::Tcp, TcpmFeed::Cont] {
+        for axis in [TcpmAxis::Pos, TcpmAxis::Spat] {
+            for path in [PathCtrl::Axis, PathCtrl::Vector] {
+                let t = Tcpm { feed, axis, path };
+                let [f, a, c] = t.words();
+                let text = format!(
+                    "0 BEGIN PGM T MM\n1 FUNCTION TCPM {f} {a} {c}\n2 FUNCTION RESET TCPM\n3 END PGM T MM\n"
+                );
+                let (p, diags) = parse(&text);
+                assert!(diags.is_empty(), "{text}: {diags:?}");
+                assert_eq!(*p.blocks[1].body(), BlockBody::FunctionTcpm(t));
+                assert_eq!(*p.blocks[2].body(), BlockBody::FunctionResetTcpm);
+                assert_eq!(format_program(&p), text);
+            }
+        }
+    }
+}
+
+/// A malformed FUNCTION TCPM is one error at the wrong word, naming what belongs there.
+#[test]
+fn a_malformed_function_tcpm_names_the_word_and_what_was_expected() {
+    for (block, word, expected) in [
+        ("FUNCTION TCPM F XYZ AXIS POS PATHCTRL AXIS", "XYZ", "TCP|CONT"),
+        ("FUNCTION TCPM AXIS POS PATHCTRL AXIS", "AXIS", "F TCP|F CONT"),
+        ("FUNCTION TCPM F TCP AXIS ROT PATHCTRL AXIS", "ROT", "POS|SPAT"),
+        ("FUNCTION TCPM F TCP PATHCTRL AXIS", "PATHCTRL", "AXIS POS|AXIS SPAT"),
+        ("FUNCTION TCPM F TCP AXIS POS", "", "PATHCTRL AXIS|PATHCTRL VECTOR"),
+        ("FUNCTION TCPM F CONT AXIS POS PATHCTRL LINE", "LINE", "AXIS|VECTOR"),
+    ] {
+        let text = format!("1 {block}");
+        let (_, diags) = parse(&text);
+        assert_eq!(diags.len(), 1, "{text}: {diags:?}");
+        let d = &diags[0];
+        assert_eq!(
+            (d.code.clone(), d.expected),
+            (DiagCode::InvalidInput, Some(Expected::Nc(expected))),
+            "{text}"
+        );
+        let at = if word.is_empty() {
+            text.len()
+        } else {
+            text.find(&format!(" {word}")).expect("in the text") + 1
+        };
+        assert_eq!(d.span.start, at, "{text}");
+        assert_eq!(&text[d.span.start..d.span.end], word, "{text}");
+        assert!(
+            d.message(Lang::De).contains(expected) && d.message(Lang::En).contains(expected),
+            "{}",
+            d.message(Lang::De)
+        );
+    }
+    let (_, diags) = parse("1 FUNCTION RESET TCPM X+0");
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0].span.start, "1 FUNCTION RESET TCPM ".len());
 }

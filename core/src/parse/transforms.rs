@@ -88,7 +88,7 @@ pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 }
 
 /// Nothing may follow.
-fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
+pub(super) fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
     let rest = sp(rest);
     if rest.is_empty() { Some(body) } else { cx.invalid(rest, None) }
 }

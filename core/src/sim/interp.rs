@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line,
-    OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
+    OldCycleData, OldCycleWord, Program, RadiusComp, Tcpm, TcpmAxis, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;
@@ -142,17 +142,24 @@ pub const STAY_SECONDS: f64 = 1.0;
 /// simulator does not model.
 fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
     if m.contains(&128) {
-        note(rec, || {
-            Text::new(
-                "M128: TCPM aktiv – die Werkzeugspitze bleibt auf dem programmierten Punkt, die Linearachsen gleichen die Drehachsen aus",
-                "M128: TCPM on – the tool tip stays on the programmed point, the linear axes compensate the rotary axes",
-            )
-        });
+        note(rec, || tcpm_on("M128"));
     } else if m.contains(&129) {
         note(rec, || Text::new("M129: TCPM aus", "M129: TCPM off"));
     } else if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
         note(rec, || Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
     }
+}
+
+/// What `M128` and `FUNCTION TCPM` (`word`) tell the trainee.
+fn tcpm_on(word: &str) -> Text {
+    Text::owned(
+        format!(
+            "{word}: TCPM aktiv – die Werkzeugspitze bleibt auf dem programmierten Punkt, die Linearachsen gleichen die Drehachsen aus"
+        ),
+        format!(
+            "{word}: TCPM on – the tool tip stays on the programmed point, the linear axes compensate the rotary axes"
+        ),
+    )
 }
 
 fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
@@ -471,6 +478,13 @@ impl Interp {
                 self.tf.rotation = 0.0;
                 self.sync_pos();
             }
+            BlockBody::FunctionTcpm(t) => self.function_tcpm(&mut rec, *t)?,
+            BlockBody::FunctionResetTcpm => {
+                self.set_tcpm(false);
+                note(&mut rec, || {
+                    Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off")
+                });
+            }
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)
                     && let Some(ret) = self.calls.pop()
@@ -516,21 +530,14 @@ impl Interp {
                 127 => self.m126 = false,
                 // From the block's start (unconfirmed::TCPM_FROM_BLOCK_START); the programmed
                 // position is taken anew from where the tool tip is.
-                128 if !self.tcpm && unconfirmed::TCPM_FROM_BLOCK_START => {
-                    self.tcpm = true;
-                    self.sync_pos();
-                }
+                128 if unconfirmed::TCPM_FROM_BLOCK_START => self.set_tcpm(true),
                 _ => {}
             }
         }
     }
 
     fn end_m(&mut self, m: &[u32]) {
-        let on = if m.contains(&129) { false } else { self.tcpm || m.contains(&128) };
-        if on != self.tcpm {
-            self.tcpm = on;
-            self.sync_pos();
-        }
+        self.set_tcpm(if m.contains(&129) { false } else { self.tcpm || m.contains(&128) });
         if m.iter().any(|&f| f == 30 || f == 2) {
             self.spindle.dir = SpindleDir::Off;
             self.ended = true;
@@ -538,6 +545,36 @@ impl Interp {
                 self.pc = usize::MAX;
             }
         }
+    }
+
+    /// TCPM on or off; the programmed position is taken anew from where the tool tip is.
+    fn set_tcpm(&mut self, on: bool) {
+        if on != self.tcpm {
+            self.tcpm = on;
+            self.sync_pos();
+        }
+    }
+
+    /// `FUNCTION TCPM`: on as `M128` with `AXIS POS`; the feed and path modes are not told apart
+    /// (unconfirmed::Decision::TcpmFunction). `AXIS SPAT` is refused rather than run as axis
+    /// angles, which would move the machine elsewhere than the program means.
+    fn function_tcpm(&mut self, rec: &mut Option<&mut Rec>, t: Tcpm) -> R<()> {
+        if t.axis == TcpmAxis::Spat {
+            return Err(SimErrorCode::TcpmAxisSpat);
+        }
+        self.set_tcpm(true);
+        note(rec, || tcpm_on("FUNCTION TCPM"));
+        Ok(())
+    }
+
+    /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off
+    /// (unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92).
+    fn tcpm_reset_before(&mut self, word: &'static str) -> R<()> {
+        if self.tcpm && unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92 {
+            return Err(SimErrorCode::TcpmActive { word });
+        }
+        self.set_tcpm(false);
+        Ok(())
     }
 
     fn blk_form(&mut self, b: &BlkForm) -> R<()> {
@@ -559,6 +596,7 @@ impl Interp {
     }
 
     fn tool_call(&mut self, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
+        self.tcpm_reset_before("TOOL CALL")?;
         let dl = t.dl.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         if let Some(tool) = &t.tool {

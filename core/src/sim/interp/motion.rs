@@ -154,6 +154,9 @@ impl Interp {
 
     pub(super) fn line(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, line: &Line) -> R<()> {
         self.spindle_m(&line.m);
+        if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
+            self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
+        }
         let m91 = line.m.contains(&91);
         let rate = self.rate(line.feed.as_ref())?;
         let mut p = self.programmed();

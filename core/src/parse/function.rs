@@ -1,0 +1,59 @@
+//! The `FUNCTION` blocks the simulator runs (DOMAIN.md §6); every other `FUNCTION …` is kept as
+//! an unknown block.
+//!   tcpm  := FUNCTION TCPM (F TCP|F CONT) (AXIS POS|AXIS SPAT) (PATHCTRL AXIS|PATHCTRL VECTOR)
+//!   reset := FUNCTION RESET TCPM
+
+use super::Cx;
+use super::transforms::end;
+use super::words::{Step, expected, failure, keyword, sp};
+use crate::ast::{BlockBody, PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
+use crate::diag::Expected;
+
+/// `FUNCTION …`.
+pub(super) fn function(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let Some(i) = keyword(body, "FUNCTION").map(sp) else { return super::unknown(cx, body) };
+    if let Some(r) = keyword(i, "TCPM").map(sp) {
+        return match tcpm(r) {
+            Ok((rest, t)) => end(cx, rest, BlockBody::FunctionTcpm(t)),
+            Err(stop) => cx.fail(stop.cut()),
+        };
+    }
+    if let Some(r) = keyword(i, "RESET").map(sp).and_then(|r| keyword(r, "TCPM")) {
+        return end(cx, r, BlockBody::FunctionResetTcpm);
+    }
+    super::unknown(cx, body)
+}
+
+/// The three mode words, in the control's order; each must be there.
+fn tcpm(i: &str) -> Step<'_, Tcpm> {
+    let (i, feed) =
+        mode(i, "F", [("TCP", TcpmFeed::Tcp), ("CONT", TcpmFeed::Cont)], ["F TCP|F CONT", "TCP|CONT"])?;
+    let (i, axis) = mode(
+        i,
+        "AXIS",
+        [("POS", TcpmAxis::Pos), ("SPAT", TcpmAxis::Spat)],
+        ["AXIS POS|AXIS SPAT", "POS|SPAT"],
+    )?;
+    let (i, path) = mode(
+        i,
+        "PATHCTRL",
+        [("AXIS", PathCtrl::Axis), ("VECTOR", PathCtrl::Vector)],
+        ["PATHCTRL AXIS|PATHCTRL VECTOR", "AXIS|VECTOR"],
+    )?;
+    Ok((i, Tcpm { feed, axis, path }))
+}
+
+/// `key choice`: the key missing stops at its place naming the whole word, a wrong choice stops
+/// at the choice naming the choices.
+fn mode<'a, T: Copy>(
+    i: &'a str,
+    key: &'static str,
+    choices: [(&'static str, T); 2],
+    what: [&'static str; 2],
+) -> Step<'a, T> {
+    let Some(after) = keyword(i, key).map(sp) else { return expected(i, Expected::Nc(what[0])) };
+    match choices.iter().find_map(|&(word, v)| keyword(after, word).map(|rest| (sp(rest), v))) {
+        Some(found) => Ok(found),
+        None => failure(after, Expected::Nc(what[1])),
+    }
+}
