@@ -102,6 +102,7 @@ fn an_invalid_file_is_refused_with_its_messages() {
         for args in [
             vec!["run", &*program.to_string_lossy(), "--machine", &file, "--json"],
             vec!["solve", "--machine", &file, "PLANE RESET STAY"],
+            vec!["machines", &file],
         ]
         .map(|a| a.into_iter().map(String::from).collect::<Vec<_>>())
         {
@@ -132,4 +133,28 @@ fn an_unreadable_or_missing_file_is_refused() {
     let o = run(&["solve", "--machine", "no-such-machine.json", "PLANE RESET STAY"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("no-such-machine.json"));
+}
+
+/// `schwenkbar machines FILE.json…` checks files before a class: a sound one is listed by its
+/// id (or as JSON, equal to the shipped machine's for a copy), a broken one fails the command.
+#[test]
+fn machines_checks_the_given_files() {
+    let mut v = ac_table();
+    v["id"] = json!("werkstatt-1");
+    let own = write("werkstatt-1.json", &v);
+    let o = run(&["machines", &own]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "werkstatt-1\n");
+    let copy = write("ac-table-listed.json", &ac_table());
+    let listed = run(&["machines", &copy, "--json"]);
+    let shipped = run(&["machines", "--json"]);
+    let listed: Value = serde_json::from_slice(&listed.stdout).expect("JSON");
+    let shipped: Value = serde_json::from_slice(&shipped.stdout).expect("JSON");
+    assert_eq!(listed[0], shipped[0], "ac-table is the first shipped machine");
+    let mut broken = ac_table();
+    broken["chain"][0]["direction"] = json!([0, 0, 0]);
+    let broken = write("listed-broken.json", &broken);
+    let o = run(&["machines", &own, &broken]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("Richtung ist der Nullvektor"));
 }
