@@ -68,7 +68,7 @@ pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
 pub fn scene_pane(props: &ScenePaneProps) -> Html {
     // The run's toolpath, once per simulation, made in parts between frames (a run of
     // 1,000,000 steps takes seconds) and shown when all in; a new simulation ends the old work.
-    let sim_ptr = props.sim.as_ref().map_or(0, |s| Rc::as_ptr(&s.0) as usize);
+    let sim_ptr = props.sim.as_ref().map_or(0, |s| std::sync::Arc::as_ptr(&s.0) as usize);
     let path = use_state(|| (SharedPath::default(), Rc::new(RunPath::default())));
     let path_gen = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
     {
