@@ -16,7 +16,7 @@ use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
 use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath_part};
-use schwenkbar_app::document::Document;
+use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
 use schwenkbar_app::scene::{SceneState, StockShape};
@@ -27,7 +27,7 @@ pub struct ScenePaneProps {
     pub lang: Lang,
     pub machine: Option<Rc<Machine>>,
     pub sim: Option<SimRef>,
-    pub doc: Rc<Document>,
+    pub doc: DocRef,
     /// The state to show (after the cursor block, or the run's step).
     pub state: Option<StateRef>,
     /// Animate the block's motion (program run) instead of showing its end.
