@@ -50,6 +50,8 @@ build_pages() {
   bundle_env trunk build kurs.html --release --offline --dist target/kurs-dist
   cp target/kurs-dist/index.html dist/kurs.html
   find target/kurs-dist -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+  # Each wasm's functions ordered for gzip (the names wasm-opt kept are stripped there).
+  python3 scripts/order_functions.py dist
   # wasm-bindgen's JS glue, minified with terser (trunk's minifier cannot parse it), and the
   # pages' integrity hashes of it written anew.
   python3 scripts/minify_glue.py dist
