@@ -145,8 +145,16 @@ pub fn rows() -> Vec<Row> {
         out.extend([
             row(s, Text::new("Achse (A, B, C)", "Axis (A, B, C)"), vec![Field::Axis(i)]),
             row(s, Text::new("Träger", "Carrier"), vec![Field::Carrier(i)]),
-            row(s, Text::new("Richtung x y z", "Direction x y z"), (0..3).map(|c| Field::Direction(i, c)).collect()),
-            row(s, Text::new("Drehpunkt x y z (mm)", "Pivot x y z (mm)"), (0..3).map(|c| Field::Pivot(i, c)).collect()),
+            row(
+                s,
+                Text::new("Richtung x y z", "Direction x y z"),
+                (0..3).map(|c| Field::Direction(i, c)).collect(),
+            ),
+            row(
+                s,
+                Text::new("Drehpunkt x y z (mm)", "Pivot x y z (mm)"),
+                (0..3).map(|c| Field::Pivot(i, c)).collect(),
+            ),
             row(s, Text::new("Endlos (Modulo 360°)", "Endless (modulo 360°)"), vec![Field::Endless(i)]),
             row(
                 s,
@@ -163,14 +171,29 @@ pub fn rows() -> Vec<Row> {
     for (a, letter) in XYZ.iter().enumerate() {
         out.push(row(
             3,
-            Text::owned(format!("Verfahrbereich {letter} min max (mm)"), format!("Travel {letter} min max (mm)")),
+            Text::owned(
+                format!("Verfahrbereich {letter} min max (mm)"),
+                format!("Travel {letter} min max (mm)"),
+            ),
             vec![Field::Linear(a, 0), Field::Linear(a, 1)],
         ));
     }
     out.extend([
-        row(3, Text::new("Eilgang linear (mm/min)", "Rapid traverse linear (mm/min)"), vec![Field::RapidLinear]),
-        row(3, Text::new("Eilgang Drehachsen (°/min)", "Rapid traverse rotary (°/min)"), vec![Field::RapidRotary]),
-        row(3, Text::new("Startposition X Y Z (mm)", "Start position X Y Z (mm)"), (0..3).map(Field::Start).collect()),
+        row(
+            3,
+            Text::new("Eilgang linear (mm/min)", "Rapid traverse linear (mm/min)"),
+            vec![Field::RapidLinear],
+        ),
+        row(
+            3,
+            Text::new("Eilgang Drehachsen (°/min)", "Rapid traverse rotary (°/min)"),
+            vec![Field::RapidRotary],
+        ),
+        row(
+            3,
+            Text::new("Startposition X Y Z (mm)", "Start position X Y Z (mm)"),
+            (0..3).map(Field::Start).collect(),
+        ),
     ]);
     out
 }
@@ -365,7 +388,7 @@ const SHIPPED_ID: Text = Text::new(
 /// field that is no number is not said twice), then the editor's own rule that an own machine
 /// does not take a shipped machine's id. The machine when there is no problem.
 #[must_use]
-pub fn check(form: &Form) -> (Result<Machine, ()>, Vec<FieldIssue>) {
+pub fn check(form: &Form) -> (Option<Machine>, Vec<FieldIssue>) {
     let (def, mut issues) = form.to_def();
     let validated = def.validate();
     if let Err(found) = &validated {
@@ -379,8 +402,8 @@ pub fn check(form: &Form) -> (Result<Machine, ()>, Vec<FieldIssue>) {
         issues.push(FieldIssue { path: Field::Id.path(), message: SHIPPED_ID });
     }
     match validated {
-        Ok(m) if issues.is_empty() => (Ok(m), issues),
-        _ => (Err(()), issues),
+        Ok(m) if issues.is_empty() => (Some(m), issues),
+        _ => (None, issues),
     }
 }
 
@@ -429,7 +452,11 @@ impl EditorState {
     /// The page at load: the saved machines and preferences as stored, and the URL fragment
     /// (`#id`, from the trainer's EDITIEREN) naming the machine to start from.
     #[must_use]
-    pub fn start(machines: Option<&str>, prefs: Option<&str>, fragment: Option<&str>) -> (EditorState, Vec<Effect>) {
+    pub fn start(
+        machines: Option<&str>,
+        prefs: Option<&str>,
+        fragment: Option<&str>,
+    ) -> (EditorState, Vec<Effect>) {
         let (prefs, prefs_notice) = Prefs::load(prefs);
         let (saved, damaged) = machines.map(saved_machines::list_from_record).unwrap_or_default();
         let mut fx = Vec::new();
@@ -493,8 +520,8 @@ impl EditorState {
     fn recheck(&mut self) {
         let (machine, issues) = check(&self.form);
         self.issues = issues;
-        self.valid = machine.is_ok();
-        if let Ok(m) = machine {
+        self.valid = machine.is_some();
+        if let Some(m) = machine {
             self.preview = Some(Rc::new(m));
         }
     }

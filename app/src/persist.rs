@@ -260,7 +260,8 @@ pub fn share_fragment(shared: &Shared) -> String {
 /// Reads a share link's fragment (with or without `#`); `None` if it carries no program.
 #[must_use]
 pub fn parse_fragment(fragment: &str) -> Option<Shared> {
-    let mut shared = Shared { program: String::new(), block: 0, machine: None, own_machine: None, run: false };
+    let mut shared =
+        Shared { program: String::new(), block: 0, machine: None, own_machine: None, run: false };
     let mut has_program = false;
     for pair in fragment.trim_start_matches('#').split('&') {
         let (key, value) = pair.split_once('=')?;

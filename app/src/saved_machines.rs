@@ -106,7 +106,13 @@ pub fn to_record(machine: &Machine) -> String {
     write_record(KIND, VERSION, &fields)
 }
 
-fn joint(axis: String, carrier: String, direction: &str, pivot: &str, limits: &str) -> Result<JointDef, RestoreError> {
+fn joint(
+    axis: String,
+    carrier: String,
+    direction: &str,
+    pivot: &str,
+    limits: &str,
+) -> Result<JointDef, RestoreError> {
     let (limits, endless) = match limits {
         ENDLESS => (None, true),
         "" => (None, false),
@@ -128,8 +134,27 @@ fn joint(axis: String, carrier: String, direction: &str, pivot: &str, limits: &s
 /// Reads one record line and validates the machine; a record that reads but describes no valid
 /// machine is `Corrupt` (nothing but this module writes it, and it writes valid machines only).
 pub fn from_record(text: &str) -> Result<Machine, RestoreError> {
-    let [id, name_de, name_en, desc_de, desc_en, a0, k0, d0, p0, l0, a1, k1, d1, p1, l1, preset, lin, rapid, start] =
-        read_record(text, KIND, VERSION, KEYS)?;
+    let [
+        id,
+        name_de,
+        name_en,
+        desc_de,
+        desc_en,
+        a0,
+        k0,
+        d0,
+        p0,
+        l0,
+        a1,
+        k1,
+        d1,
+        p1,
+        l1,
+        preset,
+        lin,
+        rapid,
+        start,
+    ] = read_record(text, KIND, VERSION, KEYS)?;
     let [xn, xx, yn, yx, zn, zx] = numbers(&lin)?;
     let [rapid_linear, rapid_rotary] = numbers(&rapid)?;
     let def = MachineDef {

@@ -199,7 +199,10 @@ pub fn row(state: &AppState) -> Row {
                     id: "own-machines".to_owned(),
                     label: Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES").get(l).to_owned(),
                     action: Action::ShowOwnMachines,
-                    active: state.machine.as_ref().is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
+                    active: state
+                        .machine
+                        .as_ref()
+                        .is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
                 });
             }
             row[6] = text_key("edit-machine", Text::new("EDITIEREN", "EDIT"), l, Action::EditMachine);

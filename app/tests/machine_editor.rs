@@ -132,7 +132,12 @@ fn every_validation_message_reaches_its_field_in_german() {
             "chain[0].direction",
             "Richtung ist der Nullvektor",
         ),
-        ("not unit", |s| set(s, Field::Direction(0, 2), "2"), "chain[0].direction", "kein Einheitsvektor (Länge 2)"),
+        (
+            "not unit",
+            |s| set(s, Field::Direction(0, 2), "2"),
+            "chain[0].direction",
+            "kein Einheitsvektor (Länge 2)",
+        ),
         (
             "parallel",
             |s| set(&set(s, Field::Direction(1, 0), "0"), Field::Direction(1, 2), "1"),
@@ -173,7 +178,12 @@ fn every_validation_message_reaches_its_field_in_german() {
             "min 700 muss kleiner als max 600 sein",
         ),
         ("rapid", |s| set(s, Field::RapidLinear, "0"), "geometry.rapid_linear", "muss größer als 0 sein (0)"),
-        ("rapid rotary", |s| set(s, Field::RapidRotary, "-5"), "geometry.rapid_rotary", "muss größer als 0 sein (-5)"),
+        (
+            "rapid rotary",
+            |s| set(s, Field::RapidRotary, "-5"),
+            "geometry.rapid_rotary",
+            "muss größer als 0 sein (-5)",
+        ),
         (
             "start outside",
             |s| set(s, Field::Start(2), "10"),
@@ -250,7 +260,10 @@ fn export_then_import_gives_an_equal_machine() {
     let [Effect::SaveFile { name, text }] = fx.as_slice() else { panic!("{fx:?}") };
     assert_eq!(name, "ac-table-eigen.json");
     assert_eq!(Machine::from_json(text).as_ref(), Ok(s.preview.as_deref().expect("preview")));
-    let imported = then(&EditorState::start(None, None, Some("#ba-table")).0, EditorAction::Import(text.clone().into_bytes()));
+    let imported = then(
+        &EditorState::start(None, None, Some("#ba-table")).0,
+        EditorAction::Import(text.clone().into_bytes()),
+    );
     assert!(imported.valid && imported.import_issues.is_empty());
     assert_eq!(imported.preview, s.preview);
     assert_eq!(imported.form.joints[0].pivot[0], "12.25");
@@ -298,7 +311,10 @@ fn the_trainer_lists_runs_and_edits_the_saved_machines() {
     let record = saved_value(&set(&editor(), Field::Name(0), "Meine Fräse").apply(EditorAction::Save).1);
     let s = trainer_with(&record).apply(Action::ShowMachines).0;
     let keys: Vec<String> = row(&s).iter().flatten().map(|k| k.id.clone()).collect();
-    assert!(keys.contains(&"own-machines".to_owned()) && keys.contains(&"edit-machine".to_owned()), "{keys:?}");
+    assert!(
+        keys.contains(&"own-machines".to_owned()) && keys.contains(&"edit-machine".to_owned()),
+        "{keys:?}"
+    );
     let s = s.apply(Action::ShowOwnMachines).0;
     assert_eq!(s.level, SoftkeyLevel::OwnMachines);
     let own = row(&s)[0].clone().expect("the saved machine");
@@ -335,7 +351,10 @@ fn an_own_machine_travels_in_the_share_link() {
     let fragment = s.share_fragment();
     assert!(fragment.contains("&mdef="), "{fragment}");
     let shared = persist::parse_fragment(&fragment).expect("a link");
-    assert_eq!(shared.own_machine.as_deref().map(saved_machines::from_record), Some(Ok((**s.machine.as_ref().expect("machine")).clone())));
+    assert_eq!(
+        shared.own_machine.as_deref().map(saved_machines::from_record),
+        Some(Ok((**s.machine.as_ref().expect("machine")).clone()))
+    );
     // Opened by someone who does not have the machine.
     let (opened, _) = AppState::start(Stored::default(), Some(&format!("#{fragment}")));
     assert_eq!(opened.machine, s.machine);
@@ -383,9 +402,10 @@ fn seed_seq_sym_rows_on_edited_copies_read_through_the_record() {
     assert_eq!(rows.len(), 15);
     for r in rows {
         let (_, machine) = machines.iter().find(|(id, _)| *id == r.machine).expect("row's machine");
-        let start = r.start_axes().iter().fold(Default::default(), |v: schwenkbar_core::axes::AxisValues, &(l, x)| {
-            v.with(rotary(l), x)
-        });
+        let start = r
+            .start_axes()
+            .iter()
+            .fold(Default::default(), |v: schwenkbar_core::axes::AxisValues, &(l, x)| v.with(rotary(l), x));
         let limits = r
             .limit_range()
             .map(|(l, min, max)| (rotary(l), schwenkbar_core::machine::Limits { min, max }))
@@ -399,7 +419,12 @@ fn seed_seq_sym_rows_on_edited_copies_read_through_the_record() {
                 Expect::Chosen(axes) => {
                     let chosen = e.chosen_axes().unwrap_or_else(|| panic!("{id}: no solution"));
                     for &(letter, value) in axes {
-                        assert_close!(chosen.get(rotary(letter)).unwrap_or(f64::NAN), value, 1e-4, "{id} {letter}");
+                        assert_close!(
+                            chosen.get(rotary(letter)).unwrap_or(f64::NAN),
+                            value,
+                            1e-4,
+                            "{id} {letter}"
+                        );
                     }
                 }
                 Expect::Refused(msg) => {

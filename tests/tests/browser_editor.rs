@@ -19,14 +19,20 @@ fn stored(key: &str) -> Option<String> {
 async fn a_zero_direction_is_said_at_its_field_then_fixed_saved_and_offered_by_the_trainer() {
     clear_storage();
     let editor = mount_editor("#ac-table").await;
-    assert_eq!(query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(), Some("true"));
+    assert_eq!(
+        query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(),
+        Some("true")
+    );
     let c_direction = r#"input[data-field="Direction(0, 2)"]"#;
     let at_field = r#"[data-path="chain[0].direction"] .ed-issue"#;
     // C's direction (0 0 1) typed as 0 0 0.
     type_into(&editor, c_direction, "0").await;
     assert!(wait_for(&editor, at_field, 3_000).await.is_some(), "a message at the direction");
     assert_eq!(text(&editor, at_field), "Richtung ist der Nullvektor");
-    assert_eq!(query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(), Some("false"));
+    assert_eq!(
+        query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(),
+        Some("false")
+    );
     assert!(query(&editor, "canvas.view3d").is_some(), "the preview stays (the last valid machine)");
     click(&editor, "[data-action=save]").await;
     assert!(text(&editor, ".message").starts_with("Nicht gespeichert"), "{}", text(&editor, ".message"));

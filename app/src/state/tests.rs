@@ -81,7 +81,8 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         "the restored program is the one simulated"
     );
 
-    let stored = Stored { state: Some("s2;cursor=".into()), program: Some("0 L X+1".into()), ..Stored::default() };
+    let stored =
+        Stored { state: Some("s2;cursor=".into()), program: Some("0 L X+1".into()), ..Stored::default() };
     let (broken, fx) = AppState::start(stored, None);
     assert_eq!(broken.doc.text, "0 L X+1", "the program typed is kept");
     assert_eq!(
@@ -162,8 +163,11 @@ fn a_link_over_own_work_is_a_preview_until_the_trainee_decides() {
     let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n".to_owned();
     let saved = Some(AppState::default().saved().to_record());
     let link = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
-    let stored =
-        |program: &str| Stored { state: saved.clone(), program: Some(program.to_owned()), ..Stored::default() };
+    let stored = |program: &str| Stored {
+        state: saved.clone(),
+        program: Some(program.to_owned()),
+        ..Stored::default()
+    };
     let (s, fx) = AppState::start(stored(&own), Some(&link));
     assert!(s.link.is_some());
     assert_ne!(s.doc.text, own, "the link's program is shown");
