@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Minifies wasm-bindgen's JS glue in a built dist/ folder (trunk 0.21's own minifier cannot parse
-it) with terser, and writes the new subresource-integrity hashes into the pages that preload it.
+it) with terser, and writes the new subresource-integrity hashes of the glue and of the wasm
+(changed by scripts/order_functions.py) into the pages that preload them.
 
 Names are mangled except `__wbg_init`, one statement a line, so scripts/single_file.py still finds
 the glue's parts. Usage: minify_glue.py DIST"""
@@ -11,6 +12,12 @@ import re
 import subprocess
 import sys
 
+
+def sri(path):
+    """The subresource-integrity value of a file."""
+    return "sha384-" + base64.b64encode(hashlib.sha384(path.read_bytes()).digest()).decode()
+
+
 dist = pathlib.Path(sys.argv[1])
 hashes = {}
 for glue in sorted(dist.glob("*.js")):
@@ -18,10 +25,11 @@ for glue in sorted(dist.glob("*.js")):
         continue
     subprocess.run(["terser", str(glue), "--module", "--mangle", "reserved=['__wbg_init']",
                     "--format", "semicolons=false", "-o", str(glue)], check=True)
-    digest = hashlib.sha384(glue.read_bytes()).digest()
-    hashes[glue.name] = "sha384-" + base64.b64encode(digest).decode()
+    hashes[glue.name] = sri(glue)
+for wasm in sorted(dist.glob("*_bg.wasm")):
+    hashes[wasm.name] = sri(wasm)
 
-# A tag naming the glue (href="/x.js", href=/x.js) gets the glue's new integrity.
+# A tag naming the glue or the wasm (href="/x.js", href=/x.js) gets its new integrity.
 TAG = re.compile(r"<link\b[^>]*>", re.I)
 for page in sorted(dist.glob("*.html")):
     html = page.read_text(encoding="utf-8")
