@@ -25,6 +25,7 @@ cargo run --release -p schwenkbar --example bench_cli
 cargo run --release -p schwenkbar-core --example bench_solve
 cargo run --release -p schwenkbar-core --example bench_sim
 cargo run --release -p schwenkbar-core --example bench_stock
+cargo run --release -p schwenkbar-app --example bench_edit
 bash scripts/bench_peer.sh
 wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_big --test browser_render --test browser_stock -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'

@@ -2,6 +2,8 @@
 //! Parsed once per change of text (only the changed blocks again, [`Document::edited`]); every
 //! view reads the same result.
 
+use std::rc::Rc;
+
 use schwenkbar_core::{Diagnostic, Program, parse};
 
 mod splice;
@@ -19,9 +21,10 @@ pub struct Document {
 }
 
 /// Two documents are equal when their texts are: everything else is parsed from the text, by
-/// `Document::new`, the only way to make one (`line_starts` is private). So yew's props check
-/// is one string compare instead of a walk through two ASTs, and the derived deep comparison
-/// (about 1 KB gzip) stays out of the bundle.
+/// `Document::new`, the only way to make one (`line_starts` is private). So comparing two
+/// states is one string compare instead of a walk through two ASTs, and the derived deep
+/// comparison (about 1 KB gzip) stays out of the bundle. The views compare by identity
+/// ([`DocRef`]).
 impl PartialEq for Document {
     fn eq(&self, other: &Document) -> bool {
         std::ptr::eq(self, other) || self.text == other.text
@@ -31,6 +34,25 @@ impl PartialEq for Document {
 /// Equal texts are an equivalence; with `Eq`, `Rc<Document>`'s comparison (every prop check)
 /// is a pointer compare first, not a walk through megabytes of the same text.
 impl Eq for Document {}
+
+/// A document handed to the views, compared by identity: a view re-renders when the program
+/// is another document. Comparing the texts (every prop check of every view that shows the
+/// program) cost milliseconds a keystroke in a 4 MB program.
+#[derive(Debug, Clone)]
+pub struct DocRef(pub Rc<Document>);
+
+impl PartialEq for DocRef {
+    fn eq(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::ops::Deref for DocRef {
+    type Target = Document;
+    fn deref(&self) -> &Document {
+        &self.0
+    }
+}
 
 impl Document {
     #[must_use]

@@ -1,35 +1,38 @@
 //! Program run (Programmlauf Einzelsatz / Satzfolge) over the core's simulation: which executed
 //! step is shown, playing or not, at what speed. Pure; the app shell's timer sends `RunTick`.
 
+use std::ops::Range;
 use std::rc::Rc;
+use std::sync::Arc;
 
 use schwenkbar_core::Program;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 
 /// The simulation of the current program on the current machine, compared by identity (it is
-/// recomputed, never edited).
+/// recomputed, never edited). An `Arc`: a run the next edit stops early keeps this one for the
+/// edit after ([`Simulation::resumed`]) without copying it.
 #[derive(Debug, Clone)]
-pub struct SimRef(pub Rc<Simulation>);
+pub struct SimRef(pub Arc<Simulation>);
 
 impl SimRef {
     /// The program simulated on the machine with the control's defaults.
     #[must_use]
     pub fn of(program: &Program, machine: &Machine) -> SimRef {
-        SimRef(Rc::new(simulate(program, machine, &SimOptions::default())))
+        SimRef(Arc::new(simulate(program, machine, &SimOptions::default())))
     }
 
     /// The simulation of `program`, an edit of the simulated program that kept its blocks
-    /// before `unchanged` ([`Simulation::resumed`]).
+    /// outside `changed` ([`Simulation::resumed`]).
     #[must_use]
-    pub fn resumed(&self, program: &Program, unchanged: usize) -> SimRef {
-        SimRef(Rc::new(self.0.resumed(program, unchanged)))
+    pub fn resumed(&self, program: &Program, changed: Range<usize>) -> SimRef {
+        SimRef(Arc::new(self.0.resumed(program, changed)))
     }
 }
 
 impl PartialEq for SimRef {
     fn eq(&self, other: &Self) -> bool {
-        Rc::ptr_eq(&self.0, &other.0)
+        Arc::ptr_eq(&self.0, &other.0)
     }
 }
 

@@ -217,8 +217,8 @@ impl Reducer for AppState {
 impl AppState {
     fn transition(&self, action: Action, fx: &mut Vec<Effect>) -> AppState {
         let mut next = self.clone();
-        // After a text edit: the blocks before this index are the old ones.
-        let mut unchanged = None;
+        // After a text edit: the blocks that may differ (the others are the old ones).
+        let mut changed = None;
         next.message = None;
         if self.link.is_some() && !action.allowed_in_link_preview() {
             next.message = Some(Text::new(
@@ -260,15 +260,15 @@ impl AppState {
             Action::CursorDown => next.cursor = (self.cursor + 1).min(self.doc.last_index()),
             Action::CursorTo(i) => next.cursor = i.min(self.doc.last_index()),
             Action::SetText(text) => {
-                let (doc, same) = self.doc.edited(text);
+                let (doc, blocks) = self.doc.edited(text);
                 next.doc = Rc::new(doc);
-                unchanged = Some(same);
+                changed = Some(blocks);
                 next.cursor = self.cursor.min(next.doc.last_index());
             }
             Action::EditText { at, text } => match self.doc.replaced(at, &text) {
-                Some((doc, same)) => {
+                Some((doc, blocks)) => {
                     next.doc = Rc::new(doc);
-                    unchanged = Some(same);
+                    changed = Some(blocks);
                     next.cursor = self.cursor.min(next.doc.last_index());
                 }
                 // The editor's window is made from this document, so this cannot happen; if
@@ -372,17 +372,17 @@ impl AppState {
             (a, b) => a.is_some() != b.is_some(),
         };
         if !Rc::ptr_eq(&self.doc, &next.doc) || machine_changed {
-            next = next.simulated(unchanged.filter(|_| !machine_changed));
+            next = next.simulated(changed.filter(|_| !machine_changed));
         }
         next
     }
 
     /// Re-runs the simulation (after the program or the machine changed; after a text edit
-    /// that kept the blocks before `unchanged`, from the checkpoint before the first step that
+    /// that kept the blocks outside `changed`, from the checkpoint before the first step that
     /// reaches a changed block) and keeps an open run at the same step where it still exists.
     #[must_use]
-    fn simulated(mut self, unchanged: Option<usize>) -> AppState {
-        let resumed = unchanged.zip(self.sim.as_ref()).map(|(u, sim)| sim.resumed(&self.doc.program, u));
+    fn simulated(mut self, changed: Option<std::ops::Range<usize>>) -> AppState {
+        let resumed = changed.zip(self.sim.as_ref()).map(|(c, sim)| sim.resumed(&self.doc.program, c));
         self.sim = resumed.or_else(|| self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m)));
         self.stock = None;
         match (&self.sim, self.run.as_mut()) {

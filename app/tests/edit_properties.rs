@@ -1,6 +1,8 @@
 //! Issue 16: a text edit parsed again only where it changed, and the run resumed from a
 //! checkpoint, give exactly what parsing and simulating the new text from scratch gives.
 
+use std::sync::Arc;
+
 use proptest::prelude::*;
 use schwenkbar_app::document::Document;
 use schwenkbar_core::machine::Machine;
@@ -68,6 +70,19 @@ fn assert_same(got: &Document, want: &Document) {
     }
 }
 
+/// The blocks outside `changed` are the old ones: the same before it, the old last ones after
+/// it (moved in the text).
+fn assert_kept(old: &Document, new: &Document, changed: &std::ops::Range<usize>) {
+    let (old, new) = (&old.program.blocks, &new.program.blocks);
+    assert!(changed.start <= changed.end && changed.end <= new.len());
+    assert!(new[..changed.start] == old[..changed.start]);
+    let tail = new.len() - changed.end;
+    assert!(tail <= old.len());
+    for (a, b) in new[changed.end..].iter().zip(&old[old.len() - tail..]) {
+        assert_eq!(a.body(), b.body());
+    }
+}
+
 fn assert_same_run(got: &Simulation, want: &Simulation, doc: &Document) {
     assert_eq!(got.records, want.records);
     assert_eq!(got.first_step, want.first_step);
@@ -88,16 +103,48 @@ proptest! {
         let machine = Machine::builtin("ac-table").expect("shipped");
         let options = SimOptions { checkpoint_interval: interval, ..SimOptions::default() };
         let mut doc = Document::new(PROGRAMS[program].to_owned());
-        let mut sim = simulate(&doc.program, &machine, &options);
+        let mut sim = Arc::new(simulate(&doc.program, &machine, &options));
         for (at, cut, piece) in edits {
             let text = edit(&doc.text, at, cut, PIECES[piece]);
-            let (next, unchanged) = doc.edited(text.clone());
+            let (next, changed) = doc.edited(text.clone());
             let fresh = Document::new(text);
             assert_same(&next, &fresh);
-            prop_assert!(next.program.blocks[..unchanged] == doc.program.blocks[..unchanged]);
-            let resumed = sim.resumed(&next.program, unchanged);
+            assert_kept(&doc, &next, &changed);
+            let resumed = sim.resumed(&next.program, changed);
             assert_same_run(&resumed, &simulate(&fresh.program, &machine, &options), &fresh);
-            (doc, sim) = (next, resumed);
+            (doc, sim) = (next, Arc::new(resumed));
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Typing breaks a block and the next keys heal it: edits, then the same edits undone one by
+    /// one, each run resumed (joining an earlier run, also the one before the run stopped at a
+    /// broken block) equal to a fresh parse and run.
+    #[test]
+    fn edits_undone_one_by_one_resume_to_a_fresh_parse_and_run(
+        program in 0..PROGRAMS.len(),
+        edits in prop::collection::vec((any::<usize>(), 0usize..8, 0..PIECES.len()), 1..4),
+        interval in 1usize..6,
+    ) {
+        let machine = Machine::builtin("ac-table").expect("shipped");
+        let options = SimOptions { checkpoint_interval: interval, ..SimOptions::default() };
+        let mut doc = Document::new(PROGRAMS[program].to_owned());
+        let mut sim = Arc::new(simulate(&doc.program, &machine, &options));
+        let mut texts = vec![doc.text.clone()];
+        for (at, cut, piece) in edits {
+            texts.push(edit(&doc.text, at, cut, PIECES[piece]));
+        }
+        let back: Vec<String> = texts.iter().rev().skip(1).cloned().collect();
+        for text in texts.into_iter().skip(1).chain(back) {
+            let (next, changed) = doc.edited(text.clone());
+            let fresh = Document::new(text);
+            assert_kept(&doc, &next, &changed);
+            let resumed = sim.resumed(&next.program, changed);
+            assert_same_run(&resumed, &simulate(&fresh.program, &machine, &options), &fresh);
+            (doc, sim) = (next, Arc::new(resumed));
         }
     }
 }
@@ -107,16 +154,17 @@ fn emptied_and_refilled_text_and_an_edit_at_either_end() {
     let machine = Machine::builtin("ac-table").expect("shipped");
     let options = SimOptions { checkpoint_interval: 2, ..SimOptions::default() };
     let mut doc = Document::new(PROGRAMS[0].to_owned());
-    let mut sim = simulate(&doc.program, &machine, &options);
+    let mut sim = Arc::new(simulate(&doc.program, &machine, &options));
     for text in
         ["", PROGRAMS[1], &PROGRAMS[1].replace("0 BEGIN", "BEGIN"), &format!("{}21 L X+1\n", PROGRAMS[1])]
     {
-        let (next, unchanged) = doc.edited(text.to_owned());
+        let (next, changed) = doc.edited(text.to_owned());
         let fresh = Document::new(text.to_owned());
         assert_same(&next, &fresh);
-        let resumed = sim.resumed(&next.program, unchanged);
+        assert_kept(&doc, &next, &changed);
+        let resumed = sim.resumed(&next.program, changed);
         assert_same_run(&resumed, &simulate(&fresh.program, &machine, &options), &fresh);
-        (doc, sim) = (next, resumed);
+        (doc, sim) = (next, Arc::new(resumed));
     }
 }
 
@@ -140,9 +188,9 @@ proptest! {
             let w = starts[a.min(b)]..if a.max(b) + 1 >= lines { doc.text.len() } else { starts[a.max(b) + 1] };
             let typed = edit(&doc.text[w.clone()], at, cut, PIECES[piece]);
             let whole = format!("{}{typed}{}", &doc.text[..w.start], &doc.text[w.end..]);
-            let (next, unchanged) = doc.replaced(w, &typed).expect("a window of the text");
+            let (next, changed) = doc.replaced(w, &typed).expect("a window of the text");
             assert_same(&next, &Document::new(whole));
-            prop_assert!(next.program.blocks[..unchanged] == doc.program.blocks[..unchanged]);
+            assert_kept(&doc, &next, &changed);
             doc = next;
         }
     }

@@ -9,7 +9,7 @@ use std::process::ExitCode;
 
 use schwenkbar_core::Lang;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::number::{tidy, write_fixed};
+use schwenkbar_core::number::{FIXED_MAX, fixed_ascii, tidy, write_fixed};
 use schwenkbar_core::sim::{ListingRow, SimOptions, Simulation, State, simulate, simulate_listed};
 use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
 use schwenkbar_core::{Program, parse};
@@ -129,7 +129,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
             out: &mut out,
             src: &src,
             lang,
-            row: String::with_capacity(256),
+            row: Vec::with_capacity(256),
             cell: String::with_capacity(32),
             head_written: false,
         };
@@ -240,7 +240,7 @@ struct Table<'a, W: Write> {
     out: &'a mut W,
     src: &'a str,
     lang: Lang,
-    row: String,
+    row: Vec<u8>,
     cell: String,
     head_written: bool,
 }
@@ -264,38 +264,45 @@ impl<W: Write> Table<'_, W> {
         }
         let Table { row, cell, .. } = self;
         row.clear();
-        pad_left(row, itoa(cell, s.line), 5);
-        row.push_str("  ");
+        let line = itoa(cell, s.line).as_bytes();
+        pad(row, 5usize.saturating_sub(line.len()));
+        row.extend_from_slice(line);
+        row.extend_from_slice(b"  ");
         let text = block_text(self.src, program, s.block);
-        let shown = text.char_indices().nth(44).map_or(text, |(i, _)| &text[..i]);
-        row.push_str(shown);
-        pad(row, 44 - shown.chars().count());
+        // Block text is ASCII but for comments: counted by bytes then, by chars otherwise.
+        let (shown, width) = if text.is_ascii() {
+            let shown = &text[..text.len().min(44)];
+            (shown, shown.len())
+        } else {
+            let shown = text.char_indices().nth(44).map_or(text, |(i, _)| &text[..i]);
+            (shown, shown.chars().count())
+        };
+        row.extend_from_slice(shown.as_bytes());
+        pad(row, 44 - width);
+        let mut digits = [0; FIXED_MAX];
         for (_, v) in axes {
-            row.push(' ');
-            cell.clear();
-            write_fixed(cell, num(v), 4, false);
-            pad_left(row, cell, 10);
+            column(row, &mut digits, cell, v);
         }
-        row.push_str("  ");
+        row.extend_from_slice(b"  ");
         let start = row.len();
         match s.spatial {
             Some(spatial) => {
                 for (i, a) in spatial.iter().enumerate() {
                     if i > 0 {
-                        row.push(' ');
+                        row.push(b' ');
                     }
-                    write_fixed(row, num(*a), 4, true);
+                    row.extend_from_slice(fixed4(&mut digits, cell, *a, true));
                 }
             }
-            None => row.push('-'),
+            None => row.push(b'-'),
         }
-        let width = row[start..].chars().count();
-        pad(row, 26usize.saturating_sub(width));
+        // Numbers are ASCII: bytes are columns.
+        pad(row, 26usize.saturating_sub(row.len() - start));
         if let Some(m) = &s.message {
-            row.push_str("  ");
-            row.push_str(m.get(self.lang));
+            row.extend_from_slice(b"  ");
+            row.extend_from_slice(m.get(self.lang).as_bytes());
         }
-        self.out.write_all(row.trim_end().as_bytes())?;
+        self.out.write_all(row.trim_ascii_end())?;
         self.out.write_all(b"\n")
     }
 
@@ -326,13 +333,64 @@ fn itoa(buf: &mut String, n: u32) -> &str {
     buf
 }
 
-/// `n` blanks.
-fn pad(row: &mut String, n: usize) {
-    row.extend(std::iter::repeat_n(' ', n));
+/// `value` (float noise tidied) with 4 decimals, the bytes of `{:.4}` (`plus`: `{:+.4}`).
+fn fixed4<'b>(digits: &'b mut [u8; FIXED_MAX], cell: &'b mut String, value: f64, plus: bool) -> &'b [u8] {
+    let value = num(value);
+    match fixed_ascii(digits, value, 4, plus) {
+        Some(text) => text,
+        None => {
+            cell.clear();
+            write_fixed(cell, value, 4, plus);
+            cell.as_bytes()
+        }
+    }
 }
 
-/// `text` right-aligned in `width` columns, as `{:>width}`.
-fn pad_left(row: &mut String, text: &str, width: usize) {
-    pad(row, width.saturating_sub(text.chars().count()));
-    row.push_str(text);
+/// An axis column: a blank and `value` as `{:>10.4}` writes it.
+fn column(row: &mut Vec<u8>, digits: &mut [u8; FIXED_MAX], cell: &mut String, value: f64) {
+    let text = fixed4(digits, cell, value, false);
+    row.push(b' ');
+    pad(row, 10usize.saturating_sub(text.len()));
+    row.extend_from_slice(text);
+}
+
+/// `n` blanks.
+fn pad(row: &mut Vec<u8>, n: usize) {
+    const BLANKS: &[u8; 48] = b"                                                ";
+    let mut n = n;
+    while n > 0 {
+        let k = n.min(BLANKS.len());
+        row.extend_from_slice(&BLANKS[..k]);
+        n -= k;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_columns_are_what_the_standard_formatter_writes() {
+        let values = [
+            0.0,
+            -0.0,
+            1e-12,
+            -1e-12,
+            0.00005,
+            -0.00005,
+            12.34565,
+            359.99999,
+            -1234.5678,
+            123456.78915,
+            -123456.78915,
+            1e20,
+            f64::NAN,
+            f64::INFINITY,
+        ];
+        for v in values {
+            let mut row = Vec::new();
+            column(&mut row, &mut [0; FIXED_MAX], &mut String::new(), v);
+            assert_eq!(String::from_utf8(row).unwrap(), format!(" {:>10.4}", num(v)), "{v:e}");
+        }
+    }
 }

@@ -13,7 +13,7 @@ use std::cmp::Ordering;
 
 mod fixed;
 
-pub use fixed::write_fixed;
+pub use fixed::{FIXED_MAX, fixed_ascii, write_fixed};
 
 /// A number as the control writes it in an NC word (`SPB+45`, `A-12.5`, `X+0.001`): the sign
 /// always, at most `decimals` places, trailing zeros dropped, never `-0`. Angles take 4

@@ -84,6 +84,7 @@ pub mod tools;
 pub mod transform;
 
 use std::collections::BTreeMap;
+use std::ops::Range;
 use std::sync::Arc;
 
 use glam::{DMat3, DVec3};
@@ -340,6 +341,37 @@ pub struct Simulation {
     checkpoints: Vec<Interp>,
     labels: Arc<BTreeMap<LabelKey, usize>>,
     blocks: usize,
+    /// After an edit stopped the run early (a block broken while typing): the longer run before
+    /// it and the blocks where that run's program may differ from this one, so the run after
+    /// the next edit (the block healed) can join it instead of running to the end again.
+    spare: Option<(Arc<Simulation>, Range<usize>)>,
+}
+
+/// An earlier run a resumed run may join ([`Simulation::resumed`]).
+struct Join<'a> {
+    run: &'a Simulation,
+    /// Blocks of the new program that may differ from the earlier run's program, or whose
+    /// running looked ahead to such a block.
+    dirty: Range<usize>,
+    /// The earlier run's last step that ran a block of `dirty` (or stopped at one).
+    last_dirty: Option<usize>,
+}
+
+impl<'a> Join<'a> {
+    fn new(run: &'a Simulation, dirty: Range<usize>) -> Join<'a> {
+        let stop = run.error.as_ref().filter(|e| dirty.contains(&e.block)).map(|e| e.step);
+        let last_dirty =
+            stop.or_else(|| run.records.iter().rposition(|r| dirty.contains(&(r.block as usize))));
+        Join { run, dirty, last_dirty }
+    }
+
+    /// Whether the earlier run from step `step` on is this run's: the interpreter is the same
+    /// there, and no later step of the earlier run ran or reads a block that may differ.
+    fn fits(&self, step: usize, it: &Interp) -> bool {
+        self.last_dirty.is_none_or(|d| d < step)
+            && self.run.checkpoints.get(step / self.run.options.checkpoint_interval) == Some(it)
+            && !it.refers_into(&self.dirty)
+    }
 }
 
 /// Runs a program on a machine.
@@ -367,8 +399,9 @@ pub fn simulate_listed(
         checkpoints: Vec::new(),
         labels: Arc::new(label_table(program)),
         blocks: program.blocks.len(),
+        spare: None,
     }
-    .run_on(program, Interp::new(machine), row)
+    .run_on(program, Interp::new(machine), row, &[])
 }
 
 /// Blocks a contour element looks ahead over to the next element (`next_element`,
@@ -401,21 +434,28 @@ fn label_table(program: &Program) -> BTreeMap<LabelKey, usize> {
 
 impl Simulation {
     /// Runs on from `it` (the state after `self.records`), recording and checkpointing as
-    /// [`simulate`] does, and listing each step to `row` if given.
+    /// [`simulate`] does, and listing each step to `row` if given; at a checkpoint where one of
+    /// `joins` fits, the rest is that run's.
     fn run_on(
         mut self,
         program: &Program,
         mut it: Interp,
         mut row: Option<&mut dyn FnMut(ListingRow)>,
+        joins: &[Join<'_>],
     ) -> Simulation {
         let budget = self.options.max_steps.unwrap_or(1_000_000 + 20 * program.blocks.len());
         let Simulation { machine, options, records, error, first_step, checkpoints, labels, .. } = &mut self;
         let cx = interp::Cx { program, machine, options, labels };
         // One record reused for the listing: its segment list keeps its capacity.
         let mut rec = Rec::default();
+        let mut joined = None;
         while !it.done(program) {
             let step = records.len();
             if step % options.checkpoint_interval == 0 {
+                joined = joins.iter().find(|j| j.fits(step, &it));
+                if joined.is_some() {
+                    break;
+                }
                 checkpoints.push(it.clone());
             }
             let block = it.pc;
@@ -453,19 +493,46 @@ impl Simulation {
                 }
             }
         }
+        if let Some(j) = joined {
+            self.join(program, j.run);
+        }
         self
     }
 
-    /// The run of `program` after an edit that kept its blocks before `unchanged` (the same
-    /// blocks as in the simulated program), equal to [`simulate`] of it: re-run from the last
-    /// checkpoint before the first step that executed a changed block or looked ahead to one
-    /// (a contour element looks over blocks that do not move to the next element), or jumped to
-    /// one. The labels are read anew; the steps before never reached a changed block, so they
-    /// stay.
+    /// Takes the rest of `run` from this run's end on (a checkpoint where both interpreters
+    /// are equal): its steps, checkpoints and end, the first steps of the blocks first reached
+    /// there.
+    fn join(&mut self, program: &Program, run: &Simulation) {
+        let step = self.records.len();
+        self.records.extend_from_slice(&run.records[step..]);
+        let n = self.options.checkpoint_interval;
+        self.checkpoints.extend_from_slice(&run.checkpoints[step / n..]);
+        for (s, r) in self.records.iter().enumerate().skip(step) {
+            if let Some(slot @ None) = self.first_step.get_mut(r.block as usize) {
+                *slot = u32::try_from(s).ok();
+            }
+        }
+        // The same stop, at its block's line in this program.
+        self.error = run
+            .error
+            .clone()
+            .map(|e| SimError { line: program.blocks.get(e.block).map_or(0, |b| b.line()), ..e });
+    }
+
+    /// The run of `program` after an edit that kept the simulated program's blocks before
+    /// `changed.start` and from `changed.end` on (its last blocks, moved by the change in
+    /// number), equal to [`simulate`] of it: re-run from the last checkpoint before the first
+    /// step that executed a changed block or looked ahead to one (a contour element looks over
+    /// blocks that do not move to the next element), or jumped to one. The labels are read
+    /// anew; the steps before never reached a changed block, so they stay. When the number of
+    /// blocks and the labels are the same, the re-run ends at a checkpoint where its
+    /// interpreter equals the old run's (or that of the run before an edit that stopped the run
+    /// early) and the old run never again ran or reads a changed block: the rest is the old
+    /// run's, as a run from there would make it again.
     #[must_use]
-    pub fn resumed(&self, program: &Program, unchanged: usize) -> Simulation {
+    pub fn resumed(self: &Arc<Simulation>, program: &Program, changed: Range<usize>) -> Simulation {
         let blocks = &program.blocks;
-        let mut from = unchanged.min(blocks.len()).min(self.blocks);
+        let mut from = changed.start.min(blocks.len()).min(self.blocks);
         while from > 0 && looked_over(&blocks[from - 1].body()) {
             from -= 1;
         }
@@ -491,17 +558,51 @@ impl Simulation {
         }
         let mut records = Vec::with_capacity(blocks.len().max(start));
         records.extend_from_slice(&self.records[..start]);
-        Simulation {
+        let labels = Arc::new(label_table(program));
+        // Block indices in the interpreter and the records would have to move: only an edit
+        // that kept the number of blocks joins an earlier run.
+        let dirty = from..changed.end.max(from);
+        let earlier = (blocks.len() == self.blocks).then(|| {
+            let spare = self
+                .spare
+                .as_ref()
+                .map(|(run, d)| (run.clone(), d.start.min(dirty.start)..d.end.max(dirty.end)));
+            (spare, dirty)
+        });
+        let mut joins = Vec::new();
+        if let Some((spare, dirty)) = &earlier {
+            if self.labels == labels {
+                joins.push(Join::new(self.as_ref(), dirty.clone()));
+            }
+            if let Some((run, d)) = spare.as_ref().filter(|(run, _)| run.labels == labels) {
+                joins.push(Join::new(run, d.clone()));
+            }
+        }
+        let mut sim = Simulation {
             machine: self.machine.clone(),
             options: self.options.clone(),
             records,
             error: None,
             first_step,
             checkpoints: self.checkpoints[..c].to_vec(),
-            labels: Arc::new(label_table(program)),
+            labels,
             blocks: blocks.len(),
+            spare: None,
         }
-        .run_on(program, it, None)
+        .run_on(program, it, None, &joins);
+        // Stopped early by the edit: the longest earlier run is kept for the next edit.
+        if sim.error.is_some()
+            && let Some((spare, dirty)) = earlier
+        {
+            let own = (self.records.len() > sim.records.len()).then(|| (self.records.len(), dirty));
+            let spare = spare.filter(|(run, _)| run.records.len() > sim.records.len());
+            sim.spare = match (own, spare) {
+                (Some((own, _)), Some(spare)) if spare.0.records.len() >= own => Some(spare),
+                (Some((_, dirty)), _) => Some((Arc::clone(self), dirty)),
+                (None, spare) => spare,
+            };
+        }
+        sim
     }
 
     /// Number of executed blocks with a state.

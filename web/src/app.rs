@@ -16,6 +16,7 @@ use crate::components::scene_pane::ScenePane;
 use crate::components::softkey_row::SoftkeyRow;
 use crate::components::why_panel::WhyPanel;
 use crate::effects::{Shell, Trainer, use_effects};
+use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::keymap::{self, KeyPress};
 use schwenkbar_app::softkeys;
@@ -140,19 +141,19 @@ pub fn app(props: &AppProps) -> Html {
             <div {class} lang={l.code()} tabindex="-1" ref={root} data-keys={keys_on.then_some("on")}>
                 <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
-                    <ProgramPane doc={state.doc.clone()} cursor={state.cursor} lang={l}
+                    <ProgramPane doc={DocRef(state.doc.clone())} cursor={state.cursor} lang={l}
                         text_editing={state.text_editing} {on_select} {on_edit} />
     if state.right_hand {
                         <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {
-                        <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={state.doc.clone()}
+                        <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={DocRef(state.doc.clone())}
                         state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} stock={state.shown_stock()} />
                     }
                     <div class="side">
                         if let Some(shown) = shown.clone() {
                             <PositionDisplay state={shown} lang={l} machine={state.machine.clone()} fraction={*fraction} />
                         }
-                        <WhyPanel doc={state.doc.clone()} cursor={state.cursor} machine={state.machine.clone()}
+                        <WhyPanel doc={DocRef(state.doc.clone())} cursor={state.cursor} machine={state.machine.clone()}
                             sim={state.sim.clone()} shown={shown} lang={l} {on_hover} />
                     </div>
                 </main>

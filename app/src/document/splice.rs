@@ -7,6 +7,8 @@
 //! again over the whole program, in the order the parser makes them. Checked against
 //! [`Document::new`] by `tests/edit_properties.rs`.
 
+use std::ops::Range;
+
 use schwenkbar_core::ast::Span;
 use schwenkbar_core::diag::DiagCode;
 use schwenkbar_core::parse::AcrossBlocks;
@@ -89,9 +91,10 @@ fn shift_diag(mut d: Diagnostic, bytes: isize, lines: isize) -> Diagnostic {
 
 impl Document {
     /// The document after its text became `text`, parsed again only around the change, and the
-    /// index of the first block that may differ (every block before it is the same block).
+    /// blocks that may differ: every block before them is the same block, every block after
+    /// them one of the last blocks of this document (moved in the text).
     #[must_use]
-    pub fn edited(&self, text: String) -> (Document, usize) {
+    pub fn edited(&self, text: String) -> (Document, Range<usize>) {
         let (prefix, suffix) = common(self.text.as_bytes(), text.as_bytes());
         self.spliced(text, prefix, suffix)
     }
@@ -100,7 +103,7 @@ impl Document {
     /// typed in), or `None` when `at` is not a range of the text. Only `at` is compared, not
     /// the megabytes around it.
     #[must_use]
-    pub fn replaced(&self, at: std::ops::Range<usize>, insert: &str) -> Option<(Document, usize)> {
+    pub fn replaced(&self, at: Range<usize>, insert: &str) -> Option<(Document, Range<usize>)> {
         let old = self.text.get(at.clone())?;
         let (prefix, suffix) = common(old.as_bytes(), insert.as_bytes());
         let mut text = String::with_capacity(self.text.len() - old.len() + insert.len());
@@ -112,8 +115,12 @@ impl Document {
 
     /// [`Document::edited`] with the change known: the first `prefix` and last `suffix` bytes
     /// of the text are kept.
-    fn spliced(&self, text: String, prefix: usize, suffix: usize) -> (Document, usize) {
-        let Some(r) = region(&self.text, &text, prefix, suffix) else { return (Document::new(text), 0) };
+    fn spliced(&self, text: String, prefix: usize, suffix: usize) -> (Document, Range<usize>) {
+        let Some(r) = region(&self.text, &text, prefix, suffix) else {
+            let doc = Document::new(text);
+            let all = 0..doc.program.blocks.len();
+            return (doc, all);
+        };
         let (mut program, diagnostics) = parse(&text[r.start..r.new_end]);
         let first_line = self.line_starts.partition_point(|&s| s < r.start);
         let old_lines = self.line_starts.partition_point(|&s| s <= r.old_end) - first_line;
@@ -147,6 +154,7 @@ impl Document {
             self.line_starts.iter().filter(|&&s| s > r.old_end).map(|&s| s.wrapping_add_signed(bytes)),
         );
 
+        let region_end = i0 + program.blocks.len();
         let mut blocks = Vec::with_capacity(old.len() - (i1 - i0) + program.blocks.len());
         blocks.extend_from_slice(&old[..i0]);
         blocks.extend(program.blocks.drain(..).map(|b| shift_block(b, start, line0)));
@@ -154,7 +162,7 @@ impl Document {
         let first_changed = i0 + old[i0..i1].iter().zip(&blocks[i0..]).take_while(|(a, b)| a == b).count();
         let mut doc = Document { text, program: Program { blocks }, diagnostics: Vec::new(), line_starts };
         doc.diagnostics = doc.with_checks_across_blocks(own);
-        (doc, first_changed)
+        (doc, first_changed..region_end)
     }
 
     /// `own` (every block's own findings, in block order) with the parser's checks across

@@ -18,6 +18,24 @@ const LIMIT: f64 = 4_503_599_627_370_496.0;
 /// (with `plus`: `{value:+.decimals$}`) would. A negative value that rounds to zero keeps its
 /// sign (`-0.0000`), as the standard library writes it.
 pub fn write_fixed(out: &mut String, value: f64, decimals: usize, plus: bool) {
+    let mut buf = [0; FIXED_MAX];
+    match fixed_ascii(&mut buf, value, decimals, plus) {
+        Some(text) => out.extend(text.iter().map(|&b| char::from(b))),
+        // NaN, infinities, huge values, many decimals: rare, and the standard formatter is exact.
+        None => {
+            let _ = if plus { write!(out, "{value:+.decimals$}") } else { write!(out, "{value:.decimals$}") };
+        }
+    }
+}
+
+/// Room for the longest text [`fixed_ascii`] writes: 16 integer digits (n < 2^53), 15
+/// decimals, the point and the sign.
+pub const FIXED_MAX: usize = 34;
+
+/// [`write_fixed`]'s text as ASCII bytes at the end of `buf`, or `None` where the standard
+/// formatter must write it (NaN, infinities, a scaled magnitude of 2^52 or more, more than 15
+/// decimals). For a writer that pads the number (a table column) without a second pass.
+pub fn fixed_ascii(buf: &mut [u8; FIXED_MAX], value: f64, decimals: usize, plus: bool) -> Option<&[u8]> {
     let scale = match decimals {
         0..=15 => 10f64.powi(decimals as i32),
         _ => f64::INFINITY,
@@ -25,9 +43,7 @@ pub fn write_fixed(out: &mut String, value: f64, decimals: usize, plus: bool) {
     let a = value.abs();
     let r = a * scale;
     if r.is_nan() || r >= LIMIT {
-        // NaN, infinities, huge values, many decimals: rare, and the standard formatter is exact.
-        let _ = if plus { write!(out, "{value:+.decimals$}") } else { write!(out, "{value:.decimals$}") };
-        return;
+        return None;
     }
     // a × scale = r + err exactly (scale = 10^d ≤ 10^15 is exact, and so is an FMA's residue).
     let err = a.mul_add(scale, -r);
@@ -37,11 +53,8 @@ pub fn write_fixed(out: &mut String, value: f64, decimals: usize, plus: bool) {
     let up = above_half > -err || (above_half == -err && floor % 2.0 == 1.0);
     // Below 2^52 + 1: fits u64 exactly.
     let n = floor as u64 + u64::from(up);
-    // Written backwards into one buffer: at most 16 integer digits (n < 2^53), 15 decimals,
-    // the point and the sign.
-    let mut buf = [b'0'; 34];
+    // Written backwards: the decimals, the point, then the integer digits (at least one).
     let (mut i, mut m, mut k) = (buf.len(), n, 0);
-    // The decimals, the point, then the integer digits (at least one).
     loop {
         if k == decimals && decimals > 0 {
             i -= 1;
@@ -62,8 +75,7 @@ pub fn write_fixed(out: &mut String, value: f64, decimals: usize, plus: bool) {
         i -= 1;
         buf[i] = b'+';
     }
-    // Only ASCII was written.
-    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+    Some(&buf[i..])
 }
 
 #[cfg(test)]

@@ -68,8 +68,9 @@ enum Rate {
     Feed(f64),
 }
 
-/// The interpreter state between blocks.
-#[derive(Debug, Clone)]
+/// The interpreter state between blocks. Equal states run on alike over the same blocks (a
+/// resumed run joins an earlier one where they are equal, [`crate::sim::Simulation::resumed`]).
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Interp {
     /// Index of the next block.
     pub pc: usize,
@@ -249,6 +250,13 @@ impl Interp {
 
     pub fn done(&self, program: &Program) -> bool {
         self.pc >= program.blocks.len()
+    }
+
+    /// Whether a later step may read one of `blocks` through this state without running it:
+    /// the stored cycle's definition, the last `PATTERN DEF`.
+    pub fn refers_into(&self, blocks: &std::ops::Range<usize>) -> bool {
+        matches!(self.cycle, Some(StoredCycle::New(b)) if blocks.contains(&b))
+            || self.pattern.is_some_and(|b| blocks.contains(&b))
     }
 
     /// The linear axes follow the rotary axes: with a tilt, and always with TCPM (M128), which

@@ -7,6 +7,7 @@ use schwenkbar_app::run::StateRef;
 
 use super::scene_pane::ScenePane;
 use schwenkbar_app::course::positioning::{Pane, panes};
+use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 
 #[derive(Properties, PartialEq)]
@@ -37,7 +38,7 @@ pub fn positioning_compare(props: &PositioningProps) -> Html {
                     html! {
                         <figure class="positioning-pane" key={format!("{name}-{}", *replay)} data-testid={format!("pane-{name}")}>
                             <figcaption>{ name }</figcaption>
-                            <ScenePane lang={l} machine={machine.clone()} sim={sim.clone()} doc={doc.clone()}
+                            <ScenePane lang={l} machine={machine.clone()} sim={sim.clone()} doc={DocRef(doc.clone())}
                                 state={state.clone().map(StateRef)} animate={true} speed={1.0} />
                         </figure>
                     }

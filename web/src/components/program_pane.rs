@@ -5,12 +5,11 @@
 //! change is parsed (only where it changed).
 
 use std::ops::Range;
-use std::rc::Rc;
 
 use web_sys::HtmlTextAreaElement;
 use yew::prelude::*;
 
-use schwenkbar_app::document::{Document, byte_of_utf16, utf16_of_byte};
+use schwenkbar_app::document::{DocRef, Document, byte_of_utf16, utf16_of_byte};
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::syntax::highlight;
 
@@ -24,7 +23,7 @@ const MAX_HEIGHT: f64 = 8_000_000.0;
 
 #[derive(Properties, PartialEq)]
 pub struct ProgramPaneProps {
-    pub doc: Rc<Document>,
+    pub doc: DocRef,
     pub cursor: usize,
     pub lang: Lang,
     pub text_editing: bool,
@@ -53,19 +52,9 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
     }
 }
 
-/// A document compared by identity (the effects below run once per new document).
-#[derive(Clone)]
-struct Same(Rc<Document>);
-
-impl PartialEq for Same {
-    fn eq(&self, other: &Same) -> bool {
-        Rc::ptr_eq(&self.0, &other.0)
-    }
-}
-
 #[derive(Properties, PartialEq)]
 struct TextProps {
-    doc: Rc<Document>,
+    doc: DocRef,
     cursor: usize,
     lang: Lang,
     on_edit: Callback<(Range<usize>, String)>,
@@ -131,9 +120,9 @@ fn program_text(props: &TextProps) -> Html {
     {
         let (typed, follow) = (typed.clone(), follow.clone());
         let line = props.doc.block_lines(props.cursor).map_or(0, |(first, _)| first);
-        use_effect_with(Same(props.doc.clone()), move |doc| {
+        use_effect_with(props.doc.clone(), move |doc| {
             let fresh = !std::mem::take(&mut *typed.borrow_mut());
-            follow(&doc.0, fresh.then_some(line));
+            follow(doc, fresh.then_some(line));
         });
     }
     let oninput = {
@@ -178,7 +167,7 @@ fn program_text(props: &TextProps) -> Html {
 
 #[derive(Properties, PartialEq)]
 struct ListProps {
-    doc: Rc<Document>,
+    doc: DocRef,
     cursor: usize,
     lang: Lang,
     on_select: Callback<usize>,
@@ -233,7 +222,7 @@ fn program_list(props: &ListProps) -> Html {
         // Measures the scroller and a line, and brings the cursor block into sight (a third of
         // the way down) when it moved out of it.
         let (scroller, view) = (scroller.clone(), view.clone());
-        use_effect_with((props.cursor, Same(doc.clone())), move |_| {
+        use_effect_with((props.cursor, doc.clone()), move |_| {
             let Some(el) = scroller.cast::<web_sys::Element>() else { return };
             let line =
                 el.query_selector(".line").ok().flatten().map_or(0.0, |l| f64::from(l.client_height()));

@@ -16,7 +16,7 @@ use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
 use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath_part};
-use schwenkbar_app::document::Document;
+use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
 use schwenkbar_app::scene::{SceneState, StockShape};
@@ -27,7 +27,7 @@ pub struct ScenePaneProps {
     pub lang: Lang,
     pub machine: Option<Rc<Machine>>,
     pub sim: Option<SimRef>,
-    pub doc: Rc<Document>,
+    pub doc: DocRef,
     /// The state to show (after the cursor block, or the run's step).
     pub state: Option<StateRef>,
     /// Animate the block's motion (program run) instead of showing its end.
@@ -68,7 +68,7 @@ pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
 pub fn scene_pane(props: &ScenePaneProps) -> Html {
     // The run's toolpath, once per simulation, made in parts between frames (a run of
     // 1,000,000 steps takes seconds) and shown when all in; a new simulation ends the old work.
-    let sim_ptr = props.sim.as_ref().map_or(0, |s| Rc::as_ptr(&s.0) as usize);
+    let sim_ptr = props.sim.as_ref().map_or(0, |s| std::sync::Arc::as_ptr(&s.0) as usize);
     let path = use_state(|| (SharedPath::default(), Rc::new(RunPath::default())));
     let path_gen = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
     {

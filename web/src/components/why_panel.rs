@@ -7,14 +7,14 @@ use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use yew::prelude::*;
 
-use schwenkbar_app::document::Document;
+use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
 use schwenkbar_app::why::{describe, for_block};
 
 #[derive(Properties, PartialEq)]
 pub struct WhyPanelProps {
-    pub doc: Rc<Document>,
+    pub doc: DocRef,
     pub cursor: usize,
     pub machine: Option<Rc<Machine>>,
     pub sim: Option<SimRef>,
