@@ -143,6 +143,12 @@ fn run(effect: &Effect, shell: &Shell) {
                 Err(message) => message,
             });
         }
+        Effect::SaveFile { name, text } => {
+            if let Err(message) = browser::download(name, text.as_bytes()) {
+                shell.notice.emit(message);
+            }
+        }
+        Effect::OpenPage { url } => browser::open_page(url),
         Effect::Share { fragment } => {
             let notice = shell.notice.clone();
             let fragment = fragment.clone();

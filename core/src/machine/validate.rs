@@ -1,5 +1,5 @@
 //! The one check of a machine description ([`MachineDef`]): every reader (the compiled-in
-//! machines, [`Machine::from_json`], the coming machine editor) goes through [`validate`], which
+//! machines, [`Machine::from_json`], the machine editor and its saved record in `schwenkbar-app`) goes through [`validate`], which
 //! reports every problem it finds, not only the first, each with the path of its field
 //! (`chain[1].direction`, `geometry.linear_limits.X`) so that an editor can show it at the field.
 //!
