@@ -9,7 +9,8 @@ use std::borrow::Cow;
 use std::rc::Rc;
 
 use schwenkbar_core::machine::{
-    GeometryDef, JointDef, Limits, LinearLimitsDef, Machine, MachineDef, MachineGeometry, MachineIssue,
+    BodyDef, GeometryDef, JointDef, Limits, LinearLimitsDef, Machine, MachineDef, MachineGeometry,
+    MachineIssue,
 };
 use schwenkbar_core::number::parse_input;
 
@@ -52,6 +53,10 @@ pub struct Form {
     pub rapid_linear: String,
     pub rapid_rotary: String,
     pub start: [String; 3],
+    /// The collision bodies, kept as the machine the form started from has them (the form
+    /// does not edit them; a problem with them, e.g. a carrier letter no longer in the chain,
+    /// is listed at the top of the page).
+    pub collision: Vec<BodyDef>,
 }
 
 /// One input of the form.
@@ -256,6 +261,7 @@ impl Form {
             rapid_linear: text(g.rapid_linear.unwrap_or(d.rapid_linear)),
             rapid_rotary: text(g.rapid_rotary.unwrap_or(d.rapid_rotary)),
             start: texts(g.start.unwrap_or(d.start.to_array())),
+            collision: def.collision.to_vec(),
         })
     }
 
@@ -366,6 +372,7 @@ impl Form {
                 rapid_rotary: Some(rapid_rotary),
                 start: Some(start),
             }),
+            collision: Cow::Owned(self.collision.clone()),
         };
         (def, bad)
     }

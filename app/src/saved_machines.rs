@@ -10,7 +10,9 @@
 
 use std::borrow::Cow;
 
-use schwenkbar_core::machine::{GeometryDef, JointDef, Limits, LinearLimitsDef, Machine, MachineDef};
+use schwenkbar_core::machine::{
+    BodyDef, BoxDef, CylinderDef, GeometryDef, JointDef, Limits, LinearLimitsDef, Machine, MachineDef,
+};
 use schwenkbar_core::number::parse_f64;
 
 use crate::i18n::Text;
@@ -24,7 +26,7 @@ pub const MAX_SAVED: usize = 7;
 
 const KIND: char = 'm';
 const VERSION: u32 = 1;
-const KEYS: [&str; 19] = [
+const KEYS: [&str; 20] = [
     "id",
     "name.de",
     "name.en",
@@ -44,7 +46,11 @@ const KEYS: [&str; 19] = [
     "linear_limits",
     "rapid",
     "start",
+    "collision",
 ];
+/// The collision bodies: one record of these keys each ([`body_record`]), a line each.
+const BODY_KIND: char = 'b';
+const BODY_KEYS: [&str; 5] = ["name.de", "name.en", "carrier", "shape", "numbers"];
 /// `c*.limits` of an endless axis (else `min max`, or empty for none).
 const ENDLESS: &str = "endless";
 
@@ -81,7 +87,7 @@ pub fn to_record(machine: &Machine) -> String {
     let joint = |i: usize| def.chain.get(i).cloned();
     let (c0, c1) = (joint(0), joint(1));
     let field = |j: &Option<JointDef>, f: fn(&JointDef) -> String| j.as_ref().map(f).unwrap_or_default();
-    let values: [String; 19] = [
+    let values: [String; 20] = [
         def.id.to_string(),
         def.name.de.to_string(),
         def.name.en.to_string(),
@@ -101,9 +107,47 @@ pub fn to_record(machine: &Machine) -> String {
         format!("{} {} {} {} {} {}", x.min, x.max, y.min, y.max, z.min, z.max),
         format!("{} {}", geo.rapid_linear, geo.rapid_rotary),
         vec3(geo.start.to_array()),
+        def.collision.iter().map(body_record).collect::<Vec<_>>().join("\n"),
     ];
     let fields: Vec<(&str, &str)> = KEYS.iter().copied().zip(values.iter().map(String::as_str)).collect();
     write_record(KIND, VERSION, &fields)
+}
+
+/// One collision body as a record: its names, carrier, `box` (centre, size) or `cylinder`
+/// (base, direction, radius, height) and those numbers.
+fn body_record(b: &BodyDef) -> String {
+    let (shape, numbers) = match (b.cuboid, b.cylinder) {
+        (Some(c), _) => ("box", format!("{} {}", vec3(c.center), vec3(c.size))),
+        (None, Some(c)) => {
+            ("cylinder", format!("{} {} {} {}", vec3(c.base), vec3(c.direction), c.radius, c.height))
+        }
+        // Not in a validated machine, which is all this module writes.
+        (None, None) => ("", String::new()),
+    };
+    let fields = [
+        ("name.de", b.name.de.as_ref()),
+        ("name.en", b.name.en.as_ref()),
+        ("carrier", b.carrier.as_ref()),
+        ("shape", shape),
+        ("numbers", numbers.as_str()),
+    ];
+    write_record(BODY_KIND, VERSION, &fields)
+}
+
+fn body(text: &str) -> Result<BodyDef, RestoreError> {
+    let [de, en, carrier, shape, numbers_text] = read_record(text, BODY_KIND, VERSION, BODY_KEYS)?;
+    let (cuboid, cylinder) = match shape.as_str() {
+        "box" => {
+            let [x, y, z, a, b, c] = numbers(&numbers_text)?;
+            (Some(BoxDef { center: [x, y, z], size: [a, b, c] }), None)
+        }
+        "cylinder" => {
+            let [x, y, z, u, v, w, radius, height] = numbers(&numbers_text)?;
+            (None, Some(CylinderDef { base: [x, y, z], direction: [u, v, w], radius, height }))
+        }
+        _ => return Err(RestoreError::Corrupt),
+    };
+    Ok(BodyDef { name: Text::owned(de, en), carrier: Cow::Owned(carrier), cuboid, cylinder })
 }
 
 fn joint(
@@ -154,6 +198,7 @@ pub fn from_record(text: &str) -> Result<Machine, RestoreError> {
         lin,
         rapid,
         start,
+        collision,
     ] = read_record(text, KIND, VERSION, KEYS)?;
     let [xn, xx, yn, yx, zn, zx] = numbers(&lin)?;
     let [rapid_linear, rapid_rotary] = numbers(&rapid)?;
@@ -173,6 +218,7 @@ pub fn from_record(text: &str) -> Result<Machine, RestoreError> {
             rapid_rotary: Some(rapid_rotary),
             start: Some(numbers(&start)?),
         }),
+        collision: Cow::Owned(collision.lines().map(body).collect::<Result<_, _>>()?),
     };
     def.validate().map_err(|_| RestoreError::Corrupt)
 }
@@ -227,6 +273,8 @@ mod tests {
         for m in shipped() {
             let record = to_record(&m);
             assert!(!record.contains('\n'), "{record}");
+            // The collision bodies travel too (every shipped machine has some).
+            assert!(!m.to_def().collision.is_empty() && record.contains("collision=b1"), "{record}");
             assert_eq!(from_record(&record), Ok(m.clone()), "{record}");
         }
     }
@@ -252,6 +300,8 @@ mod tests {
             "m2;id=x".into(),
             good.replace("c0.direction=", "c0.direction=x"),
             good.replace("rapid=", "rapid=1 "),
+            good.replacen("box", "sphere", 1),
+            good.replacen("cylinder", "box", 1),
             good.replacen("id=", "ix=", 1),
             good[..good.len() / 2].to_owned(),
         ];
