@@ -61,7 +61,7 @@ fn read_json(path: &Path) -> Value {
 }
 
 fn machine(ctx: &str, id: &str, v: &Value) -> String {
-    let m = object(ctx, v, &["id", "name", "description", "chain", "geometry"]);
+    let m = object(ctx, v, &["id", "name", "description", "chain", "geometry", "collision"]);
     let json_id = string(ctx, required(ctx, m, "id"));
     assert_eq!(json_id, id, "{ctx}: id does not match the file name");
     let mut s = format!("    MachineDef {{\n        id: Cow::Borrowed({id:?}),\n");
@@ -104,8 +104,42 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
             option(g.get("start"), |p| vec3(ctx, p)),
         )
     });
-    let _ = writeln!(s, "        geometry: {geometry},\n    }},");
+    let _ = writeln!(s, "        geometry: {geometry},");
+    s.push_str("        collision: Cow::Borrowed(&[\n");
+    for b in m.get("collision").map(|c| array(ctx, c).as_slice()).unwrap_or_default() {
+        s.push_str(&body(ctx, b));
+    }
+    s.push_str("        ]),\n    },\n");
     s
+}
+
+/// A collision body as `BodyDef { name, carrier, cuboid, cylinder }` (machine/body.rs).
+fn body(ctx: &str, v: &Value) -> String {
+    let b = object(ctx, v, &["name", "carrier", "box", "cylinder"]);
+    let t = object(ctx, required(ctx, b, "name"), &["de", "en"]);
+    let (de, en) = (string(ctx, required(ctx, t, "de")), string(ctx, required(ctx, t, "en")));
+    let cuboid = option(b.get("box"), |c| {
+        let c = object(ctx, c, &["center", "size"]);
+        format!(
+            "BoxDef {{ center: {}, size: {} }}",
+            vec3(ctx, required(ctx, c, "center")),
+            vec3(ctx, required(ctx, c, "size"))
+        )
+    });
+    let cylinder = option(b.get("cylinder"), |c| {
+        let c = object(ctx, c, &["base", "direction", "radius", "height"]);
+        format!(
+            "CylinderDef {{ base: {}, direction: {}, radius: {}, height: {} }}",
+            vec3(ctx, required(ctx, c, "base")),
+            vec3(ctx, required(ctx, c, "direction")),
+            float(ctx, required(ctx, c, "radius")),
+            float(ctx, required(ctx, c, "height"))
+        )
+    });
+    format!(
+        "            BodyDef {{ name: Text::new({de:?}, {en:?}), carrier: Cow::Borrowed({:?}), cuboid: {cuboid}, cylinder: {cylinder} }},\n",
+        string(ctx, required(ctx, b, "carrier")),
+    )
 }
 
 /// A tool row as `RawTool { number, name, length, radius, shape, corner_radius, point_angle }`;

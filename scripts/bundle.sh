@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the release pages into dist/ and prints their sizes: each page's HTML + JS + wasm + CSS,
 # gzip -9, summed. The trainer (index.html) against the issues' budget (BUNDLE_BUDGET_KB: a
-# figure to report, not a test); the course page (kurs.html, its own bundle) is reported too.
+# figure to report, not a test); the course page (kurs.html) and the machine editor
+# (maschine.html), each its own bundle, are reported too.
 # Fails only above the regression ceilings, so that a size blow-up stops CI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,6 +16,8 @@ BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # blow-up; the budget line above reports the overrun.
 BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-300}"
 COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-380}"
+# The machine editor (maschine.html): the renderer, the form and serde_json's export and import.
+EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-300}"
 build_pages
 # The files a page loads: the page itself and what it references (trunk's hashed names).
 page_size() {
@@ -36,6 +39,8 @@ else
 fi
 course=$(page_size kurs.html)
 printf "course page: %d bytes gzip -9 (%s KB; loaded only when the course is opened; ceiling %d KB)\n" "$course" "$(kb "$course")" "$COURSE_LIMIT_KB"
+editor=$(page_size maschine.html)
+printf "machine editor page: %d bytes gzip -9 (%s KB; loaded only when the editor is opened; ceiling %d KB)\n" "$editor" "$(kb "$editor")" "$EDITOR_LIMIT_KB"
 # Offline (issue 12): fetched once by the browser and the service worker, not by the page's start.
 extras=0
 for f in dist/sw.js dist/manifest.webmanifest dist/icons/*; do
@@ -44,3 +49,4 @@ done
 printf "offline extras: %d bytes gzip -9 (%s KB: sw.js, manifest, icons; not in the pages' figures)\n" "$extras" "$(kb "$extras")"
 [ "$total" -le $((BUNDLE_LIMIT_KB * 1024)) ] || { echo "bundle above the regression ceiling of $BUNDLE_LIMIT_KB KB" >&2; exit 1; }
 [ "$course" -le $((COURSE_LIMIT_KB * 1024)) ] || { echo "course page above its ceiling of $COURSE_LIMIT_KB KB" >&2; exit 1; }
+[ "$editor" -le $((EDITOR_LIMIT_KB * 1024)) ] || { echo "machine editor page above its ceiling of $EDITOR_LIMIT_KB KB" >&2; exit 1; }

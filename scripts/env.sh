@@ -40,16 +40,20 @@ bundle_env() {
     CARGO_PROFILE_RELEASE_OPT_LEVEL=z _route_env "$@"
 }
 
-# Builds the release pages into dist/: the trainer (index.html) and the course (kurs.html), each
-# its own bundle, so the course's code and texts never weigh on the trainer. trunk builds one
-# page per run and replaces its dist folder, so the course is built aside and copied in. Both
-# pages share the manifest and the icons (copied by trunk); dist/sw.js is written last.
+# Builds the release pages into dist/: the trainer (index.html), the course (kurs.html) and the
+# machine editor (maschine.html), each its own bundle, so the course's and the editor's code and
+# texts never weigh on the trainer. trunk builds one page per run and replaces its dist folder,
+# so the other pages are built aside and copied in. The pages share the manifest and the icons
+# (copied by trunk); dist/sw.js is written last.
 build_pages() {
   bundle_env trunk build index.html --release --offline
-  rm -rf target/kurs-dist
-  bundle_env trunk build kurs.html --release --offline --dist target/kurs-dist
-  cp target/kurs-dist/index.html dist/kurs.html
-  find target/kurs-dist -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+  local page
+  for page in kurs maschine; do
+    rm -rf "target/$page-dist"
+    bundle_env trunk build "$page.html" --release --offline --dist "target/$page-dist"
+    cp "target/$page-dist/index.html" "dist/$page.html"
+    find "target/$page-dist" -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
+  done
   # Each wasm's functions ordered for gzip (the names wasm-opt kept are stripped there).
   python3 scripts/order_functions.py dist
   # wasm-bindgen's JS glue, minified with terser (trunk's minifier cannot parse it), and the

@@ -193,7 +193,7 @@ def service_worker_tests(driver, dist, work, run):
             wait_for("the service worker controlling the page", lambda: controlled(driver), 30, step=0.2)
             cached = driver.js_async(CACHES)
             entries = cached.get("entries", [])
-            need = ["/index.html", "/kurs.html", "/manifest.webmanifest"]
+            need = ["/index.html", "/kurs.html", "/maschine.html", "/manifest.webmanifest"]
             kinds = [".wasm", ".js", ".css", ".png", ".svg"]
             if len(cached.get("keys", [])) != 1 or not all(n in entries for n in need) \
                     or not all(any(e.endswith(k) for e in entries) for k in kinds):

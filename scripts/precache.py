@@ -23,8 +23,9 @@ def main():
             if rel != "sw.js":
                 files.append(rel)
     files.sort()
-    if "index.html" not in files or "kurs.html" not in files:
-        sys.exit(f"precache: {dist} has no index.html and kurs.html; run build_pages")
+    pages = ("index.html", "kurs.html", "maschine.html")
+    if any(page not in files for page in pages):
+        sys.exit(f"precache: {dist} lacks one of {', '.join(pages)}; run build_pages")
     digest = hashlib.sha256()
     with open(template_path, "rb") as f:
         template_bytes = f.read()

@@ -8,6 +8,6 @@ bash scripts/setup.sh
 source scripts/env.sh
 build_pages
 echo
-echo "Schwenkbar: http://127.0.0.1:8080/   course: http://127.0.0.1:8080/kurs.html   (Ctrl+C stops the server)"
+echo "Schwenkbar: http://127.0.0.1:8080/   course: http://127.0.0.1:8080/kurs.html   machine editor: http://127.0.0.1:8080/maschine.html   (Ctrl+C stops the server)"
 echo
 exec python3 -m http.server 8080 --bind 127.0.0.1 --directory dist

@@ -12,5 +12,5 @@ if [ "${1:-}" != "--from-dist" ]; then
   source scripts/env.sh
   build_pages
 fi
-[ -f dist/index.html ] && [ -f dist/kurs.html ] || { echo "no dist/index.html and dist/kurs.html: run without --from-dist" >&2; exit 1; }
+[ -f dist/index.html ] && [ -f dist/kurs.html ] && [ -f dist/maschine.html ] || { echo "no dist/index.html, dist/kurs.html and dist/maschine.html: run without --from-dist" >&2; exit 1; }
 python3 scripts/single_file.py dist dist-single

@@ -127,7 +127,7 @@ def main():
     dist = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "dist")
     out_dir = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, "dist-single")
     os.makedirs(out_dir, exist_ok=True)
-    for page in ("index.html", "kurs.html"):
+    for page in ("index.html", "kurs.html", "maschine.html"):
         text = pack(dist, page).encode("utf-8")
         path = os.path.join(out_dir, page)
         with open(path + ".tmp", "wb") as f:

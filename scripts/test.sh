@@ -49,6 +49,8 @@ print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-tab
 bash scripts/screenshot.sh target/screenshots/musterprogramm1-block10.png "#$fragment"
 echo; echo "==> screenshot: the course page, lesson 5 (SEQ/SYM bench)"
 bash scripts/screenshot.sh target/screenshots/kurs-lektion-5.png "kurs.html#kurs/5"
+echo; echo "==> screenshot: the machine editor page on ba-table"
+bash scripts/screenshot.sh target/screenshots/maschinen-editor.png "maschine.html#ba-table"
 echo; echo "==> screenshots: the classroom projector, 1280x720 (trainer in projector mode, course instructor view)"
 SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
   bash scripts/screenshot.sh target/screenshots/projektor-1280x720-musterprogramm1-block10.png "#$fragment"

@@ -11,6 +11,10 @@ pub enum Effect {
     Save { key: &'static str, value: String },
     /// Offer the program as a `.h` file.
     Download { name: String, text: String },
+    /// Offer `text` as a UTF-8 file named `name` (the machine editor's JSON export).
+    SaveFile { name: String, text: String },
+    /// Go to another page of the app (the trainer's EDITIEREN opens the machine editor).
+    OpenPage { url: String },
     /// Put the share link (this page's address with `#fragment`) on the clipboard, else into
     /// the address bar.
     Share { fragment: String },

@@ -8,6 +8,7 @@
 pub mod course;
 pub mod dialog;
 pub mod document;
+pub mod editor;
 pub mod effect;
 pub mod i18n;
 pub mod keymap;
@@ -15,6 +16,7 @@ pub mod persist;
 pub mod preview;
 pub mod run;
 pub mod samples;
+pub mod saved_machines;
 pub mod scene;
 pub mod softkeys;
 pub mod state;

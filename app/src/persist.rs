@@ -26,6 +26,8 @@ pub struct Stored {
     pub prefs: Option<String>,
     /// The program text.
     pub program: Option<String>,
+    /// The machine editor's own machines ([`crate::saved_machines`]).
+    pub machines: Option<String>,
 }
 
 /// Why a saved record could not be used.
@@ -230,6 +232,9 @@ pub struct Shared {
     pub program: String,
     pub block: usize,
     pub machine: Option<String>,
+    /// An own machine's record ([`crate::saved_machines::to_record`]): the link carries the
+    /// whole machine, since the receiver does not have it.
+    pub own_machine: Option<String>,
     /// Open in program run at `block` (the instructor's "look at this moment").
     pub run: bool,
 }
@@ -242,6 +247,10 @@ pub fn share_fragment(shared: &Shared) -> String {
         out.push_str("&machine=");
         out.push_str(&percent_encode(m));
     }
+    if let Some(record) = &shared.own_machine {
+        out.push_str("&mdef=");
+        out.push_str(&percent_encode(record));
+    }
     if shared.run {
         out.push_str("&run=1");
     }
@@ -251,7 +260,8 @@ pub fn share_fragment(shared: &Shared) -> String {
 /// Reads a share link's fragment (with or without `#`); `None` if it carries no program.
 #[must_use]
 pub fn parse_fragment(fragment: &str) -> Option<Shared> {
-    let mut shared = Shared { program: String::new(), block: 0, machine: None, run: false };
+    let mut shared =
+        Shared { program: String::new(), block: 0, machine: None, own_machine: None, run: false };
     let mut has_program = false;
     for pair in fragment.trim_start_matches('#').split('&') {
         let (key, value) = pair.split_once('=')?;
@@ -262,6 +272,7 @@ pub fn parse_fragment(fragment: &str) -> Option<Shared> {
             }
             "block" => shared.block = value.parse().ok()?,
             "machine" => shared.machine = Some(percent_decode(value)?),
+            "mdef" => shared.own_machine = Some(percent_decode(value)?),
             "run" => shared.run = value == "1",
             _ => {}
         }
@@ -270,7 +281,7 @@ pub fn parse_fragment(fragment: &str) -> Option<Shared> {
 }
 
 /// Percent-encodes everything but the unreserved characters of RFC 3986.
-fn percent_encode(s: &str) -> String {
+pub fn percent_encode(s: &str) -> String {
     let mut out = String::with_capacity(s.len() * 3 / 2);
     for b in s.bytes() {
         if b.is_ascii_alphanumeric() || b"-_.~".contains(&b) {
@@ -282,7 +293,8 @@ fn percent_encode(s: &str) -> String {
     out
 }
 
-fn percent_decode(s: &str) -> Option<String> {
+/// A URL component back from [`percent_encode`] (`+` read as a blank); `None` when malformed.
+pub fn percent_decode(s: &str) -> Option<String> {
     let bytes = s.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut i = 0;
@@ -368,6 +380,7 @@ mod tests {
             program: "0 BEGIN PGM Ä MM\n1 L X+1 ; a&b=c%\n".into(),
             block: 7,
             machine: Some("ac-table".into()),
+            own_machine: None,
             run: true,
         };
         let f = share_fragment(&s);

@@ -52,6 +52,16 @@ pub fn function_label(f: PlaneKind) -> &'static str {
     }
 }
 
+/// A machine's softkey: its name in softkey lines, pressed when it is the selected one.
+fn machine_key(state: &AppState, m: &Machine) -> Softkey {
+    Softkey {
+        id: format!("machine-{}", m.id),
+        label: softkey_lines(state.lang.t(&m.name.de, &m.name.en), LABEL_WIDTH),
+        action: Action::SelectMachine(m.id.clone()),
+        active: state.machine.as_ref().is_some_and(|s| s.id == m.id),
+    }
+}
+
 /// Characters a softkey line holds at the smallest screen (1280×720 projector).
 const LABEL_WIDTH: usize = 14;
 
@@ -182,17 +192,27 @@ pub fn row(state: &AppState) -> Row {
         SoftkeyLevel::Machines => {
             let mut row: Row = Default::default();
             for (slot, id) in row.iter_mut().zip(Machine::builtin_ids()) {
-                let active = state.machine.as_ref().is_some_and(|m| m.id == id);
-                let label = Machine::builtin(id).map_or_else(
-                    |_| id.to_ascii_uppercase(),
-                    |m| softkey_lines(l.t(&m.name.de, &m.name.en), LABEL_WIDTH),
-                );
-                *slot = Some(Softkey {
-                    id: format!("machine-{id}"),
-                    label,
-                    action: Action::SelectMachine(id.to_owned()),
-                    active,
+                *slot = Machine::builtin(id).ok().map(|m| machine_key(state, &m));
+            }
+            if !state.own_machines.is_empty() {
+                row[5] = Some(Softkey {
+                    id: "own-machines".to_owned(),
+                    label: Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES").get(l).to_owned(),
+                    action: Action::ShowOwnMachines,
+                    active: state
+                        .machine
+                        .as_ref()
+                        .is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
                 });
+            }
+            row[6] = text_key("edit-machine", Text::new("EDITIEREN", "EDIT"), l, Action::EditMachine);
+            row[7] = back(l);
+            row
+        }
+        SoftkeyLevel::OwnMachines => {
+            let mut row: Row = Default::default();
+            for (slot, m) in row.iter_mut().zip(state.own_machines.iter()) {
+                *slot = Some(machine_key(state, m));
             }
             row[7] = back(l);
             row

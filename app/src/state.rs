@@ -14,6 +14,7 @@ use schwenkbar_core::plane::PlaneKind;
 use crate::dialog::{Dialog, Key, Outcome};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
+use crate::persist;
 use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
 use crate::stock::StockRef;
@@ -53,6 +54,8 @@ pub enum SoftkeyLevel {
     TiltPlane,
     /// Choice of the machine (kinematics).
     Machines,
+    /// The own machines made in the machine editor.
+    OwnMachines,
     /// Sample programs to open.
     Samples,
     /// Import, download, share link.
@@ -72,6 +75,9 @@ pub struct AppState {
     pub cursor: usize,
     /// The selected machine; `None` only if a machine definition failed to load (reported).
     pub machine: Option<Rc<Machine>>,
+    /// The own machines saved by the machine editor (and one a share link brought), listed
+    /// beside the shipped ones.
+    pub own_machines: Rc<[Machine]>,
     /// A message in the dialog line outside a dialog (e.g. why a key did nothing).
     pub message: Option<Text>,
     /// Free text editing of the whole program.
@@ -103,6 +109,7 @@ impl Default for AppState {
             doc: Rc::new(Document::new(samples::DEFAULT.text.to_owned())),
             cursor: 0,
             machine: Machine::builtin(DEFAULT_MACHINE).ok().map(Rc::new),
+            own_machines: Rc::from([]),
             message: None,
             text_editing: false,
             sim: None,
@@ -121,6 +128,9 @@ impl Default for AppState {
 
 /// The seed's first example machine.
 pub const DEFAULT_MACHINE: &str = "ac-table";
+
+/// The machine editor's page (its own bundle, beside `index.html`).
+pub const EDITOR_PAGE: &str = "maschine.html";
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Action {
@@ -151,7 +161,11 @@ pub enum Action {
     },
     ToggleTextEditing,
     ShowMachines,
+    /// MASCHINE WÄHLEN → EIGENE MASCHINEN.
+    ShowOwnMachines,
     SelectMachine(String),
+    /// MASCHINE WÄHLEN → EDITIEREN: the machine editor page on the current machine.
+    EditMachine,
     ShowSamples,
     LoadSample(String),
     ShowFiles,
@@ -231,6 +245,7 @@ impl AppState {
                 if next.dialog.take().is_none() {
                     next.level = match self.level {
                         SoftkeyLevel::TiltPlane => SoftkeyLevel::SpecFct,
+                        SoftkeyLevel::OwnMachines => SoftkeyLevel::Machines,
                         _ => SoftkeyLevel::Main,
                     };
                 }
@@ -269,6 +284,11 @@ impl AppState {
                 }
             }
             Action::ShowMachines => next.level = SoftkeyLevel::Machines,
+            Action::ShowOwnMachines => next.level = SoftkeyLevel::OwnMachines,
+            Action::EditMachine => {
+                let id = self.machine.as_ref().map_or(DEFAULT_MACHINE, |m| m.id.as_str());
+                fx.push(Effect::OpenPage { url: format!("{EDITOR_PAGE}#{}", persist::percent_encode(id)) });
+            }
             Action::SelectMachine(id) => next.select_machine(&id),
             Action::ShowSamples => next.level = SoftkeyLevel::Samples,
             Action::LoadSample(id) => match samples::by_id(&id) {
@@ -391,7 +411,8 @@ impl AppState {
     }
 
     fn select_machine(&mut self, id: &str) {
-        match Machine::builtin(id) {
+        let own = || self.own_machines.iter().find(|m| m.id == id).cloned().ok_or(());
+        match Machine::builtin(id).or_else(|_| own()) {
             Ok(m) => {
                 self.machine = Some(Rc::new(m));
                 self.level = SoftkeyLevel::Main;
@@ -492,6 +513,10 @@ impl AppState {
                 "Tilt the working plane: select a function",
             ),
             SoftkeyLevel::Machines => Text::new("Maschine wählen", "Select the machine"),
+            SoftkeyLevel::OwnMachines => Text::new(
+                "Eigene Maschine wählen (im Maschinen-Editor gespeichert)",
+                "Select an own machine (saved in the machine editor)",
+            ),
             // The samples are written as for a German control; English says so.
             SoftkeyLevel::Samples => Text::new(
                 "Beispielprogramm öffnen",

@@ -4,6 +4,8 @@
 //! Prints blocks per second of `simulate` (best of 3 runs; must be ≥ 1,000,000), the time of
 //! `state_at` for a late block (re-simulation from the nearest checkpoint, must be instant for the
 //! UI) and of the first `state_at` on each of 100 spread steps, and the memory of the records.
+//! Then the whole run of Musterprogramm 1 (`static/programs/musterprogramm1.h`) on every shipped
+//! machine, best of 20 (issue 17 budget with collision checking: ≤ 50 ms).
 //! Run: `scripts/bench.sh` or `cargo run --release -p schwenkbar-core --example bench_sim`.
 
 use std::time::Instant;
@@ -62,4 +64,29 @@ fn main() {
         std::mem::size_of::<Record>(),
         (steps * std::mem::size_of::<Record>()) as f64 / 1e6
     );
+    musterprogramm1();
+}
+
+/// The whole run of Musterprogramm 1 on every shipped machine, best of 20.
+fn musterprogramm1() {
+    let src = include_str!("../../static/programs/musterprogramm1.h");
+    let (program, _) = parse(src);
+    for id in Machine::builtin_ids() {
+        let Ok(machine) = Machine::builtin(id) else { continue };
+        let mut best = f64::INFINITY;
+        let mut sim = simulate(&program, &machine, &SimOptions::default());
+        for _ in 0..20 {
+            let t = Instant::now();
+            sim = simulate(&program, &machine, &SimOptions::default());
+            best = best.min(t.elapsed().as_secs_f64());
+        }
+        let stop = sim
+            .error
+            .map_or_else(String::new, |e| format!(" (stopped at line {}: {})", e.line, e.message.en));
+        println!(
+            "musterprogramm1 on {id}: {} steps in {:.3} ms (budget ≤ 50){stop}",
+            sim.records.len(),
+            best * 1e3
+        );
+    }
 }

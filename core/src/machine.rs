@@ -17,7 +17,8 @@
 //! the axis, for MOVE and the 3D view: for a **table** axis in M-CS with every axis at home, for a
 //! **head** axis relative to the spindle gauge point (one tool length above the tool tip) with
 //! the head at home. `geometry` (optional, every field defaulted, [`MachineGeometry`]) places the
-//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]).
+//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]); `collision`
+//! (optional) lists the collision bodies ([`body`]).
 
 use std::borrow::Cow;
 
@@ -28,7 +29,9 @@ use crate::axes::AxisValues;
 use crate::lang::Text;
 use crate::plane::RotaryAxis;
 
+mod body;
 mod validate;
+pub use body::{Body, BodyCarrier, BodyDef, BodyShape, BoxDef, CylinderDef};
 pub use validate::{MachineIssue, Problem};
 
 /// Whether a rotary axis turns the workpiece (table) or the tool (head).
@@ -103,6 +106,8 @@ pub struct Machine {
     /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
     /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
     pub geometry: MachineGeometry,
+    /// The collision bodies of bed, table and head ([`body`]); none when the JSON has none.
+    pub bodies: Vec<Body>,
 }
 
 /// The machine geometry the simulator needs beyond the rotary chain (JSON key `geometry`, every
@@ -191,6 +196,13 @@ pub struct MachineDef {
     pub chain: Cow<'static, [JointDef]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub geometry: Option<GeometryDef>,
+    /// The collision bodies ([`body`]).
+    #[serde(default, skip_serializing_if = "no_bodies")]
+    pub collision: Cow<'static, [BodyDef]>,
+}
+
+fn no_bodies(bodies: &[BodyDef]) -> bool {
+    bodies.is_empty()
 }
 
 /// `geometry` as written; a missing field keeps its default ([`MachineGeometry::default`]).
@@ -319,6 +331,19 @@ impl Machine {
                 rapid_rotary: Some(g.rapid_rotary),
                 start: Some(g.start.to_array()),
             }),
+            collision: self
+                .bodies
+                .iter()
+                .map(|b| {
+                    b.to_def(match b.carrier {
+                        BodyCarrier::Bed => Cow::Borrowed("bed"),
+                        BodyCarrier::Head => Cow::Borrowed("head"),
+                        BodyCarrier::Table { joint } => {
+                            Cow::Borrowed(self.chain.get(joint).map_or("", |j| j.axis.word()))
+                        }
+                    })
+                })
+                .collect(),
         }
     }
 

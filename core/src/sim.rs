@@ -75,6 +75,7 @@
 //! re-runs from the nearest checkpoint, so any step is at most one interval away.
 
 pub mod arc;
+pub mod collision;
 mod cycles;
 mod error;
 pub mod geometry;
@@ -95,6 +96,7 @@ use crate::lang::Text;
 use crate::machine::Machine;
 use crate::solve::Explanation;
 
+pub use collision::{Collision, SafeAlternative};
 pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
@@ -668,6 +670,16 @@ impl Simulation {
             step += 1;
             Some(s)
         })
+    }
+
+    /// The collision that stopped the run, if one did: the two bodies, the axes at the moment
+    /// of contact and the safe other solution, for the view to show.
+    #[must_use]
+    pub fn collision(&self) -> Option<&Collision> {
+        match &self.error.as_ref()?.code {
+            SimErrorCode::Collision(c) => Some(c),
+            _ => None,
+        }
     }
 
     /// The segments of one step (empty for blocks that do not move).

@@ -69,6 +69,8 @@ pub enum Decision {
     MbRetractRapid,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`].
     RotaryFeed,
+    /// Collision check: [`holder`], the tool holder's size.
+    ToolHolder,
     /// Simulator: [`CYCLE19_INPUT_SPATIAL`].
     Cycle19Spatial,
     /// Simulator: [`CYCLE19_MOVES_AXES`].
@@ -114,7 +116,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 40] = [
+    pub const ALL: [Decision; 41] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -155,6 +157,7 @@ impl Decision {
         Decision::PatternConventions,
         Decision::CompensationConventions,
         Decision::DialogWording,
+        Decision::ToolHolder,
     ];
 
     /// The text for the trainee.
@@ -256,6 +259,10 @@ impl Decision {
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",
                 "MB/MB MAX: retract at rapid traverse before the swivel; MB MAX ends 1 mm before each linear axis's software limit switch.",
+            ),
+            Decision::ToolHolder => Text::new(
+                "Kollisionsprüfung: Werkzeughalter als Zylinder unter der Spindelnase, 35 % der Werkzeuglänge lang (höchstens 50 mm), Radius = Werkzeugradius (mindestens 12 mm) + 14 mm; darunter das Werkzeug mit seinem Radius.",
+                "Collision check: tool holder as a cylinder below the spindle nose, 35 % of the tool length long (at most 50 mm), radius = tool radius (at least 12 mm) + 14 mm; below it the tool with its radius.",
             ),
             Decision::RotaryFeed => Text::new(
                 "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",
@@ -509,6 +516,24 @@ pub const MB_RETRACT_AT_RAPID: bool = true;
 /// is machine data the sources do not give; each linear axis stops this many mm inside its
 /// limits. **UNCONFIRMED**.
 pub const MB_MAX_CLEARANCE: f64 = 1.0;
+
+/// The tool holder of the collision check ([`crate::sim::collision`]): the tool table gives only
+/// the tool's length (gauge point to tip, holder included) and radius, no holder. Taken as a
+/// cylinder ending at the gauge point, 35 % of the tool length long but at most 50 mm, of radius
+/// max(tool radius, 12 mm) + 14 mm: the sizes the 3D view draws (`web/src/render/machine_parts.rs`),
+/// a shrink-fit chuck of a small mill. **UNCONFIRMED** (no source; machine data on a real
+/// control).
+#[must_use]
+pub fn holder(tool_length: f64, tool_radius: f64) -> Holder {
+    Holder { length: (0.35 * tool_length).min(50.0), radius: tool_radius.max(12.0) + 14.0 }
+}
+
+/// The tool holder's size ([`holder`]), mm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Holder {
+    pub length: f64,
+    pub radius: f64,
+}
 
 /// `PLANE … MOVE|TURN` and `L` blocks that move rotary axes: a programmed F counts as °/min for
 /// the rotary share of the motion (the duration is the longer of the linear and rotary shares);

@@ -122,8 +122,13 @@ fn table_axes_come_before_head_axes() {
         one(&v, "chain[1].carrier", "Tischachse A nach einer Kopfachse", "table axis A after a head axis"),
         Problem::TableAfterHead { axis: RotaryAxis::A }
     );
-    // Table then head is the mixed machines' order (bc-head-table): accepted.
-    assert!(Machine::from_json(&ac_with(|v| v["chain"][1]["carrier"] = json!("head")).to_string()).is_ok());
+    // Table then head is the mixed machines' order (bc-head-table): accepted (without the
+    // cradle's collision bodies, which cannot ride a head axis).
+    let mixed = ac_with(|v| {
+        v["chain"][1]["carrier"] = json!("head");
+        v.as_object_mut().map(|o| o.remove("collision"));
+    });
+    assert!(Machine::from_json(&mixed.to_string()).is_ok());
 }
 
 #[test]
@@ -340,4 +345,118 @@ fn round_trip_through_json() {
         let def = m.to_def();
         assert_eq!(MachineDef::from_json(&def.to_json()), Ok(def), "{}", m.id);
     }
+}
+
+// ---- collision bodies (`collision[i]`); ac-table: 0 the bed (box), 3 the C rotary table
+// (cylinder on C), 4 the A cradle (box on A) ----
+
+#[test]
+fn a_body_rides_the_bed_the_head_or_a_table_axis_of_the_chain() {
+    let p = one(
+        &ac_with(|v| v["collision"][4]["carrier"] = json!("B")),
+        "collision[4].carrier",
+        "unbekannter Träger „B“ des Kollisionskörpers (bed = Bett, head = Kopf oder eine Tischachse: C, A)",
+        "unknown carrier \"B\" of the collision body (bed, head or a table axis: C, A)",
+    );
+    assert_eq!(p, Problem::UnknownBodyCarrier { carrier: "B".into(), table_axes: "C, A".into() });
+    // A head axis carries no body of its own: head bodies ride the head as a whole.
+    let mut v = shipped("bc-head-table");
+    v["collision"][0]["carrier"] = json!("B");
+    one(&v, "collision[0].carrier", "Tischachse: C)", "table axis: C)");
+    // A machine with no table axis offers bed and head only.
+    let mut v = shipped("ca-head");
+    v["collision"][0]["carrier"] = json!("table");
+    one(&v, "collision[0].carrier", "(bed = Bett, head = Kopf)", "(bed, head)");
+}
+
+#[test]
+fn a_body_is_exactly_one_shape() {
+    let none = ac_with(|v| v["collision"][0].as_object_mut().map(|o| o.remove("box")).map(drop).unwrap());
+    assert_eq!(
+        one(
+            &none,
+            "collision[0]",
+            "0 Formen: ein Kollisionskörper ist genau eine Form",
+            "0 shapes: a collision body is exactly one shape"
+        ),
+        Problem::BodyShapeCount { count: 0 }
+    );
+    let both = ac_with(|v| {
+        v["collision"][0]["cylinder"] =
+            json!({"base": [0, 0, 0], "direction": [0, 0, 1], "radius": 5, "height": 5});
+    });
+    assert_eq!(one(&both, "collision[0]", "2 Formen", "2 shapes"), Problem::BodyShapeCount { count: 2 });
+}
+
+/// One edit of a machine file.
+type JsonEdit = fn(&mut Value);
+
+#[test]
+fn body_sizes_are_positive() {
+    let cases: [(&str, JsonEdit, f64); 5] = [
+        ("collision[0].box.size", |v| v["collision"][0]["box"]["size"][1] = json!(0), 0.0),
+        ("collision[4].box.size", |v| v["collision"][4]["box"]["size"][2] = json!(-24), -24.0),
+        ("collision[3].cylinder.radius", |v| v["collision"][3]["cylinder"]["radius"] = json!(0), 0.0),
+        ("collision[3].cylinder.radius", |v| v["collision"][3]["cylinder"]["radius"] = json!(-50), -50.0),
+        ("collision[3].cylinder.height", |v| v["collision"][3]["cylinder"]["height"] = json!(-30), -30.0),
+    ];
+    for (path, edit, value) in cases {
+        let p = one(&ac_with(edit), path, "muss größer als 0 sein", "must be greater than 0");
+        assert_eq!(p, Problem::NotPositive { value }, "{path}");
+    }
+}
+
+#[test]
+fn a_cylinder_direction_is_a_unit_vector() {
+    let zero = ac_with(|v| v["collision"][3]["cylinder"]["direction"] = json!([0, 0, 0]));
+    assert_eq!(
+        one(
+            &zero,
+            "collision[3].cylinder.direction",
+            "Richtung ist der Nullvektor",
+            "direction is the zero vector"
+        ),
+        Problem::ZeroDirection
+    );
+    let long = ac_with(|v| v["collision"][3]["cylinder"]["direction"] = json!([0, 0, 2]));
+    assert_eq!(
+        one(
+            &long,
+            "collision[3].cylinder.direction",
+            "kein Einheitsvektor (Länge 2)",
+            "not a unit vector (length 2)"
+        ),
+        Problem::DirectionNotUnit { length: 2.0 }
+    );
+}
+
+#[test]
+fn body_numbers_are_finite_and_names_not_empty() {
+    let cases: [(&str, Edit); 5] = [
+        ("collision[0].box.center", |d| {
+            d.collision.to_mut()[0].cuboid.as_mut().unwrap().center[0] = f64::NAN
+        }),
+        ("collision[0].box.size", |d| {
+            d.collision.to_mut()[0].cuboid.as_mut().unwrap().size[2] = f64::INFINITY
+        }),
+        ("collision[3].cylinder.base", |d| {
+            d.collision.to_mut()[3].cylinder.as_mut().unwrap().base[1] = f64::NAN
+        }),
+        ("collision[3].cylinder.direction", |d| {
+            d.collision.to_mut()[3].cylinder.as_mut().unwrap().direction[2] = f64::NEG_INFINITY;
+        }),
+        ("collision[3].cylinder.radius", |d| {
+            d.collision.to_mut()[3].cylinder.as_mut().unwrap().radius = f64::NAN
+        }),
+    ];
+    for (path, edit) in cases {
+        let p = only(def_issues(edit), path, "keine endliche Zahl", "not a finite number");
+        assert!(matches!(p, Problem::NotFinite { value } if !value.is_finite()), "{path}: {p:?}");
+    }
+    one(
+        &ac_with(|v| v["collision"][4]["name"]["en"] = json!(" ")),
+        "collision[4].name.en",
+        "darf nicht leer sein",
+        "must not be empty",
+    );
 }

@@ -183,6 +183,18 @@ pub async fn mount_at(fragment: &str) -> Element {
     root
 }
 
+/// Mounts the machine editor page at the URL fragment (`#ba-table`: start from that machine),
+/// as a visit of `maschine.html#ba-table` would.
+pub async fn mount_editor(fragment: &str) -> Element {
+    web_sys::window().expect("window").location().set_hash(fragment).expect("set hash");
+    let root = document().create_element("div").expect("create div");
+    document().body().expect("body").append_child(&root).expect("append root");
+    yew::Renderer::<schwenkbar_web::components::machine_editor::EditorRoot>::with_root(root.clone()).render();
+    settle().await;
+    assert!(wait_for(&root, ".editor .status", 10_000).await.is_some(), "the editor renders");
+    root
+}
+
 thread_local! {
     /// Pages mounted with [`mount_at`], so [`unmount`] can end them: a page left running would
     /// still follow the URL fragment and save the course progress of earlier tests.

@@ -9,6 +9,7 @@ use web_sys::{Blob, BlobPropertyBag, Element, File, HtmlAnchorElement, HtmlEleme
 
 use schwenkbar_app::i18n::Text;
 use schwenkbar_app::persist::{COURSE_KEY, PREFS_KEY, PROGRAM_KEY, STATE_KEY, Stored};
+use schwenkbar_app::saved_machines::MACHINES_KEY;
 
 fn storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok()?
@@ -18,10 +19,30 @@ fn load(key: &str) -> Option<String> {
     storage()?.get_item(key).ok().flatten()
 }
 
-/// What the trainer kept: its small state, the shared preferences and the program text.
+/// What the trainer kept: its small state, the shared preferences, the program text and the
+/// machine editor's own machines.
 #[must_use]
 pub fn load_stored() -> Stored {
-    Stored { state: load(STATE_KEY), prefs: load(PREFS_KEY), program: load(PROGRAM_KEY) }
+    Stored {
+        state: load(STATE_KEY),
+        prefs: load(PREFS_KEY),
+        program: load(PROGRAM_KEY),
+        machines: load(MACHINES_KEY),
+    }
+}
+
+/// The machine editor's own machines and the shared preferences.
+#[must_use]
+pub fn load_editor() -> (Option<String>, Option<String>) {
+    (load(MACHINES_KEY), load(PREFS_KEY))
+}
+
+/// Goes to another page of the app (relative `url`); without a window nothing happens.
+pub fn open_page(url: &str) {
+    if let Some(window) = web_sys::window() {
+        // Failing leaves the trainer as it is; the trainee can open the page by its address.
+        let _ = window.location().assign(url);
+    }
 }
 
 /// The course's progress record and the shared preferences.

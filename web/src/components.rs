@@ -5,6 +5,7 @@ pub mod dialog_area;
 pub mod exercise_card;
 pub mod gl_canvas;
 pub mod header;
+pub mod machine_editor;
 pub mod position;
 pub mod positioning;
 pub mod program_pane;

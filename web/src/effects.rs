@@ -157,6 +157,12 @@ fn run(list: &Rc<[Effect]>, at: usize, shell: &Shell) {
                 Err(message) => message,
             });
         }
+        Effect::SaveFile { name, text } => {
+            if let Err(message) = browser::download(name, text.as_bytes()) {
+                shell.notice.emit(message);
+            }
+        }
+        Effect::OpenPage { url } => browser::open_page(url),
         Effect::Share { fragment } => {
             let notice = shell.notice.clone();
             let fragment = fragment.clone();

@@ -41,3 +41,9 @@ pub fn start() {
 pub fn start_course() {
     yew::Renderer::<CourseRoot>::new().render();
 }
+
+/// Mounts the machine editor on the document body (the entry point of `maschine.html`, bin
+/// `maschine`: its form, checks and JSON stay out of the trainer's bundle).
+pub fn start_editor() {
+    yew::Renderer::<components::machine_editor::EditorRoot>::new().render();
+}

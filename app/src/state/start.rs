@@ -10,6 +10,7 @@ use super::{Action, AppState, DEFAULT_MACHINE, Effect};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Prefs, Saved, Shared, Stored};
+use crate::saved_machines;
 
 /// A share link opened over the trainee's own program: the link's program is shown (and can be
 /// run), the own one is kept aside and nothing is saved until the trainee decides.
@@ -107,7 +108,7 @@ impl AppState {
     /// and replaced by the default.
     #[must_use]
     pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
-        let Stored { state: saved, prefs, program } = stored;
+        let Stored { state: saved, prefs, program, machines } = stored;
         let mut state = AppState::default();
         let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
         state.lang = prefs.lang;
@@ -120,6 +121,18 @@ impl AppState {
             state.doc = Rc::new(Document::new(text));
         }
         let mut fx = Vec::new();
+        if let Some(text) = machines {
+            let (own, damaged) = saved_machines::list_from_record(&text);
+            if let Some(why) = damaged {
+                // Written back at once, so the damage is reported once.
+                fx.push(Effect::Save {
+                    key: saved_machines::MACHINES_KEY,
+                    value: saved_machines::list_to_record(&own),
+                });
+                state.message = Some(why);
+            }
+            state.own_machines = own.into();
+        }
         match saved.as_deref().map(Saved::from_record) {
             None => {}
             Some(Ok(s)) => {
@@ -145,8 +158,27 @@ impl AppState {
             }
             state.doc = Rc::new(Document::new(shared.program));
             state.cursor = shared.block.min(state.doc.last_index());
-            if let Some(m) = shared.machine {
-                state.select_machine(&m);
+            // An own machine travels whole; the receiver keeps it for this visit only.
+            match shared.own_machine.as_deref().map(saved_machines::from_record) {
+                Some(Ok(m)) => {
+                    let id = m.id.clone();
+                    let mut own: Vec<Machine> =
+                        state.own_machines.iter().filter(|o| o.id != id).cloned().collect();
+                    own.push(m);
+                    state.own_machines = own.into();
+                    state.select_machine(&id);
+                }
+                Some(Err(_)) => {
+                    state.message = Some(Text::new(
+                        "Maschine im Link beschädigt: Standardmaschine gewählt",
+                        "The link's machine is corrupt: the default machine chosen",
+                    ));
+                }
+                None => {
+                    if let Some(m) = shared.machine {
+                        state.select_machine(&m);
+                    }
+                }
             }
             state.message = Some(match state.link {
                 Some(_) => Text::new(
@@ -198,10 +230,12 @@ impl AppState {
     /// The share link's fragment for the current program, block and machine.
     #[must_use]
     pub fn share_fragment(&self) -> String {
+        let own = self.machine.as_deref().filter(|m| !saved_machines::is_shipped(&m.id));
         persist::share_fragment(&Shared {
             program: self.doc.text.clone(),
             block: self.cursor,
             machine: self.machine.as_ref().map(|m| m.id.clone()),
+            own_machine: own.map(saved_machines::to_record),
             run: self.run.is_some(),
         })
     }

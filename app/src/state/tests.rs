@@ -68,6 +68,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         state: Some(s.saved().to_record()),
         prefs: Some(s.prefs().to_record()),
         program: Some(s.doc.text.clone()),
+        machines: None,
     };
     let (back, _) = AppState::start(stored, None);
     assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
@@ -80,7 +81,8 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         "the restored program is the one simulated"
     );
 
-    let stored = Stored { state: Some("s2;cursor=".into()), prefs: None, program: Some("0 L X+1".into()) };
+    let stored =
+        Stored { state: Some("s2;cursor=".into()), program: Some("0 L X+1".into()), ..Stored::default() };
     let (broken, fx) = AppState::start(stored, None);
     assert_eq!(broken.doc.text, "0 L X+1", "the program typed is kept");
     assert_eq!(
@@ -95,6 +97,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         state: Some(r#"{"version":1,"cursor":3,"machine":"ac-table","lang":"En","projector":false}"#.into()),
         prefs: Some("p1;lang=xx".into()),
         program: None,
+        machines: None,
     };
     let (old, _) = AppState::start(stored, None);
     assert_eq!(
@@ -160,8 +163,11 @@ fn a_link_over_own_work_is_a_preview_until_the_trainee_decides() {
     let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n".to_owned();
     let saved = Some(AppState::default().saved().to_record());
     let link = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
-    let stored =
-        |program: &str| Stored { state: saved.clone(), prefs: None, program: Some(program.to_owned()) };
+    let stored = |program: &str| Stored {
+        state: saved.clone(),
+        program: Some(program.to_owned()),
+        ..Stored::default()
+    };
     let (s, fx) = AppState::start(stored(&own), Some(&link));
     assert!(s.link.is_some());
     assert_ne!(s.doc.text, own, "the link's program is shown");

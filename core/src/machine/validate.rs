@@ -1,5 +1,5 @@
 //! The one check of a machine description ([`MachineDef`]): every reader (the compiled-in
-//! machines, [`Machine::from_json`], the coming machine editor) goes through [`validate`], which
+//! machines, [`Machine::from_json`], the machine editor and its saved record in `schwenkbar-app`) goes through [`validate`], which
 //! reports every problem it finds, not only the first, each with the path of its field
 //! (`chain[1].direction`, `geometry.linear_limits.X`) so that an editor can show it at the field.
 //!
@@ -16,12 +16,18 @@
 //!   the two directions are not parallel, and the master's is not the tool axis at home;
 //! - rotary `limits` and `geometry.linear_limits` have min < max (min = max would be an axis that
 //!   cannot move), an `endless` axis has no limits;
-//! - the rapid rates are > 0, and `geometry.start` lies within the linear limits.
+//! - the rapid rates are > 0, and `geometry.start` lies within the linear limits;
+//! - each collision body (`collision[i]`) has a name in both languages, a `carrier` that is
+//!   `bed`, `head` or the letter of a table axis of the chain, exactly one shape (`box` or
+//!   `cylinder`), finite numbers, a box size and a cylinder radius and height > 0 and a cylinder
+//!   direction that is a unit vector.
 
 use glam::DVec3;
 use serde::Serialize;
 
-use super::{Carrier, Limits, Machine, MachineDef, MachineGeometry, RotaryJoint};
+use super::{
+    Body, BodyCarrier, BodyDef, BodyShape, Carrier, Limits, Machine, MachineDef, MachineGeometry, RotaryJoint,
+};
 use crate::lang::{Lang, Text};
 use crate::number::prose;
 use crate::plane::RotaryAxis;
@@ -98,6 +104,11 @@ pub enum Problem {
     NotPositive { value: f64 },
     /// The start position of a linear axis outside its limits.
     StartOutside { axis: char, value: f64, min: f64, max: f64 },
+    /// A collision body's carrier that is neither `bed`, `head` nor a table axis of the chain
+    /// (`table_axes`: the letters that are).
+    UnknownBodyCarrier { carrier: String, table_axes: String },
+    /// A collision body with no shape or with both `box` and `cylinder`.
+    BodyShapeCount { count: usize },
 }
 
 /// A number in running text of each language (`-12,5` / `-12.5`).
@@ -188,6 +199,26 @@ impl Problem {
                     format!("start position {axis} {v_en} outside the limits {min_en} … {max_en}"),
                 )
             }
+            Problem::UnknownBodyCarrier { carrier, table_axes } => {
+                let (de, en) = if table_axes.is_empty() {
+                    (String::new(), String::new())
+                } else {
+                    (
+                        format!(" oder eine Tischachse: {table_axes}"),
+                        format!(" or a table axis: {table_axes}"),
+                    )
+                };
+                Text::owned(
+                    format!(
+                        "unbekannter Träger „{carrier}“ des Kollisionskörpers (bed = Bett, head = Kopf{de})"
+                    ),
+                    format!("unknown carrier \"{carrier}\" of the collision body (bed, head{en})"),
+                )
+            }
+            Problem::BodyShapeCount { count } => Text::owned(
+                format!("{count} Formen: ein Kollisionskörper ist genau eine Form, box oder cylinder"),
+                format!("{count} shapes: a collision body is exactly one shape, box or cylinder"),
+            ),
         }
     }
 }
@@ -202,11 +233,19 @@ pub(super) fn validate(def: &MachineDef) -> Result<Machine, Vec<MachineIssue>> {
             issues.push(MachineIssue::at(path, Problem::Empty));
         }
     }
+    let before_chain = issues.len();
     let joints: Vec<Option<RotaryJoint>> =
         def.chain.iter().enumerate().map(|(i, j)| joint(i, j, &mut issues)).collect();
     chain_order(&joints, &mut issues);
     let chain = two_axes(joints, &mut issues);
+    let chain_sound = chain.is_some() && issues.len() == before_chain;
     let geometry = geometry(def.geometry.as_ref(), &mut issues);
+    let bodies: Vec<Body> = def
+        .collision
+        .iter()
+        .enumerate()
+        .filter_map(|(i, b)| body(i, b, def, chain_sound, &mut issues))
+        .collect();
     match chain {
         Some(chain) if issues.is_empty() => {
             let [slave, master] = &chain;
@@ -218,6 +257,7 @@ pub(super) fn validate(def: &MachineDef) -> Result<Machine, Vec<MachineIssue>> {
                 chain,
                 symmetry,
                 geometry,
+                bodies,
             })
         }
         _ => Err(issues),
@@ -377,4 +417,94 @@ fn geometry(def: Option<&super::GeometryDef>, issues: &mut Vec<MachineIssue>) ->
         }
     }
     g
+}
+
+/// One collision body, or `None` (with its issues pushed) when a field is wrong.
+fn body(
+    i: usize,
+    b: &BodyDef,
+    def: &MachineDef,
+    chain_sound: bool,
+    issues: &mut Vec<MachineIssue>,
+) -> Option<Body> {
+    let before = issues.len();
+    let at = |field: &str| format!("collision[{i}].{field}");
+    for (field, text) in [("name.de", &*b.name.de), ("name.en", &*b.name.en)] {
+        if text.trim().is_empty() {
+            issues.push(MachineIssue::at(at(field), Problem::Empty));
+        }
+    }
+    let table_axis = |j: &super::JointDef| Carrier::from_word(&j.carrier) == Some(Carrier::Table);
+    let carrier = match &*b.carrier {
+        "bed" => Some(BodyCarrier::Bed),
+        "head" => Some(BodyCarrier::Head),
+        word => def
+            .chain
+            .iter()
+            .position(|j| table_axis(j) && *j.axis == *word)
+            .map(|joint| BodyCarrier::Table { joint }),
+    };
+    // A body's axis is only looked up in a sound chain (a wrong chain is reported at the chain,
+    // once).
+    if carrier.is_none() && chain_sound {
+        let table_axes: Vec<&str> = def.chain.iter().filter(|j| table_axis(j)).map(|j| &*j.axis).collect();
+        issues.push(MachineIssue::at(
+            at("carrier"),
+            Problem::UnknownBodyCarrier { carrier: b.carrier.to_string(), table_axes: table_axes.join(", ") },
+        ));
+    }
+    let mut positive = |field: &str, values: &[f64]| {
+        if let Some(value) = not_finite(values) {
+            issues.push(MachineIssue::at(at(field), Problem::NotFinite { value }));
+        } else if let Some(&value) = values.iter().find(|&&v| v <= 0.0) {
+            issues.push(MachineIssue::at(at(field), Problem::NotPositive { value }));
+        }
+    };
+    let shape = match (b.cuboid, b.cylinder) {
+        (Some(c), None) => {
+            positive("box.size", &c.size);
+            if let Some(value) = not_finite(&c.center) {
+                issues.push(MachineIssue::at(at("box.center"), Problem::NotFinite { value }));
+            }
+            Some(BodyShape::Box {
+                center: DVec3::from_array(c.center),
+                half: 0.5 * DVec3::from_array(c.size),
+            })
+        }
+        (None, Some(c)) => {
+            positive("cylinder.radius", &[c.radius]);
+            positive("cylinder.height", &[c.height]);
+            if let Some(value) = not_finite(&c.base) {
+                issues.push(MachineIssue::at(at("cylinder.base"), Problem::NotFinite { value }));
+            }
+            let direction = DVec3::from_array(c.direction);
+            if let Some(value) = not_finite(&c.direction) {
+                issues.push(MachineIssue::at(at("cylinder.direction"), Problem::NotFinite { value }));
+            } else if direction == DVec3::ZERO {
+                issues.push(MachineIssue::at(at("cylinder.direction"), Problem::ZeroDirection));
+            } else if (direction.length() - 1.0).abs() > UNIT_TOL {
+                issues.push(MachineIssue::at(
+                    at("cylinder.direction"),
+                    Problem::DirectionNotUnit { length: direction.length() },
+                ));
+            }
+            Some(BodyShape::Cylinder {
+                base: DVec3::from_array(c.base),
+                direction: direction.normalize_or_zero(),
+                radius: c.radius,
+                height: c.height,
+            })
+        }
+        (a, c) => {
+            let count = usize::from(a.is_some()) + usize::from(c.is_some());
+            issues.push(MachineIssue::at(format!("collision[{i}]"), Problem::BodyShapeCount { count }));
+            None
+        }
+    };
+    match (carrier, shape) {
+        (Some(carrier), Some(shape)) if issues.len() == before => {
+            Some(Body { name: b.name.clone(), carrier, shape })
+        }
+        _ => None,
+    }
 }

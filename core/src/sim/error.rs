@@ -8,6 +8,9 @@ use crate::lang::Text;
 use crate::orientation::PlaneError;
 use crate::solve::SolveError;
 
+use super::collision::Collision;
+use super::segment::SegmentKind;
+
 /// What went wrong at a block. Every variant carries the numbers.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "code", rename_all = "snake_case")]
@@ -85,6 +88,8 @@ pub enum SimErrorCode {
     TcpmActive { word: &'static str },
     /// `APPR`/`DEP` whose path cannot be built.
     ApprDep { word: &'static str, kind: &'static str, reason: ApprDepReason },
+    /// Two bodies touched during the block's motion ([`super::collision`]).
+    Collision(Box<Collision>),
 }
 
 /// Why an `APPR`/`DEP` path cannot be built.
@@ -185,6 +190,10 @@ impl SimErrorCode {
             SimErrorCode::ApprDep { word, kind, .. } => {
                 t(format!("{word} {kind} nicht möglich"), format!("{word} {kind} not possible"))
             }
+            SimErrorCode::Collision(c) => t(
+                format!("Kollision: {} – {}", c.a.de, c.b.de),
+                format!("Collision: {} – {}", c.a.en, c.b.en),
+            ),
         }
     }
 
@@ -394,6 +403,32 @@ impl SimErrorCode {
                     format!("{word} {kind}: the radius R is 0"),
                 ),
             },
+            SimErrorCode::Collision(c) => collision_detail(c),
         }
     }
+}
+
+/// Where the bodies touched, the axes then, and the safe other solution if there is one.
+fn collision_detail(c: &Collision) -> Text {
+    let (de, en) = match c.kind {
+        SegmentKind::SwivelTurn => ("beim Schwenken (TURN)", "while swivelling (TURN)"),
+        SegmentKind::SwivelMove => ("beim Schwenken (MOVE)", "while swivelling (MOVE)"),
+        SegmentKind::SwivelStay => ("nach dem Schwenken (STAY)", "after the swivel (STAY)"),
+        SegmentKind::Retract => ("beim Rückzug (MB)", "during the retract (MB)"),
+        SegmentKind::Rapid => ("im Eilgang", "at rapid traverse"),
+        SegmentKind::Feed | SegmentKind::CycleFeed => ("im Vorschub", "at feed"),
+    };
+    let axes: Vec<String> =
+        c.axes.named().into_iter().map(|(l, v)| format!("{l}{}", crate::solve::fmt_deg(v))).collect();
+    let axes = axes.join(" ");
+    let [pct_de, pct_en] = [Lang::De, Lang::En].map(|l| prose((c.fraction * 100.0).round(), Some(0), l));
+    let mut de =
+        format!("{} und {} berühren sich {de} nach {pct_de} % der Bewegung, bei {axes}", c.a.de, c.b.de);
+    let mut en = format!("{} and {} touch {en} after {pct_en} % of the motion, at {axes}", c.a.en, c.b.en);
+    if let Some(alt) = &c.alternative {
+        let words = crate::solve::axis_words(&alt.axes);
+        de.push_str(&format!(". Die andere Lösung ({}) wäre kollisionsfrei: {words}", alt.word));
+        en.push_str(&format!(". The other solution ({}) would be collision-free: {words}", alt.word));
+    }
+    t(de, en)
 }

@@ -83,13 +83,31 @@ impl Kin {
     /// derived: the joint nearest the workpiece is carried by the next one, so it acts first).
     #[must_use]
     pub fn workpiece_pose(&self, rotary: [f64; 2]) -> Affine {
-        let mut w = Affine::IDENTITY;
-        for (j, theta) in self.joints.iter().zip(rotary) {
-            if j.carrier == Carrier::Table {
-                w = Affine::rotation_about(j.dir, j.pivot, -theta).after(&w);
-            }
+        self.table_pose(0, rotary)
+    }
+
+    /// Pose of what table joint `from` carries (its home M-CS coordinates to M-CS): the product
+    /// of [`Kin::workpiece_pose`] over the table joints from `from` on; `from` = 2 (none) is the
+    /// bed, which never moves.
+    #[must_use]
+    pub fn table_pose(&self, from: usize, rotary: [f64; 2]) -> Affine {
+        self.table_poses(rotary).get(from).copied().unwrap_or(Affine::IDENTITY)
+    }
+
+    /// [`Kin::table_pose`] for `from` = 0, 1, 2 at once (each turn computed once): the joint
+    /// further from the workpiece carries the nearer one, so `pose[k] = pose[k + 1] ∘ T_k`.
+    #[must_use]
+    pub fn table_poses(&self, rotary: [f64; 2]) -> [Affine; 3] {
+        let mut poses = [Affine::IDENTITY; 3];
+        for k in (0..2).rev() {
+            let j = &self.joints[k];
+            poses[k] = if j.carrier == Carrier::Table {
+                poses[k + 1].after(&Affine::rotation_about(j.dir, j.pivot, -rotary[k]))
+            } else {
+                poses[k + 1]
+            };
         }
-        w
+        poses
     }
 
     /// Pose of the head relative to the linear axes: maps tool coordinates (tip at the origin,

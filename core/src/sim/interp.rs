@@ -18,6 +18,7 @@ use crate::plane::{Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RotaryAxis
 use crate::solve::{self, Explanation, SolveError, SolveOptions};
 use crate::unconfirmed;
 
+use super::collision::{Bodies, Clearances, Collision, SafeAlternative};
 use super::cycles::{self, CycleMove};
 use super::error::SimErrorCode;
 use super::geometry::{Affine, Kin};
@@ -118,6 +119,10 @@ pub(crate) struct Interp {
     m89: bool,
     /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
     tcpm: bool,
+    /// The bodies every motion is checked against ([`super::collision`]), for this tool and blank.
+    bodies: Option<Arc<Bodies>>,
+    /// What the check knows from the motions before ([`Clearances`]).
+    clearances: Clearances,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -242,7 +247,10 @@ impl Interp {
             pattern: None,
             m89: false,
             tcpm: false,
+            bodies: None,
+            clearances: Clearances::default(),
         };
+        it.rebuild_bodies(machine);
         it.refresh();
         it.pos_i = it.map.inverse_orthogonal().apply(it.axes.linear);
         it
@@ -379,8 +387,8 @@ impl Interp {
                 self.ended = true;
                 self.pc = cx.program.blocks.len();
             }
-            BlockBody::BlkForm(b) => self.blk_form(b)?,
-            BlockBody::ToolCall(t) => self.tool_call(t, &mut rec)?,
+            BlockBody::BlkForm(b) => self.blk_form(cx, b)?,
+            BlockBody::ToolCall(t) => self.tool_call(cx, t, &mut rec)?,
             BlockBody::L(line) => {
                 self.line(cx, &mut rec, idx, line)?;
                 self.modal_call(cx, &mut rec, idx, line)?;
@@ -585,7 +593,28 @@ impl Interp {
         Ok(())
     }
 
-    fn blk_form(&mut self, b: &BlkForm) -> R<()> {
+    /// The collision bodies for the machine, the active tool and the blank.
+    fn rebuild_bodies(&mut self, machine: &Machine) {
+        self.bodies = Bodies::new(machine, &self.kin, self.tool.radius, self.blank.as_ref()).map(Arc::new);
+        self.clearances.forget();
+    }
+
+    /// The collision error of `seg` if two bodies touch along it (`clear`: what is known from
+    /// the motions before).
+    pub(super) fn collided(&self, seg: &Segment, clear: &mut Clearances) -> Option<Collision> {
+        let bodies = self.bodies.as_deref()?;
+        let c = bodies.first_contact(seg, clear)?;
+        Some(Collision {
+            a: bodies.name(c.a),
+            b: bodies.name(c.b),
+            kind: seg.kind,
+            fraction: c.fraction,
+            axes: seg.axes_at(c.fraction),
+            alternative: None,
+        })
+    }
+
+    fn blk_form(&mut self, cx: &Cx<'_>, b: &BlkForm) -> R<()> {
         let base = if b.part == 2 { self.blank_min.unwrap_or(DVec3::ZERO) } else { DVec3::ZERO };
         let mut p = if b.part == 2 { base } else { DVec3::ZERO };
         for w in b.axes.iter() {
@@ -597,13 +626,14 @@ impl Interp {
         if b.part == 2 {
             let min = self.blank_min.unwrap_or(DVec3::ZERO);
             self.blank = Some(Blank { min: min.min(p), max: min.max(p) });
+            self.rebuild_bodies(cx.machine);
         } else {
             self.blank_min = Some(p);
         }
         Ok(())
     }
 
-    fn tool_call(&mut self, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
+    fn tool_call(&mut self, cx: &Cx<'_>, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
         self.tcpm_reset_before("TOOL CALL")?;
         let dl = t.dl.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
@@ -646,6 +676,7 @@ impl Interp {
             self.feed = f;
         }
         self.kin.tool_length = self.tool.length;
+        self.rebuild_bodies(cx.machine);
         self.sync_pos();
         Ok(())
     }

@@ -328,7 +328,7 @@ impl Interp {
                 }))
             }
         };
-        self.go_along(cx, rec, idx, kind, to, rate, length, path);
+        self.go_along(cx, rec, idx, kind, to, rate, length, path)?;
         self.pos_i = elem.end;
         if let Some(t) = elem.tangent(&plane, true) {
             self.tangent = Some(t);

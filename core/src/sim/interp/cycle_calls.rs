@@ -233,7 +233,7 @@ impl Interp {
             };
             let target = MachineAxes { linear: l, ..self.axes };
             match m.arc {
-                None => self.go(cx, rec, idx, kind, target, [0.0; 2], rate, || SegmentPath::Linear),
+                None => self.go(cx, rec, idx, kind, target, [0.0; 2], rate, || SegmentPath::Linear)?,
                 Some(ArcTo { centre, sweep }) => {
                     // The I-CS arc about the tool axis (Z) carried through the I-CS → axes map,
                     // which only turns, mirrors and shifts (as the contour's arcs).
@@ -250,7 +250,7 @@ impl Interp {
                         lead: mm * DVec3::new(0.0, 0.0, rise),
                     }));
                     let length = (u.length() * sweep).hypot(rise);
-                    self.go_along(cx, rec, idx, kind, target, rate, length, path);
+                    self.go_along(cx, rec, idx, kind, target, rate, length, path)?;
                 }
             }
             self.pos_i = m.target;

@@ -63,7 +63,8 @@ impl Interp {
         [d(0), d(1)]
     }
 
-    /// Moves to `target`, recording a segment when a full record is asked for.
+    /// Moves to `target`, checking the motion for collisions and recording a segment when a
+    /// full record is asked for.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn go(
         &mut self,
@@ -75,19 +76,35 @@ impl Interp {
         rotary_delta: [f64; 2],
         rate: Rate,
         path: impl FnOnce() -> SegmentPath,
-    ) {
+    ) -> R<()> {
         let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
-        if let Some(r) = rec.as_deref_mut().filter(|_| moves) {
+        if moves && (rec.is_some() || self.bodies.is_some()) {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
             let duration = duration(cx, rate, lin, rot);
-            r.segments.push(self.segment(block, kind, target, rotary_delta, duration, path()));
+            let seg = self.segment(block, kind, target, rotary_delta, duration, path());
+            self.record(rec, seg)?;
         }
         self.axes = target;
+        Ok(())
+    }
+
+    /// Checks `seg` for collisions, then records it when a full record is asked for.
+    fn record(&mut self, rec: &mut Option<&mut Rec>, seg: Segment) -> R<()> {
+        let mut clear = std::mem::take(&mut self.clearances);
+        let collided = self.collided(&seg, &mut clear);
+        self.clearances = clear;
+        if let Some(c) = collided {
+            return Err(SimErrorCode::Collision(Box::new(c)));
+        }
+        if let Some(r) = rec.as_deref_mut() {
+            r.segments.push(seg);
+        }
+        Ok(())
     }
 
     /// The segment of this step from the axes now to `target`.
-    fn segment(
+    pub(super) fn segment(
         &self,
         block: usize,
         kind: SegmentKind,
@@ -101,7 +118,8 @@ impl Interp {
     }
 
     /// Moves the linear axes to `target` along `path` of `length` mm (an arc may end where it
-    /// started), recording a segment when a full record is asked for.
+    /// started), checking it for collisions and recording a segment when a full record is asked
+    /// for.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn go_along(
         &mut self,
@@ -113,18 +131,14 @@ impl Interp {
         rate: Rate,
         length: f64,
         path: SegmentPath,
-    ) {
-        if let Some(r) = rec.as_deref_mut().filter(|_| length > 0.0) {
-            r.segments.push(self.segment(
-                block,
-                kind,
-                target,
-                [0.0; 2],
-                duration(cx, rate, length, 0.0),
-                path,
-            ));
+    ) -> R<()> {
+        if length > 0.0 && (rec.is_some() || self.bodies.is_some()) {
+            let duration = duration(cx, rate, length, 0.0);
+            let seg = self.segment(block, kind, target, [0.0; 2], duration, path);
+            self.record(rec, seg)?;
         }
         self.axes = target;
+        Ok(())
     }
 
     pub(super) fn rate(&mut self, feed: Option<&Feed<Value>>) -> R<Rate> {
@@ -231,7 +245,7 @@ impl Interp {
                     to: ics_to_wcs.apply(p),
                 })),
                 None => SegmentPath::Linear,
-            });
+            })?;
             if rot_prog {
                 self.refresh();
             }

@@ -124,12 +124,14 @@ impl Interp {
                         if unconfirmed::MB_RETRACT_AT_RAPID { Rate::Rapid } else { self.swivel_rate(feed) };
                     self.go(cx, rec, idx, SegmentKind::Retract, target, [0.0; 2], rate, || {
                         SegmentPath::Linear
-                    });
+                    })?;
                 }
                 let rate = self.swivel_rate(feed);
-                let delta = self.rotary_delta(cx, target, true);
-                let t = MachineAxes { rotary: target, ..self.axes };
-                self.go(cx, rec, idx, SegmentKind::SwivelTurn, t, delta, rate, || SegmentPath::Linear);
+                let plan = |it: &Self, target: [f64; 2]| {
+                    let end = MachineAxes { rotary: target, ..it.axes };
+                    (end, it.rotary_delta(cx, target, true), SegmentPath::Linear)
+                };
+                self.swivel(cx, rec, idx, &expl, SegmentKind::SwivelTurn, rate, target, plan)?;
             }
             Some(Positioning::Move { dist, feed }) => {
                 let dist = dist.unwrap_or(unconfirmed::MOVE_DEFAULT_DIST);
@@ -143,19 +145,70 @@ impl Interp {
                     let rot = [self.axes.rotary[0] + f * delta[0], self.axes.rotary[1] + f * delta[1]];
                     self.check_linear(cx, move_linear(&mp, rot))?;
                 }
-                let end = MachineAxes {
-                    linear: move_linear(&mp, target),
-                    rotary: target,
-                    letters: self.axes.letters,
-                };
                 let rate = self.swivel_rate(feed);
-                self.go(cx, rec, idx, SegmentKind::SwivelMove, end, delta, rate, || {
-                    SegmentPath::Move(Box::new(mp))
-                });
+                let plan = |it: &Self, target: [f64; 2]| {
+                    let end = MachineAxes {
+                        linear: move_linear(&mp, target),
+                        rotary: target,
+                        letters: it.axes.letters,
+                    };
+                    (end, it.rotary_delta(cx, target, true), SegmentPath::Move(Box::new(mp.clone())))
+                };
+                self.swivel(cx, rec, idx, &expl, SegmentKind::SwivelMove, rate, target, plan)?;
             }
         }
         self.sync_pos();
         Ok(())
+    }
+
+    /// The swivel of a PLANE block to `target` as `plan` lays it out from the axes now. When it
+    /// collides and the swivel to another permitted solution of `expl` would not, the error
+    /// names that solution (the why panel's safe alternative, the view's ghost).
+    #[allow(clippy::too_many_arguments)]
+    fn swivel(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        expl: &Explanation,
+        kind: SegmentKind,
+        rate: Rate,
+        target: [f64; 2],
+        plan: impl Fn(&Self, [f64; 2]) -> (MachineAxes, [f64; 2], SegmentPath),
+    ) -> R<()> {
+        let (end, delta, path) = plan(self, target);
+        match self.go(cx, rec, idx, kind, end, delta, rate, || path) {
+            Err(SimErrorCode::Collision(mut c)) => {
+                c.alternative = self.safe_alternative(cx, idx, expl, kind, &plan);
+                Err(SimErrorCode::Collision(c))
+            }
+            other => other,
+        }
+    }
+
+    /// The first other permitted candidate of `expl` whose swivel from the axes now is inside
+    /// the linear limits and collision-free.
+    fn safe_alternative(
+        &self,
+        cx: &Cx<'_>,
+        idx: usize,
+        expl: &Explanation,
+        kind: SegmentKind,
+        plan: &impl Fn(&Self, [f64; 2]) -> (MachineAxes, [f64; 2], SegmentPath),
+    ) -> Option<SafeAlternative> {
+        let chosen = expl.chosen?;
+        expl.candidates.iter().enumerate().filter(|(i, c)| *i != chosen && c.in_limits).find_map(|(_, c)| {
+            let (end, delta, path) = plan(self, self.target_rotary(&c.axes));
+            let seg = self.segment(idx, kind, end, delta, 0.0, path);
+            let free = self.check_linear(cx, end.linear).is_ok()
+                && self.collided(&seg, &mut Clearances::default()).is_none();
+            // SEQ counts the master's sign ([`unconfirmed::ZERO_COUNTS_AS_PLUS`] at 0).
+            let plus = c.master > 0.0 || (c.master == 0.0 && unconfirmed::ZERO_COUNTS_AS_PLUS);
+            free.then(|| SafeAlternative {
+                word: format!("SEQ{}", if plus { '+' } else { '−' }),
+                axes: c.axes,
+            })
+        })
     }
 
     /// STAY: no axis moves; a segment of [`STAY_SECONDS`] lets the view turn the working plane

@@ -1,0 +1,448 @@
+//! The machine editor page's reducer (`editor.rs`), the own machines' record
+//! (`saved_machines.rs`) and the trainer's side of them: listing, running, EDITIEREN, the share
+//! link.
+
+use std::borrow::Cow;
+
+use glam::DMat3;
+use schwenkbar_app::editor::{EditorAction, EditorState, Field, Form, rows};
+use schwenkbar_app::effect::{Effect, Reducer};
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::persist::{self, Stored};
+use schwenkbar_app::saved_machines::{self, LIST_DAMAGED, MACHINES_KEY};
+use schwenkbar_app::softkeys::row;
+use schwenkbar_app::state::{Action, AppState, SoftkeyLevel};
+use schwenkbar_core::machine::Machine;
+use schwenkbar_core::plane::{PlaneBlock, RotaryAxis, Value};
+use schwenkbar_core::solve::{self, SolveOptions};
+use schwenkbar_core::{BlockBody, parse};
+use schwenkbar_testkit::assert_close;
+use schwenkbar_testkit::seq_sym::{self, Expect};
+
+fn editor() -> EditorState {
+    EditorState::start(None, None, None).0
+}
+
+fn then(s: &EditorState, a: EditorAction) -> EditorState {
+    s.apply(a).0
+}
+
+fn set(s: &EditorState, field: Field, value: &str) -> EditorState {
+    then(s, EditorAction::Set(field, value.to_owned()))
+}
+
+/// The value a `Save`/`SaveFile` effect carries.
+fn saved_value(fx: &[Effect]) -> String {
+    fx.iter()
+        .find_map(|e| match e {
+            Effect::Save { key, value } if *key == MACHINES_KEY => Some(value.clone()),
+            _ => None,
+        })
+        .expect("the machines are saved")
+}
+
+#[test]
+fn opens_a_copy_of_a_shipped_machine_valid_and_with_an_own_id() {
+    let s = editor();
+    assert_eq!(s.lang(), Lang::De);
+    assert!(s.valid, "{:?}", s.issues);
+    assert_eq!(s.form.id, "ac-table-eigen");
+    let preview = s.preview.as_ref().expect("preview");
+    let shipped = Machine::builtin("ac-table").expect("shipped");
+    assert_eq!(preview.joints(), shipped.joints());
+    assert_eq!(preview.geometry, shipped.geometry);
+    // From the trainer's EDITIEREN: the fragment names the machine.
+    let s = EditorState::start(None, None, Some("#ba-table")).0;
+    assert_eq!(s.form.id, "ba-table-eigen");
+    let s = EditorState::start(None, Some("p1;lang=en;classroom=0"), Some("#nope")).0;
+    assert_eq!((s.form.id.as_str(), s.lang()), ("ac-table-eigen", Lang::En));
+    assert!(s.message.expect("told").en.contains("nope"));
+}
+
+#[test]
+fn every_field_edits_its_part_of_the_description() {
+    let s = editor();
+    for r in rows() {
+        for field in r.fields {
+            if let Field::Endless(i) = field {
+                let on = then(&s, EditorAction::SetEndless(i, true));
+                assert!(on.form.to_def().0.chain[i].endless);
+                assert_eq!(on.form.value(field), "1");
+                continue;
+            }
+            let value = match field {
+                Field::Axis(_) => "B",
+                Field::Carrier(_) => "head",
+                _ => "12,5",
+            };
+            let next = set(&s, field, value);
+            assert_eq!(next.form.value(field), value, "{field:?}");
+            let def = next.form.to_def().0;
+            let read = match field {
+                Field::Id => def.id.to_string(),
+                Field::Name(0) => def.name.de.to_string(),
+                Field::Name(_) => def.name.en.to_string(),
+                Field::Description(0) => def.description.de.to_string(),
+                Field::Description(_) => def.description.en.to_string(),
+                Field::Axis(i) => def.chain[i].axis.to_string(),
+                Field::Carrier(i) => def.chain[i].carrier.to_string(),
+                Field::Direction(i, c) => def.chain[i].direction[c].to_string(),
+                Field::Pivot(i, c) => def.chain[i].pivot[c].to_string(),
+                Field::Min(i) => def.chain[i].limits.expect("limits").min.to_string(),
+                Field::Max(i) => def.chain[i].limits.expect("limits").max.to_string(),
+                Field::Endless(_) => unreachable!("handled above"),
+                Field::Preset(c) => def.geometry.and_then(|g| g.preset).expect("preset")[c].to_string(),
+                Field::Linear(a, m) => {
+                    let l = def.geometry.and_then(|g| g.linear_limits).expect("limits");
+                    let l = [l.x, l.y, l.z][a].expect("axis");
+                    [l.min, l.max][m].to_string()
+                }
+                Field::RapidLinear => def.geometry.and_then(|g| g.rapid_linear).expect("rate").to_string(),
+                Field::RapidRotary => def.geometry.and_then(|g| g.rapid_rotary).expect("rate").to_string(),
+                Field::Start(c) => def.geometry.and_then(|g| g.start).expect("start")[c].to_string(),
+            };
+            let typed_as_text = matches!(field, Field::Id | Field::Name(_) | Field::Description(_));
+            let expected = if value == "12,5" && !typed_as_text { "12.5" } else { value };
+            assert_eq!(read, expected, "{field:?}");
+        }
+    }
+}
+
+/// Each problem a trainee can type, with the field it must be shown at and its German words.
+#[test]
+fn every_validation_message_reaches_its_field_in_german() {
+    type Edit = fn(&EditorState) -> EditorState;
+    let cases: Vec<(&str, Edit, &str, &str)> = vec![
+        ("empty id", |s| set(s, Field::Id, " "), "id", "darf nicht leer sein"),
+        ("shipped id", |s| set(s, Field::Id, "ac-table"), "id", "mitgelieferten Maschine"),
+        ("empty name", |s| set(s, Field::Name(0), ""), "name.de", "darf nicht leer sein"),
+        ("empty English name", |s| set(s, Field::Name(1), ""), "name.en", "darf nicht leer sein"),
+        ("axis letter", |s| set(s, Field::Axis(0), "D"), "chain[0].axis", "unbekannte Drehachse „D“"),
+        ("axis twice", |s| set(s, Field::Axis(1), "C"), "chain[1].axis", "Achse C steht zweimal"),
+        ("carrier", |s| set(s, Field::Carrier(1), "bed"), "chain[1].carrier", "unbekannter Träger „bed“"),
+        (
+            "table after head",
+            |s| set(s, Field::Carrier(0), "head"),
+            "chain[1].carrier",
+            "Tischachse A nach einer Kopfachse",
+        ),
+        (
+            "zero direction",
+            |s| set(&set(s, Field::Direction(0, 2), "0"), Field::Direction(0, 1), "0"),
+            "chain[0].direction",
+            "Richtung ist der Nullvektor",
+        ),
+        (
+            "not unit",
+            |s| set(s, Field::Direction(0, 2), "2"),
+            "chain[0].direction",
+            "kein Einheitsvektor (Länge 2)",
+        ),
+        (
+            "parallel",
+            |s| set(&set(s, Field::Direction(1, 0), "0"), Field::Direction(1, 2), "1"),
+            "chain[1].direction",
+            "Achsen C und A sind parallel",
+        ),
+        (
+            "master along the tool",
+            |s| {
+                let s = set(&set(s, Field::Direction(0, 2), "0"), Field::Direction(0, 0), "1");
+                set(&set(&s, Field::Direction(1, 0), "0"), Field::Direction(1, 2), "1")
+            },
+            "chain[1].direction",
+            "Masterachse A liegt in Grundstellung parallel zur Werkzeugachse",
+        ),
+        (
+            "rotary limits",
+            |s| set(&set(s, Field::Min(1), "10"), Field::Max(1), "-10"),
+            "chain[1].limits",
+            "min 10 muss kleiner als max -10 sein",
+        ),
+        ("one limit missing", |s| set(s, Field::Min(1), "10"), "chain[1].limits", "keine Zahl"),
+        (
+            "endless with limits",
+            |s| {
+                let s = set(&set(s, Field::Min(0), "-10"), Field::Max(0), "10");
+                then(&s, EditorAction::SetEndless(0, true))
+            },
+            "chain[0].endless",
+            "endlose Achse mit Endschaltern",
+        ),
+        ("pivot no number", |s| set(s, Field::Pivot(1, 2), "abc"), "chain[1].pivot", "keine Zahl"),
+        ("preset no number", |s| set(s, Field::Preset(0), "1..2"), "geometry.preset", "keine Zahl"),
+        (
+            "linear limits",
+            |s| set(s, Field::Linear(1, 0), "700"),
+            "geometry.linear_limits.Y",
+            "min 700 muss kleiner als max 600 sein",
+        ),
+        ("rapid", |s| set(s, Field::RapidLinear, "0"), "geometry.rapid_linear", "muss größer als 0 sein (0)"),
+        (
+            "rapid rotary",
+            |s| set(s, Field::RapidRotary, "-5"),
+            "geometry.rapid_rotary",
+            "muss größer als 0 sein (-5)",
+        ),
+        (
+            "start outside",
+            |s| set(s, Field::Start(2), "10"),
+            "geometry.start",
+            "Startposition Z 10 außerhalb der Grenzen -500 … 0",
+        ),
+        ("infinite", |s| set(s, Field::Start(0), "inf"), "geometry.start", "keine Zahl"),
+    ];
+    let paths: Vec<String> = rows().iter().map(|r| r.path()).collect();
+    let good = editor();
+    for (name, edit, path, german) in cases {
+        let s = edit(&good);
+        assert!(!s.valid, "{name}");
+        assert!(paths.iter().any(|p| p == path), "{name}: no row shows {path}");
+        assert!(s.unplaced().is_empty(), "{name}: {:?}", s.unplaced());
+        let at: Vec<&str> = s.issues_at(path).map(|i| i.message.de.as_ref()).collect();
+        assert!(at.iter().any(|m| m.contains(german)), "{name}: at {path}: {at:?}, all: {:?}", s.issues);
+        // The preview stays on the last valid machine.
+        assert!(s.preview.is_some(), "{name}");
+    }
+}
+
+#[test]
+fn fixing_the_field_clears_its_message_and_the_preview_follows() {
+    let s = set(&set(&editor(), Field::Direction(0, 2), "0"), Field::Direction(0, 1), "0");
+    assert_eq!(s.issues_at("chain[0].direction").count(), 1);
+    assert_eq!(s.preview, editor().preview, "the last valid machine is shown");
+    let fixed = set(&s, Field::Direction(0, 1), "1");
+    assert!(fixed.valid && fixed.issues.is_empty(), "{:?}", fixed.issues);
+    let joint = &fixed.preview.as_ref().expect("preview").joints()[0];
+    assert_eq!(joint.direction, glam::DVec3::Y);
+}
+
+#[test]
+fn save_and_load_round_trip_and_delete() {
+    let s = set(&editor(), Field::Name(0), "Meine Fräse");
+    let (saved, fx) = s.apply(EditorAction::Save);
+    let record = saved_value(&fx);
+    assert!(saved.message.as_ref().expect("said").de.starts_with("Gespeichert"));
+    let (again, fx) = EditorState::start(Some(&record), None, Some("#ac-table-eigen"));
+    assert!(fx.is_empty(), "nothing to repair: {fx:?}");
+    assert_eq!(again.saved, saved.saved);
+    assert_eq!(again.form, s.form);
+    assert_eq!(again.preview, s.preview);
+    // Saving again under the same id replaces it.
+    let (twice, fx) = set(&again, Field::Pivot(1, 2), "-200").apply(EditorAction::Save);
+    assert_eq!(twice.saved.len(), 1);
+    assert_eq!(saved_machines::list_from_record(&saved_value(&fx)).0, twice.saved);
+    let (gone, fx) = twice.apply(EditorAction::Delete);
+    assert!(gone.saved.is_empty());
+    assert_eq!(saved_value(&fx), "");
+    // An invalid machine is not saved.
+    let (bad, fx) = set(&editor(), Field::RapidLinear, "x").apply(EditorAction::Save);
+    assert!(fx.is_empty());
+    assert!(bad.message.expect("said").de.starts_with("Nicht gespeichert"));
+}
+
+#[test]
+fn a_corrupt_saved_record_is_reported_and_replaced() {
+    let good = saved_value(&editor().apply(EditorAction::Save).1);
+    for corrupt in ["kaputt", "m1;id=x", &format!("{good}\n\u{0}{good}"), &"m1;".repeat(100_000)] {
+        let (s, fx) = EditorState::start(Some(corrupt), None, None);
+        assert_eq!(s.message, Some(LIST_DAMAGED), "{corrupt:.40}");
+        let rewritten = saved_value(&fx);
+        assert_eq!(saved_machines::list_from_record(&rewritten), (s.saved.clone(), None));
+    }
+}
+
+#[test]
+fn export_then_import_gives_an_equal_machine() {
+    let s = set(&set(&editor(), Field::Pivot(0, 0), "12,25"), Field::Min(1), "-100");
+    let s = set(&s, Field::Max(1), "100");
+    let fx = s.apply(EditorAction::Export).1;
+    let [Effect::SaveFile { name, text }] = fx.as_slice() else { panic!("{fx:?}") };
+    assert_eq!(name, "ac-table-eigen.json");
+    assert_eq!(Machine::from_json(text).as_ref(), Ok(s.preview.as_deref().expect("preview")));
+    let imported = then(
+        &EditorState::start(None, None, Some("#ba-table")).0,
+        EditorAction::Import(text.clone().into_bytes()),
+    );
+    assert!(imported.valid && imported.import_issues.is_empty());
+    assert_eq!(imported.preview, s.preview);
+    assert_eq!(imported.form.joints[0].pivot[0], "12.25");
+    // An invalid form is not exported.
+    assert!(set(&s, Field::Id, "").apply(EditorAction::Export).1.is_empty());
+}
+
+#[test]
+fn a_bad_file_is_listed_and_nothing_typed_is_lost() {
+    let typed = set(&editor(), Field::Name(0), "halb getippt");
+    let three_axes = {
+        let mut def = Machine::builtin("ac-table").expect("shipped").to_def();
+        let mut chain = def.chain.to_vec();
+        chain.push(chain[0].clone());
+        def.chain = Cow::Owned(chain);
+        def.to_json()
+    };
+    for bytes in [
+        b"{ kein json".to_vec(),
+        vec![0xff, 0xfe, 0x00],
+        three_axes.into_bytes(),
+        vec![b' '; 300 * 1024],
+        b"{\"id\": 5}".to_vec(),
+    ] {
+        let s = then(&typed, EditorAction::Import(bytes));
+        assert_eq!(s.form, typed.form, "the form stays");
+        assert_eq!(s.import_issues.len(), 1, "{:?}", s.import_issues);
+        assert!(!s.import_issues[0].de.is_empty());
+    }
+    // A readable file with a problem opens with the problem at its field.
+    let json = Machine::builtin("ac-table").expect("shipped").to_json().replacen("\"table\"", "\"tisch\"", 1);
+    let s = then(&typed, EditorAction::Import(json.into_bytes()));
+    assert!(s.import_issues.is_empty());
+    assert_eq!(s.form.joints[0].carrier, "tisch");
+    assert!(s.issues_at("chain[0].carrier").any(|i| i.message.de.contains("„tisch“")), "{:?}", s.issues);
+}
+
+fn trainer_with(machines: &str) -> AppState {
+    let stored = Stored { machines: Some(machines.to_owned()), ..Stored::default() };
+    AppState::start(stored, None).0
+}
+
+#[test]
+fn the_trainer_lists_runs_and_edits_the_saved_machines() {
+    let record = saved_value(&set(&editor(), Field::Name(0), "Meine Fräse").apply(EditorAction::Save).1);
+    let s = trainer_with(&record).apply(Action::ShowMachines).0;
+    let keys: Vec<String> = row(&s).iter().flatten().map(|k| k.id.clone()).collect();
+    assert!(
+        keys.contains(&"own-machines".to_owned()) && keys.contains(&"edit-machine".to_owned()),
+        "{keys:?}"
+    );
+    let s = s.apply(Action::ShowOwnMachines).0;
+    assert_eq!(s.level, SoftkeyLevel::OwnMachines);
+    let own = row(&s)[0].clone().expect("the saved machine");
+    assert_eq!(own.label, "Meine Fräse");
+    let s = s.apply(own.action).0;
+    assert_eq!(s.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table-eigen"));
+    assert!(s.sim.is_some(), "the program runs on it");
+    // The choice survives a reload.
+    let state = s.saved().to_record();
+    let stored = Stored { machines: Some(record), state: Some(state), ..Stored::default() };
+    let reloaded = AppState::start(stored, None).0;
+    assert_eq!(reloaded.machine, s.machine);
+    // EDITIEREN opens the editor on the current machine.
+    let fx = reloaded.apply(Action::EditMachine).1;
+    assert_eq!(fx, [Effect::OpenPage { url: "maschine.html#ac-table-eigen".into() }]);
+    let fx = AppState::default().apply(Action::EditMachine).1;
+    assert_eq!(fx, [Effect::OpenPage { url: "maschine.html#ac-table".into() }]);
+    // Without own machines the row has no EIGENE MASCHINEN.
+    let plain = AppState::default().apply(Action::ShowMachines).0;
+    assert!(row(&plain)[5].is_none());
+}
+
+#[test]
+fn the_trainer_reports_and_repairs_a_corrupt_list() {
+    let (s, fx) = AppState::start(Stored { machines: Some("m1;kaputt".into()), ..Stored::default() }, None);
+    assert_eq!(s.message, Some(LIST_DAMAGED));
+    assert!(fx.contains(&Effect::Save { key: MACHINES_KEY, value: String::new() }));
+}
+
+#[test]
+fn an_own_machine_travels_in_the_share_link() {
+    let record = saved_value(&set(&editor(), Field::Pivot(1, 2), "-180,5").apply(EditorAction::Save).1);
+    let s = trainer_with(&record).apply(Action::SelectMachine("ac-table-eigen".into())).0;
+    let fragment = s.share_fragment();
+    assert!(fragment.contains("&mdef="), "{fragment}");
+    let shared = persist::parse_fragment(&fragment).expect("a link");
+    assert_eq!(
+        shared.own_machine.as_deref().map(saved_machines::from_record),
+        Some(Ok((**s.machine.as_ref().expect("machine")).clone()))
+    );
+    // Opened by someone who does not have the machine.
+    let (opened, _) = AppState::start(Stored::default(), Some(&format!("#{fragment}")));
+    assert_eq!(opened.machine, s.machine);
+    assert!(opened.sim.is_some());
+    // A shipped machine travels by id only.
+    assert!(!AppState::default().share_fragment().contains("mdef="));
+    // A corrupt machine in a link is said, not a panic.
+    let broken = fragment.replace("mdef=m1", "mdef=m1x");
+    let (opened, _) = AppState::start(Stored::default(), Some(&broken));
+    assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+}
+
+fn plane_block(src: &str) -> PlaneBlock<f64> {
+    let (program, _) = parse(src);
+    match program.blocks.first().map(|b| b.body().into_owned()) {
+        Some(BlockBody::Plane(p)) => p
+            .try_map(|v| match v {
+                Value::Number(x) => Ok(*x),
+                Value::Param { index, .. } => Err(*index),
+            })
+            .unwrap_or_else(|q| panic!("{src}: Q{q}")),
+        other => panic!("{src}: {other:?}"),
+    }
+}
+
+fn rotary(letter: char) -> RotaryAxis {
+    RotaryAxis::from_letter(&letter.to_string()).expect("rotary axis")
+}
+
+/// ac-table and ba-table edited in the editor (names, a pivot, a linear limit), saved, read back
+/// through the record: the seed's SEQ/SYM table still comes out.
+#[test]
+fn seed_seq_sym_rows_on_edited_copies_read_through_the_record() {
+    let edited = |id: &str| {
+        let s = EditorState::start(None, None, Some(&format!("#{id}"))).0;
+        let s = set(&set(&s, Field::Name(0), "Meine Maschine"), Field::Pivot(1, 0), "10");
+        let s = set(&set(&s, Field::Linear(0, 0), "-900"), Field::Linear(0, 1), "900");
+        let record = saved_value(&s.apply(EditorAction::Save).1);
+        let (list, why) = saved_machines::list_from_record(&record);
+        assert_eq!(why, None);
+        (id.to_owned(), list.into_iter().next().expect("one machine"))
+    };
+    let machines = [edited("ac-table"), edited("ba-table")];
+    let rows = seq_sym::rows();
+    assert_eq!(rows.len(), 15);
+    for r in rows {
+        let (_, machine) = machines.iter().find(|(id, _)| *id == r.machine).expect("row's machine");
+        let start = r
+            .start_axes()
+            .iter()
+            .fold(Default::default(), |v: schwenkbar_core::axes::AxisValues, &(l, x)| v.with(rotary(l), x));
+        let limits = r
+            .limit_range()
+            .map(|(l, min, max)| (rotary(l), schwenkbar_core::machine::Limits { min, max }))
+            .into_iter()
+            .collect();
+        let opts = SolveOptions { start, limits, ..SolveOptions::default() };
+        for text in r.blocks() {
+            let e = solve::solve_block(machine, &plane_block(&text), DMat3::IDENTITY, &opts).expect("solved");
+            let id = format!("oracle {} on {}: {text}", r.oracle, machine.id);
+            match &r.expect {
+                Expect::Chosen(axes) => {
+                    let chosen = e.chosen_axes().unwrap_or_else(|| panic!("{id}: no solution"));
+                    for &(letter, value) in axes {
+                        assert_close!(
+                            chosen.get(rotary(letter)).unwrap_or(f64::NAN),
+                            value,
+                            1e-4,
+                            "{id} {letter}"
+                        );
+                    }
+                }
+                Expect::Refused(msg) => {
+                    assert!(e.chosen.is_none(), "{id}");
+                    assert_eq!(e.error.expect("refusal").message().de, *msg, "{id}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_form_of_every_shipped_machine_checks_to_that_machine() {
+    for id in Machine::builtin_ids() {
+        let m = Machine::builtin(id).expect("shipped");
+        let form = Form::of(&m.to_def()).expect("two axes");
+        let (def, bad) = form.to_def();
+        assert!(bad.is_empty(), "{id}");
+        assert_eq!(def.validate().as_ref(), Ok(&m), "{id}");
+    }
+}

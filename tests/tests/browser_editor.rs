@@ -1,0 +1,61 @@
+//! Headless-Chromium test of the machine editor page (issue 17) and the trainer's side of it: a
+//! direction typed as 0 0 0 is said in German at that field, fixed, saved; the trainer then
+//! offers the saved machine under MASCHINE WÄHLEN → EIGENE MASCHINEN and runs on it.
+#![cfg(target_arch = "wasm32")]
+
+use schwenkbar_app::saved_machines::MACHINES_KEY;
+use schwenkbar_tests::browser::{
+    clear_storage, click, eventually, mount, mount_editor, query, text, type_into, wait_for,
+};
+use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn stored(key: &str) -> Option<String> {
+    web_sys::window()?.local_storage().ok()??.get_item(key).ok()?
+}
+
+#[wasm_bindgen_test]
+async fn a_zero_direction_is_said_at_its_field_then_fixed_saved_and_offered_by_the_trainer() {
+    clear_storage();
+    let editor = mount_editor("#ac-table").await;
+    assert_eq!(
+        query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(),
+        Some("true")
+    );
+    let c_direction = r#"input[data-field="Direction(0, 2)"]"#;
+    let at_field = r#"[data-path="chain[0].direction"] .ed-issue"#;
+    // C's direction (0 0 1) typed as 0 0 0.
+    type_into(&editor, c_direction, "0").await;
+    assert!(wait_for(&editor, at_field, 3_000).await.is_some(), "a message at the direction");
+    assert_eq!(text(&editor, at_field), "Richtung ist der Nullvektor");
+    assert_eq!(
+        query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(),
+        Some("false")
+    );
+    assert!(query(&editor, "canvas.view3d").is_some(), "the preview stays (the last valid machine)");
+    click(&editor, "[data-action=save]").await;
+    assert!(text(&editor, ".message").starts_with("Nicht gespeichert"), "{}", text(&editor, ".message"));
+    assert_eq!(stored(MACHINES_KEY), None);
+    // Fixed: the message goes, the machine saves.
+    type_into(&editor, c_direction, "1").await;
+    assert!(eventually(|| query(&editor, at_field).is_none()).await, "the message went");
+    click(&editor, "[data-action=save]").await;
+    assert!(text(&editor, ".message").starts_with("Gespeichert"), "{}", text(&editor, ".message"));
+    assert!(stored(MACHINES_KEY).is_some_and(|r| r.starts_with("m1;id=ac-table-eigen;")));
+    editor.remove();
+    web_sys::window().expect("window").location().set_hash("").expect("clear hash");
+
+    // The trainer, loaded afterwards, offers it.
+    let trainer = mount().await;
+    click(&trainer, "[data-key=machines]").await;
+    assert!(query(&trainer, "[data-key=edit-machine]").is_some(), "EDITIEREN");
+    click(&trainer, "[data-key=own-machines]").await;
+    let own = "[data-key=machine-ac-table-eigen]";
+    assert!(wait_for(&trainer, own, 3_000).await.is_some(), "the saved machine is offered");
+    assert!(text(&trainer, own).contains("(eigene)"), "{}", text(&trainer, own));
+    click(&trainer, own).await;
+    click(&trainer, "[data-key=machines]").await;
+    click(&trainer, "[data-key=own-machines]").await;
+    assert_eq!(query(&trainer, own).and_then(|k| k.get_attribute("aria-pressed")).as_deref(), Some("true"));
+}

@@ -1,0 +1,5 @@
+//! Entry point of the machine editor page (`maschine.html`).
+
+fn main() {
+    schwenkbar_web::start_editor();
+}

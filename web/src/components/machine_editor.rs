@@ -1,0 +1,191 @@
+//! The machine editor page (`maschine.html`, its own bundle): the form of
+//! [`schwenkbar_app::editor`] row by row with each row's messages under it, the 3D preview of the
+//! last valid machine, and the page's commands (start from, save, delete, export, import,
+//! language). State and checks in [`EditorState`]; this only renders and dispatches.
+
+use web_sys::{HtmlInputElement, HtmlSelectElement};
+use yew::prelude::*;
+
+use super::view3d::View3d;
+use crate::browser;
+use crate::effects::{Shell, Shelled, use_effects};
+use schwenkbar_app::editor::{EditorAction, EditorState, Field, SECTIONS, rows};
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_core::machine::Machine;
+
+const STYLE: &str = include_str!("machine_editor.css");
+
+/// The editor in yew.
+pub type Editor = Shelled<EditorState>;
+
+/// One input of a row: a text field, the carrier's choice or the endless switch.
+fn input(state: &UseReducerHandle<Editor>, field: Field, l: Lang) -> Html {
+    let value = state.form.value(field);
+    let name = format!("{field:?}");
+    match field {
+        Field::Carrier(_) => {
+            let onchange = {
+                let state = state.clone();
+                Callback::from(move |e: Event| {
+                    if let Some(s) = e.target_dyn_into::<HtmlSelectElement>() {
+                        state.dispatch(EditorAction::Set(field, s.value()));
+                    }
+                })
+            };
+            // An imported unknown word stays selectable, so the message next to it makes sense.
+            let known = ["table", "head"].contains(&value.as_str());
+            html! {
+                <select data-field={name} {onchange}>
+                    <option value="table" selected={value == "table"}>{ l.t("Tisch (table)", "table") }</option>
+                    <option value="head" selected={value == "head"}>{ l.t("Kopf (head)", "head") }</option>
+                    if !known { <option value={value.clone()} selected=true>{ value.clone() }</option> }
+                </select>
+            }
+        }
+        Field::Endless(i) => {
+            let onchange = {
+                let state = state.clone();
+                Callback::from(move |e: Event| {
+                    if let Some(c) = e.target_dyn_into::<HtmlInputElement>() {
+                        state.dispatch(EditorAction::SetEndless(i, c.checked()));
+                    }
+                })
+            };
+            html! { <input type="checkbox" data-field={name} checked={!value.is_empty()} {onchange} /> }
+        }
+        _ => {
+            let oninput = {
+                let state = state.clone();
+                Callback::from(move |e: InputEvent| {
+                    if let Some(i) = e.target_dyn_into::<HtmlInputElement>() {
+                        state.dispatch(EditorAction::Set(field, i.value()));
+                    }
+                })
+            };
+            html! { <input type="text" data-field={name} {value} {oninput} spellcheck="false" /> }
+        }
+    }
+}
+
+#[function_component(EditorRoot)]
+pub fn editor_root() -> Html {
+    let state = use_reducer(|| {
+        let (machines, prefs) = browser::load_editor();
+        Editor::new(EditorState::start(machines.as_deref(), prefs.as_deref(), browser::fragment().as_deref()))
+    });
+    let root = use_node_ref();
+    {
+        let notice = {
+            let state = state.clone();
+            Callback::from(move |t| state.dispatch(EditorAction::Notice(t)))
+        };
+        // The editor asks for saving and the file download only.
+        let shell = Shell {
+            notice,
+            tick: Callback::noop(),
+            build_stock: Callback::noop(),
+            root: root.clone(),
+            tell_course: None,
+        };
+        use_effects(&state.pending, shell);
+    }
+    let l = state.lang();
+    let send = |a: EditorAction| {
+        let state = state.clone();
+        Callback::from(move |_: MouseEvent| state.dispatch(a.clone()))
+    };
+    let on_open = {
+        let state = state.clone();
+        Callback::from(move |e: Event| {
+            if let Some(s) = e.target_dyn_into::<HtmlSelectElement>()
+                && !s.value().is_empty()
+            {
+                state.dispatch(EditorAction::Open(s.value()));
+            }
+        })
+    };
+    let on_import = {
+        let state = state.clone();
+        Callback::from(move |e: Event| {
+            let file = e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
+            let Some(file) = file else { return };
+            let state = state.clone();
+            yew::platform::spawn_local(async move {
+                match browser::read_file(file).await {
+                    Ok(bytes) => state.dispatch(EditorAction::Import(bytes)),
+                    Err(message) => state.dispatch(EditorAction::Notice(message)),
+                }
+            });
+        })
+    };
+    let shipped = Machine::builtin_ids().into_iter().filter_map(|id| Machine::builtin(id).ok());
+    let starts: Vec<(String, String)> = shipped
+        .map(|m| (m.id.clone(), format!("{} ({})", l.t(&m.name.de, &m.name.en), m.id)))
+        .chain(state.saved.iter().map(|m| (m.id.clone(), format!("{} – {}", l.t("eigene", "own"), m.id))))
+        .collect();
+    let all_rows = rows();
+    let section = |s: usize| {
+        let rows = all_rows.iter().filter(|r| r.section == s).map(|r| {
+            let path = r.path();
+            let issues: Vec<Html> = state
+                .issues_at(&path)
+                .map(|i| html! { <p class="ed-issue" role="alert">{ i.message.get(l).to_owned() }</p> })
+                .collect();
+            let class = classes!("ed-row", (!issues.is_empty()).then_some("bad"));
+            html! {
+                <div {class} data-path={path}>
+                    <span>{ r.label.get(l).to_owned() }</span>
+                    <span class="ed-inputs">{ for r.fields.iter().map(|f| input(&state, *f, l)) }</span>
+                    { for issues }
+                </div>
+            }
+        });
+        html! { <><h2>{ SECTIONS[s].get(l).to_owned() }</h2>{ for rows }</> }
+    };
+    let n = state.issues.len();
+    let status = if state.valid {
+        html! { <p class="status" data-valid="true">{ l.t("Maschine gültig", "Machine valid") }</p> }
+    } else {
+        let text = match l {
+            Lang::De => format!("{n} Fehler: die Vorschau zeigt den letzten gültigen Stand"),
+            Lang::En => format!("{n} problem(s): the preview shows the last valid state"),
+        };
+        html! { <p class="status bad" data-valid="false">{ text }</p> }
+    };
+    let top_issues = state
+        .import_issues
+        .iter()
+        .cloned()
+        .chain(state.unplaced().into_iter().map(|i| i.message.clone()))
+        .map(|t| html! { <p class="ed-top-issue" role="alert">{ t.get(l).to_owned() }</p> });
+    html! {
+        <div class="editor" ref={root} lang={l.code()}>
+            <style>{ STYLE }</style>
+            <header>
+                <h1>{ l.t("Maschinen-Editor", "Machine editor") }</h1>
+                <select aria-label={l.t("Ausgehen von", "Start from")} data-action="open" onchange={on_open}>
+                    <option value="" selected=true>{ l.t("Ausgehen von …", "Start from …") }</option>
+                    { for starts.into_iter().map(|(id, label)| html! { <option value={id}>{ label }</option> }) }
+                </select>
+                <button type="button" data-action="save" onclick={send(EditorAction::Save)}>{ l.t("SPEICHERN", "SAVE") }</button>
+                <button type="button" data-action="delete" onclick={send(EditorAction::Delete)}>{ l.t("LÖSCHEN", "DELETE") }</button>
+                <button type="button" data-action="export" onclick={send(EditorAction::Export)}>{ l.t("EXPORT .JSON", "EXPORT .JSON") }</button>
+                <label class="button" data-action="import">{ l.t("IMPORT .JSON", "IMPORT .JSON") }
+                    <input type="file" accept=".json,application/json" class="file-input" onchange={on_import} />
+                </label>
+                <button type="button" data-action="lang" onclick={send(EditorAction::ToggleLang)}>{ l.t("ENGLISH", "DEUTSCH") }</button>
+                <a href="index.html" data-action="trainer">{ l.t("Zum Trainer", "To the trainer") }</a>
+            </header>
+            <section class="form" aria-label={l.t("Maschinendaten", "Machine data")}>
+                if let Some(m) = &state.message { <p class="message" role="status">{ m.get(l).to_owned() }</p> }
+                { status }
+                { for top_issues }
+                { for (0..SECTIONS.len()).map(section) }
+            </section>
+            <section class="preview">
+                <h2>{ l.t("Vorschau", "Preview") }</h2>
+                <View3d lang={l} machine={state.preview.clone()} />
+            </section>
+        </div>
+    }
+}
