@@ -147,7 +147,8 @@ pub fn app(props: &AppProps) -> Html {
                         <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={DocRef(state.doc.clone())}
-                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} stock={state.shown_stock()} />
+                        state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} stock={state.shown_stock()}
+                        typing={state.text_editing} />
                     }
                     <div class="side">
                         if let Some(shown) = shown.clone() {

@@ -93,8 +93,8 @@ pub struct Shell {
 #[hook]
 pub fn use_effects(pending: &Pending, shell: Shell) {
     use_effect_with(pending.clone(), move |p| {
-        for effect in p.list.iter() {
-            run(effect, &shell);
+        for at in 0..p.list.len() {
+            run(&p.list, at, &shell);
         }
     });
 }
@@ -104,23 +104,35 @@ const BIG_SAVE: usize = 256 * 1024;
 const SAVE_PAUSE_MS: u64 = 1000;
 
 thread_local! {
-    /// The big text waiting to be saved.
-    static LATER: std::cell::RefCell<Option<(&'static str, String)>> = const { std::cell::RefCell::new(None) };
+    /// The big text waiting to be saved: the list of effects it is in and its place there (a
+    /// copy of the text would cost milliseconds a keystroke).
+    static LATER: std::cell::RefCell<Option<(Rc<[Effect]>, usize)>> = const { std::cell::RefCell::new(None) };
 }
 
-fn run(effect: &Effect, shell: &Shell) {
+/// The key and text of a save effect.
+fn save_of(effect: Option<&Effect>) -> Option<(&'static str, &str)> {
+    match effect {
+        Some(Effect::Save { key, value }) => Some((key, value)),
+        _ => None,
+    }
+}
+
+/// Runs the effect at `at` of `list`.
+fn run(list: &Rc<[Effect]>, at: usize, shell: &Shell) {
+    let Some(effect) = list.get(at) else { return };
     let root = || shell.root.cast::<web_sys::Element>();
     match effect {
         // A big program is written once typing pauses (megabytes a keystroke would cost more
         // than the keystroke); the latest text wins.
-        Effect::Save { key, value } if value.len() > BIG_SAVE => {
-            let first = LATER.with(|l| l.borrow_mut().replace((key, value.clone())).is_none());
+        Effect::Save { value, .. } if value.len() > BIG_SAVE => {
+            let first = LATER.with(|l| l.borrow_mut().replace((list.clone(), at)).is_none());
             if first {
                 let notice = shell.notice.clone();
                 yew::platform::spawn_local(async move {
                     yew::platform::time::sleep(std::time::Duration::from_millis(SAVE_PAUSE_MS)).await;
-                    if let Some((key, value)) = LATER.with(|l| l.borrow_mut().take())
-                        && let Err(message) = browser::save(key, &value)
+                    let later = LATER.with(|l| l.borrow_mut().take());
+                    if let Some((key, value)) = later.as_ref().and_then(|(list, at)| save_of(list.get(*at)))
+                        && let Err(message) = browser::save(key, value)
                     {
                         notice.emit(message);
                     }
@@ -128,7 +140,9 @@ fn run(effect: &Effect, shell: &Shell) {
             }
         }
         Effect::Save { key, value } => {
-            LATER.with(|l| l.borrow_mut().take_if(|(k, _)| k == key));
+            LATER.with(|l| {
+                l.borrow_mut().take_if(|(list, at)| save_of(list.get(*at)).is_some_and(|(k, _)| k == *key))
+            });
             if let Err(message) = browser::save(key, value) {
                 shell.notice.emit(message);
             }

@@ -37,6 +37,9 @@ pub struct ScenePaneProps {
     /// A program run is shown (the view follows the workpiece by default).
     #[prop_or_default]
     pub in_run: bool,
+    /// The trainee is typing in the text editor (the view is painted once typing pauses).
+    #[prop_or_default]
+    pub typing: bool,
     /// A PLANE candidate hovered in the why panel: drawn as the ghost instead of the other one.
     #[prop_or_default]
     pub ghost: Option<AxisValues>,
@@ -83,10 +86,15 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             };
             yew::platform::spawn_local(async move {
                 let mut p = RunPath::default();
-                while !toolpath_part(&sim.0, &doc.program, &mut p, PATH_STEPS) {
+                // Every part after a turn of the browser, the first too: a keystroke's screen
+                // update should not wait for it.
+                loop {
                     yew::platform::time::sleep(Duration::from_millis(0)).await;
                     if generation.get() != gen_now {
                         return;
+                    }
+                    if toolpath_part(&sim.0, &doc.program, &mut p, PATH_STEPS) {
+                        break;
                     }
                 }
                 if generation.get() == gen_now {
@@ -159,7 +167,8 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
     };
     html! {
         <div class="scene-pane">
-            <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} in_run={props.in_run} />
+            <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} in_run={props.in_run}
+                typing={props.typing} />
             if props.state.is_some() {
                 <label class="scrub">
                     { l.t("Satz-Bewegung", "Block motion") }

@@ -45,7 +45,14 @@ pub struct View3dProps {
     /// A program run is shown: the "Werkstück" camera is on until the trainee moves the view.
     #[prop_or_default]
     pub in_run: bool,
+    /// The trainee is typing in the text editor: a changed scene is painted once typing pauses
+    /// ([`TYPING_PAUSE_FRAMES`]).
+    #[prop_or_default]
+    pub typing: bool,
 }
+
+/// Frames without a new scene that count as a pause in typing (about 150 ms).
+const TYPING_PAUSE_FRAMES: u32 = 9;
 
 /// What the "Werkstück" camera keeps in view, in M-CS: the blank's eight corners, the tool tip
 /// and the tool's top (tool length along the tool axis), as the machine stands.
@@ -73,6 +80,18 @@ pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
     let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
     let wcs = glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
     (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
+}
+
+/// Whether two contents draw the same scene (the machine compared by identity).
+fn same_content(a: Option<&Content>, b: Option<&Content>) -> bool {
+    match (a, b) {
+        (
+            Some(Content::Machine { machine: m0, state: s0, triads: t0 }),
+            Some(Content::Machine { machine: m1, state: s1, triads: t1 }),
+        ) => Rc::ptr_eq(m0, m1) && s0 == s1 && t0 == t1,
+        (None, None) => true,
+        _ => false,
+    }
 }
 
 /// The toolbar's CSS, shipped with the component.
@@ -107,23 +126,27 @@ pub fn view3d(props: &View3dProps) -> Html {
         let viewer = viewer.clone();
         let (machine, state, path, triads) =
             (props.machine.clone(), props.state.clone(), props.toolpath.0.clone(), *triads);
-        let in_run = props.in_run;
+        let (in_run, typing) = (props.in_run, props.typing);
         use_effect(move || {
             let mut v = viewer.borrow_mut();
-            if in_run != v.in_run {
+            let run_changed = in_run != v.in_run;
+            if run_changed {
                 v.in_run = in_run;
                 v.follow = in_run;
             }
             let machine = machine.or_else(|| v.fallback_machine());
             let new_machine = machine.as_ref().map(|m| m.id.as_str()) != v.machine_id.as_deref();
             v.machine_id = machine.as_ref().map(|m| m.id.clone());
-            v.content = machine.map(|machine| {
+            let content = machine.map(|machine| {
                 let state = match state {
                     Some(s) => (*s).clone(),
                     None => SceneState::for_machine(&machine),
                 };
                 Content::Machine { machine, state: Box::new(state), triads }
             });
+            // A keystroke that leaves the scene as it was (most do) paints nothing.
+            let changed = !same_content(v.content.as_ref(), content.as_ref());
+            v.content = content;
             // Look at the blank when the machine changes (not on every state: a trainee's pan
             // stays while the program runs).
             if let Some(Content::Machine { machine, state, .. }) = &v.content {
@@ -133,12 +156,18 @@ pub fn view3d(props: &View3dProps) -> Html {
                 }
                 v.work_points = points;
             }
-            if !v.path.as_ref().is_some_and(|p| Rc::ptr_eq(p, &path)) {
+            let new_path = !v.path.as_ref().is_some_and(|p| Rc::ptr_eq(p, &path));
+            if new_path {
                 // Uploaded by the next frame (the renderer may not exist yet).
                 v.pending_path = Some(path.clone());
                 v.path = Some(path);
             }
-            v.dirty = true;
+            if changed && typing {
+                v.hold = TYPING_PAUSE_FRAMES;
+            }
+            if changed || run_changed || new_path {
+                v.dirty = true;
+            }
         });
     }
     let l = props.lang;

@@ -46,6 +46,10 @@ pub struct Viewer {
     labels: Option<HtmlElement>,
     pool: Vec<web_sys::Element>,
     pub paints: u64,
+    /// Frames to wait before painting a new scene: set while the trainee types in the text
+    /// editor, so that the view is painted once typing pauses. A paint of a long run's toolpath
+    /// costs tens of ms (far more in software WebGL) and would hold up the text on every key.
+    pub hold: u32,
     /// A toolpath to upload at the next frame.
     pub pending_path: Option<Rc<[PathPoint]>>,
     /// The toolpath shown (compared by pointer to notice a new run).
@@ -77,6 +81,7 @@ impl Viewer {
             labels: None,
             pool: Vec::new(),
             paints: 0,
+            hold: 0,
             pending_path: None,
             path: None,
             machine_id: None,
@@ -116,6 +121,10 @@ impl Viewer {
             self.dirty = true;
         }
         if !self.dirty {
+            return FrameOutcome::Idle;
+        }
+        if self.hold > 0 {
+            self.hold -= 1;
             return FrameOutcome::Idle;
         }
         if self.follow && self.size.1 > 0.0 {
