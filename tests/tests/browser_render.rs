@@ -326,7 +326,14 @@ fn host(style: &str) -> Element {
 /// Mounts the 3D view (the default machine before a program runs) into a new `w × h` element.
 async fn mount_view(w: u32, h: u32, lang: Lang) -> Element {
     let root = host(&format!("width:{w}px;height:{h}px;position:relative"));
-    let props = View3dProps { lang, machine: None, state: None, toolpath: Default::default(), in_run: false };
+    let props = View3dProps {
+        lang,
+        machine: None,
+        state: None,
+        toolpath: Default::default(),
+        in_run: false,
+        typing: false,
+    };
     yew::Renderer::<View3d>::with_root_and_props(root.clone(), props).render();
     sleep(50).await;
     // WebGL start-up (software rendering) can take a while on a loaded machine.
