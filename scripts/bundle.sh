@@ -10,12 +10,14 @@ cd "$(dirname "$0")/.."
 source scripts/env.sh
 BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # The ceilings were raised when issue 15 landed (arcs, compensation, 15 cycles: +37 KB gzip on
-# the trainer) and again with issue 16 (typed edits re-parsed and re-run in part, the windowed
-# text editor, the virtualised program list, the toolpath made in parts: +19 KB) and TCPM: the
-# trainer is 291.7 KB (functions ordered for gzip), over its 240 KB budget (see the session notes). The ceilings stop a
-# blow-up; the budget line above reports the overrun.
-BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-300}"
-COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-380}"
+# the trainer), with issue 16 (typed edits re-parsed and re-run in part, the windowed text editor,
+# the virtualised program list, the toolpath made in parts: +19 KB) and TCPM, and again with issue
+# 17's collision check and machine editor (collision bodies of five machines, the swept check, the
+# saved machines' record and the EDITIEREN softkeys: the trainer 291.7 -> 313.1 KB, the course
+# 366.1 -> 387.2 KB). The trainer is far over its 240 KB budget (see the session notes: only
+# splitting the wasm can bring it back). The ceilings stop a blow-up; the budget line reports the overrun.
+BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-320}"
+COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-395}"
 # The machine editor (maschine.html): the renderer, the form and serde_json's export and import.
 EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-300}"
 build_pages
