@@ -72,62 +72,102 @@ fn tips_along(m: &Machine, program: &str) -> (Simulation, Vec<(DVec3, Vec<DVec3>
     (sim, tips)
 }
 
-fn program(m: &Machine, start: DVec3, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> String {
-    format!(
-        "0 BEGIN PGM TCPM MM\n1 TOOL CALL 1 Z S2000\n2 L X{:+.4} Y{:+.4} Z{:+.4} R0 FMAX\n3 L {} F1000 M128\n4 L {} F1000\n5 L X{:+.4} {} F1000\n6 M129\n7 L {} FMAX\n8 END PGM TCPM MM\n",
-        start.x,
-        start.y,
-        start.z,
-        rotary_words(m, a),
-        rotary_words(m, b),
-        start.x + 5.0,
-        rotary_words(m, c),
-        rotary_words(m, a),
-    )
+/// How the generated program switches TCPM on and off.
+#[derive(Debug, Clone, Copy)]
+enum Switch {
+    /// `M128` in the first rotary move (it acts from that block's start), `M129` alone.
+    M128,
+    /// `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS` and `FUNCTION RESET TCPM`, each alone.
+    Function,
+}
+
+/// Where a [`tcpm_program`]'s steps are: the steps that hold the tip (the switching block and
+/// the two rotary moves), then the move with X +5 mm, the block that switches TCPM off and a
+/// rotary move after it.
+struct Steps {
+    held: std::ops::Range<usize>,
+    straight: usize,
+    off: usize,
+    after: usize,
+}
+
+/// From `start`: rotary moves to `a` and `b` under TCPM, X +5 mm with a move to `c`, TCPM off,
+/// back to `a` with the linear axes left alone.
+fn tcpm_program(m: &Machine, switch: Switch, start: DVec3, [a, b, c]: [[f64; 2]; 3]) -> (String, Steps) {
+    let (a, b, c) = (rotary_words(m, a), rotary_words(m, b), rotary_words(m, c));
+    let x = start.x + 5.0;
+    let head = format!(
+        "0 BEGIN PGM TCPM MM\n1 TOOL CALL 1 Z S2000\n2 L X{:+.4} Y{:+.4} Z{:+.4} R0 FMAX\n",
+        start.x, start.y, start.z
+    );
+    match switch {
+        Switch::M128 => (
+            format!(
+                "{head}3 L {a} F1000 M128\n4 L {b} F1000\n5 L X{x:+.4} {c} F1000\n6 M129\n7 L {a} FMAX\n8 END PGM TCPM MM\n"
+            ),
+            Steps { held: 3..5, straight: 5, off: 6, after: 7 },
+        ),
+        Switch::Function => (
+            format!(
+                "{head}3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n4 L {a} F1000\n5 L {b} F1000\n6 L X{x:+.4} {c} F1000\n7 FUNCTION RESET TCPM\n8 L {a} FMAX\n9 END PGM TCPM MM\n"
+            ),
+            Steps { held: 3..6, straight: 6, off: 7, after: 8 },
+        ),
+    }
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 40, ..ProptestConfig::default() })]
 
-    /// M128 keeps the tip: blocks 3 and 4 (rotary axes only) hold it at the programmed point,
-    /// block 5 (X and rotary axes) runs it straight by +5 mm in X; after M129, block 7 moves
-    /// the rotary axes alone and the tip goes with them.
+    /// M128 and FUNCTION TCPM keep the tip, on every machine and for the same poses: the steps
+    /// under TCPM with rotary axes only hold it at the programmed point, the step with X +5 mm
+    /// runs it straight; M129 / FUNCTION RESET TCPM cancel it: the rotary move after them leaves
+    /// the linear axes where they are (the tip goes with the table or the head).
     #[test]
-    fn m128_keeps_the_tool_tip_on_the_programmed_point(
+    fn tcpm_keeps_the_tool_tip_and_its_reset_cancels_it(
         x in -40.0..40.0f64, y in -40.0..40.0f64, z in 0.0..60.0f64,
         u in prop::array::uniform6(0.0..1.0f64),
     ) {
-        let mut checked = 0;
-        for m in machines() {
-            // Near the table, or 150 mm higher where a swivel head would leave the Z travel.
-            let runs = [0.0, 150.0].into_iter().find_map(|lift| {
-                let start = DVec3::new((x * 1e4).round() / 1e4, (y * 1e4).round() / 1e4, (z * 1e4).round() / 1e4 + lift);
-                let (a, b, c) = (inside(&m, [u[0], u[1]]), inside(&m, [u[2], u[3]]), inside(&m, [u[4], u[5]]));
-                let text = program(&m, start, a, b, c);
-                let (sim, tips) = tips_along(&m, &text);
-                // A compensated position outside the travel is the control's limit error.
-                sim.error.is_none().then_some((text, tips))
-            });
-            let Some((text, tips)) = runs else { continue };
-            checked += 1;
-            let tip = tips[2].0;
-            for step in [3, 4] {
-                assert_close!(tips[step].0, tip, TIP, "{} step {step}\n{text}", m.id);
-                for along in &tips[step].1 {
-                    assert_close!(*along, tip, TIP, "{} along step {step}\n{text}", m.id);
+        for switch in [Switch::M128, Switch::Function] {
+            let mut checked = 0;
+            for m in machines() {
+                // Near the table, or 150 mm higher where a swivel head would leave the Z travel.
+                let runs = [0.0, 150.0].into_iter().find_map(|lift| {
+                    let start = DVec3::new((x * 1e4).round() / 1e4, (y * 1e4).round() / 1e4, (z * 1e4).round() / 1e4 + lift);
+                    let poses = [inside(&m, [u[0], u[1]]), inside(&m, [u[2], u[3]]), inside(&m, [u[4], u[5]])];
+                    let (text, steps) = tcpm_program(&m, switch, start, poses);
+                    let (sim, tips) = tips_along(&m, &text);
+                    // A compensated position outside the travel is the control's limit error.
+                    sim.error.is_none().then_some((text, steps, sim, tips))
+                });
+                let Some((text, steps, sim, tips)) = runs else { continue };
+                checked += 1;
+                let tip = tips[2].0;
+                for step in steps.held {
+                    assert_close!(tips[step].0, tip, TIP, "{} {switch:?} step {step}\n{text}", m.id);
+                    for along in &tips[step].1 {
+                        assert_close!(*along, tip, TIP, "{} {switch:?} along step {step}\n{text}", m.id);
+                    }
                 }
+                let moved = tip + DVec3::X * 5.0;
+                let straight = &tips[steps.straight];
+                assert_close!(straight.0, moved, TIP, "{} {switch:?} step {}\n{text}", m.id, steps.straight);
+                let n = straight.1.len();
+                for (k, along) in straight.1.iter().enumerate() {
+                    // Evenly spaced on the straight line from `tip` to `moved`.
+                    let expected = tip.lerp(moved, k as f64 / (n - 1) as f64);
+                    assert_close!(*along, expected, TIP, "{} {switch:?} along step {}\n{text}", m.id, steps.straight);
+                }
+                assert_close!(tips[steps.off].0, moved, TIP, "{} {switch:?} TCPM off\n{text}", m.id);
+                let (p, _) = parse(&text);
+                let states: Vec<_> = sim.states(&p).collect();
+                assert_close!(
+                    states[steps.after].axes.linear, states[steps.off].axes.linear, 1e-9,
+                    "{} {switch:?} after TCPM off\n{text}", m.id
+                );
             }
-            let moved = tip + DVec3::X * 5.0;
-            assert_close!(tips[5].0, moved, TIP, "{} step 5\n{text}", m.id);
-            let n = tips[5].1.len();
-            for (k, along) in tips[5].1.iter().enumerate() {
-                // Evenly spaced on the straight line from `tip` to `moved`.
-                let expected = tip.lerp(moved, k as f64 / (n - 1) as f64);
-                assert_close!(*along, expected, TIP, "{} along step 5\n{text}", m.id);
-            }
-            assert_close!(tips[6].0, moved, TIP, "{} M129 block\n{text}", m.id);
+            prop_assert!(checked >= 4, "{switch:?}: only {checked} machines could run the case");
         }
-        prop_assert!(checked >= 4, "only {checked} machines could run the case");
     }
 }
 
@@ -164,67 +204,6 @@ fn m128_and_m129_are_said_in_the_run() {
     assert!(on.de.contains("TCPM aktiv") && on.en.contains("TCPM on"), "{on:?}");
     let off = messages[3].as_ref().expect("M129 said");
     assert!(off.de.contains("TCPM aus") && off.en.contains("TCPM off"), "{off:?}");
-}
-
-/// `FUNCTION TCPM` with the start, three moves under TCPM and a rotary move after `FUNCTION
-/// RESET TCPM` (blocks 4–6 as in [`program`], block 8 the move after the reset).
-fn function_program(m: &Machine, start: DVec3, a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> String {
-    format!(
-        "0 BEGIN PGM FTCPM MM\n1 TOOL CALL 1 Z S2000\n2 L X{:+.4} Y{:+.4} Z{:+.4} R0 FMAX\n3 FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS\n4 L {} F1000\n5 L {} F1000\n6 L X{:+.4} {} F1000\n7 FUNCTION RESET TCPM\n8 L {} FMAX\n9 END PGM FTCPM MM\n",
-        start.x,
-        start.y,
-        start.z,
-        rotary_words(m, a),
-        rotary_words(m, b),
-        start.x + 5.0,
-        rotary_words(m, c),
-        rotary_words(m, a),
-    )
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
-
-    /// FUNCTION TCPM keeps the tip as M128 does, on every machine: blocks 4 and 5 hold it, block
-    /// 6 runs it straight by +5 mm in X. FUNCTION RESET TCPM cancels it: block 8 moves only the
-    /// rotary axes, the linear axes stay where they are.
-    #[test]
-    fn function_tcpm_keeps_the_tool_tip_and_reset_cancels_it(
-        x in -40.0..40.0f64, y in -40.0..40.0f64, z in 0.0..60.0f64,
-        u in prop::array::uniform6(0.0..1.0f64),
-    ) {
-        let mut checked = 0;
-        for m in machines() {
-            let runs = [0.0, 150.0].into_iter().find_map(|lift| {
-                let start = DVec3::new((x * 1e4).round() / 1e4, (y * 1e4).round() / 1e4, (z * 1e4).round() / 1e4 + lift);
-                let (a, b, c) = (inside(&m, [u[0], u[1]]), inside(&m, [u[2], u[3]]), inside(&m, [u[4], u[5]]));
-                let text = function_program(&m, start, a, b, c);
-                let (sim, tips) = tips_along(&m, &text);
-                sim.error.is_none().then_some((text, sim, tips))
-            });
-            let Some((text, sim, tips)) = runs else { continue };
-            checked += 1;
-            let tip = tips[2].0;
-            assert_close!(tips[3].0, tip, TIP, "{} FUNCTION TCPM block\n{text}", m.id);
-            for step in [4, 5] {
-                assert_close!(tips[step].0, tip, TIP, "{} step {step}\n{text}", m.id);
-                for along in &tips[step].1 {
-                    assert_close!(*along, tip, TIP, "{} along step {step}\n{text}", m.id);
-                }
-            }
-            let moved = tip + DVec3::X * 5.0;
-            assert_close!(tips[6].0, moved, TIP, "{} step 6\n{text}", m.id);
-            let n = tips[6].1.len();
-            for (k, along) in tips[6].1.iter().enumerate() {
-                assert_close!(*along, tip.lerp(moved, k as f64 / (n - 1) as f64), TIP, "{} along step 6\n{text}", m.id);
-            }
-            assert_close!(tips[7].0, moved, TIP, "{} FUNCTION RESET TCPM block\n{text}", m.id);
-            let (p, _) = parse(&text);
-            let states: Vec<_> = sim.states(&p).collect();
-            assert_close!(states[8].axes.linear, states[7].axes.linear, 1e-9, "{} after the reset\n{text}", m.id);
-        }
-        prop_assert!(checked >= 4, "only {checked} machines could run the case");
-    }
 }
 
 /// The same moves under FUNCTION TCPM … AXIS POS and under M128 give the same axes, step by step.
