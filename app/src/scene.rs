@@ -9,9 +9,12 @@
 pub mod pose;
 
 use glam::{DMat3, DQuat, DVec3};
+use schwenkbar_core::Text;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::plane::RotaryAxis;
+use schwenkbar_core::sim::collision::{Bodies, Placed};
+use schwenkbar_core::sim::{Collision, Kin, State};
 
 /// Axis positions as the control shows them in M-CS.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -144,6 +147,9 @@ pub struct SceneState {
     pub toolpath_drawn: Option<usize>,
     /// The cut stock (W-CS), drawn in place of the blank's box.
     pub stock: Option<StockShape>,
+    /// The two bodies of the collision that stopped the run, placed at `axes` (M-CS), drawn in
+    /// the warning colour ([`SceneState::at_collision`]).
+    pub contact: Option<[Placed; 2]>,
 }
 
 /// The stock to draw: the run's stock and where in it (the renderer cuts and meshes towards
@@ -168,6 +174,7 @@ impl Default for SceneState {
             blank,
             toolpath_drawn: None,
             stock: None,
+            contact: None,
         }
     }
 }
@@ -203,6 +210,25 @@ impl SceneState {
             wpl: turn(&from.wpl, &to.wpl),
             ..to.clone()
         }
+    }
+}
+
+impl SceneState {
+    /// The moment the run stopped on `c`, on the state `before` (the last step the control
+    /// finished; its tool and blank are the colliding block's): every axis where the bodies
+    /// touched, not the block's end; the pair placed there by the simulator's own bodies
+    /// ([`Bodies::placed`]); and the collision-free other solution, if any, as the ghost (the
+    /// ghost of an earlier PLANE block would mislead, so none without one).
+    pub fn at_collision(&mut self, machine: &Machine, before: &State, c: &Collision) {
+        self.axes = MachineAxes { linear: c.axes.linear, rotary: c.axes.rotary_values() };
+        self.ghost = c.alternative.as_ref().map(|a| a.axes);
+        let kin = Kin::new(machine, before.tool.length);
+        let bodies = Bodies::new(machine, &kin, before.tool.radius, before.blank.as_ref());
+        self.contact = bodies.and_then(|b| {
+            let placed = b.placed(&c.axes);
+            let find = |name: &Text| placed.iter().find(|(n, _)| n == name).map(|(_, p)| *p);
+            Some([find(&c.a)?, find(&c.b)?])
+        });
     }
 }
 
