@@ -150,6 +150,9 @@ pub struct SceneState {
     /// The two bodies of the collision that stopped the run, placed at `axes` (M-CS), drawn in
     /// the warning colour ([`SceneState::at_collision`]).
     pub contact: Option<[Placed; 2]>,
+    /// Every collision body placed at `axes` (M-CS), drawn translucent: the machine editor's
+    /// preview ([`SceneState::with_bodies`]).
+    pub bodies: Vec<Placed>,
 }
 
 /// The stock to draw: the run's stock and where in it (the renderer cuts and meshes towards
@@ -175,6 +178,7 @@ impl Default for SceneState {
             toolpath_drawn: None,
             stock: None,
             contact: None,
+            bodies: Vec::new(),
         }
     }
 }
@@ -190,6 +194,21 @@ impl SceneState {
             wcs: Frame { origin: g.preset, rot: DMat3::IDENTITY },
             ..SceneState::default()
         }
+    }
+
+    /// [`SceneState::for_machine`] with the machine's collision bodies, the default tool and
+    /// its holder placed there (no blank: it is the program's).
+    #[must_use]
+    pub fn with_bodies(machine: &Machine) -> SceneState {
+        let s = SceneState::for_machine(machine);
+        let kin = Kin::new(machine, s.tool.length);
+        let axes = schwenkbar_core::sim::MachineAxes {
+            linear: s.axes.linear,
+            rotary: [0.0; 2],
+            letters: std::array::from_fn(|i| machine.joints()[i].axis),
+        };
+        let placed = Bodies::new(machine, &kin, s.tool.radius, None).map(|b| b.placed(&axes));
+        SceneState { bodies: placed.into_iter().flatten().map(|(_, p)| p).collect(), ..s }
     }
 
     /// The state a `fraction` (0…1) of the way from `from` to `to`, for animating a block: the
@@ -292,6 +311,18 @@ mod tests {
         let s = SceneState::for_machine(&m);
         assert_eq!(s.wcs.origin, m.geometry.preset);
         assert_eq!(s.axes.linear, m.geometry.start);
+    }
+
+    #[test]
+    fn the_editors_preview_places_every_body_tool_and_holder_at_the_start() {
+        let m = Machine::builtin("ac-table").expect("ac-table");
+        let s = SceneState::with_bodies(&m);
+        assert_eq!(s.axes, SceneState::for_machine(&m).axes);
+        assert_eq!(s.bodies.len(), m.bodies.len() + 2, "the machine's bodies, the tool and its holder");
+        // The rotary table (a cylinder on C, all axes at home) stays where the file puts it.
+        let Some(Placed::Cylinder { capsule, .. }) = s.bodies.get(3) else { panic!("{:?}", s.bodies) };
+        assert_eq!((capsule.a, capsule.radius), (DVec3::new(0.0, 0.0, -240.0), 50.0));
+        assert!(SceneState::default().bodies.is_empty(), "the trainer draws none");
     }
 
     #[test]

@@ -37,6 +37,7 @@ pub fn scene_state(machine: &Machine, s: &State) -> SceneState {
         toolpath_drawn: None,
         stock: None,
         contact: None,
+        bodies: Vec::new(),
     }
 }
 

@@ -29,6 +29,8 @@ pub const GHOST: [f32; 4] = [0.55, 0.85, 1.0, 0.30];
 
 /// The two bodies of a collision: translucent red over the parts they stand for.
 pub const CONTACT: [f32; 4] = [0.95, 0.10, 0.08, 0.60];
+/// Every collision body in the machine editor's preview: translucent violet.
+pub const BODY: [f32; 4] = [0.62, 0.40, 0.95, 0.35];
 
 /// Rotary-table thickness and spindle dimensions (illustrative, mm).
 const DISC: f64 = 30.0;

@@ -60,6 +60,7 @@ pub fn scene(s: &Scene<'_>) -> DrawList {
     if let Some(g) = &s.state.ghost {
         machine_parts::ghost(&mut list, s.machine, s.state, g);
     }
+    machine_parts::bodies(&mut list, &s.state.bodies, machine_parts::BODY);
     if let Some(pair) = &s.state.contact {
         machine_parts::bodies(&mut list, pair, machine_parts::CONTACT);
     }
