@@ -59,8 +59,8 @@ pub struct BodyForm {
 }
 
 impl BodyForm {
-    /// The form of a description. A body with no shape or both (only from an imported file,
-    /// [`MachineDef::validate`] names it) shows as a box, empty when it has none.
+    /// The form of a description. A body with both shapes (only from an imported file) keeps
+    /// its box; one with none shows an empty box, whose fields are then reported.
     #[must_use]
     pub fn of(b: &BodyDef) -> BodyForm {
         let mut f = BodyForm {

@@ -594,3 +594,29 @@ fn edited_bodies_round_trip_through_the_json_file_and_the_saved_record() {
     assert_eq!(own.bodies, machine.bodies);
     assert_eq!(own.bodies[3].name.de, "Rundtisch groß");
 }
+
+#[test]
+fn an_imported_body_of_both_or_no_shape_opens_as_a_box() {
+    let json = editor().preview.expect("the own copy").to_json();
+    let bed = r#""box": {"#;
+    assert!(json.contains(bed), "{json}");
+    // The bed (body 0) with a cylinder too: the form keeps its box.
+    let both = json.replacen(
+        bed,
+        r#""cylinder": {"base": [0, 0, 0], "direction": [0, 0, 1], "radius": 1, "height": 1}, "box": {"#,
+        1,
+    );
+    let s = then(&editor(), EditorAction::Import(both.into_bytes()));
+    assert!(s.import_issues.is_empty(), "{:?}", s.import_issues);
+    assert!(!s.form.collision[0].cylinder && s.valid, "{:?}", s.issues);
+    assert_eq!(s.form.collision[0], editor().form.collision[0]);
+    // Without a shape: an empty box, its fields reported.
+    let mut def = editor().preview.expect("the own copy").to_def();
+    let mut bodies = def.collision.to_vec();
+    bodies[0].cuboid = None;
+    def.collision = Cow::Owned(bodies);
+    let s = then(&editor(), EditorAction::Import(def.to_json().into_bytes()));
+    assert!(s.import_issues.is_empty(), "{:?}", s.import_issues);
+    assert!(!s.valid && s.form.collision[0].size[0].is_empty());
+    assert_eq!(s.issues_at("collision[0].box.size").count(), 1, "{:?}", s.issues);
+}
