@@ -9,8 +9,8 @@ use std::borrow::Cow;
 use std::rc::Rc;
 
 use schwenkbar_core::machine::{
-    BodyDef, GeometryDef, JointDef, Limits, LinearLimitsDef, Machine, MachineDef, MachineGeometry,
-    MachineIssue,
+    BodyDef, BoxDef, Carrier, CylinderDef, GeometryDef, JointDef, Limits, LinearLimitsDef, Machine,
+    MachineDef, MachineGeometry, MachineIssue,
 };
 use schwenkbar_core::number::parse_input;
 
@@ -39,6 +39,102 @@ pub struct JointForm {
     pub max: String,
 }
 
+/// One collision body as typed: only the fields of its shape hold text (switching the shape
+/// fills the other's from it, [`BodyForm::switch_to`]).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BodyForm {
+    pub name: [String; 2],
+    /// `bed`, `head` or a table axis letter, the JSON's word.
+    pub carrier: String,
+    /// A cylinder (`false`: a box).
+    pub cylinder: bool,
+    /// Box: centre and edge lengths along X, Y, Z.
+    pub center: [String; 3],
+    pub size: [String; 3],
+    /// Cylinder: the centre of one end face, the unit direction to the other, radius, height.
+    pub base: [String; 3],
+    pub direction: [String; 3],
+    pub radius: String,
+    pub height: String,
+}
+
+impl BodyForm {
+    /// The form of a description. A body with both shapes (only from an imported file) keeps
+    /// its box; one with none shows an empty box, whose fields are then reported.
+    #[must_use]
+    pub fn of(b: &BodyDef) -> BodyForm {
+        let mut f = BodyForm {
+            name: [b.name.de.to_string(), b.name.en.to_string()],
+            carrier: b.carrier.to_string(),
+            ..BodyForm::default()
+        };
+        match (b.cuboid, b.cylinder) {
+            (None, Some(c)) => {
+                f.cylinder = true;
+                f.base = texts(c.base);
+                f.direction = texts(c.direction);
+                f.radius = text(c.radius);
+                f.height = text(c.height);
+            }
+            (Some(c), _) => {
+                f.center = texts(c.center);
+                f.size = texts(c.size);
+            }
+            (None, None) => {}
+        }
+        f
+    }
+
+    /// A new body: a 100 mm cube on the bed, below the table, for the trainee to place.
+    #[must_use]
+    pub fn new_body(n: usize) -> BodyForm {
+        BodyForm {
+            name: [format!("Körper {n}"), format!("body {n}")],
+            carrier: "bed".into(),
+            cylinder: false,
+            center: texts([0.0, 0.0, -600.0]),
+            size: texts([100.0; 3]),
+            ..BodyForm::default()
+        }
+    }
+
+    /// Makes the body a cylinder (`true`) or a box, its new fields derived from the old ones
+    /// when they are numbers (a box's inscribed upright cylinder, a cylinder's bounding box),
+    /// the old ones emptied.
+    pub fn switch_to(&mut self, cylinder: bool) {
+        if cylinder == self.cylinder {
+            return;
+        }
+        let v3 = |v: &[String; 3]| -> Option<[f64; 3]> {
+            Some([parse_input(&v[0])?, parse_input(&v[1])?, parse_input(&v[2])?])
+        };
+        if cylinder {
+            if let (Some(c), Some(s)) = (v3(&self.center), v3(&self.size)) {
+                self.base = texts([c[0], c[1], c[2] - 0.5 * s[2]]);
+                self.direction = texts([0.0, 0.0, 1.0]);
+                self.radius = text(0.5 * s[0].min(s[1]));
+                self.height = text(s[2]);
+            }
+            self.center = Default::default();
+            self.size = Default::default();
+        } else {
+            let (r, h) = (parse_input(&self.radius), parse_input(&self.height));
+            if let (Some(b), Some(d), Some(r), Some(h)) = (v3(&self.base), v3(&self.direction), r, h) {
+                self.center = std::array::from_fn(|k| text(b[k] + 0.5 * h * d[k]));
+                // The bounding box of a cylinder along the unit vector d: h·|dₖ| + 2r·√(1 − dₖ²).
+                self.size = std::array::from_fn(|k| {
+                    text(h * d[k].abs() + 2.0 * r * (1.0 - d[k] * d[k]).max(0.0).sqrt())
+                });
+            }
+            self.base = Default::default();
+            self.direction = Default::default();
+            self.radius.clear();
+            self.height.clear();
+        }
+        self.cylinder = cylinder;
+    }
+}
+
 /// The whole description as typed, every number as its text.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Form {
@@ -53,10 +149,8 @@ pub struct Form {
     pub rapid_linear: String,
     pub rapid_rotary: String,
     pub start: [String; 3],
-    /// The collision bodies, kept as the machine the form started from has them (the form
-    /// does not edit them; a problem with them, e.g. a carrier letter no longer in the chain,
-    /// is listed at the top of the page).
-    pub collision: Vec<BodyDef>,
+    /// The collision bodies.
+    pub collision: Vec<BodyForm>,
 }
 
 /// One input of the form.
@@ -81,6 +175,17 @@ pub enum Field {
     RapidLinear,
     RapidRotary,
     Start(usize),
+    /// Collision body, then as for the machine (language, component).
+    BodyName(usize, usize),
+    BodyCarrier(usize),
+    /// `box` or `cylinder`.
+    BodyShape(usize),
+    BodyCenter(usize, usize),
+    BodySize(usize, usize),
+    BodyBase(usize, usize),
+    BodyDirection(usize, usize),
+    BodyRadius(usize),
+    BodyHeight(usize),
 }
 
 const XYZ: [char; 3] = ['X', 'Y', 'Z'];
@@ -105,14 +210,28 @@ impl Field {
             Field::RapidLinear => "geometry.rapid_linear".into(),
             Field::RapidRotary => "geometry.rapid_rotary".into(),
             Field::Start(_) => "geometry.start".into(),
+            Field::BodyName(i, l) => body(i, ["name.de", "name.en"][l.min(1)]),
+            Field::BodyCarrier(i) => body(i, "carrier"),
+            Field::BodyShape(i) => format!("collision[{i}]"),
+            Field::BodyCenter(i, _) => body(i, "box.center"),
+            Field::BodySize(i, _) => body(i, "box.size"),
+            Field::BodyBase(i, _) => body(i, "cylinder.base"),
+            Field::BodyDirection(i, _) => body(i, "cylinder.direction"),
+            Field::BodyRadius(i) => body(i, "cylinder.radius"),
+            Field::BodyHeight(i) => body(i, "cylinder.height"),
         }
     }
+}
+
+fn body(i: usize, field: &str) -> String {
+    format!("collision[{i}].{field}")
 }
 
 /// A row of the page: its label, its inputs and the issue path whose messages it shows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
-    /// 0 the machine, 1 and 2 the rotary axes in chain order, 3 the geometry.
+    /// 0 the machine, 1 and 2 the rotary axes in chain order, 3 the geometry, 4 + i collision
+    /// body i ([`section_title`]).
     pub section: usize,
     pub label: Text,
     pub fields: Vec<Field>,
@@ -134,9 +253,18 @@ pub const SECTIONS: [Text; 4] = [
     Text::new("Geometrie", "Geometry"),
 ];
 
-/// Every row of the page, in order.
+/// The title of section `s` ([`Row::section`]).
 #[must_use]
-pub fn rows() -> Vec<Row> {
+pub fn section_title(s: usize) -> Text {
+    match SECTIONS.get(s) {
+        Some(t) => t.clone(),
+        None => Text::owned(format!("Kollisionskörper {}", s - 3), format!("Collision body {}", s - 3)),
+    }
+}
+
+/// Every row of the page for `form`, in order (a body's rows are those of its shape).
+#[must_use]
+pub fn rows(form: &Form) -> Vec<Row> {
     let row = |section, label: Text, fields: Vec<Field>| Row { section, label, fields };
     let mut out = vec![
         row(0, Text::new("Kennung (Dateiname)", "Id (file name)"), vec![Field::Id]),
@@ -200,6 +328,33 @@ pub fn rows() -> Vec<Row> {
             (0..3).map(Field::Start).collect(),
         ),
     ]);
+    for (i, b) in form.collision.iter().enumerate() {
+        let s = 4 + i;
+        let xyz = |f: fn(usize, usize) -> Field| (0..3).map(|c| f(i, c)).collect();
+        out.extend([
+            row(s, Text::new("Name deutsch", "Name in German"), vec![Field::BodyName(i, 0)]),
+            row(s, Text::new("Name englisch", "Name in English"), vec![Field::BodyName(i, 1)]),
+            row(s, Text::new("Träger", "Carrier"), vec![Field::BodyCarrier(i)]),
+            row(s, Text::new("Form", "Shape"), vec![Field::BodyShape(i)]),
+        ]);
+        if b.cylinder {
+            out.extend([
+                row(
+                    s,
+                    Text::new("Mitte der Grundfläche x y z (mm)", "Base centre x y z (mm)"),
+                    xyz(Field::BodyBase),
+                ),
+                row(s, Text::new("Richtung x y z", "Direction x y z"), xyz(Field::BodyDirection)),
+                row(s, Text::new("Radius (mm)", "Radius (mm)"), vec![Field::BodyRadius(i)]),
+                row(s, Text::new("Höhe (mm)", "Height (mm)"), vec![Field::BodyHeight(i)]),
+            ]);
+        } else {
+            out.extend([
+                row(s, Text::new("Mitte x y z (mm)", "Centre x y z (mm)"), xyz(Field::BodyCenter)),
+                row(s, Text::new("Kantenlängen x y z (mm)", "Edge lengths x y z (mm)"), xyz(Field::BodySize)),
+            ]);
+        }
+    }
     out
 }
 
@@ -261,8 +416,28 @@ impl Form {
             rapid_linear: text(g.rapid_linear.unwrap_or(d.rapid_linear)),
             rapid_rotary: text(g.rapid_rotary.unwrap_or(d.rapid_rotary)),
             start: texts(g.start.unwrap_or(d.start.to_array())),
-            collision: def.collision.to_vec(),
+            collision: def.collision.iter().map(BodyForm::of).collect(),
         })
+    }
+
+    /// What may carry a collision body of this form: the bed, the head and each table axis of
+    /// the chain as typed (the word, its label).
+    #[must_use]
+    pub fn body_carriers(&self) -> Vec<(String, Text)> {
+        let mut out = vec![
+            ("bed".to_owned(), Text::new("Bett (bed)", "bed")),
+            ("head".to_owned(), Text::new("Kopf (head)", "head")),
+        ];
+        for j in &self.joints {
+            let axis = j.axis.trim().to_ascii_uppercase();
+            if Carrier::from_word(&j.carrier) == Some(Carrier::Table) && !axis.is_empty() {
+                out.push((
+                    axis.clone(),
+                    Text::owned(format!("Tischachse {axis}"), format!("table axis {axis}")),
+                ));
+            }
+        }
+        out
     }
 
     /// The text of an input; the endless switch reads `"1"` or `""`.
@@ -270,6 +445,11 @@ impl Form {
     pub fn value(&self, field: Field) -> String {
         match field {
             Field::Endless(i) => if self.joints[i.min(1)].endless { "1" } else { "" }.to_owned(),
+            Field::BodyShape(i) => match self.collision.get(i) {
+                Some(b) if b.cylinder => "cylinder".to_owned(),
+                Some(_) => "box".to_owned(),
+                None => String::new(),
+            },
             f => self.slot_read(f).cloned().unwrap_or_default(),
         }
     }
@@ -292,6 +472,15 @@ impl Form {
             Field::RapidLinear => &self.rapid_linear,
             Field::RapidRotary => &self.rapid_rotary,
             Field::Start(c) => self.start.get(c)?,
+            Field::BodyName(i, l) => self.collision.get(i)?.name.get(l)?,
+            Field::BodyCarrier(i) => &self.collision.get(i)?.carrier,
+            Field::BodyShape(_) => return None,
+            Field::BodyCenter(i, c) => self.collision.get(i)?.center.get(c)?,
+            Field::BodySize(i, c) => self.collision.get(i)?.size.get(c)?,
+            Field::BodyBase(i, c) => self.collision.get(i)?.base.get(c)?,
+            Field::BodyDirection(i, c) => self.collision.get(i)?.direction.get(c)?,
+            Field::BodyRadius(i) => &self.collision.get(i)?.radius,
+            Field::BodyHeight(i) => &self.collision.get(i)?.height,
         })
     }
 
@@ -312,6 +501,15 @@ impl Form {
             Field::RapidLinear => &mut self.rapid_linear,
             Field::RapidRotary => &mut self.rapid_rotary,
             Field::Start(c) => self.start.get_mut(c)?,
+            Field::BodyName(i, l) => self.collision.get_mut(i)?.name.get_mut(l)?,
+            Field::BodyCarrier(i) => &mut self.collision.get_mut(i)?.carrier,
+            Field::BodyShape(_) => return None,
+            Field::BodyCenter(i, c) => self.collision.get_mut(i)?.center.get_mut(c)?,
+            Field::BodySize(i, c) => self.collision.get_mut(i)?.size.get_mut(c)?,
+            Field::BodyBase(i, c) => self.collision.get_mut(i)?.base.get_mut(c)?,
+            Field::BodyDirection(i, c) => self.collision.get_mut(i)?.direction.get_mut(c)?,
+            Field::BodyRadius(i) => &mut self.collision.get_mut(i)?.radius,
+            Field::BodyHeight(i) => &mut self.collision.get_mut(i)?.height,
         })
     }
 
@@ -360,6 +558,32 @@ impl Form {
         let (x, y, z) = (lim(0, &mut num), lim(1, &mut num), lim(2, &mut num));
         let rapid_linear = num(Field::RapidLinear, &self.rapid_linear);
         let rapid_rotary = num(Field::RapidRotary, &self.rapid_rotary);
+        let collision = self
+            .collision
+            .iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let mut v3 = |f: fn(usize, usize) -> Field, v: &[String; 3]| -> [f64; 3] {
+                    [0, 1, 2].map(|c| num(f(i, c), &v[c]))
+                };
+                let (cuboid, cylinder) = if b.cylinder {
+                    let base = v3(Field::BodyBase, &b.base);
+                    let direction = v3(Field::BodyDirection, &b.direction);
+                    let radius = num(Field::BodyRadius(i), &b.radius);
+                    let height = num(Field::BodyHeight(i), &b.height);
+                    (None, Some(CylinderDef { base, direction, radius, height }))
+                } else {
+                    let center = v3(Field::BodyCenter, &b.center);
+                    (Some(BoxDef { center, size: v3(Field::BodySize, &b.size) }), None)
+                };
+                BodyDef {
+                    name: Text::owned(b.name[0].clone(), b.name[1].clone()),
+                    carrier: Cow::Owned(b.carrier.trim().to_owned()),
+                    cuboid,
+                    cylinder,
+                }
+            })
+            .collect();
         let def = MachineDef {
             id: Cow::Owned(self.id.trim().to_owned()),
             name: Text::owned(self.name[0].clone(), self.name[1].clone()),
@@ -372,7 +596,7 @@ impl Form {
                 rapid_rotary: Some(rapid_rotary),
                 start: Some(start),
             }),
-            collision: Cow::Owned(self.collision.clone()),
+            collision: Cow::Owned(collision),
         };
         (def, bad)
     }
@@ -446,6 +670,10 @@ pub enum EditorAction {
     Save,
     /// Drop the saved machine with the form's id.
     Delete,
+    /// A new collision body (a cube on the bed, [`BodyForm::new_body`]).
+    AddBody,
+    /// Drop collision body i.
+    RemoveBody(usize),
     /// Offer the machine as a JSON file.
     Export,
     /// A file's bytes to import.
@@ -509,7 +737,7 @@ impl EditorState {
     /// Issues whose path no row shows (the page lists them at the top).
     #[must_use]
     pub fn unplaced(&self) -> Vec<&FieldIssue> {
-        let paths: Vec<String> = rows().iter().map(Row::path).collect();
+        let paths: Vec<String> = rows(&self.form).iter().map(Row::path).collect();
         self.issues.iter().filter(|i| !paths.contains(&i.path)).collect()
     }
 
@@ -620,6 +848,12 @@ impl Reducer for EditorState {
         let mut next = self.clone();
         let mut fx = Vec::new();
         match action {
+            EditorAction::Set(Field::BodyShape(i), value) => {
+                if let Some(b) = next.form.collision.get_mut(i) {
+                    b.switch_to(value == "cylinder");
+                }
+                next.recheck();
+            }
             EditorAction::Set(field, value) => {
                 if let Some(slot) = next.form.slot(field) {
                     *slot = value;
@@ -635,6 +869,17 @@ impl Reducer for EditorState {
             EditorAction::Open(id) => {
                 if next.open(&id) {
                     next.message = None;
+                }
+            }
+            EditorAction::AddBody => {
+                let n = next.form.collision.len() + 1;
+                next.form.collision.push(BodyForm::new_body(n));
+                next.recheck();
+            }
+            EditorAction::RemoveBody(i) => {
+                if i < next.form.collision.len() {
+                    next.form.collision.remove(i);
+                    next.recheck();
                 }
             }
             EditorAction::Save => next.save(&mut fx),

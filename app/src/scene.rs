@@ -9,9 +9,12 @@
 pub mod pose;
 
 use glam::{DMat3, DQuat, DVec3};
+use schwenkbar_core::Text;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::plane::RotaryAxis;
+use schwenkbar_core::sim::collision::{Bodies, Placed};
+use schwenkbar_core::sim::{Collision, Kin, State};
 
 /// Axis positions as the control shows them in M-CS.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -144,6 +147,12 @@ pub struct SceneState {
     pub toolpath_drawn: Option<usize>,
     /// The cut stock (W-CS), drawn in place of the blank's box.
     pub stock: Option<StockShape>,
+    /// The two bodies of the collision that stopped the run, placed at `axes` (M-CS), drawn in
+    /// the warning colour ([`SceneState::at_collision`]).
+    pub contact: Option<[Placed; 2]>,
+    /// Every collision body placed at `axes` (M-CS), drawn translucent: the machine editor's
+    /// preview ([`SceneState::with_bodies`]).
+    pub bodies: Vec<Placed>,
 }
 
 /// The stock to draw: the run's stock and where in it (the renderer cuts and meshes towards
@@ -168,6 +177,8 @@ impl Default for SceneState {
             blank,
             toolpath_drawn: None,
             stock: None,
+            contact: None,
+            bodies: Vec::new(),
         }
     }
 }
@@ -183,6 +194,21 @@ impl SceneState {
             wcs: Frame { origin: g.preset, rot: DMat3::IDENTITY },
             ..SceneState::default()
         }
+    }
+
+    /// [`SceneState::for_machine`] with the machine's collision bodies, the default tool and
+    /// its holder placed there (no blank: it is the program's).
+    #[must_use]
+    pub fn with_bodies(machine: &Machine) -> SceneState {
+        let s = SceneState::for_machine(machine);
+        let kin = Kin::new(machine, s.tool.length);
+        let axes = schwenkbar_core::sim::MachineAxes {
+            linear: s.axes.linear,
+            rotary: [0.0; 2],
+            letters: std::array::from_fn(|i| machine.joints()[i].axis),
+        };
+        let placed = Bodies::new(machine, &kin, s.tool.radius, None).map(|b| b.placed(&axes));
+        SceneState { bodies: placed.into_iter().flatten().map(|(_, p)| p).collect(), ..s }
     }
 
     /// The state a `fraction` (0…1) of the way from `from` to `to`, for animating a block: the
@@ -203,6 +229,25 @@ impl SceneState {
             wpl: turn(&from.wpl, &to.wpl),
             ..to.clone()
         }
+    }
+}
+
+impl SceneState {
+    /// The moment the run stopped on `c`, on the state `before` (the last step the control
+    /// finished; its tool and blank are the colliding block's): every axis where the bodies
+    /// touched, not the block's end; the pair placed there by the simulator's own bodies
+    /// ([`Bodies::placed`]); and the collision-free other solution, if any, as the ghost (the
+    /// ghost of an earlier PLANE block would mislead, so none without one).
+    pub fn at_collision(&mut self, machine: &Machine, before: &State, c: &Collision) {
+        self.axes = MachineAxes { linear: c.axes.linear, rotary: c.axes.rotary_values() };
+        self.ghost = c.alternative.as_ref().map(|a| a.axes);
+        let kin = Kin::new(machine, before.tool.length);
+        let bodies = Bodies::new(machine, &kin, before.tool.radius, before.blank.as_ref());
+        self.contact = bodies.and_then(|b| {
+            let placed = b.placed(&c.axes);
+            let find = |name: &Text| placed.iter().find(|(n, _)| n == name).map(|(_, p)| *p);
+            Some([find(&c.a)?, find(&c.b)?])
+        });
     }
 }
 
@@ -266,6 +311,18 @@ mod tests {
         let s = SceneState::for_machine(&m);
         assert_eq!(s.wcs.origin, m.geometry.preset);
         assert_eq!(s.axes.linear, m.geometry.start);
+    }
+
+    #[test]
+    fn the_editors_preview_places_every_body_tool_and_holder_at_the_start() {
+        let m = Machine::builtin("ac-table").expect("ac-table");
+        let s = SceneState::with_bodies(&m);
+        assert_eq!(s.axes, SceneState::for_machine(&m).axes);
+        assert_eq!(s.bodies.len(), m.bodies.len() + 2, "the machine's bodies, the tool and its holder");
+        // The rotary table (a cylinder on C, all axes at home) stays where the file puts it.
+        let Some(Placed::Cylinder { capsule, .. }) = s.bodies.get(3) else { panic!("{:?}", s.bodies) };
+        assert_eq!((capsule.a, capsule.radius), (DVec3::new(0.0, 0.0, -240.0), 50.0));
+        assert!(SceneState::default().bodies.is_empty(), "the trainer draws none");
     }
 
     #[test]

@@ -31,6 +31,9 @@ pub struct PlaneWhy {
     pub symmetry: String,
     /// The control's message if it refuses the block.
     pub error: Option<String>,
+    /// The block's swivel collides and the other solution's would not: says so (the view
+    /// shows that solution as the ghost).
+    pub safe_alternative: Option<String>,
     /// The UNCONFIRMED assumptions that influenced the result.
     pub assumptions: Vec<String>,
 }
@@ -75,6 +78,7 @@ impl PlaneWhy {
             rule: String::new(),
             symmetry: String::new(),
             error: None,
+            safe_alternative: None,
             assumptions: Vec::new(),
         }
     }
@@ -93,8 +97,10 @@ pub fn for_block(
 ) -> Option<PlaneWhy> {
     let BlockBody::Plane(block) = program.blocks.get(index)?.stored_body()? else { return None };
     if let Some(e) = sim.and_then(|s| s.error.as_ref()).filter(|e| e.block == index) {
+        let note = sim.and_then(Simulation::collision).and_then(|c| c.alternative_note());
         return Some(PlaneWhy {
             error: Some(format!("{} — {}", e.message.get(l), e.detail.get(l))),
+            safe_alternative: note.map(|n| n.get(l).to_owned()),
             ..PlaneWhy::empty()
         });
     }
@@ -146,6 +152,7 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
             fmt_deg(e.symmetry_point)
         ),
         error: e.error_message.map(|m| m.0.message().get(l).to_owned()),
+        safe_alternative: None,
         assumptions: e.decisions.iter().map(|d| d.text().get(l).to_owned()).collect(),
     }
 }

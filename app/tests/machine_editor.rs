@@ -62,7 +62,9 @@ fn opens_a_copy_of_a_shipped_machine_valid_and_with_an_own_id() {
 #[test]
 fn every_field_edits_its_part_of_the_description() {
     let s = editor();
-    for r in rows() {
+    // A body of each shape (ac-table's bed is a box, its rotary table a cylinder).
+    assert!(!s.form.collision[0].cylinder && s.form.collision[3].cylinder);
+    for r in rows(&s.form) {
         for field in r.fields {
             if let Field::Endless(i) = field {
                 let on = then(&s, EditorAction::SetEndless(i, true));
@@ -72,7 +74,19 @@ fn every_field_edits_its_part_of_the_description() {
             }
             let value = match field {
                 Field::Axis(_) => "B",
-                Field::Carrier(_) => "head",
+                Field::Carrier(_) | Field::BodyCarrier(_) => "head",
+                Field::BodyShape(i) => {
+                    // The other shape: its rows change, the body stays one shape.
+                    let other = if s.form.collision[i].cylinder { "box" } else { "cylinder" };
+                    let next = set(&s, field, other);
+                    assert_eq!(next.form.value(field), other);
+                    let b = &next.form.to_def().0.collision[i];
+                    assert_eq!(
+                        (b.cuboid.is_some(), b.cylinder.is_some()),
+                        (other == "box", other == "cylinder")
+                    );
+                    continue;
+                }
                 _ => "12,5",
             };
             let next = set(&s, field, value);
@@ -100,8 +114,21 @@ fn every_field_edits_its_part_of_the_description() {
                 Field::RapidLinear => def.geometry.and_then(|g| g.rapid_linear).expect("rate").to_string(),
                 Field::RapidRotary => def.geometry.and_then(|g| g.rapid_rotary).expect("rate").to_string(),
                 Field::Start(c) => def.geometry.and_then(|g| g.start).expect("start")[c].to_string(),
+                Field::BodyName(i, 0) => def.collision[i].name.de.to_string(),
+                Field::BodyName(i, _) => def.collision[i].name.en.to_string(),
+                Field::BodyCarrier(i) => def.collision[i].carrier.to_string(),
+                Field::BodyShape(_) => unreachable!("handled above"),
+                Field::BodyCenter(i, c) => def.collision[i].cuboid.expect("box").center[c].to_string(),
+                Field::BodySize(i, c) => def.collision[i].cuboid.expect("box").size[c].to_string(),
+                Field::BodyBase(i, c) => def.collision[i].cylinder.expect("cylinder").base[c].to_string(),
+                Field::BodyDirection(i, c) => {
+                    def.collision[i].cylinder.expect("cylinder").direction[c].to_string()
+                }
+                Field::BodyRadius(i) => def.collision[i].cylinder.expect("cylinder").radius.to_string(),
+                Field::BodyHeight(i) => def.collision[i].cylinder.expect("cylinder").height.to_string(),
             };
-            let typed_as_text = matches!(field, Field::Id | Field::Name(_) | Field::Description(_));
+            let typed_as_text =
+                matches!(field, Field::Id | Field::Name(_) | Field::Description(_) | Field::BodyName(..));
             let expected = if value == "12,5" && !typed_as_text { "12.5" } else { value };
             assert_eq!(read, expected, "{field:?}");
         }
@@ -191,9 +218,41 @@ fn every_validation_message_reaches_its_field_in_german() {
             "Startposition Z 10 außerhalb der Grenzen -500 … 0",
         ),
         ("infinite", |s| set(s, Field::Start(0), "inf"), "geometry.start", "keine Zahl"),
+        ("body name", |s| set(s, Field::BodyName(1, 0), " "), "collision[1].name.de", "darf nicht leer sein"),
+        (
+            "body carrier",
+            |s| set(s, Field::BodyCarrier(3), "B"),
+            "collision[3].carrier",
+            "unbekannter Träger „B“ des Kollisionskörpers (bed = Bett, head = Kopf oder eine Tischachse: C, A)",
+        ),
+        (
+            "box size",
+            |s| set(s, Field::BodySize(0, 2), "0"),
+            "collision[0].box.size",
+            "muss größer als 0 sein (0)",
+        ),
+        ("box centre", |s| set(s, Field::BodyCenter(0, 1), "x"), "collision[0].box.center", "keine Zahl"),
+        (
+            "cylinder radius",
+            |s| set(s, Field::BodyRadius(3), "-5"),
+            "collision[3].cylinder.radius",
+            "muss größer als 0 sein (-5)",
+        ),
+        (
+            "cylinder height",
+            |s| set(s, Field::BodyHeight(3), "0"),
+            "collision[3].cylinder.height",
+            "muss größer als 0 sein (0)",
+        ),
+        (
+            "cylinder direction",
+            |s| set(s, Field::BodyDirection(3, 2), "2"),
+            "collision[3].cylinder.direction",
+            "Einheitsvektor",
+        ),
     ];
-    let paths: Vec<String> = rows().iter().map(|r| r.path()).collect();
     let good = editor();
+    let paths: Vec<String> = rows(&good.form).iter().map(|r| r.path()).collect();
     for (name, edit, path, german) in cases {
         let s = edit(&good);
         assert!(!s.valid, "{name}");
@@ -445,4 +504,119 @@ fn the_form_of_every_shipped_machine_checks_to_that_machine() {
         assert!(bad.is_empty(), "{id}");
         assert_eq!(def.validate().as_ref(), Ok(&m), "{id}");
     }
+}
+
+#[test]
+fn a_body_is_edited_added_and_removed_and_the_preview_carries_it() {
+    use schwenkbar_core::machine::{BodyCarrier, BodyShape};
+    let s = set(&set(&editor(), Field::BodySize(0, 0), "800"), Field::BodyCarrier(0), "C");
+    assert!(s.valid, "{:?}", s.issues);
+    let body = &s.preview.as_ref().expect("preview").bodies[0];
+    assert_eq!(body.carrier, BodyCarrier::Table { joint: 0 }, "C is the slave, the first of the chain");
+    let BodyShape::Box { half, .. } = body.shape else { panic!("{body:?}") };
+    assert_eq!(half.x, 400.0);
+    // The carriers offered: bed, head and the table axes of the chain as typed.
+    let words: Vec<String> = s.form.body_carriers().into_iter().map(|(w, _)| w).collect();
+    assert_eq!(words, ["bed", "head", "C", "A"]);
+    let head_a = set(&s, Field::Carrier(1), "head");
+    let words: Vec<String> = head_a.form.body_carriers().into_iter().map(|(w, _)| w).collect();
+    assert_eq!(words, ["bed", "head", "C"]);
+
+    let n = s.form.collision.len();
+    let added = then(&s, EditorAction::AddBody);
+    assert!(added.valid, "{:?}", added.issues);
+    assert_eq!(added.form.collision.len(), n + 1);
+    assert_eq!(added.form.collision[n].name[0], format!("Körper {}", n + 1));
+    assert_eq!(added.preview.as_ref().expect("preview").bodies.len(), n + 1);
+    assert!(rows(&added.form).iter().any(|r| r.section == 4 + n), "the new body has its rows");
+    // A problem of a body moves with it when one before it goes.
+    let bad = set(&added, Field::BodySize(n, 1), "-1");
+    assert_eq!(bad.issues_at(&format!("collision[{n}].box.size")).count(), 1);
+    let removed = then(&bad, EditorAction::RemoveBody(0));
+    assert_eq!(removed.form.collision.len(), n);
+    assert_eq!(
+        removed.issues_at(&format!("collision[{}].box.size", n - 1)).count(),
+        1,
+        "{:?}",
+        removed.issues
+    );
+    assert!(removed.unplaced().is_empty(), "{:?}", removed.unplaced());
+    assert_eq!(then(&removed, EditorAction::RemoveBody(99)).form, removed.form, "no such body: nothing");
+}
+
+#[test]
+fn switching_a_bodys_shape_derives_the_other_shape() {
+    // The bed, 760 × 760 × 60 at (0, 60, −310), as an upright cylinder: radius 380, from Z−340.
+    let s = set(&editor(), Field::BodyShape(0), "cylinder");
+    let b = &s.form.collision[0];
+    assert!(b.cylinder && b.center[0].is_empty() && b.size[0].is_empty());
+    assert_eq!(
+        (b.base.clone(), b.direction.clone()),
+        (["0", "60", "-340"].map(String::from), ["0", "0", "1"].map(String::from))
+    );
+    assert_eq!((b.radius.as_str(), b.height.as_str()), ("380", "60"));
+    assert!(s.valid, "{:?}", s.issues);
+    // And back: its bounding box, the box it came from.
+    let back = set(&s, Field::BodyShape(0), "box");
+    assert_eq!(back.form.collision[0], editor().form.collision[0]);
+    // A shape that is not all numbers switches with empty fields, each reported.
+    let broken = set(&set(&editor(), Field::BodySize(0, 0), "x"), Field::BodyShape(0), "cylinder");
+    assert!(broken.form.collision[0].radius.is_empty());
+    assert_eq!(broken.issues_at("collision[0].cylinder.radius").count(), 1);
+}
+
+#[test]
+fn edited_bodies_round_trip_through_the_json_file_and_the_saved_record() {
+    let mut s = set(&editor(), Field::BodyName(3, 0), "Rundtisch groß");
+    s = set(&s, Field::BodyRadius(3), "62.5");
+    s = set(&s, Field::BodyShape(1), "cylinder");
+    s = then(&s, EditorAction::AddBody);
+    let last = s.form.collision.len() - 1;
+    s = set(&set(&s, Field::BodyCarrier(last), "head"), Field::BodyCenter(last, 2), "400");
+    assert!(s.valid, "{:?}", s.issues);
+    let machine = s.preview.as_deref().expect("preview").clone();
+    // The JSON file.
+    let fx = s.apply(EditorAction::Export).1;
+    let [Effect::SaveFile { text, .. }] = fx.as_slice() else { panic!("{fx:?}") };
+    assert_eq!(Machine::from_json(text).as_ref(), Ok(&machine));
+    let imported = then(&editor(), EditorAction::Import(text.clone().into_bytes()));
+    assert!(imported.valid && imported.import_issues.is_empty());
+    assert_eq!(imported.form, s.form);
+    // The saved record, as the editor and the trainer read it.
+    let (saved, fx) = s.apply(EditorAction::Save);
+    let record = saved_value(&fx);
+    assert_eq!(saved_machines::list_from_record(&record).0, vec![machine.clone()]);
+    let again = EditorState::start(Some(&record), None, Some("#ac-table-eigen")).0;
+    assert_eq!(again.form, s.form);
+    assert_eq!(again.saved, saved.saved);
+    let trainer = trainer_with(&record);
+    let own = trainer.own_machines.iter().find(|m| m.id == machine.id).expect("listed");
+    assert_eq!(own.bodies, machine.bodies);
+    assert_eq!(own.bodies[3].name.de, "Rundtisch groß");
+}
+
+#[test]
+fn an_imported_body_of_both_or_no_shape_opens_as_a_box() {
+    let json = editor().preview.expect("the own copy").to_json();
+    let bed = r#""box": {"#;
+    assert!(json.contains(bed), "{json}");
+    // The bed (body 0) with a cylinder too: the form keeps its box.
+    let both = json.replacen(
+        bed,
+        r#""cylinder": {"base": [0, 0, 0], "direction": [0, 0, 1], "radius": 1, "height": 1}, "box": {"#,
+        1,
+    );
+    let s = then(&editor(), EditorAction::Import(both.into_bytes()));
+    assert!(s.import_issues.is_empty(), "{:?}", s.import_issues);
+    assert!(!s.form.collision[0].cylinder && s.valid, "{:?}", s.issues);
+    assert_eq!(s.form.collision[0], editor().form.collision[0]);
+    // Without a shape: an empty box, its fields reported.
+    let mut def = editor().preview.expect("the own copy").to_def();
+    let mut bodies = def.collision.to_vec();
+    bodies[0].cuboid = None;
+    def.collision = Cow::Owned(bodies);
+    let s = then(&editor(), EditorAction::Import(def.to_json().into_bytes()));
+    assert!(s.import_issues.is_empty(), "{:?}", s.import_issues);
+    assert!(!s.valid && s.form.collision[0].size[0].is_empty());
+    assert_eq!(s.issues_at("collision[0].box.size").count(), 1, "{:?}", s.issues);
 }

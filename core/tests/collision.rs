@@ -124,6 +124,13 @@ fn the_other_solution_is_named_when_its_swivel_is_free() {
     let e = sim.error.as_ref().expect("error");
     assert!(e.detail.de.contains("Die andere Lösung (SEQ+) wäre kollisionsfrei"), "{}", e.detail.de);
     assert!(e.detail.en.contains("The other solution (SEQ+) would be collision-free"), "{}", e.detail.en);
+    let note = c.alternative_note().expect("note");
+    assert!(
+        note.de.starts_with("Die gewählte Lösung kollidiert (") && note.de.contains("SEQ+ (A+30"),
+        "{}",
+        note.de
+    );
+    assert!(note.en.ends_with("would be collision-free."), "{}", note.en);
     // And that solution, asked for, runs.
     let (sim, text, _) = low_tool_then(None, "PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ+");
     assert!(sim.error.is_none(), "{:?}\n{text}", sim.error);

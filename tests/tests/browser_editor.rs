@@ -59,3 +59,30 @@ async fn a_zero_direction_is_said_at_its_field_then_fixed_saved_and_offered_by_t
     click(&trainer, "[data-key=own-machines]").await;
     assert_eq!(query(&trainer, own).and_then(|k| k.get_attribute("aria-pressed")).as_deref(), Some("true"));
 }
+
+#[wasm_bindgen_test]
+async fn a_collision_body_is_checked_at_its_field_added_and_removed() {
+    clear_storage();
+    let editor = mount_editor("#ac-table").await;
+    // The machine bed's height (760 × 760 × 60) typed as 0.
+    let size = r#"input[data-field="BodySize(0, 2)"]"#;
+    let at_field = r#"[data-path="collision[0].box.size"] .ed-issue"#;
+    type_into(&editor, size, "0").await;
+    assert!(wait_for(&editor, at_field, 3_000).await.is_some(), "a message at the size");
+    assert!(text(&editor, at_field).contains("muss größer als 0 sein (0)"), "{}", text(&editor, at_field));
+    type_into(&editor, size, "60").await;
+    assert!(eventually(|| query(&editor, at_field).is_none()).await, "the message went");
+    // ac-table has 9 bodies: a tenth is added, then the first removed.
+    let tenth = r#"input[data-field="BodyName(9, 0)"]"#;
+    assert!(query(&editor, tenth).is_none());
+    click(&editor, "[data-action=add-body]").await;
+    assert!(wait_for(&editor, tenth, 3_000).await.is_some(), "the new body's fields");
+    click(&editor, "[data-action=remove-body]").await;
+    assert!(eventually(|| query(&editor, tenth).is_none()).await, "nine again");
+    assert_eq!(
+        query(&editor, ".editor .status").and_then(|s| s.get_attribute("data-valid")).as_deref(),
+        Some("true")
+    );
+    editor.remove();
+    web_sys::window().expect("window").location().set_hash("").expect("clear hash");
+}

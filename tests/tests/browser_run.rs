@@ -1,11 +1,11 @@
 //! Program run in the browser (issue 6): the position display after block 10 of
 //! Musterprogramm 1 shows what the simulator computes, and the error sample stops at the refused
-//! block with the control's message.
+//! block with the control's message; a swivel that collides (issue 17) names the free solution.
 #![cfg(target_arch = "wasm32")]
 
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, simulate};
-use schwenkbar_tests::browser::{clear_storage, click, mount, query, text};
+use schwenkbar_tests::browser::{clear_storage, click, mount, paste_program, query, text};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 
 wasm_bindgen_test_configure!(run_in_browser);
@@ -61,4 +61,26 @@ async fn the_error_sample_stops_at_the_refused_block_with_the_controls_message()
         cursor_text(&root)
     );
     assert!(text(&root, "[data-testid=why-error]").starts_with("Winkel nicht erlaubt"));
+}
+
+#[wasm_bindgen_test]
+async fn a_colliding_swivel_stops_the_run_and_the_why_panel_names_the_free_solution() {
+    clear_storage();
+    let root = mount().await;
+    // On ac-table: a long tool low beside the blank; SEQ− lifts the table's rim into it
+    // (core/tests/collision.rs), SEQ+ would lower it.
+    paste_program(
+        &root,
+        "0 BEGIN PGM T MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
+         3 TOOL CALL 1 Z S3000 DL+20\n4 L Z+0 R0 FMAX M91\n5 L X+50 Y+110 R0 FMAX\n6 L Z-45 R0 FMAX\n\
+         7 PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-\n8 END PGM T MM\n",
+    )
+    .await;
+    click(&root, "[data-key=run]").await;
+    for _ in 0..10 {
+        click(&root, "[data-key=run-next]").await;
+    }
+    assert!(text(&root, ".dialog-line").starts_with("Kollision: "), "{}", text(&root, ".dialog-line"));
+    let note = text(&root, "[data-testid=why-alternative]");
+    assert!(note.starts_with("Die gewählte Lösung kollidiert (") && note.contains("SEQ+ (A+30"), "{note}");
 }

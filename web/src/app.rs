@@ -148,6 +148,7 @@ pub fn app(props: &AppProps) -> Html {
                     } else {
                         <ScenePane lang={l} machine={state.machine.clone()} sim={state.sim.clone()} doc={DocRef(state.doc.clone())}
                         state={scene_state} animate={state.run.as_ref().is_some_and(|r| r.playing)} speed={speed} {on_fraction} in_run={state.run.is_some()} {ghost} stock={state.shown_stock()}
+                        collision={state.shown_collision().cloned().map(Rc::new)}
                         typing={state.text_editing} />
                     }
                     <div class="side">

@@ -5,7 +5,7 @@ use std::rc::Rc;
 
 use schwenkbar_core::machine::{Carrier, Machine};
 use schwenkbar_core::plane::Positioning;
-use schwenkbar_core::sim::{Simulation, State};
+use schwenkbar_core::sim::{Collision, Simulation, State};
 use schwenkbar_core::{BlockBody, Program};
 
 use super::{Action, AppState};
@@ -64,6 +64,14 @@ impl AppState {
         let sim = &self.sim.as_ref()?.0;
         let step = sim.step_of_block(self.cursor)?;
         sim.state_at(&self.doc.program, step).map(Rc::new)
+    }
+
+    /// The collision that stopped the run, while the run stands there: the view shows the
+    /// moment of contact ([`crate::scene::SceneState::at_collision`]).
+    #[must_use]
+    pub fn shown_collision(&self) -> Option<&Collision> {
+        self.run.as_ref().filter(|r| r.stopped_by_error)?;
+        self.sim.as_ref()?.0.collision()
     }
 
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.

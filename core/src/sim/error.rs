@@ -190,10 +190,10 @@ impl SimErrorCode {
             SimErrorCode::ApprDep { word, kind, .. } => {
                 t(format!("{word} {kind} nicht möglich"), format!("{word} {kind} not possible"))
             }
-            SimErrorCode::Collision(c) => t(
-                format!("Kollision: {} – {}", c.a.de, c.b.de),
-                format!("Collision: {} – {}", c.a.en, c.b.en),
-            ),
+            SimErrorCode::Collision(c) => {
+                let pair = c.pair();
+                t(format!("Kollision: {}", pair.de), format!("Collision: {}", pair.en))
+            }
         }
     }
 
@@ -431,4 +431,31 @@ fn collision_detail(c: &Collision) -> Text {
         en.push_str(&format!(". The other solution ({}) would be collision-free: {words}", alt.word));
     }
     t(de, en)
+}
+
+impl Collision {
+    /// The two bodies as the control's message names them: "Werkzeug – Rundtisch C".
+    #[must_use]
+    pub fn pair(&self) -> Text {
+        t(format!("{} – {}", self.a.de, self.b.de), format!("{} – {}", self.a.en, self.b.en))
+    }
+
+    /// The why panel's note when the other solution's swivel is free: "Die gewählte Lösung
+    /// kollidiert (Werkzeug – Rundtisch C); die andere Lösung SEQ+ (A+30 C+180) wäre
+    /// kollisionsfrei."
+    #[must_use]
+    pub fn alternative_note(&self) -> Option<Text> {
+        let alt = self.alternative.as_ref()?;
+        let (pair, words) = (self.pair(), crate::solve::axis_words(&alt.axes));
+        Some(t(
+            format!(
+                "Die gewählte Lösung kollidiert ({}); die andere Lösung {} ({words}) wäre kollisionsfrei.",
+                pair.de, alt.word
+            ),
+            format!(
+                "The chosen solution collides ({}); the other solution {} ({words}) would be collision-free.",
+                pair.en, alt.word
+            ),
+        ))
+    }
 }

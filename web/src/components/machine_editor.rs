@@ -3,14 +3,17 @@
 //! last valid machine, and the page's commands (start from, save, delete, export, import,
 //! language). State and checks in [`EditorState`]; this only renders and dispatches.
 
+use std::rc::Rc;
+
 use web_sys::{HtmlInputElement, HtmlSelectElement};
 use yew::prelude::*;
 
 use super::view3d::View3d;
 use crate::browser;
 use crate::effects::{Shell, Shelled, use_effects};
-use schwenkbar_app::editor::{EditorAction, EditorState, Field, SECTIONS, rows};
-use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::editor::{EditorAction, EditorState, Field, SECTIONS, rows, section_title};
+use schwenkbar_app::i18n::{Lang, Text};
+use schwenkbar_app::scene::SceneState;
 use schwenkbar_core::machine::Machine;
 
 const STYLE: &str = include_str!("machine_editor.css");
@@ -18,29 +21,48 @@ const STYLE: &str = include_str!("machine_editor.css");
 /// The editor in yew.
 pub type Editor = Shelled<EditorState>;
 
-/// One input of a row: a text field, the carrier's choice or the endless switch.
+/// A choice among `options` (word, label) that sets `field`; a value not among them (from an
+/// imported file) stays selectable, so the message next to it makes sense.
+fn choice(state: &UseReducerHandle<Editor>, field: Field, options: Vec<(String, Text)>, l: Lang) -> Html {
+    let value = state.form.value(field);
+    let onchange = {
+        let state = state.clone();
+        Callback::from(move |e: Event| {
+            if let Some(s) = e.target_dyn_into::<HtmlSelectElement>() {
+                state.dispatch(EditorAction::Set(field, s.value()));
+            }
+        })
+    };
+    let known = options.iter().any(|(w, _)| *w == value);
+    html! {
+        <select data-field={format!("{field:?}")} {onchange}>
+            { for options.into_iter().map(|(w, label)| {
+                let selected = w == value;
+                html! { <option {selected} value={w}>{ label.get(l).to_owned() }</option> }
+            }) }
+            if !known { <option value={value.clone()} selected=true>{ value.clone() }</option> }
+        </select>
+    }
+}
+
+/// One input of a row: a text field, a choice (carrier, shape) or the endless switch.
 fn input(state: &UseReducerHandle<Editor>, field: Field, l: Lang) -> Html {
     let value = state.form.value(field);
     let name = format!("{field:?}");
     match field {
-        Field::Carrier(_) => {
-            let onchange = {
-                let state = state.clone();
-                Callback::from(move |e: Event| {
-                    if let Some(s) = e.target_dyn_into::<HtmlSelectElement>() {
-                        state.dispatch(EditorAction::Set(field, s.value()));
-                    }
-                })
+        Field::BodyCarrier(_) => choice(state, field, state.form.body_carriers(), l),
+        Field::BodyShape(_) | Field::Carrier(_) => {
+            let words = match field {
+                Field::Carrier(_) => [
+                    ("table", Text::new("Tisch (table)", "table")),
+                    ("head", Text::new("Kopf (head)", "head")),
+                ],
+                _ => [
+                    ("box", Text::new("Quader (box)", "box")),
+                    ("cylinder", Text::new("Zylinder (cylinder)", "cylinder")),
+                ],
             };
-            // An imported unknown word stays selectable, so the message next to it makes sense.
-            let known = ["table", "head"].contains(&value.as_str());
-            html! {
-                <select data-field={name} {onchange}>
-                    <option value="table" selected={value == "table"}>{ l.t("Tisch (table)", "table") }</option>
-                    <option value="head" selected={value == "head"}>{ l.t("Kopf (head)", "head") }</option>
-                    if !known { <option value={value.clone()} selected=true>{ value.clone() }</option> }
-                </select>
-            }
+            choice(state, field, words.into_iter().map(|(w, t)| (w.to_owned(), t)).collect(), l)
         }
         Field::Endless(i) => {
             let onchange = {
@@ -123,7 +145,7 @@ pub fn editor_root() -> Html {
         .map(|m| (m.id.clone(), format!("{} ({})", l.t(&m.name.de, &m.name.en), m.id)))
         .chain(state.saved.iter().map(|m| (m.id.clone(), format!("{} – {}", l.t("eigene", "own"), m.id))))
         .collect();
-    let all_rows = rows();
+    let all_rows = rows(&state.form);
     let section = |s: usize| {
         let rows = all_rows.iter().filter(|r| r.section == s).map(|r| {
             let path = r.path();
@@ -140,8 +162,19 @@ pub fn editor_root() -> Html {
                 </div>
             }
         });
-        html! { <><h2>{ SECTIONS[s].get(l).to_owned() }</h2>{ for rows }</> }
+        // A collision body's section ends with its remove button.
+        let remove = s.checked_sub(SECTIONS.len()).map(|i| {
+            html! {
+                <button type="button" data-action="remove-body" onclick={send(EditorAction::RemoveBody(i))}>
+                    { l.t("Körper entfernen", "Remove body") }
+                </button>
+            }
+        });
+        html! { <><h2>{ section_title(s).get(l).to_owned() }</h2>{ for rows }{ for remove }</> }
     };
+    let sections = SECTIONS.len() + state.form.collision.len();
+    let preview =
+        use_memo(state.preview.clone(), |m| m.as_deref().map(|m| Rc::new(SceneState::with_bodies(m))));
     let n = state.issues.len();
     let status = if state.valid {
         html! { <p class="status" data-valid="true">{ l.t("Maschine gültig", "Machine valid") }</p> }
@@ -180,11 +213,14 @@ pub fn editor_root() -> Html {
                 if let Some(m) = &state.message { <p class="message" role="status">{ m.get(l).to_owned() }</p> }
                 { status }
                 { for top_issues }
-                { for (0..SECTIONS.len()).map(section) }
+                { for (0..sections).map(section) }
+                <button type="button" data-action="add-body" onclick={send(EditorAction::AddBody)}>
+                    { l.t("Kollisionskörper hinzufügen", "Add collision body") }
+                </button>
             </section>
             <section class="preview">
                 <h2>{ l.t("Vorschau", "Preview") }</h2>
-                <View3d lang={l} machine={state.preview.clone()} />
+                <View3d lang={l} machine={state.preview.clone()} state={(*preview).clone()} />
             </section>
         </div>
     }

@@ -11,7 +11,7 @@ use std::time::Duration;
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::parse_f64;
-use schwenkbar_core::sim::State;
+use schwenkbar_core::sim::{Collision, State};
 use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
@@ -43,6 +43,9 @@ pub struct ScenePaneProps {
     /// A PLANE candidate hovered in the why panel: drawn as the ghost instead of the other one.
     #[prop_or_default]
     pub ghost: Option<AxisValues>,
+    /// The collision that stopped the run: shown at the moment of contact, the pair marked.
+    #[prop_or_default]
+    pub collision: Option<Rc<Collision>>,
     /// The cut stock of the run (the ROHTEIL switch on), drawn at the shown step and fraction.
     #[prop_or_default]
     pub stock: Option<StockRef>,
@@ -141,6 +144,9 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
     let scene = match (&props.machine, &props.state) {
         (Some(m), Some(s)) => {
             let mut scene = scene_at(m, s, *fraction);
+            if let Some(c) = &props.collision {
+                scene.at_collision(m, s, c);
+            }
             scene.toolpath_drawn = path.1.segments_after.get(s.step).copied();
             if props.ghost.is_some() {
                 scene.ghost = props.ghost;

@@ -72,6 +72,9 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
                     if let Some(e) = &w.error {
                         <p class="why-error" data-testid="why-error">{ e }</p>
                     }
+                    if let Some(a) = &w.safe_alternative {
+                        <p class="why-alternative" data-testid="why-alternative">{ a }</p>
+                    }
                     if !w.plain.is_empty() {
                         <p class="why-plain" data-testid="why-plain">{ &w.plain }</p>
                     }

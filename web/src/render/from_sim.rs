@@ -36,6 +36,8 @@ pub fn scene_state(machine: &Machine, s: &State) -> SceneState {
         blank: s.blank.map_or_else(Blank::default, |b| Blank { min: b.min, max: b.max }),
         toolpath_drawn: None,
         stock: None,
+        contact: None,
+        bodies: Vec::new(),
     }
 }
 

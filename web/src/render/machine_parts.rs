@@ -4,9 +4,10 @@
 //! and axis direction of `static/machines/*.json`. Sizes that the definition does not give
 //! (table radius, housings) are illustrative and derived from the blank.
 
-use glam::{DAffine3, DVec3};
+use glam::{DAffine3, DMat3, DVec3};
 use schwenkbar_core::axes::AxisValues;
 use schwenkbar_core::machine::{Carrier, Machine, RotaryJoint};
+use schwenkbar_core::sim::collision::Placed;
 
 use super::draw_list::{DrawList, Pass, Shape, beam, cuboid, rod};
 use schwenkbar_app::scene::pose::{Poses, head_pivot, poses};
@@ -25,6 +26,11 @@ pub const FLUTE: [f32; 3] = [0.95, 0.78, 0.20];
 pub const BLANK: [f32; 3] = [0.93, 0.55, 0.18];
 /// Colour of the translucent ghost of the other candidate.
 pub const GHOST: [f32; 4] = [0.55, 0.85, 1.0, 0.30];
+
+/// The two bodies of a collision: translucent red over the parts they stand for.
+pub const CONTACT: [f32; 4] = [0.95, 0.10, 0.08, 0.60];
+/// Every collision body in the machine editor's preview: translucent violet.
+pub const BODY: [f32; 4] = [0.62, 0.40, 0.95, 0.35];
 
 /// Rotary-table thickness and spindle dimensions (illustrative, mm).
 const DISC: f64 = 30.0;
@@ -76,6 +82,27 @@ pub fn ghost(list: &mut DrawList, m: &Machine, s: &SceneState, rotary: &AxisValu
     let has = |c: Carrier| m.joints().iter().any(|j| j.carrier == c);
     let sides = Sides { table: has(Carrier::Table), head: has(Carrier::Head) };
     moving_parts(list, m, s, &layout, &p, Style { pass: Pass::Translucent, tint: Some(GHOST) }, sides);
+}
+
+/// The collision bodies `placed` (M-CS, from the simulator's own shapes) in `colour`.
+pub fn bodies<'a>(list: &mut DrawList, placed: impl IntoIterator<Item = &'a Placed>, colour: [f32; 4]) {
+    for p in placed {
+        match p {
+            Placed::Box(o) => {
+                let m =
+                    DAffine3::from_mat3_translation(o.axes * DMat3::from_diagonal(2.0 * o.half), o.center);
+                list.push(Shape::Cube, m, colour, Pass::Translucent);
+            }
+            Placed::Cylinder { capsule, .. } => {
+                list.push(
+                    Shape::Cylinder,
+                    rod(capsule.a, capsule.b, capsule.radius),
+                    colour,
+                    Pass::Translucent,
+                );
+            }
+        }
+    }
 }
 
 /// Linear axes that put the tool tip, with the rotary axes at `rotary`, on the workpiece point

@@ -60,6 +60,10 @@ pub fn scene(s: &Scene<'_>) -> DrawList {
     if let Some(g) = &s.state.ghost {
         machine_parts::ghost(&mut list, s.machine, s.state, g);
     }
+    machine_parts::bodies(&mut list, &s.state.bodies, machine_parts::BODY);
+    if let Some(pair) = &s.state.contact {
+        machine_parts::bodies(&mut list, pair, machine_parts::CONTACT);
+    }
     let (w_origin, w_rot) = compose(p.workpiece, &s.state.wcs);
     let wcs_pose = DAffine3::from_mat3_translation(w_rot, w_origin);
     let (wpl_origin, wpl_rot) = compose(wcs_pose, &s.state.wpl);
@@ -116,6 +120,28 @@ mod tests {
         assert!(none.labels.is_empty());
         assert!(none.instances.iter().all(|i| i.pass != Pass::Overlay));
         assert_eq!(all.instances.iter().filter(|i| i.pass == Pass::Overlay).count(), 4 * 3 * 2);
+    }
+
+    #[test]
+    fn the_colliding_pair_is_drawn_in_the_warning_colour_where_it_is_placed() {
+        use schwenkbar_core::sim::collision::{Obb, Placed};
+        let m = Machine::builtin("ac-table").expect("machine");
+        let cube = Placed::Box(Obb {
+            center: DVec3::new(10.0, 20.0, 30.0),
+            axes: DMat3::IDENTITY,
+            half: DVec3::new(1.0, 2.0, 3.0),
+        });
+        let rod = Placed::cylinder(DVec3::ZERO, DVec3::Z, 5.0, 40.0);
+        let state = SceneState { contact: Some([cube, rod]), ..SceneState::default() };
+        let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() });
+        let red: Vec<_> = list.instances.iter().filter(|i| i.colour == machine_parts::CONTACT).collect();
+        assert_eq!(red.len(), 2);
+        assert!(red.iter().all(|i| i.pass == Pass::Translucent));
+        let corner = red[0].model.transform_point3(DVec3::splat(0.5));
+        assert!((corner - DVec3::new(11.0, 22.0, 33.0)).length() < 1e-9, "{corner}");
+        assert!((red[1].model.transform_point3(DVec3::Z) - DVec3::new(0.0, 0.0, 40.0)).length() < 1e-9);
+        let plain = scene(&Scene { machine: &m, state: &SceneState::default(), triads: Triads::default() });
+        assert!(plain.instances.iter().all(|i| i.colour != machine_parts::CONTACT));
     }
 
     #[test]

@@ -1,0 +1,104 @@
+//! A run that stops on a collision (issue 17): the view shows the moment of contact with the
+//! pair marked, the collision-free other solution as the ghost, and the why panel says so.
+
+use schwenkbar_app::effect::Reducer;
+use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::scene::{MachineAxes, SceneState};
+use schwenkbar_app::state::{Action, AppState};
+use schwenkbar_app::why::for_block;
+use schwenkbar_core::sim::collision::{RESOLUTION, touch};
+
+/// On `ac-table`: a 100 mm tool 5 mm above the rotary table's face beside the blank, then a
+/// swivel (core/tests/collision.rs: SEQ− lifts the table's rim into the tool, SEQ+ lowers it).
+fn program(swivel: &str) -> String {
+    let blocks = [
+        "BLK FORM 0.1 Z X+0 Y+0 Z-40",
+        "BLK FORM 0.2 X+100 Y+100 Z+0",
+        "TOOL CALL 1 Z S3000 DL+20",
+        "L Z+0 R0 FMAX M91",
+        "L X+50 Y+110 R0 FMAX",
+        "L Z-45 R0 FMAX",
+        swivel,
+    ];
+    let mut text = String::from("0 BEGIN PGM T MM\n");
+    for (i, b) in blocks.iter().enumerate() {
+        text.push_str(&format!("{} {b}\n", i + 1));
+    }
+    text.push_str("8 END PGM T MM\n");
+    text
+}
+
+fn then(s: &AppState, a: Action) -> AppState {
+    s.apply(a).0
+}
+
+/// The trainer on `ac-table` with `swivel`, the run played until it stops.
+fn run_to_the_end(swivel: &str) -> AppState {
+    let mut s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
+    s = then(&s, Action::SetText(program(swivel)));
+    s = then(&then(&s, Action::StartRun), Action::RunPlay);
+    for _ in 0..20 {
+        let step = s.run.as_ref().map_or(0, |r| r.step);
+        s = then(&s, Action::RunTick(step));
+    }
+    s
+}
+
+#[test]
+fn a_run_stopped_by_a_collision_shows_the_moment_of_contact_with_the_pair_and_the_free_solution() {
+    let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-");
+    assert!(s.run.as_ref().is_some_and(|r| r.stopped_by_error), "{:?}", s.sim.as_ref().map(|x| &x.0.error));
+    let c = s.shown_collision().expect("the run stopped on a collision").clone();
+    let machine = s.machine.clone().expect("machine");
+    let before = s.shown_state().expect("the last finished step");
+    let mut scene = SceneState::default();
+    scene.at_collision(&machine, &before, &c);
+    // At the contact, not at the block's end (A−30) nor its start (A+0).
+    assert_eq!(scene.axes, MachineAxes { linear: c.axes.linear, rotary: c.axes.rotary_values() });
+    let a = scene.axes.rotary.a.expect("A");
+    assert!(a < 0.0 && a > -30.0, "A{a}");
+    // The pair, placed there, touches (within the check's resolution).
+    let [x, y] = scene.contact.expect("the pair is marked");
+    assert!(touch(&x, &y, 2.0 * RESOLUTION), "{x:?} {y:?}");
+    // The collision-free SEQ+ solution is the ghost.
+    let alt = c.alternative.as_ref().expect("alternative");
+    assert_eq!(scene.ghost, Some(alt.axes));
+
+    // The why panel of the refused block names it, German first.
+    let sim = s.sim.as_ref().map(|x| x.0.as_ref());
+    let why =
+        |l| for_block(&s.doc.program, sim, Some(&before), s.cursor, &machine, l).expect("a PLANE block");
+    let de = why(Lang::De).safe_alternative.expect("the note");
+    assert!(de.starts_with(&format!("Die gewählte Lösung kollidiert ({} – {})", c.a.de, c.b.de)), "{de}");
+    assert!(de.contains("die andere Lösung SEQ+ (A+30") && de.ends_with("wäre kollisionsfrei."), "{de}");
+    let en = why(Lang::En).safe_alternative.expect("the note");
+    assert!(en.starts_with("The chosen solution collides (") && en.contains("SEQ+ (A+30"), "{en}");
+}
+
+#[test]
+fn a_collision_without_a_free_solution_has_no_ghost_and_no_note() {
+    // A plain rotary move has no other solution.
+    let s = run_to_the_end("PLANE AXIAL A-30 TURN FMAX");
+    let c = s.shown_collision().expect("collision").clone();
+    assert!(c.alternative.is_none());
+    let machine = s.machine.clone().expect("machine");
+    let before = s.shown_state().expect("state");
+    let mut scene = SceneState { ghost: Some(Default::default()), ..SceneState::default() };
+    scene.at_collision(&machine, &before, &c);
+    assert!(scene.ghost.is_none() && scene.contact.is_some());
+    let sim = s.sim.as_ref().map(|x| x.0.as_ref());
+    let why = for_block(&s.doc.program, sim, Some(&before), s.cursor, &machine, Lang::De).expect("PLANE");
+    assert!(why.error.is_some() && why.safe_alternative.is_none());
+}
+
+#[test]
+fn before_the_run_reaches_the_collision_nothing_is_marked() {
+    let mut s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
+    s = then(&s, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    assert!(s.shown_collision().is_none(), "programming: the run has not stopped");
+    let s = then(&s, Action::StartRun);
+    assert!(s.shown_collision().is_none(), "the run stands at its first block");
+    // The free solution runs through.
+    let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ+");
+    assert!(s.shown_collision().is_none());
+}
