@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line,
-    OldCycleData, OldCycleWord, Program, RadiusComp, Tcpm, TcpmAxis, ToolCall, ToolRef,
+    OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;
@@ -30,6 +30,7 @@ mod contour;
 mod cycle_calls;
 mod motion;
 mod snapshot;
+mod tcpm;
 mod tilt;
 
 use super::{
@@ -147,25 +148,11 @@ pub const STAY_SECONDS: f64 = 1.0;
 /// What a block's M functions tell the trainee: TCPM switched on or off, or a function the
 /// simulator does not model.
 fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
-    if m.contains(&128) {
-        note(rec, || tcpm_on("M128"));
-    } else if m.contains(&129) {
-        note(rec, || Text::new("M129: TCPM aus", "M129: TCPM off"));
+    if let Some(text) = tcpm::m_note(m) {
+        note(rec, || text);
     } else if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
         note(rec, || Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
     }
-}
-
-/// What `M128` and `FUNCTION TCPM` (`word`) tell the trainee.
-fn tcpm_on(word: &str) -> Text {
-    Text::owned(
-        format!(
-            "{word}: TCPM aktiv – die Werkzeugspitze bleibt auf dem programmierten Punkt, die Linearachsen gleichen die Drehachsen aus"
-        ),
-        format!(
-            "{word}: TCPM on – the tool tip stays on the programmed point, the linear axes compensate the rotary axes"
-        ),
-    )
 }
 
 fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
@@ -495,12 +482,7 @@ impl Interp {
                 self.sync_pos();
             }
             BlockBody::FunctionTcpm(t) => self.function_tcpm(&mut rec, *t)?,
-            BlockBody::FunctionResetTcpm => {
-                self.set_tcpm(false);
-                note(&mut rec, || {
-                    Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off")
-                });
-            }
+            BlockBody::FunctionResetTcpm => self.function_reset_tcpm(&mut rec),
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)
                     && let Some(ret) = self.calls.pop()
@@ -553,7 +535,7 @@ impl Interp {
     }
 
     fn end_m(&mut self, m: &[u32]) {
-        self.set_tcpm(if m.contains(&129) { false } else { self.tcpm || m.contains(&128) });
+        self.tcpm_at_block_end(m);
         if m.iter().any(|&f| f == 30 || f == 2) {
             self.spindle.dir = SpindleDir::Off;
             self.ended = true;
@@ -561,36 +543,6 @@ impl Interp {
                 self.pc = usize::MAX;
             }
         }
-    }
-
-    /// TCPM on or off; the programmed position is taken anew from where the tool tip is.
-    fn set_tcpm(&mut self, on: bool) {
-        if on != self.tcpm {
-            self.tcpm = on;
-            self.sync_pos();
-        }
-    }
-
-    /// `FUNCTION TCPM`: on as `M128` with `AXIS POS`; the feed and path modes are not told apart
-    /// (unconfirmed::Decision::TcpmFunction). `AXIS SPAT` is refused rather than run as axis
-    /// angles, which would move the machine elsewhere than the program means.
-    fn function_tcpm(&mut self, rec: &mut Option<&mut Rec>, t: Tcpm) -> R<()> {
-        if t.axis == TcpmAxis::Spat {
-            return Err(SimErrorCode::TcpmAxisSpat);
-        }
-        self.set_tcpm(true);
-        note(rec, || tcpm_on("FUNCTION TCPM"));
-        Ok(())
-    }
-
-    /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off
-    /// (unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92).
-    fn tcpm_reset_before(&mut self, word: &'static str) -> R<()> {
-        if self.tcpm && unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92 {
-            return Err(SimErrorCode::TcpmActive { word });
-        }
-        self.set_tcpm(false);
-        Ok(())
     }
 
     /// The collision bodies for the machine, the active tool and the blank.
