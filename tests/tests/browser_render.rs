@@ -320,17 +320,26 @@ async fn a_run_stopped_by_a_collision_draws_the_colliding_pair_red_and_only_ther
         c.b.en
     );
     assert_eq!(n_plain, 0, "nothing else in the frame is contact red");
-    // Today only part of the pair shows (about 220 px of 120,000 here): the tool body is the
-    // tool's own cylinder, so it shows only round the thinner shank (the flute has the same
-    // radius and wins the depth test), and the C table's body (r 50) lies inside the drawn
-    // table (r ≥ 80), which hides it. Both are drawn with the depth test like any translucent
-    // part.
     assert!(n_marked >= 100, "the pair is drawn red: {n_marked} pixels of {}", w * h);
+    // Both bodies show, even where they lie inside a drawn part (the C table's body, r 50, in the
+    // drawn table, r ≥ 80; the tool's body in the tool's own cylinder): red round the projected
+    // centre of each.
+    let (sx, sy) = (w as f32 / cw, h as f32 / ch);
+    let vp = cam.view_proj(cw / ch);
+    for (body, name) in pair.iter().zip([&c.a.en, &c.b.en]) {
+        let corners = corners_of(body);
+        let centre = corners.iter().copied().sum::<Vec3>() / corners.len() as f32;
+        let (x, y) = project_to_css(&vp, centre, cw, ch).expect("in front of the eye");
+        let (px, py) = ((x * sx) as i32, (y * sy) as i32);
+        let red_near = (-2..=2)
+            .flat_map(|dy| (-2..=2).map(move |dx| (px + dx, py + dy)))
+            .filter(|&(x, y)| contact_red(at(&marked, w, x, y, h)))
+            .count();
+        assert!(red_near >= 20, "{name} is red at its centre ({px}, {py}): {red_near} of 25 pixels");
+    }
 
     // Where the red is: on the screen rectangles of the pair's bodies (their projected bounding
     // boxes, 4 px of slack), nowhere else.
-    let (sx, sy) = (w as f32 / cw, h as f32 / ch);
-    let vp = cam.view_proj(cw / ch);
     let rects: Vec<[f32; 4]> = pair
         .iter()
         .map(|body| {

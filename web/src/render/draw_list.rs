@@ -39,6 +39,9 @@ pub enum Pass {
     Opaque,
     /// Translucent after the opaque parts, no depth writes (ghost, working plane).
     Translucent,
+    /// Translucent after [`Pass::Translucent`] without the depth test (the colliding pair): a
+    /// body inside a drawn part, e.g. the rotary table's body in the table, still shows.
+    XRay,
     /// On top of everything (triads), so a coordinate system is never hidden inside the blank.
     Overlay,
 }

@@ -84,22 +84,22 @@ pub fn ghost(list: &mut DrawList, m: &Machine, s: &SceneState, rotary: &AxisValu
     moving_parts(list, m, s, &layout, &p, Style { pass: Pass::Translucent, tint: Some(GHOST) }, sides);
 }
 
-/// The collision bodies `placed` (M-CS, from the simulator's own shapes) in `colour`.
-pub fn bodies<'a>(list: &mut DrawList, placed: impl IntoIterator<Item = &'a Placed>, colour: [f32; 4]) {
+/// The collision bodies `placed` (M-CS, from the simulator's own shapes) in `colour`, drawn in `pass`.
+pub fn bodies<'a>(
+    list: &mut DrawList,
+    placed: impl IntoIterator<Item = &'a Placed>,
+    colour: [f32; 4],
+    pass: Pass,
+) {
     for p in placed {
         match p {
             Placed::Box(o) => {
                 let m =
                     DAffine3::from_mat3_translation(o.axes * DMat3::from_diagonal(2.0 * o.half), o.center);
-                list.push(Shape::Cube, m, colour, Pass::Translucent);
+                list.push(Shape::Cube, m, colour, pass);
             }
             Placed::Cylinder { capsule, .. } => {
-                list.push(
-                    Shape::Cylinder,
-                    rod(capsule.a, capsule.b, capsule.radius),
-                    colour,
-                    Pass::Translucent,
-                );
+                list.push(Shape::Cylinder, rod(capsule.a, capsule.b, capsule.radius), colour, pass);
             }
         }
     }

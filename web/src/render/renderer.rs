@@ -289,6 +289,9 @@ impl Renderer {
         gl.blend_func(Gl::SRC_ALPHA, Gl::ONE_MINUS_SRC_ALPHA);
         gl.depth_mask(false);
         draw_pass(gl, gpu, list, Pass::Translucent, &view);
+        gl.disable(Gl::DEPTH_TEST);
+        draw_pass(gl, gpu, list, Pass::XRay, &view);
+        gl.enable(Gl::DEPTH_TEST);
         gl.disable(Gl::BLEND);
         gl.depth_mask(true);
 

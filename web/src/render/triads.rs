@@ -60,9 +60,9 @@ pub fn scene(s: &Scene<'_>) -> DrawList {
     if let Some(g) = &s.state.ghost {
         machine_parts::ghost(&mut list, s.machine, s.state, g);
     }
-    machine_parts::bodies(&mut list, &s.state.bodies, machine_parts::BODY);
+    machine_parts::bodies(&mut list, &s.state.bodies, machine_parts::BODY, Pass::Translucent);
     if let Some(pair) = &s.state.contact {
-        machine_parts::bodies(&mut list, pair, machine_parts::CONTACT);
+        machine_parts::bodies(&mut list, pair, machine_parts::CONTACT, Pass::XRay);
     }
     let (w_origin, w_rot) = compose(p.workpiece, &s.state.wcs);
     let wcs_pose = DAffine3::from_mat3_translation(w_rot, w_origin);
@@ -136,7 +136,7 @@ mod tests {
         let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() });
         let red: Vec<_> = list.instances.iter().filter(|i| i.colour == machine_parts::CONTACT).collect();
         assert_eq!(red.len(), 2);
-        assert!(red.iter().all(|i| i.pass == Pass::Translucent));
+        assert!(red.iter().all(|i| i.pass == Pass::XRay), "the pair shows through the parts it is in");
         let corner = red[0].model.transform_point3(DVec3::splat(0.5));
         assert!((corner - DVec3::new(11.0, 22.0, 33.0)).length() < 1e-9, "{corner}");
         assert!((red[1].model.transform_point3(DVec3::Z) - DVec3::new(0.0, 0.0, 40.0)).length() < 1e-9);
