@@ -3,6 +3,7 @@
 
 use schwenkbar_app::effect::Reducer;
 use schwenkbar_app::i18n::Lang;
+use schwenkbar_app::persist::{Shared, Stored, share_fragment};
 use schwenkbar_app::scene::{MachineAxes, SceneState};
 use schwenkbar_app::state::{Action, AppState};
 use schwenkbar_app::why::for_block;
@@ -101,4 +102,49 @@ fn before_the_run_reaches_the_collision_nothing_is_marked() {
     // The free solution runs through.
     let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ+");
     assert!(s.shown_collision().is_none());
+}
+
+/// The instructor's link "run at block 7", where block 7's swivel collides: the trainee sees the
+/// stop (the contact, the control's message), not the program's start. Block 8 (never reached)
+/// gives the same; block 6 the state after it.
+#[test]
+fn a_link_to_a_run_that_stops_on_the_way_opens_at_the_stop() {
+    let open = |block: usize| {
+        let shared = Shared {
+            program: program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-"),
+            block,
+            machine: Some("ac-table".into()),
+            own_machine: None,
+            run: true,
+        };
+        AppState::start(Stored::default(), Some(&format!("#{}", share_fragment(&shared)))).0
+    };
+    for block in [7, 8] {
+        let s = open(block);
+        let run = s.run.as_ref().expect("in program run");
+        assert!(run.stopped_by_error && !run.playing, "block {block}");
+        assert_eq!(s.cursor, 7, "block {block}: the cursor on the refused block");
+        assert!(s.shown_collision().is_some(), "block {block}: the contact is shown");
+        let line = s.dialog_line();
+        assert!(line.starts_with("Kollision: "), "block {block}: {line}");
+    }
+    let before = open(6);
+    let run = before.run.as_ref().expect("in program run");
+    assert!(!run.stopped_by_error && before.cursor == 6 && before.shown_collision().is_none());
+    assert_eq!(before.dialog_line(), "Programm aus dem Link geöffnet");
+}
+
+/// NC-START with the cursor on the block the control refuses stands there too.
+#[test]
+fn nc_start_on_the_refused_block_stands_at_the_stop() {
+    let s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
+    let s = then(&s, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    let at = |cursor: usize| then(&then(&s, Action::CursorTo(cursor)), Action::StartRun);
+    let refused = at(7);
+    assert!(refused.run.as_ref().is_some_and(|r| r.stopped_by_error) && refused.cursor == 7);
+    assert!(refused.shown_collision().is_some());
+    assert!(refused.dialog_line().starts_with("Kollision: "), "{}", refused.dialog_line());
+    // Before the refused block the run starts there, as before.
+    let before = at(5);
+    assert!(before.run.as_ref().is_some_and(|r| !r.stopped_by_error) && before.cursor == 5);
 }

@@ -37,8 +37,18 @@ impl AppState {
         self.text_editing = false;
         match &self.sim {
             Some(sim) if !sim.0.is_empty() => {
-                let step = sim.0.step_of_block(self.cursor).unwrap_or(0);
-                self.run = Some(Run::new(&sim.0, &self.doc.program, step));
+                let stop = sim.0.error.as_ref().filter(|e| e.block <= self.cursor);
+                let (step, stopped) = match (sim.0.step_of_block(self.cursor), stop) {
+                    (Some(step), _) => (step, false),
+                    // The control stops before it reaches the cursor's block (or on it, e.g. a
+                    // collision in its swivel): the run stands where it stopped, as after
+                    // playing there, with the control's message.
+                    (None, Some(_)) => (sim.0.len() - 1, true),
+                    (None, None) => (0, false),
+                };
+                let mut run = Run::new(&sim.0, &self.doc.program, step);
+                run.stopped_by_error = stopped;
+                self.run = Some(run);
                 self.sync_cursor_to_run();
             }
             Some(sim) => {

@@ -192,6 +192,11 @@ impl AppState {
         state = state.simulated(None);
         if run {
             state.start_run();
+            // A link that runs into the control's stop shows the stop's message, not "opened"
+            // (a preview over the trainee's own program keeps its question).
+            if state.link.is_none() && state.run.as_ref().is_some_and(|r| r.stopped_by_error) {
+                state.message = None;
+            }
         }
         state.follow_ups(None, &mut fx);
         (state, fx)
