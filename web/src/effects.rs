@@ -89,6 +89,15 @@ pub struct Shell {
     pub tell_course: Option<Callback<Option<String>>>,
 }
 
+impl Shell {
+    /// A page other than the trainer (course, machine editor): it only saves and downloads, so
+    /// it has no run timer, no stock and no course to tell.
+    #[must_use]
+    pub fn saving(notice: Callback<Text>, root: NodeRef) -> Shell {
+        Shell { notice, tick: Callback::noop(), build_stock: Callback::noop(), root, tell_course: None }
+    }
+}
+
 /// Runs each list of effects once, after the render.
 #[hook]
 pub fn use_effects(pending: &Pending, shell: Shell) {

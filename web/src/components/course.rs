@@ -47,15 +47,7 @@ pub fn course_app(props: &CourseAppProps) -> Html {
             let state = state.clone();
             Callback::from(move |t| state.dispatch(CourseAction::Notice(t)))
         };
-        // The course asks only for saving; the trainer's other effects do not arise here.
-        let shell = Shell {
-            notice,
-            tick: Callback::noop(),
-            build_stock: Callback::noop(),
-            root: root.clone(),
-            tell_course: None,
-        };
-        use_effects(&state.pending, shell);
+        use_effects(&state.pending, Shell::saving(notice, root.clone()));
     }
     // The page's keys from the load on, wherever the focus is; keys pressed inside a lesson's
     // embedded trainer stay with the trainer (PageDown there does not leave the lesson). The

@@ -101,15 +101,7 @@ pub fn editor_root() -> Html {
             let state = state.clone();
             Callback::from(move |t| state.dispatch(EditorAction::Notice(t)))
         };
-        // The editor asks for saving and the file download only.
-        let shell = Shell {
-            notice,
-            tick: Callback::noop(),
-            build_stock: Callback::noop(),
-            root: root.clone(),
-            tell_course: None,
-        };
-        use_effects(&state.pending, shell);
+        use_effects(&state.pending, Shell::saving(notice, root.clone()));
     }
     let l = state.lang();
     let send = |a: EditorAction| {
