@@ -76,6 +76,29 @@ fn a_run_stopped_by_a_collision_shows_the_moment_of_contact_with_the_pair_and_th
     assert!(en.starts_with("The chosen solution collides (") && en.contains("SEQ+ (A+30"), "{en}");
 }
 
+/// The position display at the stop: REF where the machine stopped (the contact), not the last
+/// finished block; IST in the plane still active then. TURN moves only the rotary axes and no
+/// tilt is active yet, so the control leaves X, Y, Z where they were (3-axis behaviour).
+#[test]
+fn the_position_display_at_the_stop_shows_where_the_machine_stands() {
+    let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-");
+    let c = s.shown_collision().expect("the run stopped on a collision").clone();
+    let before = s.shown_state().expect("the last finished step");
+    let shown = s.shown_position().expect("in a run");
+    assert_eq!(shown.axes, c.axes, "REF at the contact");
+    assert_ne!(shown.axes, before.axes);
+    assert_eq!(shown.axes.linear, before.axes.linear, "TURN: the linear axes stand");
+    assert!((shown.tip_ics - before.tip_ics).length() < 1e-9, "{} vs {}", shown.tip_ics, before.tip_ics);
+    assert!(shown.segments.is_empty(), "nothing left to animate");
+    // Before the stop the display shows the run's step itself.
+    let mut running = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
+    running = then(&running, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    running = then(&running, Action::StartRun);
+    let step = running.run.as_ref().and_then(|r| r.state.clone()).expect("a step");
+    assert!(running.shown_collision().is_none());
+    assert!(std::rc::Rc::ptr_eq(&running.shown_position().expect("in a run"), &step));
+}
+
 #[test]
 fn a_collision_without_a_free_solution_has_no_ghost_and_no_note() {
     // A plain rotary move has no other solution.

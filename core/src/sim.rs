@@ -243,6 +243,11 @@ pub struct State {
     pub tip_ics: DVec3,
     /// Tool axis (tip → spindle) in M-CS.
     pub tool_axis_mcs: DVec3,
+    /// Whether the control computes the linear axes from the rotary ones here (a tilt or TCPM,
+    /// [`crate::unconfirmed::COMPENSATION_ONLY_WHEN_TILTED`]): then IST follows the tool tip,
+    /// else the linear axes.
+    #[serde(skip)]
+    pub compensating: bool,
     pub q: BTreeMap<u32, f64>,
     pub plane: Option<Arc<ActivePlane>>,
     /// The solve explanation of this block (PLANE, cycle 19).
@@ -299,16 +304,48 @@ impl State {
         self.segment_at(fraction).map_or(self.axes, |(seg, f)| seg.axes_at(f))
     }
 
-    /// The position display's IST at `fraction` of the block's motion: the block's end
-    /// position less the travel still to come, `tip_ics + Rᵀ·(tip(f) − tip_end)` with the tool
-    /// tip in W-CS and R the I-CS axes in W-CS. At the end it is `tip_ics`; during a straight
-    /// move it runs along the programmed line, during a swivel it follows the tip.
+    /// The position display's IST at `fraction` of the block's motion
+    /// ([`State::tip_ics_with`] at that moment's axes). At the end it is `tip_ics`; during a
+    /// straight move it runs along the programmed line, during a swivel it follows the tip.
     #[must_use]
     pub fn tip_ics_at(&self, machine: &Machine, fraction: f64) -> DVec3 {
-        let Some((seg, f)) = self.segment_at(fraction) else { return self.tip_ics };
-        let travel_wcs = Kin::new(machine, self.tool.length).tip_wcs(&seg.axes_at(f)) - self.tip_wcs;
+        match self.segment_at(fraction) {
+            Some((seg, f)) => self.tip_ics_with(machine, &seg.axes_at(f)),
+            None => self.tip_ics,
+        }
+    }
+
+    /// IST with the machine at `axes` in this state's working plane: `tip_ics + Rᵀ·Δ`, R the
+    /// I-CS axes in W-CS and Δ what moved in W-CS since this state — the tool tip when the
+    /// control compensates, else the linear axes themselves (3-axis behaviour: a rotary move
+    /// leaves X, Y, Z where they are).
+    #[must_use]
+    pub fn tip_ics_with(&self, machine: &Machine, axes: &MachineAxes) -> DVec3 {
+        let travel_wcs = if self.compensating {
+            Kin::new(machine, self.tool.length).tip_wcs(axes) - self.tip_wcs
+        } else {
+            axes.linear - self.axes.linear
+        };
         let ics_in_wcs = self.frames.wcs.axes.transpose() * self.frames.ics.axes;
         self.tip_ics + ics_in_wcs.transpose() * travel_wcs
+    }
+
+    /// The state as the position display shows it when the motion stopped at `axes` (a
+    /// collision): REF there, IST in this state's plane ([`State::tip_ics_with`]), the tip
+    /// there, and no motion left to show. The frames and pivots stay this state's: it is for
+    /// the display, not for drawing the machine.
+    #[must_use]
+    pub fn stopped_at(&self, machine: &Machine, axes: &MachineAxes) -> State {
+        let kin = Kin::new(machine, self.tool.length);
+        State {
+            axes: *axes,
+            tip_ics: self.tip_ics_with(machine, axes),
+            tip_mcs: kin.tip_mcs(axes),
+            tip_wcs: kin.tip_wcs(axes),
+            tool_axis_mcs: kin.tool_axis_mcs(axes.rotary),
+            segments: Vec::new(),
+            ..self.clone()
+        }
     }
 }
 

@@ -561,6 +561,31 @@ fn display_during_a_move_follows_the_motion() {
     assert_close!(quarter.y, start.y, 1e-6);
 }
 
+/// IST during a rotary move follows what the control computes: without a tilt or TCPM the
+/// linear axes stand still and so does IST (3-axis behaviour, `COMPENSATION_ONLY_WHEN_TILTED`),
+/// although the tip moves over the tilting table; with M128 the tip stands still, and IST with it.
+#[test]
+fn display_during_a_rotary_move_keeps_ist_where_the_control_has_it() {
+    let src = "0 BEGIN PGM D MM\n1 TOOL CALL 1 Z S1000\n2 L X+10 Y+20 Z+50 R0 F1000\n\
+               3 L A-30 C+45 FMAX\n4 M128\n5 L A+0 C+0 FMAX\n6 END PGM D MM\n";
+    let (program, diags) = parse(src);
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let m = Machine::builtin("ac-table").expect("shipped machine");
+    let sim = simulate(&program, &m, &SimOptions::default());
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let s = after(&program, &sim, 3);
+    assert_close!(s.tip_ics, DVec3::new(10.0, 20.0, 50.0), EXACT);
+    for f in [0.0, 0.25, 0.5, 0.9] {
+        assert_close!(s.tip_ics_at(&m, f), DVec3::new(10.0, 20.0, 50.0), EXACT, "fraction {f}");
+    }
+    assert_close!(s.axes_at(0.5).rotary_values().a.expect("A"), -15.0, EXACT);
+    let held = after(&program, &sim, 4).tip_ics;
+    let t = after(&program, &sim, 5);
+    for f in [0.0, 0.5, 1.0] {
+        assert_close!(t.tip_ics_at(&m, f), held, 1e-6, "M128, fraction {f}");
+    }
+}
+
 /// The listing (`simulate_listed`, the CLI's table) is the states' block, axes, plane angles
 /// and message, step by step, on every fixture and every shipped machine (runs that stop with
 /// an error included), and on a small checkpoint interval; the listed run is the run.

@@ -84,6 +84,18 @@ impl AppState {
         self.sim.as_ref()?.0.collision()
     }
 
+    /// The state the position display shows in a run: the run's step, or where the machine
+    /// stopped on a collision (REF at the contact, [`State::stopped_at`]), not the last
+    /// finished step.
+    #[must_use]
+    pub fn shown_position(&self) -> Option<Rc<State>> {
+        let state = self.run.as_ref()?.state.clone()?;
+        match (self.shown_collision(), &self.machine) {
+            (Some(c), Some(m)) => Some(Rc::new(state.stopped_at(m, &c.axes))),
+            _ => Some(state),
+        }
+    }
+
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.
     pub(super) fn run_step(&mut self, f: impl FnOnce(&mut Run, &Simulation, &Program)) {
         let (Some(run), Some(sim)) = (self.run.as_mut(), self.sim.as_ref()) else { return };

@@ -40,6 +40,7 @@ impl Interp {
             tip_wcs: self.kin.tip_wcs(&self.axes),
             tip_ics: self.pos_i,
             tool_axis_mcs: self.kin.tool_axis_mcs(rot),
+            compensating: self.compensating(),
             q: self.q.clone(),
             plane: self.plane.clone(),
             explanation: rec.explanation,
