@@ -8,7 +8,8 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::parse;
 use schwenkbar_core::plane::RotaryAxis;
 use schwenkbar_core::sim::collision::{
-    Obb, Placed, point_obb_distance, segment_obb_distance, segment_segment_distance, touch,
+    Obb, Placed, RESOLUTION, point_obb_distance, segment_obb_distance, segment_segment_distance, separation,
+    touch,
 };
 use schwenkbar_core::sim::{Collision, SegmentKind, SimOptions, Simulation, simulate};
 
@@ -139,6 +140,47 @@ fn the_other_solution_is_named_when_its_swivel_is_free() {
 /// Both Musterprogramme run without a collision on every shipped machine (the bodies are sized
 /// so that the course's programs fit; `euler_fasen.h` on `ba-table` turns the table upside down,
 /// A+135, and chamfers next to the cradle: a collision there is the machine's, not the check's).
+/// A tool 100 mm long (radius 5) coming down over the C axis onto the rotary table's face
+/// (W-CS Z−50, see [`BLANK`]): through the blank (cutting, not a collision) it touches the face
+/// when its tip reaches Z−50. In one move the contact is at that height; in 0.2 mm steps it is
+/// found in the step that gets within the check's resolution of it (20 − 0.2·k ≤ −50 + RESOLUTION:
+/// step 350) — the check that carries what it knows from step to step misses nothing.
+#[test]
+fn a_descent_in_tiny_steps_stops_where_one_move_does() {
+    let head = || -> Vec<String> {
+        BLANK
+            .iter()
+            .chain(&[
+                "TOOL CALL 1 Z S3000 DL+20",
+                "L Z+0 R0 FMAX M91",
+                "L X+50 Y+50 R0 FMAX",
+                "L Z+20 R0 FMAX",
+            ])
+            .map(|b| b.to_string())
+            .collect()
+    };
+    let run_owned = |body: &[String]| run(&body.iter().map(String::as_str).collect::<Vec<_>>());
+    let mut one = head();
+    one.push("L Z-60 F1000".into());
+    let (sim, text) = run_owned(&one);
+    let c = collision_at(&sim, &text, one.len());
+    assert_eq!((&*c.a.en, &*c.b.en), ("tool", "C rotary table"), "{c:?}");
+    // The Z axis where the tip stands at W-CS Z+20 (the block before; A and C at 0).
+    let at_20 = sim.records.last().expect("the blocks before").axes.linear.z;
+    let tip = |z: f64| z - at_20 + 20.0;
+    let at_face = -50.0 - 1e-6..=-50.0 + RESOLUTION + 1e-6;
+    let z = tip(c.axes.linear.z);
+    assert!(at_face.contains(&z), "tip at Z{z}");
+    let mut steps = head();
+    let before = steps.len();
+    steps.extend((0..400).map(|_| "L IZ-0.2 F1000".to_string()));
+    let (sim, text) = run_owned(&steps);
+    let c = collision_at(&sim, &text, before + 350);
+    assert_eq!((&*c.a.en, &*c.b.en), ("tool", "C rotary table"), "{c:?}");
+    let z = tip(c.axes.linear.z);
+    assert!(at_face.contains(&z), "tip at Z{z}");
+}
+
 #[test]
 fn the_sample_programs_run_free_on_every_machine() {
     for file in ["musterprogramm1.h", "musterprogramm2.h", "stay_q120.h"] {
@@ -240,6 +282,39 @@ proptest! {
         if t {
             prop_assert!(sampled <= 13.0, "touch reported, sampled distance {}", sampled);
         }
+    }
+
+    /// `separation`, the lower bound the check carries from motion to motion: exactly the
+    /// largest per-axis gap for axis-parallel boxes, never above their closed-form distance.
+    #[test]
+    fn separation_of_axis_parallel_boxes_is_their_widest_gap(c1 in v3(), s1 in size(), c2 in v3(), s2 in size()) {
+        let (a, b) = (aabb(c1 - s1, c1 + s1), aabb(c2 - s2, c2 + s2));
+        let gaps = (b.center - a.center).abs() - a.half - b.half;
+        let sep = separation(&Placed::Box(a), &Placed::Box(b));
+        prop_assert!((sep - gaps.max_element()).abs() < 1e-9, "{} vs {}", sep, gaps.max_element());
+        prop_assert!(sep <= aabb_distance(&a, &b) + 1e-9);
+    }
+
+    /// Turned boxes and cylinders: the bound never exceeds the sampled distance (which is at
+    /// least the true one), so a pair it calls apart by d is at least d apart.
+    #[test]
+    fn separation_never_exceeds_the_sampled_distance(c1 in v3(), s1 in size(), u1 in unit(), t1 in 0.0..6.3f64,
+                                                     base in v3(), dir in unit(), r in 1.0..40.0f64, h in 1.0..120.0f64,
+                                                     base2 in v3(), dir2 in unit(), r2 in 1.0..40.0f64, h2 in 1.0..120.0f64) {
+        let o = Obb { center: c1 * 0.3, axes: DMat3::from_axis_angle(u1, t1), half: s1 };
+        let cyl = Placed::cylinder(base * 0.3, dir, r, h);
+        let cyl2 = Placed::cylinder(base2 * 0.3, dir2, r2, h2);
+        let pts = grid_in_cylinder(base * 0.3, dir, r, h, 9);
+        let to_box = pts.iter().map(|p| point_obb_distance(*p, &o)).fold(f64::INFINITY, f64::min);
+        prop_assert!(separation(&cyl, &Placed::Box(o)) <= to_box + 1e-9);
+        prop_assert!(separation(&Placed::Box(o), &cyl) <= to_box + 1e-9);
+        let pts2 = grid_in_cylinder(base2 * 0.3, dir2, r2, h2, 5);
+        let coarse = grid_in_cylinder(base * 0.3, dir, r, h, 5);
+        let between = coarse.iter().flat_map(|p| pts2.iter().map(move |q| (*p - *q).length())).fold(f64::INFINITY, f64::min);
+        prop_assert!(separation(&cyl, &cyl2) <= between + 1e-9, "{} > {}", separation(&cyl, &cyl2), between);
+        let b2 = Obb { center: base2 * 0.3, axes: DMat3::from_axis_angle(dir2, t1), half: DVec3::new(r2, h2, r2) };
+        let box_box = grid_in(&o, 9).iter().map(|p| point_obb_distance(*p, &b2)).fold(f64::INFINITY, f64::min);
+        prop_assert!(separation(&Placed::Box(o), &Placed::Box(b2)) <= box_box + 1e-9);
     }
 
     /// Segment–segment distance: never more than the brute-force minimum over sampled points,

@@ -121,30 +121,47 @@ pub fn touch(a: &Placed, b: &Placed, margin: f64) -> bool {
 /// Separating-axis test of two boxes with a margin: `false` if some axis separates them by more
 /// than `margin`.
 fn obb_obb(a: &Obb, b: &Obb, margin: f64) -> bool {
+    !obb_axes(a, b).any(|gap| gap > margin)
+}
+
+/// The gaps between the projections of two boxes on the 15 separating-axis candidates (unit
+/// axes; Ericson §4.4.1), negative where they overlap. Projecting on a unit axis shortens no
+/// distance, so each gap is a lower bound on the boxes' distance.
+fn obb_axes<'a>(a: &'a Obb, b: &'a Obb) -> impl Iterator<Item = f64> + 'a {
     let t = b.center - a.center;
     let ax = [a.axes.x_axis, a.axes.y_axis, a.axes.z_axis];
     let bx = [b.axes.x_axis, b.axes.y_axis, b.axes.z_axis];
-    let separates = |l: DVec3| {
+    let gap = move |l: DVec3| {
         let ra =
             a.half.x * ax[0].dot(l).abs() + a.half.y * ax[1].dot(l).abs() + a.half.z * ax[2].dot(l).abs();
         let rb =
             b.half.x * bx[0].dot(l).abs() + b.half.y * bx[1].dot(l).abs() + b.half.z * bx[2].dot(l).abs();
-        t.dot(l).abs() > ra + rb + margin
+        t.dot(l).abs() - ra - rb
     };
-    if ax.iter().chain(bx.iter()).any(|&l| separates(l)) {
-        return false;
-    }
-    for u in ax {
-        for v in bx {
-            // Parallel edges give no new axis (the face axes cover them).
-            if let Some(l) = u.cross(v).try_normalize()
-                && separates(l)
-            {
-                return false;
-            }
+    // Parallel edges give no new axis (the face axes cover them).
+    let edges =
+        ax.into_iter().flat_map(move |u| bx.into_iter().filter_map(move |v| u.cross(v).try_normalize()));
+    ax.into_iter().chain(bx).chain(edges).map(gap)
+}
+
+/// A lower bound on the distance of two placed bodies (0 or less when they may touch): the
+/// widest separating-axis gap of their boxes (a cylinder's bounding box), and for two cylinders
+/// also their capsules' distance. Each shape lies inside what is measured, so no bound exceeds
+/// the true distance.
+#[must_use]
+pub fn separation(a: &Placed, b: &Placed) -> f64 {
+    let boxed = |p: &Placed| match *p {
+        Placed::Box(o) => o,
+        Placed::Cylinder { bound, .. } => bound,
+    };
+    let (oa, ob) = (boxed(a), boxed(b));
+    let sat = obb_axes(&oa, &ob).fold(f64::NEG_INFINITY, f64::max);
+    match (a, b) {
+        (Placed::Cylinder { capsule: c, .. }, Placed::Cylinder { capsule: d, .. }) => {
+            sat.max(segment_segment_distance(c.a, c.b, d.a, d.b) - c.radius - d.radius)
         }
+        _ => sat,
     }
-    true
 }
 
 /// Distance between the segments p1–q1 and p2–q2 (Ericson §5.1.9, clamped closest points).
@@ -393,6 +410,9 @@ pub struct Bodies {
     kin: Kin,
     solids: Vec<Solid>,
     pairs: Vec<(usize, usize)>,
+    /// Per side (head, table): whether a body moves with the linear axes, and the largest ρⱼ —
+    /// a bound on [`Solid::rate`] of every body on that side.
+    sides: [(bool, [f64; 2]); 2],
 }
 
 impl Bodies {
@@ -452,7 +472,13 @@ impl Bodies {
                 }
             }
         }
-        (!pairs.is_empty()).then_some(Bodies { kin: *kin, solids, pairs })
+        let mut sides = [(false, [0.0_f64; 2]); 2];
+        for b in &solids {
+            let (own, reach) = &mut sides[usize::from(!b.role.head_side())];
+            *own |= b.frame == Frame::Tool;
+            *reach = [reach[0].max(b.reach[0]), reach[1].max(b.reach[1])];
+        }
+        (!pairs.is_empty()).then_some(Bodies { kin: *kin, solids, pairs, sides })
     }
 
     /// The name of body `i`.
@@ -472,14 +498,16 @@ impl Bodies {
     /// doc: no contact is missed). `clear` carries lower bounds on each pair's distance from the
     /// end of the motion checked before: a pair that moves less than that along `seg` is clear
     /// without a test (derived: the distance shrinks at most by the motion), which keeps the long
-    /// runs of tiny CAM moves cheap.
+    /// runs of tiny CAM moves cheap. While the motions since stay within the smallest of those
+    /// gaps, even the loop over the pairs is skipped (a bound per side: the head-side and the
+    /// table-side body that can move most).
     pub fn first_contact(&self, seg: &Segment, clear: &mut Clearances) -> Option<Contact> {
         let rot = seg.rotary_delta.map(|d| d.to_radians().abs());
         let lin = linear_rate(seg, rot);
         if !lin.is_finite() || !rot.iter().all(|r| r.is_finite()) {
             return None;
         }
-        let rates: Vec<f64> = self.solids.iter().map(|s| s.rate(lin, rot)).collect();
+        let rate_of = |i: usize| self.solids[i].rate(lin, rot);
         // Every body placed once at the middle, when a pair needs it: most are cleared there.
         let mut at_mid: Option<Vec<(Affine, Placed)>> = None;
         let mut best: Option<Contact> = None;
@@ -487,21 +515,39 @@ impl Bodies {
         // stays far below the capacity (a rate of 1e12 mm per segment needs 45 levels).
         let mut stack = [(0.0_f64, 1.0_f64); 64];
         let known = clear.at == Some(seg.start) && clear.gaps.len() == self.pairs.len();
-        if !known {
+        if known {
+            // No pair moves more than this: within the smallest gap, every pair is clear.
+            let most: f64 = self
+                .sides
+                .iter()
+                .map(|&(own, reach)| if own { lin } else { 0.0 } + reach[0] * rot[0] + reach[1] * rot[1])
+                .sum();
+            if most < clear.slack - clear.spent - RESOLUTION {
+                clear.spent += most;
+                clear.at = Some(seg.end);
+                return None;
+            }
+            for g in &mut clear.gaps {
+                *g -= clear.spent;
+            }
+        } else {
             clear.gaps.clear();
             clear.gaps.resize(self.pairs.len(), 0.0);
         }
+        clear.spent = 0.0;
         clear.at = None;
         let mut at_end: Option<Vec<(Affine, Placed)>> = None;
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
-            let rate = rates[a] + rates[b];
+            let rate = rate_of(a) + rate_of(b);
             if known && rate < clear.gaps[k] - RESOLUTION {
                 clear.gaps[k] -= rate;
                 continue;
             }
             let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
-            clear.gaps[k] = self.gap(a, &end[a], b, &end[b]).max(0.0);
-            if rate <= 0.0 {
+            let gap = self.gap(a, &end[a], b, &end[b]).max(separation(&end[a].1, &end[b].1));
+            clear.gaps[k] = gap.max(0.0);
+            // Clear along the whole motion when it moves them less than their gap at its end.
+            if rate <= 0.0 || rate < gap - RESOLUTION {
                 continue;
             }
             stack[0] = (0.0, 1.0);
@@ -537,6 +583,7 @@ impl Bodies {
         }
         if best.is_none() {
             clear.at = Some(seg.end);
+            clear.slack = clear.gaps.iter().copied().fold(f64::INFINITY, f64::min);
         }
         best
     }
@@ -577,6 +624,10 @@ impl Bodies {
 pub struct Clearances {
     at: Option<MachineAxes>,
     gaps: Vec<f64>,
+    /// The smallest of `gaps` when they were last brought up to date…
+    slack: f64,
+    /// …and how far any pair may have moved since (`gaps` are that much too large).
+    spent: f64,
 }
 
 impl Clearances {
