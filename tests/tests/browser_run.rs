@@ -83,4 +83,8 @@ async fn a_colliding_swivel_stops_the_run_and_the_why_panel_names_the_free_solut
     assert!(text(&root, ".dialog-line").starts_with("Kollision: "), "{}", text(&root, ".dialog-line"));
     let note = text(&root, "[data-testid=why-alternative]");
     assert!(note.starts_with("Die gewählte Lösung kollidiert (") && note.contains("SEQ+ (A+30"), "{note}");
+    // The position display stands where the machine stopped, on the way from A+0 to A−30.
+    let a = text(&root, ".position [data-axis=A] .ref");
+    let a: f64 = a.parse().unwrap_or_else(|_| panic!("REF A {a:?}"));
+    assert!(a < 0.0 && a > -30.0, "REF A{a}");
 }
