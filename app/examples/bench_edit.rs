@@ -64,15 +64,15 @@ fn main() {
         w = w.start..w.start + text.len();
     });
     // What the views make of it: the 3D view's state at the cursor block, and a part of the
-    // toolpath (`PATH_STEPS` states in `web/src/components/scene_pane.rs`).
+    // toolpath (one checkpoint interval of states, as `web/src/components/scene_pane.rs` makes it).
     let shown = median_ms(20, |_| {
         let _ = s.shown_state();
     });
     let sim = s.sim.clone().expect("a machine");
     let path = median_ms(5, |_| {
-        let _ = sim.0.states_from(&s.doc.program, 0).take(2000).count();
+        let _ = sim.0.states_from(&s.doc.program, 0).take(sim.0.options.checkpoint_interval).count();
     });
     println!(
-        "keystroke in {blocks} blocks (median of 20): Document::replaced {replaced:.2} ms, Simulation::resumed {resumed:.2} ms (broken) {resumed_healed:.2} ms (healed), AppState::apply(EditText) {apply:.2} ms; views: shown_state {shown:.2} ms, 2000 states for the toolpath {path:.2} ms"
+        "keystroke in {blocks} blocks (median of 20): Document::replaced {replaced:.2} ms, Simulation::resumed {resumed:.2} ms (broken) {resumed_healed:.2} ms (healed), AppState::apply(EditText) {apply:.2} ms; views: shown_state {shown:.2} ms, a part of the toolpath {path:.2} ms"
     );
 }

@@ -15,7 +15,7 @@ use schwenkbar_core::sim::{Collision, State};
 use yew::prelude::*;
 
 use super::view3d::{SharedPath, View3d};
-use crate::render::from_sim::{RunPath, scene_during, scene_state, toolpath_part};
+use crate::render::from_sim::{RunPath, extend_path, scene_during, scene_state};
 use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
@@ -55,8 +55,16 @@ pub struct ScenePaneProps {
     pub on_fraction: Callback<f64>,
 }
 
-/// Steps of the toolpath made at a time (a few ms) before the browser gets a turn.
-const PATH_STEPS: usize = 2000;
+/// How long one part of the toolpath may take before the browser gets a turn, ms.
+const PART_MS: f64 = 4.0;
+
+/// Steps of the toolpath made between two looks at the clock.
+const PATH_SLICE: usize = 64;
+
+/// The page's clock, ms (none outside a window: then one slice per part).
+fn now_ms() -> Option<f64> {
+    Some(web_sys::window()?.performance()?.now())
+}
 
 /// Frame interval of the animation, ms.
 const FRAME_MS: u64 = 33;
@@ -89,14 +97,26 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             };
             yew::platform::spawn_local(async move {
                 let mut p = RunPath::default();
-                // Every part after a turn of the browser, the first too: a keystroke's screen
-                // update should not wait for it.
+                // One pass through the run (an iterator kept between the parts: nothing is run
+                // twice), in parts of about PART_MS, every part after a turn of the browser, the
+                // first too: a keystroke's screen update should not wait for it.
+                let mut states = sim.0.states_from(&doc.program, 0);
                 loop {
                     yew::platform::time::sleep(Duration::from_millis(0)).await;
                     if generation.get() != gen_now {
                         return;
                     }
-                    if toolpath_part(&sim.0, &doc.program, &mut p, PATH_STEPS) {
+                    let until = now_ms().map(|t| t + PART_MS);
+                    let all_in = loop {
+                        if extend_path(&sim.0.machine, &mut p, states.by_ref().take(PATH_SLICE)) < PATH_SLICE
+                        {
+                            break true;
+                        }
+                        if until.zip(now_ms()).is_none_or(|(until, now)| now >= until) {
+                            break false;
+                        }
+                    };
+                    if all_in {
                         break;
                     }
                 }

@@ -3,9 +3,8 @@
 //! `core::sim` ([`Kin`]); this only changes frames of reference.
 
 use glam::{DMat3, DQuat};
-use schwenkbar_core::ast::Program;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{Kin, Segment, SegmentKind, SegmentPath, Simulation, State};
+use schwenkbar_core::sim::{Kin, Segment, SegmentKind, SegmentPath, State};
 
 use super::toolpath::PathPoint;
 use schwenkbar_app::scene::{Blank, Frame, MachineAxes, SceneState, Tool};
@@ -88,24 +87,12 @@ fn pieces(seg: &Segment) -> u32 {
     }
 }
 
-/// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
-#[cfg(test)]
-#[must_use]
-pub fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
-    let mut path = RunPath::default();
-    toolpath_part(sim, program, &mut path, usize::MAX);
-    path
-}
-
-/// Adds up to `steps` more steps of the run to `path` (from where it stands); `true` when the
-/// run is all in (a long run is drawn in parts, between frames).
-pub fn toolpath_part(sim: &Simulation, program: &Program, path: &mut RunPath, steps: usize) -> bool {
-    let done = path.segments_after.len();
-    if done >= sim.len() {
-        return true;
-    }
-    for st in sim.states_from(program, done).take(steps) {
-        let kin = Kin::new(&sim.machine, st.tool.length);
+/// Adds `states`, the run's next steps from where `path` stands, to `path` (a long run is drawn
+/// in parts, between frames); how many there were.
+pub fn extend_path(machine: &Machine, path: &mut RunPath, states: impl Iterator<Item = State>) -> usize {
+    let mut count = 0;
+    for st in states {
+        let kin = Kin::new(machine, st.tool.length);
         for seg in &st.segments {
             if path.points.is_empty() {
                 path.points.push(PathPoint { at: kin.tip_wcs(&seg.start), rapid: true });
@@ -118,14 +105,24 @@ pub fn toolpath_part(sim: &Simulation, program: &Program, path: &mut RunPath, st
             }
         }
         path.segments_after.push(path.points.len().saturating_sub(1));
+        count += 1;
     }
-    // A step that cannot be re-run (never after a finished simulation) ends the path there.
-    path.segments_after.len() >= sim.len() || path.segments_after.len() == done
+    count
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use schwenkbar_core::ast::Program;
+    use schwenkbar_core::sim::Simulation;
+
+    /// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
+    fn toolpath(sim: &Simulation, program: &Program) -> RunPath {
+        let mut path = RunPath::default();
+        extend_path(&sim.machine, &mut path, sim.states(program));
+        path
+    }
+
     use glam::{DAffine3, DVec3};
     use schwenkbar_app::document::Document;
     use schwenkbar_app::run::SimRef;
@@ -143,6 +140,27 @@ mod tests {
     fn step_of_block(sim: &Simulation, program: &Program, number: u32) -> usize {
         let block = program.blocks.iter().position(|b| b.number() == Some(number)).expect("block");
         sim.step_of_block(block).expect("executed")
+    }
+
+    /// The scene pane makes the path in parts from one iterator: the parts add up to the whole,
+    /// every step once, and the last part says it was short.
+    #[test]
+    fn the_path_made_in_parts_is_the_whole_path() {
+        let (program, machine, sim) = musterprogramm1();
+        let whole = toolpath(&sim, &program);
+        assert_eq!(whole.segments_after.len(), sim.len());
+        let mut parts = RunPath::default();
+        let mut states = sim.states(&program);
+        let mut counts = Vec::new();
+        loop {
+            let n = extend_path(&machine, &mut parts, states.by_ref().take(5));
+            counts.push(n);
+            if n < 5 {
+                break;
+            }
+        }
+        assert_eq!(parts, whole);
+        assert_eq!(counts.iter().sum::<usize>(), sim.len(), "{counts:?}");
     }
 
     #[test]
