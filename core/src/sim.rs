@@ -329,24 +329,6 @@ impl State {
         let ics_in_wcs = self.frames.wcs.axes.transpose() * self.frames.ics.axes;
         self.tip_ics + ics_in_wcs.transpose() * travel_wcs
     }
-
-    /// The state as the position display shows it when the motion stopped at `axes` (a
-    /// collision): REF there, IST in this state's plane ([`State::tip_ics_with`]), the tip
-    /// there, and no motion left to show. The frames and pivots stay this state's: it is for
-    /// the display, not for drawing the machine.
-    #[must_use]
-    pub fn stopped_at(&self, machine: &Machine, axes: &MachineAxes) -> State {
-        let kin = Kin::new(machine, self.tool.length);
-        State {
-            axes: *axes,
-            tip_ics: self.tip_ics_with(machine, axes),
-            tip_mcs: kin.tip_mcs(axes),
-            tip_wcs: kin.tip_wcs(axes),
-            tool_axis_mcs: kin.tool_axis_mcs(axes.rotary),
-            segments: Vec::new(),
-            ..self.clone()
-        }
-    }
 }
 
 /// Key of the label table.

@@ -152,8 +152,8 @@ pub fn app(props: &AppProps) -> Html {
                         typing={state.text_editing} />
                     }
                     <div class="side">
-                        if let Some(position) = state.shown_position().map(StateRef) {
-                            <PositionDisplay state={position} lang={l} machine={state.machine.clone()} fraction={*fraction} />
+                        if let Some(shown) = shown.clone() {
+                            <PositionDisplay state={shown} stopped={state.stop_position()} lang={l} machine={state.machine.clone()} fraction={*fraction} />
                         }
                         <WhyPanel doc={DocRef(state.doc.clone())} cursor={state.cursor} machine={state.machine.clone()}
                             sim={state.sim.clone()} shown={shown} lang={l} {on_hover} />

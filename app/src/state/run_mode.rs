@@ -3,9 +3,10 @@
 
 use std::rc::Rc;
 
+use glam::DVec3;
 use schwenkbar_core::machine::{Carrier, Machine};
 use schwenkbar_core::plane::Positioning;
-use schwenkbar_core::sim::{Collision, Simulation, State};
+use schwenkbar_core::sim::{Collision, MachineAxes, Simulation, State};
 use schwenkbar_core::{BlockBody, Program};
 
 use super::{Action, AppState};
@@ -84,16 +85,14 @@ impl AppState {
         self.sim.as_ref()?.0.collision()
     }
 
-    /// The state the position display shows in a run: the run's step, or where the machine
-    /// stopped on a collision (REF at the contact, [`State::stopped_at`]), not the last
-    /// finished step.
+    /// Where the position display stands while the run stands at a collision: REF at the
+    /// contact and IST in the plane still active then ([`State::tip_ics_with`]), not the last
+    /// finished block.
     #[must_use]
-    pub fn shown_position(&self) -> Option<Rc<State>> {
-        let state = self.run.as_ref()?.state.clone()?;
-        match (self.shown_collision(), &self.machine) {
-            (Some(c), Some(m)) => Some(Rc::new(state.stopped_at(m, &c.axes))),
-            _ => Some(state),
-        }
+    pub fn stop_position(&self) -> Option<(MachineAxes, DVec3)> {
+        let c = self.shown_collision()?;
+        let state = self.run.as_ref()?.state.as_ref()?;
+        Some((c.axes, state.tip_ics_with(self.machine.as_ref()?, &c.axes)))
     }
 
     /// Applies `f` to the open run with the simulation and program, then moves the cursor along.

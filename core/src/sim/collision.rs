@@ -121,27 +121,37 @@ pub fn touch(a: &Placed, b: &Placed, margin: f64) -> bool {
 /// Separating-axis test of two boxes with a margin: `false` if some axis separates them by more
 /// than `margin`.
 fn obb_obb(a: &Obb, b: &Obb, margin: f64) -> bool {
-    !obb_axes(a, b).any(|gap| gap > margin)
+    obb_gap(a, b) <= margin
 }
 
-/// The gaps between the projections of two boxes on the 15 separating-axis candidates (unit
-/// axes; Ericson §4.4.1), negative where they overlap. Projecting on a unit axis shortens no
-/// distance, so each gap is a lower bound on the boxes' distance.
-fn obb_axes<'a>(a: &'a Obb, b: &'a Obb) -> impl Iterator<Item = f64> + 'a {
+/// The widest gap between the projections of two boxes on the 15 separating-axis candidates
+/// (unit axes; Ericson §4.4.1), negative when they overlap on all. Projecting on a unit axis
+/// shortens no distance, so it is a lower bound on the boxes' distance. A NaN gap counts as
+/// none (the pair is then not called apart).
+fn obb_gap(a: &Obb, b: &Obb) -> f64 {
     let t = b.center - a.center;
     let ax = [a.axes.x_axis, a.axes.y_axis, a.axes.z_axis];
     let bx = [b.axes.x_axis, b.axes.y_axis, b.axes.z_axis];
-    let gap = move |l: DVec3| {
+    let gap = |l: DVec3| {
         let ra =
             a.half.x * ax[0].dot(l).abs() + a.half.y * ax[1].dot(l).abs() + a.half.z * ax[2].dot(l).abs();
         let rb =
             b.half.x * bx[0].dot(l).abs() + b.half.y * bx[1].dot(l).abs() + b.half.z * bx[2].dot(l).abs();
         t.dot(l).abs() - ra - rb
     };
-    // Parallel edges give no new axis (the face axes cover them).
-    let edges =
-        ax.into_iter().flat_map(move |u| bx.into_iter().filter_map(move |v| u.cross(v).try_normalize()));
-    ax.into_iter().chain(bx).chain(edges).map(gap)
+    let mut widest = f64::NEG_INFINITY;
+    for k in 0..3 {
+        widest = widest.max(gap(ax[k])).max(gap(bx[k]));
+    }
+    for u in ax {
+        for v in bx {
+            // Parallel edges give no new axis (the face axes cover them).
+            if let Some(l) = u.cross(v).try_normalize() {
+                widest = widest.max(gap(l));
+            }
+        }
+    }
+    widest
 }
 
 /// A lower bound on the distance of two placed bodies (0 or less when they may touch): the
@@ -155,7 +165,7 @@ pub fn separation(a: &Placed, b: &Placed) -> f64 {
         Placed::Cylinder { bound, .. } => bound,
     };
     let (oa, ob) = (boxed(a), boxed(b));
-    let sat = obb_axes(&oa, &ob).fold(f64::NEG_INFINITY, f64::max);
+    let sat = obb_gap(&oa, &ob);
     match (a, b) {
         (Placed::Cylinder { capsule: c, .. }, Placed::Cylinder { capsule: d, .. }) => {
             sat.max(segment_segment_distance(c.a, c.b, d.a, d.b) - c.radius - d.radius)

@@ -4,8 +4,9 @@
 
 use std::rc::Rc;
 
+use glam::DVec3;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{ActiveTransform, Level, SpindleDir, State};
+use schwenkbar_core::sim::{ActiveTransform, Level, MachineAxes, SpindleDir, State};
 use yew::prelude::*;
 
 use schwenkbar_app::run::StateRef;
@@ -21,6 +22,11 @@ pub struct PositionProps {
     /// Where in the block's motion the 3D view stands (1 = its end).
     #[prop_or(1.0)]
     pub fraction: f64,
+    /// REF and IST where a collision stopped the machine ([`AppState::stop_position`]).
+    ///
+    /// [`AppState::stop_position`]: schwenkbar_app::state::AppState::stop_position
+    #[prop_or_default]
+    pub stopped: Option<(MachineAxes, DVec3)>,
 }
 
 fn signed(x: f64) -> String {
@@ -72,8 +78,11 @@ pub fn position_display(props: &PositionProps) -> Html {
     let l = props.lang;
     let s = &props.state;
     // During the block's motion (animation or the scrub slider) both columns follow it.
-    let (axes, tip) = match &props.machine {
-        Some(m) if props.fraction < 1.0 => (s.axes_at(props.fraction), s.tip_ics_at(m, props.fraction)),
+    let (axes, tip) = match (props.stopped, &props.machine) {
+        (Some(stop), _) => stop,
+        (None, Some(m)) if props.fraction < 1.0 => {
+            (s.axes_at(props.fraction), s.tip_ics_at(m, props.fraction))
+        }
         _ => (s.axes, s.tip_ics),
     };
     let ist = [tip.x, tip.y, tip.z];
