@@ -8,26 +8,7 @@ use schwenkbar_app::scene::{MachineAxes, SceneState};
 use schwenkbar_app::state::{Action, AppState};
 use schwenkbar_app::why::for_block;
 use schwenkbar_core::sim::collision::{RESOLUTION, touch};
-
-/// On `ac-table`: a 100 mm tool 5 mm above the rotary table's face beside the blank, then a
-/// swivel (core/tests/collision.rs: SEQ− lifts the table's rim into the tool, SEQ+ lowers it).
-fn program(swivel: &str) -> String {
-    let blocks = [
-        "BLK FORM 0.1 Z X+0 Y+0 Z-40",
-        "BLK FORM 0.2 X+100 Y+100 Z+0",
-        "TOOL CALL 1 Z S3000 DL+20",
-        "L Z+0 R0 FMAX M91",
-        "L X+50 Y+110 R0 FMAX",
-        "L Z-45 R0 FMAX",
-        swivel,
-    ];
-    let mut text = String::from("0 BEGIN PGM T MM\n");
-    for (i, b) in blocks.iter().enumerate() {
-        text.push_str(&format!("{} {b}\n", i + 1));
-    }
-    text.push_str("8 END PGM T MM\n");
-    text
-}
+use schwenkbar_testkit::collision::{SEQ_MINUS_SWIVEL, program};
 
 fn then(s: &AppState, a: Action) -> AppState {
     s.apply(a).0
@@ -47,7 +28,7 @@ fn run_to_the_end(swivel: &str) -> AppState {
 
 #[test]
 fn a_run_stopped_by_a_collision_shows_the_moment_of_contact_with_the_pair_and_the_free_solution() {
-    let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-");
+    let s = run_to_the_end(SEQ_MINUS_SWIVEL);
     assert!(s.run.as_ref().is_some_and(|r| r.stopped_by_error), "{:?}", s.sim.as_ref().map(|x| &x.0.error));
     let c = s.shown_collision().expect("the run stopped on a collision").clone();
     let machine = s.machine.clone().expect("machine");
@@ -81,7 +62,7 @@ fn a_run_stopped_by_a_collision_shows_the_moment_of_contact_with_the_pair_and_th
 /// tilt is active yet, so the control leaves X, Y, Z where they were (3-axis behaviour).
 #[test]
 fn the_position_display_at_the_stop_shows_where_the_machine_stands() {
-    let s = run_to_the_end("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-");
+    let s = run_to_the_end(SEQ_MINUS_SWIVEL);
     let c = s.shown_collision().expect("the run stopped on a collision").clone();
     let before = s.shown_state().expect("the last finished step");
     let (axes, ist) = s.stop_position().expect("stands at the stop");
@@ -91,7 +72,7 @@ fn the_position_display_at_the_stop_shows_where_the_machine_stands() {
     assert!((ist - before.tip_ics).length() < 1e-9, "{ist} vs {}", before.tip_ics);
     // Before the stop the display shows the run's step itself.
     let mut running = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
-    running = then(&running, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    running = then(&running, Action::SetText(program(SEQ_MINUS_SWIVEL)));
     running = then(&running, Action::StartRun);
     assert!(running.run.as_ref().is_some_and(|r| r.state.is_some()));
     assert!(running.shown_collision().is_none() && running.stop_position().is_none());
@@ -116,7 +97,7 @@ fn a_collision_without_a_free_solution_has_no_ghost_and_no_note() {
 #[test]
 fn before_the_run_reaches_the_collision_nothing_is_marked() {
     let mut s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
-    s = then(&s, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    s = then(&s, Action::SetText(program(SEQ_MINUS_SWIVEL)));
     assert!(s.shown_collision().is_none(), "programming: the run has not stopped");
     let s = then(&s, Action::StartRun);
     assert!(s.shown_collision().is_none(), "the run stands at its first block");
@@ -132,7 +113,7 @@ fn before_the_run_reaches_the_collision_nothing_is_marked() {
 fn a_link_to_a_run_that_stops_on_the_way_opens_at_the_stop() {
     let open = |block: usize| {
         let shared = Shared {
-            program: program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-"),
+            program: program(SEQ_MINUS_SWIVEL),
             block,
             machine: Some("ac-table".into()),
             own_machine: None,
@@ -159,7 +140,7 @@ fn a_link_to_a_run_that_stops_on_the_way_opens_at_the_stop() {
 #[test]
 fn nc_start_on_the_refused_block_stands_at_the_stop() {
     let s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
-    let s = then(&s, Action::SetText(program("PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-")));
+    let s = then(&s, Action::SetText(program(SEQ_MINUS_SWIVEL)));
     let at = |cursor: usize| then(&then(&s, Action::CursorTo(cursor)), Action::StartRun);
     let refused = at(7);
     assert!(refused.run.as_ref().is_some_and(|r| r.stopped_by_error) && refused.cursor == 7);

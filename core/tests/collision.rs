@@ -12,6 +12,7 @@ use schwenkbar_core::sim::collision::{
     touch,
 };
 use schwenkbar_core::sim::{Collision, SegmentKind, SimOptions, Simulation, simulate};
+use schwenkbar_testkit::collision::{LOW_TOOL, SEQ_MINUS_SWIVEL};
 
 /// Runs `body` (the blocks between BEGIN and END PGM, numbered from 1) on `ac-table`.
 fn run(body: &[&str]) -> (Simulation, String) {
@@ -39,12 +40,12 @@ fn collision_at(sim: &Simulation, text: &str, number: usize) -> Collision {
 /// Z−150).
 const BLANK: [&str; 2] = ["BLK FORM 0.1 Z X+0 Y+0 Z-40", "BLK FORM 0.2 X+100 Y+100 Z+0"];
 
-/// A tool 100 mm long (tool 1, L80 R5, DL+20) with its tip 5 mm above the table's face, beside
-/// the blank at M-CS Y+60, then `swivel`. Tilting A− lifts the +Y side of the table: its rim
-/// (M-CS Y+50 Z−210, 78 mm from the A axis) swings through the tool (Y 55…65, Z −205…−140).
+/// The shared scene ([`schwenkbar_testkit::collision`]): a tool 100 mm long with its tip 5 mm
+/// above the table's face, beside the blank at M-CS Y+60, then `swivel`. Tilting A− lifts the +Y
+/// side of the table: its rim (M-CS Y+50 Z−210, 78 mm from the A axis) swings through the tool
+/// (Y 55…65, Z −205…−140).
 fn low_tool_then(retract: Option<&str>, swivel: &str) -> (Simulation, String, usize) {
-    let mut body: Vec<&str> = BLANK.to_vec();
-    body.extend(["TOOL CALL 1 Z S3000 DL+20", "L Z+0 R0 FMAX M91", "L X+50 Y+110 R0 FMAX", "L Z-45 R0 FMAX"]);
+    let mut body: Vec<&str> = LOW_TOOL.to_vec();
     body.extend(retract);
     body.push(swivel);
     let n = body.len();
@@ -117,7 +118,7 @@ fn a_collision_only_in_the_middle_of_a_rotary_move_is_found() {
 /// which stay clear of the holder). SEQ− picks the colliding one; the error names the other.
 #[test]
 fn the_other_solution_is_named_when_its_swivel_is_free() {
-    let (sim, text, n) = low_tool_then(None, "PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-");
+    let (sim, text, n) = low_tool_then(None, SEQ_MINUS_SWIVEL);
     let c = collision_at(&sim, &text, n);
     let alt = c.alternative.as_ref().unwrap_or_else(|| panic!("no alternative: {c:?}"));
     assert_eq!(alt.word, "SEQ+");

@@ -1,11 +1,13 @@
 //! Test helpers shared by the workspace's tests (a dev-dependency of core, cli and tests):
 //! [`assert_close!`], the one approx-equality assertion, and [`seq_sym`], the reader of the
-//! seed's SEQ/SYM table `tests/fixtures/oracles/seq_sym.tsv`.
+//! seed's SEQ/SYM table `tests/fixtures/oracles/seq_sym.tsv`, and [`collision::program`], the
+//! collision scene of issue 17.
 //!
 //! The crate does not depend on `schwenkbar-core`: core's unit tests use it too, and a testkit
 //! built on core would hand them a second copy of core's types. So it speaks plain numbers and
 //! strings; each test turns them into core's types itself.
 
+pub mod collision;
 pub mod seq_sym;
 
 use std::path::Path;

@@ -253,24 +253,10 @@ fn corners_of(p: &Placed) -> [Vec3; 8] {
     })
 }
 
-/// The trainer on `ac-table` run until it stops: a 100 mm tool 5 mm above the rotary table's
-/// face beside the blank, then a swivel whose SEQ− solution lifts the table's rim into the tool
-/// (the program of app/tests/collision_view.rs).
+/// The trainer on `ac-table` run until it stops on the shared collision scene
+/// ([`schwenkbar_testkit::collision`]).
 fn run_into_a_collision() -> AppState {
-    let blocks = [
-        "BLK FORM 0.1 Z X+0 Y+0 Z-40",
-        "BLK FORM 0.2 X+100 Y+100 Z+0",
-        "TOOL CALL 1 Z S3000 DL+20",
-        "L Z+0 R0 FMAX M91",
-        "L X+50 Y+110 R0 FMAX",
-        "L Z-45 R0 FMAX",
-        "PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-",
-    ];
-    let mut text = String::from("0 BEGIN PGM T MM\n");
-    for (i, b) in blocks.iter().enumerate() {
-        text.push_str(&format!("{} {b}\n", i + 1));
-    }
-    text.push_str("8 END PGM T MM\n");
+    let text = schwenkbar_testkit::collision::program(schwenkbar_testkit::collision::SEQ_MINUS_SWIVEL);
     let then = |s: &AppState, a: Action| s.apply(a).0;
     let mut s = then(&AppState::default(), Action::SelectMachine("ac-table".into()));
     s = then(&s, Action::SetText(text));

@@ -69,13 +69,8 @@ async fn a_colliding_swivel_stops_the_run_and_the_why_panel_names_the_free_solut
     let root = mount().await;
     // On ac-table: a long tool low beside the blank; SEQ− lifts the table's rim into it
     // (core/tests/collision.rs), SEQ+ would lower it.
-    paste_program(
-        &root,
-        "0 BEGIN PGM T MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
-         3 TOOL CALL 1 Z S3000 DL+20\n4 L Z+0 R0 FMAX M91\n5 L X+50 Y+110 R0 FMAX\n6 L Z-45 R0 FMAX\n\
-         7 PLANE SPATIAL SPA-30 SPB+0 SPC+0 TURN FMAX SEQ-\n8 END PGM T MM\n",
-    )
-    .await;
+    let collision = schwenkbar_testkit::collision::program(schwenkbar_testkit::collision::SEQ_MINUS_SWIVEL);
+    paste_program(&root, &collision).await;
     click(&root, "[data-key=run]").await;
     for _ in 0..10 {
         click(&root, "[data-key=run-next]").await;
