@@ -1,0 +1,134 @@
+//! The blocks that set the machine up rather than move it: `BLK FORM`, `TOOL CALL`, the datum
+//! shift and mirroring, and the collision bodies the blank and the tool change.
+
+use super::*;
+
+impl Interp {
+    /// The collision bodies for the machine, the active tool and the blank.
+    pub(super) fn rebuild_bodies(&mut self, machine: &Machine) {
+        self.bodies = Bodies::new(machine, &self.kin, self.tool.radius, self.blank.as_ref()).map(Arc::new);
+        self.clearances.forget();
+    }
+
+    /// The collision error of `seg` if two bodies touch along it (`clear`: what is known from
+    /// the motions before).
+    pub(super) fn collided(&self, seg: &Segment, clear: &mut Clearances) -> Option<Collision> {
+        let bodies = self.bodies.as_deref()?;
+        let c = bodies.first_contact(seg, clear)?;
+        Some(Collision {
+            a: bodies.name(c.a),
+            b: bodies.name(c.b),
+            kind: seg.kind,
+            fraction: c.fraction,
+            axes: seg.axes_at(c.fraction),
+            alternative: None,
+        })
+    }
+
+    pub(super) fn blk_form(&mut self, cx: &Cx<'_>, b: &BlkForm) -> R<()> {
+        let base = if b.part == 2 { self.blank_min.unwrap_or(DVec3::ZERO) } else { DVec3::ZERO };
+        let mut p = if b.part == 2 { base } else { DVec3::ZERO };
+        for w in b.axes.iter() {
+            if let Some(i) = linear_index(w.axis) {
+                let v = self.value(&w.value)?;
+                p[i] = if w.incremental { base[i] + v } else { v };
+            }
+        }
+        if b.part == 2 {
+            let min = self.blank_min.unwrap_or(DVec3::ZERO);
+            self.blank = Some(Blank { min: min.min(p), max: min.max(p) });
+            self.rebuild_bodies(cx.machine);
+        } else {
+            self.blank_min = Some(p);
+        }
+        Ok(())
+    }
+
+    pub(super) fn tool_call(&mut self, cx: &Cx<'_>, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
+        self.tcpm_reset_before("TOOL CALL")?;
+        let dl = t.dl.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
+        let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
+        if let Some(tool) = &t.tool {
+            let (entry, known) = tools::lookup(tool);
+            self.tool.shape = entry.shape(entry.radius + dr);
+            self.tool.number = entry.number;
+            self.tool.name = entry.name;
+            self.tool.length = entry.length + dl;
+            self.tool.radius = entry.radius + dr;
+            self.tool.known = known;
+            if !known {
+                let (n, l, r) = (self.tool.number, self.tool.length, self.tool.radius);
+                note(rec, || {
+                    Text::owned(
+                        format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
+                        format!("Tool {n} not in the tool table: assuming L={l} R={r}"),
+                    )
+                });
+            }
+        }
+        if let Some(a) = t.axis {
+            self.tool.axis = letter(a);
+            if a != Axis::Z {
+                let c = self.tool.axis;
+                note(rec, || {
+                    Text::owned(
+                        format!("Werkzeugachse {c}: simuliert wird mit Werkzeugachse Z"),
+                        format!("Tool axis {c}: simulated with tool axis Z"),
+                    )
+                });
+            }
+        }
+        if let Some(s) = &t.speed {
+            self.spindle.speed = self.value(s)?;
+        }
+        if let Some(f) = &t.feed {
+            let f = self.value(f)?;
+            self.tool.feed = f;
+            self.feed = f;
+        }
+        self.kin.tool_length = self.tool.length;
+        self.rebuild_bodies(cx.machine);
+        self.sync_pos();
+        Ok(())
+    }
+
+    /// The new datum shift from the written components ([`unconfirmed::DATUM_ABSOLUTE_REPLACES`]):
+    /// with an absolute word the axes not written are 0, with only incremental words they keep
+    /// the base.
+    pub(super) fn datum_of(base: DVec3, written: [Option<f64>; 3], any_absolute: bool) -> DVec3 {
+        let keep = !(any_absolute && unconfirmed::DATUM_ABSOLUTE_REPLACES);
+        DVec3::from_array(std::array::from_fn(|i| written[i].unwrap_or(if keep { base[i] } else { 0.0 })))
+    }
+
+    pub(super) fn datum(&mut self, axes: &[AxisWord]) -> R<()> {
+        let level = self.tf.level_now();
+        let base = match level {
+            Level::Wcs => self.tf.datum_w,
+            Level::Wpl => self.tf.datum_i,
+        };
+        let mut written = [None; 3];
+        let mut any_absolute = false;
+        for w in axes {
+            if let Some(i) = linear_index(w.axis) {
+                let v = self.value(&w.value)?;
+                written[i] = Some(if w.incremental { base[i] + v } else { v });
+                any_absolute |= !w.incremental;
+            }
+        }
+        let d = Self::datum_of(base, written, any_absolute);
+        match level {
+            Level::Wcs => self.tf.datum_w = d,
+            Level::Wpl => self.tf.datum_i = d,
+        }
+        self.sync_pos();
+        Ok(())
+    }
+
+    pub(super) fn set_mirror(&mut self, set: [bool; 3]) {
+        match self.tf.level_now() {
+            Level::Wcs => self.tf.mirror_w = set,
+            Level::Wpl => self.tf.mirror_i = set,
+        }
+        self.sync_pos();
+    }
+}
