@@ -116,8 +116,8 @@ pub fn for_block(
 }
 
 fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
-    let [a, b, c] = e.spatial;
-    let [pr, nu, rot] = e.euler;
+    let [a, b, c] = e.spatial();
+    let [pr, nu, rot] = e.euler();
     let [tx, ty, tz] = e.tool_axis;
     let candidates = e
         .candidates
@@ -164,7 +164,7 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
 /// auf +15°."
 fn plain_words(e: &Explanation, l: Lang) -> String {
     let Some(chosen) = e.chosen_axes() else { return String::new() };
-    let [spa, spb, _] = e.spatial;
+    let [spa, spb, _] = e.spatial();
     let on_machine = |axis: RotaryAxis| e.master == axis || e.slave == axis;
     let missing = match (spa.abs() > 1e-9, spb.abs() > 1e-9) {
         (true, false) if !on_machine(RotaryAxis::A) => Some('A'),

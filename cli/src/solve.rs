@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use glam::DMat3;
 use schwenkbar_core::Lang;
 use schwenkbar_core::axes::AxisValues;
-use schwenkbar_core::machine::Limits;
+use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::number::tidy;
 use schwenkbar_core::parse::{self, PlaneTextError};
 use schwenkbar_core::plane::{PlaneBlock, RotaryAxis};
@@ -66,13 +66,13 @@ fn r_axes(a: AxisValues) -> AxisValues {
     AxisValues { a: a.a.map(r), b: a.b.map(r), c: a.c.map(r) }
 }
 
-fn output(e: &Explanation, lang: Lang) -> Output {
+fn output(machine: &Machine, e: &Explanation, lang: Lang) -> Output {
     Output {
-        machine: e.machine.clone(),
+        machine: machine.id.clone(),
         orientation: e.orientation.map(|row| row.map(r)),
         tool_axis: e.tool_axis.map(r),
-        spatial: e.spatial.map(r),
-        euler: e.euler.map(r),
+        spatial: e.spatial().map(r),
+        euler: e.euler().map(r),
         candidates: e
             .candidates
             .iter()
@@ -152,7 +152,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         Ok(e) => e,
         Err(pe) => return fail(pe.message().get(lang)),
     };
-    match serde_json::to_string(&output(&e, lang)) {
+    match serde_json::to_string(&output(&machine, &e, lang)) {
         Ok(json) => println!("{json}"),
         Err(err) => return fail(&err.to_string()),
     }

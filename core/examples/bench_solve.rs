@@ -1,4 +1,5 @@
-//! Solves per second from an orientation to the chosen axis positions, explanation included.
+//! Solves per second from an orientation to the chosen axis positions, explanation included
+//! (its SPATIAL and EULER forms of R are made when asked for, `Explanation::spatial`/`euler`).
 //! Budget (issue 4): ≥ 1,000,000 solves/s natively in release.
 //!
 //! Run: `cargo run --release -p schwenkbar-core --example bench_solve`

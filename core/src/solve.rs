@@ -141,11 +141,8 @@ fn candidate(s: &AxisCtx, m: &AxisCtx, slave: f64, master: f64, residual: f64) -
 fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase) -> Explanation {
     let t = orientation::tool_axis(r);
     Explanation {
-        machine: machine.id.clone(),
         orientation: orientation::rows(r),
         tool_axis: t.to_array().map(clean),
-        spatial: orientation::to_spatial(r),
-        euler: orientation::to_euler(r),
         master: machine.master().axis,
         slave: machine.slave().axis,
         symmetry_point: kinematics::symmetry_point(machine),
@@ -162,6 +159,7 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
         residual: None,
         q: QValues::default(),
         decisions: Vec::new(),
+        rotation: *r,
     }
 }
 
@@ -382,14 +380,16 @@ fn choose_selected(mut e: Explanation, sel: Selection) -> Explanation {
         };
         (d > 0.0 || (d == 0.0 && unconfirmed::ZERO_COUNTS_AS_PLUS), d == 0.0)
     };
-    let mut on_side = Vec::with_capacity(2);
+    // At most two candidates: the indices on the asked side, without a heap allocation.
+    let (mut on_side, mut n) = ([0usize; 2], 0);
     for (i, c) in e.candidates.iter_mut().enumerate() {
         let (plus, zero) = side(c.master);
         if zero && !e.decisions.contains(&Decision::ZeroIsPlus) {
             e.decisions.push(Decision::ZeroIsPlus);
         }
         if plus == (sign == Sign::Plus) {
-            on_side.push(i);
+            on_side[n] = i;
+            n += 1;
         } else {
             c.excluded = Some(Exclusion::WrongSide { selection: sel });
         }
@@ -399,7 +399,7 @@ fn choose_selected(mut e: Explanation, sel: Selection) -> Explanation {
         Selection::Seq(sign) => Rule::Seq { sign, master },
         Selection::Sym(sign) => Rule::Sym { sign, master, symmetry_point: e.symmetry_point },
     };
-    if on_side.is_empty() {
+    if n == 0 {
         let values = [e.candidates[0].master, e.candidates[1].master];
         return finish(
             e,
@@ -408,20 +408,25 @@ fn choose_selected(mut e: Explanation, sel: Selection) -> Explanation {
             Some(SolveError::NoSolutionOnSide { selection: sel, master, values }),
         );
     }
-    let rule = match (sel, on_side.len()) {
+    let rule = match (sel, n) {
         (Selection::Seq(sign), 2) => {
             e.decisions.push(Decision::SeqSameSide);
             if !unconfirmed::SEQ_NEAREST_BEFORE_LIMITS {
-                on_side.retain(|&i| e.candidates[i].in_limits);
+                let both = on_side;
+                n = 0;
+                for i in both.into_iter().filter(|&i| e.candidates[i].in_limits) {
+                    on_side[n] = i;
+                    n += 1;
+                }
             }
             Rule::SeqNearer { sign, master }
         }
         _ => rule_one,
     };
-    if on_side.is_empty() {
+    if n == 0 {
         return finish(e, rule, None, Some(SolveError::NoSolutionInLimits { candidates: 2 }));
     }
-    let (pick, _) = nearest(&mut e, &on_side);
+    let (pick, _) = nearest(&mut e, &on_side[..n]);
     match e.candidates[pick].violation {
         Some(v) => {
             e.candidates[pick].excluded = Some(Exclusion::OutOfLimits(v));
@@ -433,21 +438,24 @@ fn choose_selected(mut e: Explanation, sel: Selection) -> Explanation {
 
 /// No selection: limits, then shortest path (DOMAIN.md §3.3 steps 1–4, seed S2).
 fn choose_free(mut e: Explanation) -> Explanation {
-    let mut inside = Vec::with_capacity(2);
+    let (mut inside, mut n) = ([0usize; 2], 0);
     for (i, c) in e.candidates.iter_mut().enumerate() {
         match c.violation {
             Some(v) => c.excluded = Some(Exclusion::OutOfLimits(v)),
-            None => inside.push(i),
+            None => {
+                inside[n] = i;
+                n += 1;
+            }
         }
     }
-    match inside.len() {
+    match n {
         0 => {
             let n = e.candidates.len();
             finish(e, Rule::NoneInLimits, None, Some(SolveError::NoSolutionInLimits { candidates: n }))
         }
         1 => finish(e, Rule::OnlyInLimits, Some(inside[0]), None),
         _ => {
-            let (pick, tie) = nearest(&mut e, &inside);
+            let (pick, tie) = nearest(&mut e, &inside[..n]);
             let rule = if tie { Rule::Tie { master: e.master } } else { Rule::ShortestPath };
             finish(e, rule, Some(pick), None)
         }

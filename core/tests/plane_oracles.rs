@@ -305,7 +305,7 @@ fn oracle_29_residual_rotation() {
     );
     // For the A ≥ 0 solution, C = EULPR, A = EULNU, γ = EULROT (DOMAIN.md §3.2).
     let c = e.candidates.iter().find(|c| c.master > 0.0).unwrap();
-    let eul = e.euler;
+    let eul = e.euler();
     assert_close!([c.slave, c.master, c.residual.rem_euclid(360.0)], eul, ORACLE);
 }
 

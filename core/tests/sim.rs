@@ -269,7 +269,7 @@ fn mirror_before_the_tilt_mirrors_the_spatial_angles() {
     let s6 = after(&p, &sim, 6);
     let plane = s6.plane.as_ref().expect("tilted");
     assert_close!(plane.spatial, [0.0, -15.0, 0.0], EXACT, "mirror X turns SPB+15 into SPB-15");
-    assert_close!(s6.explanation.as_ref().expect("explanation").spatial, [0.0, -15.0, 0.0], EXACT);
+    assert_close!(s6.explanation.as_ref().expect("explanation").spatial(), [0.0, -15.0, 0.0], EXACT);
     let zero = AxisValues::default().with(RotaryAxis::A, 0.0).with(RotaryAxis::C, 0.0);
     let want = solver_axes(&m, 0.0, -15.0, 0.0, zero);
     assert_close!(s6.axes.rotary_values().c.expect("C"), want.c.expect("C"), EXACT);

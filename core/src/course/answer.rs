@@ -261,7 +261,7 @@ pub(super) fn check_value(answer: &Answer, c: &ValueCheck) -> Verdict {
         return Verdict::Wrong { hint: Hint::Stay, text: stay_hint(c.kind, c.computed().is_some_and(is)) };
     }
     if c.sign_flipped.is_some_and(is) {
-        let about = c.decider.as_deref().map_or([true; 3], |e| super::orientation::non_zero(e.spatial));
+        let about = c.decider.as_deref().map_or([true; 3], |e| super::orientation::non_zero(e.spatial()));
         return Verdict::Wrong { hint: Hint::RightHand, text: super::orientation::right_hand_hint(about) };
     }
     Verdict::Wrong {

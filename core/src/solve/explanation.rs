@@ -1,12 +1,14 @@
 //! What the solver returns: the candidates, the rule that decided, the control's error and
 //! the texts the "why" panel shows for them.
 
+use glam::DMat3;
 use serde::Serialize;
 
 use super::words::{axis_word, fmt_deg, selection_word, sign_char};
 use crate::axes::AxisValues;
 use crate::lang::Text;
 use crate::machine::Limits;
+use crate::orientation;
 use crate::plane::{RotaryAxis, Selection, Sign, TransformMode};
 use crate::unconfirmed::{self, Decision};
 
@@ -306,14 +308,9 @@ pub struct QValues {
 /// Everything the solver did, for the UI ("why the machine does this") and the CLI.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Explanation {
-    pub machine: String,
     /// Target orientation R, row by row.
     pub orientation: [[f64; 3]; 3],
     pub tool_axis: [f64; 3],
-    /// The same orientation as `PLANE SPATIAL SPA SPB SPC`.
-    pub spatial: [f64; 3],
-    /// The same orientation as `PLANE EULER EULPR EULNU EULROT`.
-    pub euler: [f64; 3],
     pub master: RotaryAxis,
     pub slave: RotaryAxis,
     /// Master value where the two solutions mirror ([`kinematics::symmetry_point`]).
@@ -336,9 +333,31 @@ pub struct Explanation {
     pub q: QValues,
     /// The UNCONFIRMED decisions that influenced this result.
     pub decisions: Vec<Decision>,
+    /// R itself, for [`Self::spatial`] and [`Self::euler`].
+    #[serde(skip)]
+    pub(crate) rotation: DMat3,
 }
 
 impl Explanation {
+    /// The target orientation R, as solved (`orientation` is its rows, cleaned for display).
+    #[must_use]
+    pub fn rotation(&self) -> DMat3 {
+        self.rotation
+    }
+
+    /// The same orientation as `PLANE SPATIAL SPA SPB SPC`: made when the why panel asks, not by
+    /// every solve (three of a solve's twelve `atan2`).
+    #[must_use]
+    pub fn spatial(&self) -> [f64; 3] {
+        orientation::to_spatial(&self.rotation())
+    }
+
+    /// The same orientation as `PLANE EULER EULPR EULNU EULROT`, on request like [`Self::spatial`].
+    #[must_use]
+    pub fn euler(&self) -> [f64; 3] {
+        orientation::to_euler(&self.rotation())
+    }
+
     /// The chosen axis values, if any.
     #[must_use]
     pub fn chosen_axes(&self) -> Option<AxisValues> {
