@@ -46,16 +46,22 @@ async fn key_press_latency_musterprogramm_1_and_100000_blocks() {
 fn parser_throughput_in_wasm() {
     let program = schwenkbar_core::sample::cam_program(200_000);
     let mb = program.len() as f64 / 1e6;
-    let mut best = f64::INFINITY;
-    for _ in 0..3 {
+    // V8 runs a wasm function in its baseline compiler until the optimising one has compiled it
+    // in the background, and a call already running stays in the baseline code: the first parse
+    // is the cold figure, the best of the later ones the steady one that native is compared with.
+    let mut times = Vec::new();
+    for _ in 0..8 {
         let t0 = now();
         let (parsed, diagnostics) = schwenkbar_core::parse(&program);
-        best = best.min(now() - t0);
+        times.push(now() - t0);
         assert_eq!(parsed.blocks.len(), 200_000);
         assert!(diagnostics.is_empty());
     }
+    let best = times.iter().copied().fold(f64::INFINITY, f64::min);
     console_log!(
-        "BENCH parser in wasm32 (Chromium): {mb:.1} MB in {best:.0} ms = {:.0} MB/s",
+        "BENCH parser in wasm32 (Chromium): {mb:.1} MB, first parse {:.0} ms = {:.0} MB/s, best of 8 {best:.0} ms = {:.0} MB/s",
+        times[0],
+        mb / (times[0] / 1000.0),
         mb / (best / 1000.0)
     );
 }
