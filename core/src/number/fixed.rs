@@ -47,12 +47,13 @@ pub fn fixed_ascii(buf: &mut [u8; FIXED_MAX], value: f64, decimals: usize, plus:
     }
     // a × scale = r + err exactly (scale = 10^d ≤ 10^15 is exact, and so is an FMA's residue).
     let err = a.mul_add(scale, -r);
-    let floor = r.floor();
+    // 0 ≤ r < 2^52: the cast truncates to floor(r) exactly, without a call to libm's `floor`.
+    let whole = r as u64;
     // frac − 0.5 is exact for frac ∈ [0.25, 1) (Sterbenz); below that it is far from 0 anyway.
-    let above_half = (r - floor) - 0.5;
-    let up = above_half > -err || (above_half == -err && floor % 2.0 == 1.0);
+    let above_half = (r - whole as f64) - 0.5;
+    let up = above_half > -err || (above_half == -err && whole % 2 == 1);
     // Below 2^52 + 1: fits u64 exactly.
-    let n = floor as u64 + u64::from(up);
+    let n = whole + u64::from(up);
     // Written backwards: the decimals, the point, then the integer digits (at least one).
     let (mut i, mut m, mut k) = (buf.len(), n, 0);
     loop {
