@@ -88,6 +88,38 @@ fn run_reports_the_controls_error_at_its_line() {
     );
 }
 
+/// The table is written by a second thread in batches of rows (`write_table`): a program of
+/// several batches and a part gets every row once, in order, with its own values.
+#[test]
+fn run_table_of_many_blocks_has_every_row_in_order() {
+    let n: u32 = 2500;
+    let mut src = String::from("0 BEGIN PGM LONG MM\n");
+    for i in 1..=n {
+        src.push_str(&format!("{i} L X+{:.2} Y+0 Z+50 R0 FMAX\n", f64::from(i) * 0.01));
+    }
+    src.push_str(&format!("{} END PGM LONG MM\n", n + 1));
+    let path = std::env::temp_dir().join(format!("schwenkbar-long-{}.h", std::process::id()));
+    std::fs::write(&path, &src).expect("write program");
+    let o = run(&["run", &path.to_string_lossy(), "--machine", "ac-table"]);
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let rows: Vec<&str> = out.lines().skip(1).collect();
+    assert_eq!(rows.len(), n as usize + 2, "BEGIN PGM, the lines, END PGM");
+    // The machine X after the 5-wide line number, two blanks and the 44-wide block text.
+    let x =
+        |row: &str| -> f64 { row[51..].split_whitespace().next().and_then(|w| w.parse().ok()).expect("X") };
+    let x1 = x(rows[1]);
+    for (k, row) in rows.iter().enumerate() {
+        let line: usize = row.split_whitespace().next().and_then(|w| w.parse().ok()).expect("line column");
+        assert_eq!(line, k + 1, "{row}");
+        if (1..=n as usize).contains(&k) {
+            assert!(row.contains(&format!("{k} L X+{:.2} ", k as f64 * 0.01)), "{row}");
+            assert_close!([x(row) - x1], [(k - 1) as f64 * 0.01], 1e-9, "X of block {k}: {row}");
+        }
+    }
+}
+
 #[test]
 fn run_rejects_an_unknown_machine() {
     let f = repo("static/programs/musterprogramm1.h");
