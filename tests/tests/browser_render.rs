@@ -26,7 +26,7 @@ use schwenkbar_web::components::view3d::{View3d, View3dProps};
 use schwenkbar_web::render::camera::{Camera, Preset, project_to_css};
 use schwenkbar_web::render::context::ContextWatch;
 use schwenkbar_web::render::gpu::RenderError;
-use schwenkbar_web::render::renderer::Renderer;
+use schwenkbar_web::render::renderer::{Renderer, renderer_name, software_renderer};
 use schwenkbar_web::render::toolpath::PathPoint;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::{console_log, wasm_bindgen_test, wasm_bindgen_test_configure};
@@ -115,6 +115,23 @@ async fn the_renderer_draws_the_blank_where_the_camera_looks() {
     assert!(is_blank(centre), "blank colour at the centre, got {centre:?}");
     let corner = at(&buf, w, 2, 2, h);
     assert!(!is_blank(corner), "background in the corner, got {corner:?}");
+    c.remove();
+}
+
+/// Multisampling only where a GPU draws: on a CPU rasteriser (headless Chromium's SwiftShader,
+/// a classroom PC without a usable GPU) it made every frame's paint the slowest part of a step.
+#[wasm_bindgen_test]
+fn multisampling_is_asked_for_only_when_a_gpu_draws() {
+    let c = canvas(50, 50);
+    let r = Renderer::new(&c).expect("WebGL2 in headless Chromium");
+    let name = renderer_name(r.gl());
+    let attributes = js_sys::Reflect::get(r.gl(), &"getContextAttributes".into())
+        .ok()
+        .and_then(|f| f.dyn_into::<js_sys::Function>().ok())
+        .and_then(|f| f.call0(r.gl()).ok())
+        .expect("context attributes");
+    let antialias = js_sys::Reflect::get(&attributes, &"antialias".into()).ok().and_then(|v| v.as_bool());
+    assert_eq!(antialias, Some(!software_renderer(&name)), "renderer {name:?}");
     c.remove();
 }
 
