@@ -333,29 +333,24 @@ pub struct Explanation {
     pub q: QValues,
     /// The UNCONFIRMED decisions that influenced this result.
     pub decisions: Vec<Decision>,
-    /// R itself, for [`Self::spatial`] and [`Self::euler`].
+    /// R as solved, for [`Self::spatial`] and [`Self::euler`] (`orientation` is its rows,
+    /// cleaned for display).
     #[serde(skip)]
     pub(crate) rotation: DMat3,
 }
 
 impl Explanation {
-    /// The target orientation R, as solved (`orientation` is its rows, cleaned for display).
-    #[must_use]
-    pub fn rotation(&self) -> DMat3 {
-        self.rotation
-    }
-
     /// The same orientation as `PLANE SPATIAL SPA SPB SPC`: made when the why panel asks, not by
     /// every solve (three of a solve's twelve `atan2`).
     #[must_use]
     pub fn spatial(&self) -> [f64; 3] {
-        orientation::to_spatial(&self.rotation())
+        orientation::to_spatial(&self.rotation)
     }
 
     /// The same orientation as `PLANE EULER EULPR EULNU EULROT`, on request like [`Self::spatial`].
     #[must_use]
     pub fn euler(&self) -> [f64; 3] {
-        orientation::to_euler(&self.rotation())
+        orientation::to_euler(&self.rotation)
     }
 
     /// The chosen axis values, if any.

@@ -113,7 +113,12 @@ pub fn extend_path(machine: &Machine, path: &mut RunPath, states: impl Iterator<
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::{DAffine3, DVec3};
+    use schwenkbar_app::document::Document;
+    use schwenkbar_app::run::SimRef;
+    use schwenkbar_app::scene::pose::poses;
     use schwenkbar_core::ast::Program;
+    use schwenkbar_core::plane::RotaryAxis;
     use schwenkbar_core::sim::Simulation;
 
     /// The toolpath of a whole run (re-simulates once through [`Simulation::states`]).
@@ -122,12 +127,6 @@ mod tests {
         extend_path(&sim.machine, &mut path, sim.states(program));
         path
     }
-
-    use glam::{DAffine3, DVec3};
-    use schwenkbar_app::document::Document;
-    use schwenkbar_app::run::SimRef;
-    use schwenkbar_app::scene::pose::poses;
-    use schwenkbar_core::plane::RotaryAxis;
 
     fn musterprogramm1() -> (Program, Machine, Simulation) {
         let doc = Document::new(include_str!("../../../static/programs/musterprogramm1.h").to_owned());
