@@ -29,4 +29,4 @@ cargo run --release -p schwenkbar-app --example bench_edit
 bash scripts/bench_peer.sh
 wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_big --test browser_render --test browser_stock -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'
-bash scripts/bundle.sh | tail -1
+bash scripts/bundle.sh 2>/dev/null | grep -E '^bundle|page:|then'

@@ -1,25 +1,21 @@
 #!/usr/bin/env bash
 # Builds the release pages into dist/ and prints their sizes: each page's HTML + JS + wasm + CSS,
-# gzip -9, summed. The trainer (index.html) against the issues' budget (BUNDLE_BUDGET_KB: a
-# figure to report, not a test); the course page (kurs.html) and the machine editor
-# (maschine.html), each its own bundle, are reported too.
-# Fails only above the regression ceilings, so that a size blow-up stops CI.
+# gzip -9, summed — what the page loads before its first screen. Each page's wasm is split
+# (scripts/split_pages.py): the functions the first screen does not run are in X_deferred.wasm,
+# fetched after it; its size is printed on its own line ("then").
+# The trainer (index.html) must stay within its budget (BUNDLE_BUDGET_KB, the brief's 240 KB;
+# issue 16 asks for 200); the course page (kurs.html) and the machine editor (maschine.html),
+# each its own bundle, within regression ceilings. Fails above any of them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
 BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
-# The ceilings were raised when issue 15 landed (arcs, compensation, 15 cycles: +37 KB gzip on
-# the trainer), with issue 16 (typed edits re-parsed and re-run in part, the windowed text editor,
-# the virtualised program list, the toolpath made in parts: +19 KB) and TCPM, and again with issue
-# 17's collision check and machine editor (collision bodies of five machines, the swept check, the
-# saved machines' record and the EDITIEREN softkeys: the trainer 291.7 -> 313.1 KB, the course
-# 366.1 -> 387.2 KB). The trainer is far over its 240 KB budget (see the session notes: only
-# splitting the wasm can bring it back). The ceilings stop a blow-up; the budget line reports the overrun.
-BUNDLE_LIMIT_KB="${BUNDLE_LIMIT_KB:-320}"
-COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-395}"
-# The machine editor (maschine.html): the renderer, the form and serde_json's export and import.
-EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-300}"
+# Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, 231,
+# 316 (its lessons' first screens run most of the trainer too) and 131 KB. The ceilings stop a
+# blow-up (or a page left whole by the split).
+COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-330}"
+EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-160}"
 build_pages
 # The files a page loads: the page itself and what it references (trunk's hashed names).
 page_size() {
@@ -31,6 +27,17 @@ page_size() {
   done
   echo "$total"
 }
+# The deferred wasm a page's glue names (none if the page was left whole).
+deferred_size() {
+  local page=$1 glue name
+  glue=$(grep -oE '/[A-Za-z0-9_.-]+\.js' "dist/$page" | head -1 | sed 's|^/|dist/|')
+  name=$(grep -oE '[A-Za-z0-9_.-]+_deferred\.wasm' "$glue" | head -1 || true)
+  if [ -n "$name" ] && [ -f "dist/$name" ]; then
+    printf '%d gzip -9 bytes (%s)' "$(gzip -9 -c "dist/$name" | wc -c)" "$name"
+  else
+    printf 'none: the page was not split'
+  fi
+}
 kb() { awk -v t="$1" 'BEGIN {printf "%.1f", t/1024}'; }
 total=$(page_size index.html)
 printf "bundle: %d bytes gzip -9 (%s KB; budget %d KB) — the trainer, index.html\n" "$total" "$(kb "$total")" "$BUNDLE_BUDGET_KB"
@@ -39,16 +46,19 @@ if [ "$total" -le $((BUNDLE_BUDGET_KB * 1024)) ]; then
 else
   echo "bundle OVER the budget of $BUNDLE_BUDGET_KB KB by $(( (total - BUNDLE_BUDGET_KB * 1024 + 1023) / 1024 )) KB"
 fi
+echo "  then, after the first screen: $(deferred_size index.html)"
 course=$(page_size kurs.html)
 printf "course page: %d bytes gzip -9 (%s KB; loaded only when the course is opened; ceiling %d KB)\n" "$course" "$(kb "$course")" "$COURSE_LIMIT_KB"
+echo "  then, after the first screen: $(deferred_size kurs.html)"
 editor=$(page_size maschine.html)
 printf "machine editor page: %d bytes gzip -9 (%s KB; loaded only when the editor is opened; ceiling %d KB)\n" "$editor" "$(kb "$editor")" "$EDITOR_LIMIT_KB"
+echo "  then, after the first screen: $(deferred_size maschine.html)"
 # Offline (issue 12): fetched once by the browser and the service worker, not by the page's start.
 extras=0
 for f in dist/sw.js dist/manifest.webmanifest dist/icons/*; do
   if [ -f "$f" ]; then extras=$((extras + $(gzip -9 -c "$f" | wc -c))); fi
 done
 printf "offline extras: %d bytes gzip -9 (%s KB: sw.js, manifest, icons; not in the pages' figures)\n" "$extras" "$(kb "$extras")"
-[ "$total" -le $((BUNDLE_LIMIT_KB * 1024)) ] || { echo "bundle above the regression ceiling of $BUNDLE_LIMIT_KB KB" >&2; exit 1; }
+[ "$total" -le $((BUNDLE_BUDGET_KB * 1024)) ] || { echo "the trainer's bundle is above its budget of $BUNDLE_BUDGET_KB KB" >&2; exit 1; }
 [ "$course" -le $((COURSE_LIMIT_KB * 1024)) ] || { echo "course page above its ceiling of $COURSE_LIMIT_KB KB" >&2; exit 1; }
 [ "$editor" -le $((EDITOR_LIMIT_KB * 1024)) ] || { echo "machine editor page above its ceiling of $EDITOR_LIMIT_KB KB" >&2; exit 1; }

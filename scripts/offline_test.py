@@ -22,123 +22,19 @@ import json
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
 import time
-import urllib.error
-import urllib.request
+
+from chromium import Driver, Failure, free_port, port_open, wait_for
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-CHROME_ARGS = [
-    "--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-    "--disable-background-networking", "--disable-component-update", "--disable-sync",
-    "--no-first-run", "--window-size=1280,800",
-]
-
-
-class Failure(Exception):
-    pass
-
-
 TIME_LIMIT_S = 300  # all tests together; each wait below is bounded as well
 
 
 def out_of_time(_signum, _frame):
     raise Failure(f"the offline tests took longer than {TIME_LIMIT_S} s")
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def port_open(port):
-    with socket.socket() as s:
-        s.settimeout(0.5)
-        return s.connect_ex(("127.0.0.1", port)) == 0
-
-
-def wait_for(what, check, seconds, step=0.1):
-    end = time.monotonic() + seconds
-    while True:
-        value = check()
-        if value:
-            return value
-        if time.monotonic() > end:
-            raise Failure(f"{what}: not within {seconds} s")
-        time.sleep(step)
-
-
-class Driver:
-    """The few W3C WebDriver commands these tests use."""
-
-    def __init__(self, chromedriver, profile):
-        self.port = free_port()
-        self.proc = subprocess.Popen([chromedriver, f"--port={self.port}"],
-                                     stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        self.session = None
-        wait_for("chromedriver", self._ready, 20)
-        options = {"args": CHROME_ARGS + [f"--user-data-dir={profile}"]}
-        if os.path.exists("/usr/bin/chromium"):
-            options["binary"] = "/usr/bin/chromium"
-        caps = {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options}}}
-        self.session = self._call("POST", "/session", caps, timeout=60)["sessionId"]
-        self.cmd("POST", "timeouts", {"script": 30000, "pageLoad": 30000})
-
-    def _ready(self):
-        try:
-            return self._call("GET", "/status", timeout=2).get("ready")
-        except (OSError, Failure):
-            return False
-
-    def _call(self, method, path, body=None, timeout=45):
-        data = None if body is None else json.dumps(body).encode()
-        req = urllib.request.Request(f"http://127.0.0.1:{self.port}{path}", data=data, method=method,
-                                     headers={"Content-Type": "application/json"})
-        try:
-            with urllib.request.urlopen(req, timeout=timeout) as r:
-                return json.load(r).get("value")
-        except urllib.error.HTTPError as e:
-            try:
-                value = json.load(e).get("value", {})
-                message = f"{value.get('error')}: {value.get('message', '').splitlines()[0]}"
-            except ValueError:
-                message = str(e)
-            raise Failure(f"webdriver {method} {path.split('/')[-1]}: {message}") from None
-
-    def cmd(self, method, path, body=None, timeout=45):
-        return self._call(method, f"/session/{self.session}/{path}", body, timeout)
-
-    def go(self, url):
-        self.cmd("POST", "url", {"url": url})
-
-    def reload(self):
-        self.cmd("POST", "refresh", {})
-
-    def js(self, script, *args):
-        return self.cmd("POST", "execute/sync", {"script": script, "args": list(args)})
-
-    def js_async(self, script, *args):
-        return self.cmd("POST", "execute/async", {"script": script, "args": list(args)})
-
-    def cdp(self, command, params=None):
-        return self.cmd("POST", "goog/cdp/execute", {"cmd": command, "params": params or {}})
-
-    def quit(self):
-        try:
-            if self.session:
-                self._call("DELETE", f"/session/{self.session}", timeout=20)
-        except (OSError, Failure):
-            pass
-        self.proc.terminate()
-        try:
-            self.proc.wait(10)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait(5)
 
 
 # The rendered app: the trainer's TNC screen with its header, or the course's header.
@@ -280,6 +176,92 @@ def service_worker_tests(driver, dist, work, run):
                 server.kill()
 
 
+# A page split by scripts/split_pages.py: the loader's state (0 not loaded, 1 loading, 2 loaded)
+# and how many times a deferred function had to load it at once.
+SPLIT = """
+const s = globalThis.__schwenkbarSplit;
+return s ? { state: s.state, sync: s.sync, errors: window.__schwenkbarErrors || [] } : null;"""
+ERRORS = ("window.__schwenkbarErrors = [];"
+          "addEventListener('error', (e) => window.__schwenkbarErrors.push(String(e.message)));"
+          "addEventListener('unhandledrejection', (e) => window.__schwenkbarErrors.push(String(e.reason)));")
+
+
+def split_state(driver):
+    state = driver.js(SPLIT)
+    if state is None:
+        raise Failure("the trainer's wasm is not split (no loader in its glue)")
+    if state["errors"]:
+        raise Failure(f"errors in the page: {state['errors']}")
+    return state
+
+
+def split_tests(driver, dist, run):
+    """The trainer's split wasm (dist/, its own origin, so no service worker)."""
+    port = free_port()
+    server = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
+                               "--directory", dist], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    base = f"http://127.0.0.1:{port}/"
+    hooks = []
+    try:
+        wait_for("the HTTP server", lambda: port_open(port), 10)
+        hooks.append(driver.cdp("Page.addScriptToEvaluateOnNewDocument", {"source": ERRORS})["identifier"])
+        driver.cdp("Network.enable")
+
+        def first_screen_alone():
+            driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
+            try:
+                driver.go(base)
+                text = rendered(driver, TRAINER, ["Schwenkbar", "Bearbeitungsebene schwenken"])
+                program = wait_for("the program list", lambda: driver.js(
+                    "const p = document.querySelector('.blocks'); return p && p.innerText.includes('BEGIN PGM') ? p.innerText : null;"), 20)
+                time.sleep(1)
+                state = split_state(driver)
+                if state["state"] == 2 or state["sync"]:
+                    raise Failure(f"the first screen needed the deferred wasm: {state}")
+            finally:
+                driver.cdp("Network.setBlockedURLs", {"urls": []})
+            return f"trainer and program ({len(program.splitlines())} lines) shown with the deferred wasm blocked: {text.strip()[:40]!r}"
+
+        def loads_after_first_screen():
+            driver.go(base + "?after")
+            rendered(driver, TRAINER, ["Schwenkbar"])
+            state = wait_for("the deferred wasm loaded in the background",
+                             lambda: (lambda s: s if s["state"] == 2 else None)(split_state(driver)), 20)
+            if state["sync"]:
+                raise Failure(f"a deferred function ran before the background load: {state}")
+            return "loaded in the background, no deferred call before it"
+
+        def loads_on_first_use():
+            hooks.append(driver.cdp("Page.addScriptToEvaluateOnNewDocument",
+                                    {"source": "globalThis.__schwenkbarNoPrefetch = true;"})["identifier"])
+            driver.go(base + "?first-use")
+            rendered(driver, TRAINER, ["Schwenkbar"])
+            time.sleep(1)
+            before = split_state(driver)
+            if before["state"] != 0 or before["sync"]:
+                raise Failure(f"loaded without a deferred call: {before}")
+            # SPEC FCT (F1): the dialog's first softkey row is code the first screen never ran.
+            driver.js("document.dispatchEvent(new KeyboardEvent('keydown', { key: 'F1', bubbles: true }));")
+            row = wait_for("the SPEC FCT softkeys", lambda: driver.js(
+                "const r = document.querySelector('.softkeys'); return r && r.innerText.includes('SCHWENKEN') ? r.innerText : null;"), 10)
+            after = split_state(driver)
+            if after["state"] != 2 or after["sync"] != 1:
+                raise Failure(f"SPEC FCT did not load the deferred wasm once: {after}")
+            return f"F1 loaded it at once (1 synchronous load), softkeys {' '.join(row.split())!r}"
+
+        run("split::trainer_first_screen_without_the_deferred_wasm", first_screen_alone)
+        run("split::deferred_wasm_loads_after_the_first_screen", loads_after_first_screen)
+        run("split::deferred_call_before_the_load_loads_it_at_once", loads_on_first_use)
+    finally:
+        for hook in hooks:
+            try:
+                driver.cdp("Page.removeScriptToEvaluateOnNewDocument", {"identifier": hook})
+            except Failure:
+                pass
+        server.terminate()
+        server.wait(10)
+
+
 # What a page refers to besides itself: elements naming files, and what it fetched (file://
 # loads do not show in Resource Timing, hence the elements as well).
 OUTSIDE = """
@@ -302,10 +284,12 @@ def single_file_tests(driver, single, run):
                    {"offline": True, "latency": 0, "downloadThroughput": -1, "uploadThroughput": -1})
         driver.go(index)
         rendered(driver, TRAINER, ["Schwenkbar", "Bearbeitungsebene schwenken"])
+        wait_for("the deferred wasm loaded from the page's own bytes",
+                 lambda: (driver.js(SPLIT) or {}).get("state") == 2, 20)
         outside(driver)
         if driver.js("return !!(navigator.serviceWorker && navigator.serviceWorker.controller);"):
             raise Failure("a service worker controls the file:// page")
-        return "trainer rendered from file://, refers to no other file"
+        return "trainer rendered from file:// with its deferred wasm inside, refers to no other file"
 
     def course_link():
         driver.js("document.querySelector('[data-testid=course-link]').click();")
@@ -343,7 +327,7 @@ def main():
             return ok
         return run
 
-    groups = {"offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
+    groups = {"split wasm (dist/)": 3, "offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
     signal.signal(signal.SIGALRM, out_of_time)
     signal.alarm(TIME_LIMIT_S)
     work = tempfile.mkdtemp(prefix="schwenkbar-offline-")
@@ -355,6 +339,7 @@ def main():
             if not os.path.isfile(path):
                 raise Failure(f"{path} is missing: run scripts/bundle.sh and scripts/single-file.sh --from-dist")
         driver = Driver(args.chromedriver, profile)
+        split_tests(driver, args.dist, runner("split wasm (dist/)"))
         service_worker_tests(driver, args.dist, work, runner("offline (service worker, dist/)"))
         single_file_tests(driver, args.single, runner("single file (dist-single/)"))
     except (Failure, OSError) as e:

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Packs each page of a trunk build (dist/index.html, dist/kurs.html) into ONE HTML file in
 dist-single/: the CSS as <style>, the JS glue and the start code as one inline
-<script type="module">, the wasm as base64 handed to wasm-bindgen's init as bytes, the icon as a
+<script type="module">, the wasm as base64 handed to wasm-bindgen's init as bytes (a split page's
+deferred wasm too, scripts/split_pages.py), the icon as a
 data: URL. Such a file opens from a USB stick via file:// (no server; the service worker
 registration in the page is guarded on http(s) and does nothing there). The pages link each
 other relatively (kurs.html, index.html), so the two files work side by side.
@@ -98,6 +99,13 @@ def pack(dist, page):
         names = [f"{name}: {local}" for name, local in exported if name != "default"]
         bindings = "{ " + ", ".join(names + ["default: __wbg_init"]) + " }"
         b64 = base64.b64encode(read(local(dist, wasm.group(1)), "rb")).decode()
+        # A page split by scripts/split_pages.py: its deferred wasm goes in as bytes too.
+        deferred = re.search(r"""["']([A-Za-z0-9_.-]+_deferred\.wasm)["']""", glue)
+        deferred_js = ""
+        if deferred:
+            d64 = base64.b64encode(read(local(dist, deferred.group(1)), "rb")).decode()
+            deferred_js = (f'globalThis.__schwenkbarDeferredWasm = Uint8Array.from(atob("{d64}"), '
+                           "(c) => c.charCodeAt(0));\n")
         start = body[: imp.start()] + body[imp.end():]
         start = start.replace(wasm.group(0), "module_or_path: __schwenkbarWasm")
         starts += 1
@@ -107,6 +115,7 @@ def pack(dist, page):
             '<script type="module">\n' + glue
             + "\n// Inlined by scripts/single_file.py: the wasm as bytes, then trunk's start code.\n"
             + f'const __schwenkbarWasm = Uint8Array.from(atob("{b64}"), (c) => c.charCodeAt(0));\n'
+            + deferred_js
             + "{\n"
             + f"const {imp.group(1)} = __wbg_init;\n"
             + (f"const {imp.group(2)} = {bindings};\n" if imp.group(2) else "")

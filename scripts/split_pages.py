@@ -1,0 +1,248 @@
+#!/usr/bin/env python3
+"""Splits each built page's wasm (DIST/index.html, kurs.html, maschine.html) into what its first
+screen runs and the rest (scripts/wasm_split.py), so that a page loads less before it shows.
+Usage: split_pages.py DIST. Run by build_pages (scripts/env.sh) after trunk, before
+scripts/order_functions.py.
+
+1. Profile: each page's wasm gets a profile byte per function; a copy of DIST with those is
+   served on 127.0.0.1 and opened in headless Chromium (scripts/chromium.py) until the page has
+   started and its set of run functions has stayed the same for PROFILE_QUIET_S seconds.
+2. Split: the functions that ran stay in X_bg.wasm (the primary), the rest go to
+   X_deferred.wasm, and the page's glue (X.js) gets the loader (LOADER below): before the app
+   starts it puts a JS function into the table slot every deferred stub calls first; after the
+   start it fetches and compiles X_deferred.wasm in the background; the first deferred call
+   before that has arrived loads it at once (synchronous request and compile). A page packed
+   into one file (scripts/single_file.py) carries the deferred bytes in
+   globalThis.__schwenkbarDeferredWasm.
+If anything is missing (Chromium, a page, a construct wasm_split.py does not read), the page
+stays whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it)."""
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import wasm_split
+from chromium import Driver, Failure, free_port, port_open, wait_for
+
+# Each page and the screens it is opened at ("reload": opened again, with what the first visit
+# saved in the browser): the trainer on a first and a later visit; the course at each lesson (the
+# trainer's Kurs link, a lesson link or the course's own next/previous, which set #kurs/N); the
+# machine editor as the trainer's EDITIEREN opens it (#machine-id).
+PAGES = {
+    "index.html": ["", "reload"],
+    "kurs.html": [""] + [f"#kurs/{n}" for n in range(1, 12)],
+    "maschine.html": ["#ac-table"],
+}
+PROFILE_QUIET_S = 1.5
+PROFILE_LIMIT_S = 20.0
+
+# The helper module: imports "j" "l" ([] -> []) and exports it as "l" (a JS function made a wasm
+# function, which a funcref table accepts) and a no-op "n". 44 bytes, written by hand:
+# header, type [] -> [], import j.l, one function, exports l and n, the no-op's body.
+HELPER = ("0,97,115,109,1,0,0,0,1,4,1,96,0,0,2,7,1,1,106,1,108,0,0,3,2,1,0,"
+          "7,9,2,1,108,0,0,1,110,0,1,10,4,1,2,0,11")
+
+LOADER = """
+// Added by scripts/split_pages.py: the functions the first screen does not run are in
+// __DEFERRED__; each of their stubs in this page's wasm first calls table slot __SLOT__.
+const __split = { state: 0, sync: 0, ex: null, noop: null, bytes: null };
+globalThis.__schwenkbarSplit = __split;
+function __split_attach(instance) {
+    const helper = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array([__HELPER__])),
+        { j: { l: __split_now } });
+    __split.ex = instance.exports;
+    __split.noop = helper.exports.n;
+    __split.ex.__TABLE__.set(__SLOT__, helper.exports.l);
+}
+function __split_use(module) {
+    if (__split.state === 2) return;
+    new WebAssembly.Instance(module, { p: __split.ex });
+    __split.ex.__TABLE__.set(__SLOT__, __split.noop);
+    __split.state = 2;
+    __split.bytes = null;
+}
+function __split_url() {
+    return new URL('__DEFERRED__', import.meta.url);
+}
+// A deferred function is called before the background load has finished: load it now.
+function __split_now() {
+    __split.sync += 1;
+    // The page's own copy (one-file page), else what the background load has fetched so far.
+    let bytes = globalThis.__schwenkbarDeferredWasm || __split.bytes;
+    if (!bytes) {
+        const xhr = new XMLHttpRequest();
+        xhr.open('GET', __split_url(), false);
+        xhr.overrideMimeType('text/plain; charset=x-user-defined');
+        xhr.send();
+        if (xhr.status !== 200) {
+            throw new Error(`Schwenkbar: ${__split_url()} could not be loaded (HTTP ${xhr.status})`);
+        }
+        const text = xhr.responseText;
+        bytes = new Uint8Array(text.length);
+        for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i) & 0xff;
+    }
+    __split_use(new WebAssembly.Module(bytes));
+}
+// Served by the offline cache's service worker, the deferred bytes are on this machine: fetched
+// next to the primary, so a deferred call during the start needs no synchronous request (which
+// the service worker does not answer).
+async function __split_early() {
+    if (!globalThis.navigator || !navigator.serviceWorker || !navigator.serviceWorker.controller
+        || globalThis.__schwenkbarDeferredWasm || globalThis.__schwenkbarNoPrefetch) return;
+    try {
+        const r = await fetch(__split_url());
+        if (r.ok) __split.bytes = await r.arrayBuffer();
+    } catch (e) {
+        // The background load tries again; a deferred call before it, synchronously.
+    }
+}
+function __split_prefetch() {
+    if (__split.state !== 0 || globalThis.__schwenkbarNoPrefetch) return;
+    __split.state = 1;
+    const have = globalThis.__schwenkbarDeferredWasm || __split.bytes;
+    (have ? Promise.resolve(have) : fetch(__split_url()).then((r) => {
+        if (!r.ok) throw new Error(`HTTP ${r.status}`);
+        return r.arrayBuffer();
+    }))
+        .then((bytes) => WebAssembly.compile(__split.bytes = bytes))
+        .then(__split_use)
+        .catch((e) => {
+            if (__split.state === 1) __split.state = 0;
+            console.warn('Schwenkbar: the deferred code will load when it is first needed:', e);
+        });
+}
+"""
+
+START = "    wasm.__wbindgen_start();\n"
+LOAD = "    const { instance, module } = await __wbg_load(await module_or_path, imports);\n"
+
+
+def page_files(dist, page):
+    """(glue, wasm) file names a trunk page loads."""
+    html = (dist / page).read_text(encoding="utf-8")
+    glue = re.search(r"""import\s+init\s*,\s*\*\s*as\s+\w+\s+from\s*['"]/([^'"]+\.js)['"]""", html)
+    wasm = re.search(r"""module_or_path\s*:\s*['"]/([^'"]+_bg\.wasm)['"]""", html)
+    if not glue or not wasm:
+        raise wasm_split.Unsupported(f"{page}: trunk's start script not found")
+    return glue.group(1), wasm.group(1)
+
+
+def profiles(dist, plan, chromedriver):
+    """Opens each page with its instrumented wasm; returns {page: run flags}."""
+    out = {}
+    work = tempfile.mkdtemp(prefix="schwenkbar-split-")
+    site = os.path.join(work, "site")
+    shutil.copytree(dist, site)
+    hook = ('<script>addEventListener("TrunkApplicationStarted",'
+            '(e)=>{window.__schwenkbarExports=e.detail.wasm})</script>')
+    for page, (_, wasm, data, addr, count) in plan.items():
+        pathlib.Path(site, wasm).write_bytes(data)
+        path = pathlib.Path(site, page)
+        html = path.read_text(encoding="utf-8")
+        html = re.sub(r"""\s+integrity=(["']?)sha384-[A-Za-z0-9+/=]+\1""", "", html)
+        if "<script" not in html:
+            raise Failure(f"{page} has no script")
+        path.write_text(html.replace("<script", hook + "<script", 1), encoding="utf-8")
+    port = free_port()
+    server = subprocess.Popen([sys.executable, "-m", "http.server", str(port), "--bind", "127.0.0.1",
+                               "--directory", site], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    driver = None
+    try:
+        wait_for("the HTTP server", lambda: port_open(port), 10)
+        driver = Driver(chromedriver, os.path.join(work, "profile"))
+        for page, (_, wasm, data, addr, count) in plan.items():
+            read = (f"const b = new Uint8Array(window.__schwenkbarExports.memory.buffer, {addr}, {count});"
+                    "return Array.from(b).join('');")
+            ran = [False] * count
+            for n, fragment in enumerate(PAGES[page]):
+                if n == 0 or fragment == "reload":
+                    if n == 0:
+                        driver.go(f"http://127.0.0.1:{port}/{page}{fragment}")
+                    else:
+                        driver.reload()
+                    wait_for(f"{page} started", lambda: driver.js("return !!window.__schwenkbarExports;"), 30)
+                else:
+                    driver.js("location.hash = arguments[0];", fragment)
+                last, since, t0 = None, time.monotonic(), time.monotonic()
+                while time.monotonic() - t0 < PROFILE_LIMIT_S:
+                    flags = driver.js(read)
+                    if flags != last:
+                        last, since = flags, time.monotonic()
+                    elif time.monotonic() - since >= PROFILE_QUIET_S:
+                        break
+                    time.sleep(0.25)
+                ran = [r or c == "1" for r, c in zip(ran, last)]
+            out[page] = ran
+    finally:
+        if driver:
+            driver.quit()
+        server.terminate()
+        server.wait(10)
+        shutil.rmtree(work, ignore_errors=True)
+    return out
+
+
+def patch_glue(text, deferred, facts):
+    if text.count(START) != 1 or text.count(LOAD) != 1 or "__split_" in text:
+        raise wasm_split.Unsupported("the glue's load and start calls not found once (or already split)")
+    text = text.replace(START, "    __split_attach(instance);\n" + START
+                        + "    setTimeout(__split_prefetch, 0);\n")
+    text = text.replace(LOAD, "    const early = __split_early();\n" + LOAD + "    await early;\n")
+    loader = (LOADER.replace("__DEFERRED__", deferred).replace("__SLOT__", str(facts["loader"]))
+              .replace("__TABLE__", facts["table"]).replace("__HELPER__", HELPER))
+    end = text.rindex("\nexport ")
+    return text[:end] + "\n" + loader + text[end:]
+
+
+def main():
+    dist = pathlib.Path(sys.argv[1])
+    chromedriver = os.environ.get("CHROMEDRIVER", "/usr/bin/chromedriver")
+    plan = {}
+    for page in PAGES:
+        try:
+            glue, wasm = page_files(dist, page)
+            data, addr, count = wasm_split.instrument((dist / wasm).read_bytes())
+            plan[page] = (glue, wasm, data, addr, count)
+        except (wasm_split.Unsupported, OSError) as e:
+            print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
+    if not plan:
+        return
+    try:
+        runs = profiles(dist, plan, chromedriver)
+    except (Failure, OSError, subprocess.SubprocessError) as e:
+        print(f"split: WARNING no page split, the profile run failed: {e}", file=sys.stderr)
+        return
+    for page, (glue, wasm, _, _, _) in plan.items():
+        try:
+            original = (dist / wasm).read_bytes()
+            primary, deferred, facts = wasm_split.split(original, runs[page])
+            deferred_name = wasm[: -len("_bg.wasm")] + "_deferred.wasm"
+            text = patch_glue((dist / glue).read_text(encoding="utf-8"), deferred_name, facts)
+        except (wasm_split.Unsupported, KeyError) as e:
+            print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
+            continue
+        (dist / wasm).write_bytes(primary)
+        (dist / deferred_name).write_bytes(deferred)
+        for name in (wasm, deferred_name):
+            # wasm-opt validates as it reads (the features from the target_features section).
+            check = subprocess.run(["wasm-opt", str(dist / name), "-o", os.devnull],
+                                   capture_output=True, text=True)
+            if check.returncode != 0:
+                (dist / wasm).write_bytes(original)
+                (dist / deferred_name).unlink()
+                print(f"split: WARNING {page} stays whole: {name} does not validate:\n{check.stderr[:2000]}",
+                      file=sys.stderr)
+                break
+        else:
+            (dist / glue).write_text(text, encoding="utf-8")
+            print(f"split: {page}: {facts['functions'] - facts['deferred']} of {facts['functions']} functions "
+                  f"ran on the first screen; {wasm} {len(original)} -> {len(primary)} bytes, "
+                  f"{deferred_name} {len(deferred)} bytes")
+
+
+if __name__ == "__main__":
+    main()
