@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up what is missing, then runs every test: formatting and lints, the native workspace
-# tests, the browser suite in headless Chromium, the release bundle with its size, and the
-# offline tests of the built pages (service worker, single-file pages).
+# tests, the browser suite in headless Chromium, the wasm splitter, the release bundle with its
+# size, and the tests of the built pages (split wasm, service worker, single-file pages).
 # Ends with one summary line "tests: N passed, N failed".
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,7 +31,10 @@ cargo test --workspace 2>&1 | tee -a "$log"
 echo; echo "==> browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
 wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | tee -a "$log"
 
-echo; echo "==> release bundle: trunk build --release --offline"
+echo; echo "==> the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
+python3 scripts/wasm_split_test.py --log "$log"
+
+echo; echo "==> release bundle: trunk build --release --offline, each page's wasm split (scripts/split_pages.py)"
 bash scripts/bundle.sh
 
 echo; echo "==> single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
