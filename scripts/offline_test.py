@@ -249,9 +249,24 @@ def split_tests(driver, dist, run):
                 raise Failure(f"SPEC FCT did not load the deferred wasm once: {after}")
             return f"F1 loaded it at once (1 synchronous load), softkeys {' '.join(row.split())!r}"
 
+        def missing_says_so():
+            driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
+            try:
+                driver.go(base + "?missing")
+                rendered(driver, TRAINER, ["Schwenkbar"])
+                driver.js("document.dispatchEvent(new KeyboardEvent('keydown', { key: 'F1', bubbles: true }));")
+                alert = wait_for("the message that a part could not be loaded", lambda: driver.js(
+                    "const a = document.querySelector('[role=alert]'); return a ? a.textContent : null;"), 10)
+            finally:
+                driver.cdp("Network.setBlockedURLs", {"urls": []})
+            if not alert.startswith("Ein Teil von Schwenkbar ließ sich nicht laden") or "Part of Schwenkbar" not in alert:
+                raise Failure(f"the message: {alert!r}")
+            return f"{alert[:70]!r}…"
+
         run("split::trainer_first_screen_without_the_deferred_wasm", first_screen_alone)
         run("split::deferred_wasm_loads_after_the_first_screen", loads_after_first_screen)
         run("split::deferred_call_before_the_load_loads_it_at_once", loads_on_first_use)
+        run("split::deferred_wasm_missing_says_so", missing_says_so)
     finally:
         for hook in hooks:
             try:
@@ -327,7 +342,7 @@ def main():
             return ok
         return run
 
-    groups = {"split wasm (dist/)": 3, "offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
+    groups = {"split wasm (dist/)": 4, "offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
     signal.signal(signal.SIGALRM, out_of_time)
     signal.alarm(TIME_LIMIT_S)
     work = tempfile.mkdtemp(prefix="schwenkbar-offline-")

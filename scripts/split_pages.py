@@ -8,7 +8,8 @@ scripts/order_functions.py.
    served on 127.0.0.1 and opened in headless Chromium (scripts/chromium.py) until the page has
    started and its set of run functions has stayed the same for PROFILE_QUIET_S seconds.
 2. Split: the functions that ran stay in X_bg.wasm (the primary), the rest go to
-   X_deferred.wasm, and the page's glue (X.js) gets the loader (LOADER below): before the app
+   X_deferred.wasm, and the page's glue (X.js) gets the loader (LOADER below), all three named
+   by a hash of the two modules (X = trunk's name with that hash): before the app
    starts it puts a JS function into the table slot every deferred stub calls first; after the
    start it fetches and compiles X_deferred.wasm in the background; the first deferred call
    before that has arrived loads it at once (synchronous request and compile). A page packed
@@ -16,6 +17,7 @@ scripts/order_functions.py.
    globalThis.__schwenkbarDeferredWasm.
 If anything is missing (Chromium, a page, a construct wasm_split.py does not read), the page
 stays whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it)."""
+import hashlib
 import os
 import pathlib
 import re
@@ -71,21 +73,31 @@ function __split_url() {
 // A deferred function is called before the background load has finished: load it now.
 function __split_now() {
     __split.sync += 1;
-    // The page's own copy (one-file page), else what the background load has fetched so far.
-    let bytes = globalThis.__schwenkbarDeferredWasm || __split.bytes;
-    if (!bytes) {
-        const xhr = new XMLHttpRequest();
-        xhr.open('GET', __split_url(), false);
-        xhr.overrideMimeType('text/plain; charset=x-user-defined');
-        xhr.send();
-        if (xhr.status !== 200) {
-            throw new Error(`Schwenkbar: ${__split_url()} could not be loaded (HTTP ${xhr.status})`);
+    try {
+        // The page's own copy (one-file page), else what the background load has fetched so far.
+        let bytes = globalThis.__schwenkbarDeferredWasm || __split.bytes;
+        if (!bytes) {
+            const xhr = new XMLHttpRequest();
+            xhr.open('GET', __split_url(), false);
+            xhr.overrideMimeType('text/plain; charset=x-user-defined');
+            xhr.send();
+            if (xhr.status !== 200) throw new Error(`HTTP ${xhr.status}`);
+            const text = xhr.responseText;
+            bytes = new Uint8Array(text.length);
+            for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i) & 0xff;
         }
-        const text = xhr.responseText;
-        bytes = new Uint8Array(text.length);
-        for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i) & 0xff;
+        __split_use(new WebAssembly.Module(bytes));
+    } catch (e) {
+        // The app cannot go on without that code: say so on the page, German first.
+        const note = document.createElement('div');
+        note.setAttribute('role', 'alert');
+        note.style.cssText = 'position:fixed;top:0;left:0;right:0;z-index:1000;padding:.6em 1em;'
+            + 'background:#b00020;color:#fff;font:16px/1.4 sans-serif';
+        note.textContent = 'Ein Teil von Schwenkbar ließ sich nicht laden – bitte die Seite neu laden. / '
+            + `Part of Schwenkbar could not be loaded – please reload the page. (${e})`;
+        document.body.prepend(note);
+        throw e;
     }
-    __split_use(new WebAssembly.Module(bytes));
 }
 // Served by the offline cache's service worker, the deferred bytes are on this machine: fetched
 // next to the primary, so a deferred call during the start needs no synchronous request (which
@@ -220,28 +232,47 @@ def main():
         try:
             original = (dist / wasm).read_bytes()
             primary, deferred, facts = wasm_split.split(original, runs[page])
-            deferred_name = wasm[: -len("_bg.wasm")] + "_deferred.wasm"
-            text = patch_glue((dist / glue).read_text(encoding="utf-8"), deferred_name, facts)
         except (wasm_split.Unsupported, KeyError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
             continue
-        (dist / wasm).write_bytes(primary)
-        (dist / deferred_name).write_bytes(deferred)
-        for name in (wasm, deferred_name):
-            # wasm-opt validates as it reads (the features from the target_features section).
-            check = subprocess.run(["wasm-opt", str(dist / name), "-o", os.devnull],
-                                   capture_output=True, text=True)
-            if check.returncode != 0:
-                (dist / wasm).write_bytes(original)
-                (dist / deferred_name).unlink()
-                print(f"split: WARNING {page} stays whole: {name} does not validate:\n{check.stderr[:2000]}",
-                      file=sys.stderr)
-                break
-        else:
-            (dist / glue).write_text(text, encoding="utf-8")
-            print(f"split: {page}: {facts['functions'] - facts['deferred']} of {facts['functions']} functions "
-                  f"ran on the first screen; {wasm} {len(original)} -> {len(primary)} bytes, "
-                  f"{deferred_name} {len(deferred)} bytes")
+        problem = invalid(primary, "primary") or invalid(deferred, "deferred")
+        if problem:
+            print(f"split: WARNING {page} stays whole: {problem}", file=sys.stderr)
+            continue
+        # trunk's names hash the unsplit build, and the profile may differ between two builds of
+        # the same source: the split files are named by their own bytes, so that a browser's
+        # cache never pairs one build's primary with another's deferred module.
+        old = wasm[: -len("_bg.wasm")]
+        new = old.rsplit("-", 1)[0] + "-" + hashlib.sha256(primary + deferred).hexdigest()[:16]
+        if not glue == old + ".js":
+            print(f"split: WARNING {page} stays whole: {glue} and {wasm} are not named alike", file=sys.stderr)
+            continue
+        try:
+            text = patch_glue((dist / glue).read_text(encoding="utf-8"), new + "_deferred.wasm", facts)
+        except wasm_split.Unsupported as e:
+            print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
+            continue
+        (dist / (new + "_bg.wasm")).write_bytes(primary)
+        (dist / (new + "_deferred.wasm")).write_bytes(deferred)
+        (dist / (new + ".js")).write_text(text, encoding="utf-8")
+        (dist / wasm).unlink()
+        (dist / glue).unlink()
+        html = (dist / page).read_text(encoding="utf-8")
+        (dist / page).write_text(html.replace(old, new), encoding="utf-8")
+        print(f"split: {page}: {facts['functions'] - facts['deferred']} of {facts['functions']} functions "
+              f"ran on the first screen; {len(original)} bytes -> {new}_bg.wasm {len(primary)} bytes, "
+              f"{new}_deferred.wasm {len(deferred)} bytes")
+
+
+def invalid(data, what):
+    """Why wasm-opt does not read the module back (it validates as it reads, with the features
+    of the target_features section), or None."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "m.wasm")
+        with open(path, "wb") as f:
+            f.write(data)
+        check = subprocess.run(["wasm-opt", path, "-o", os.devnull], capture_output=True, text=True)
+    return None if check.returncode == 0 else f"the {what} module does not validate:\n{check.stderr[:2000]}"
 
 
 if __name__ == "__main__":
