@@ -16,7 +16,8 @@ scripts/order_functions.py.
    into one file (scripts/single_file.py) carries the deferred bytes in
    globalThis.__schwenkbarDeferredWasm.
 If anything is missing (Chromium, a page, a construct wasm_split.py does not read), the page
-stays whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it)."""
+stays whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it).
+SCHWENKBAR_NO_SPLIT=1 leaves every page whole (to compare the two)."""
 import hashlib
 import os
 import pathlib
@@ -212,6 +213,9 @@ def patch_glue(text, deferred, facts):
 
 def main():
     dist = pathlib.Path(sys.argv[1])
+    if os.environ.get("SCHWENKBAR_NO_SPLIT"):
+        print("split: SCHWENKBAR_NO_SPLIT is set, every page stays whole", file=sys.stderr)
+        return
     chromedriver = os.environ.get("CHROMEDRIVER", "/usr/bin/chromedriver")
     plan = {}
     for page in PAGES:
