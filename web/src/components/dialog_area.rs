@@ -21,7 +21,6 @@ pub struct DialogAreaProps {
 
 #[function_component(DialogArea)]
 pub fn dialog_area(props: &DialogAreaProps) -> Html {
-    let l = props.lang;
     let act = |a: Action| props.on_action.reform(move |_: MouseEvent| a.clone());
     let in_dialog = props.dialog.is_some();
     let (ent, noent, end) = if in_dialog {
@@ -37,14 +36,23 @@ pub fn dialog_area(props: &DialogAreaProps) -> Html {
             <button class="hard-key" data-key="del" disabled={!in_dialog} onclick={act(Action::Abort)}>{ "DEL" }</button>
         </div>
     };
-    let Some(d) = &props.dialog else {
-        return html! {
+    match &props.dialog {
+        None => html! {
             <div class="dialog-area">
                 <div class="dialog-line" role="status" aria-live="polite">{ props.text.clone() }</div>
                 { hard_keys }
             </div>
-        };
-    };
+        },
+        Some(d) => open_dialog(props, d, hard_keys),
+    }
+}
+
+/// The area with a dialog open. Out of line: the first screen has no dialog open, so the page
+/// split (scripts/split_pages.py) leaves this to the wasm loaded after it.
+#[inline(never)]
+fn open_dialog(props: &DialogAreaProps, d: &Dialog, hard_keys: Html) -> Html {
+    let l = props.lang;
+    let act = |a: Action| props.on_action.reform(move |_: MouseEvent| a.clone());
     let keypad = "789456123".chars().chain(['0', '.']).map(|c| {
         html! { <button class="pad-key" data-key={format!("pad-{c}")} onclick={act(Action::DialogKey(Key::Char(c)))}>{ c }</button> }
     });

@@ -10,7 +10,7 @@ use yew::prelude::*;
 use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
-use schwenkbar_app::why::{describe, for_block};
+use schwenkbar_app::why::{PlaneWhy, describe, for_block};
 
 #[derive(Properties, PartialEq)]
 pub struct WhyPanelProps {
@@ -68,44 +68,53 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
             <h2>{ l.t("Warum?", "Why?") }</h2>
             <p class="why-block">{ describe(&block.body(), l) }</p>
             if let Some(w) = plane {
-                <div class="why-plane">
-                    if let Some(e) = &w.error {
-                        <p class="why-error" data-testid="why-error">{ e }</p>
-                    }
-                    if let Some(a) = &w.safe_alternative {
-                        <p class="why-alternative" data-testid="why-alternative">{ a }</p>
-                    }
-                    if !w.plain.is_empty() {
-                        <p class="why-plain" data-testid="why-plain">{ &w.plain }</p>
-                    }
-                    if !w.candidates.is_empty() {
-                        <ul class="candidates">
-                            { for w.candidates.iter().zip(&w.candidate_axes).map(|((text, chosen), axes)| {
-                                let axes = *axes;
-                                let enter = props.on_hover.reform(move |_: MouseEvent| Some(axes));
-                                let leave = props.on_hover.reform(|_: MouseEvent| None);
-                                html! {
-                                    <li class={classes!("candidate", chosen.then_some("chosen"))}
-                                        onmouseenter={enter} onmouseleave={leave}>{ text }</li>
-                                }
-                            }) }
-                        </ul>
-                        <p class="why-rule">{ &w.rule }</p>
-                        <p>{ &w.symmetry }</p>
-                        <p>{ l.t("Werkzeugachse", "Tool axis") }{ " " }{ &w.tool_axis }</p>
-                        <p class="equiv"><code>{ &w.spatial }</code><br/><code>{ &w.euler }</code></p>
-                    }
-                    if !w.assumptions.is_empty() {
-                        <details class="assumptions">
-                            <summary>{ l.t("Annahmen (nicht bestätigt)", "Assumptions (unconfirmed)") }</summary>
-                            <ul>{ for w.assumptions.iter().map(|a| html! { <li>{ a }</li> }) }</ul>
-                        </details>
-                    }
-                </div>
+                { plane_why(&w, &props.on_hover, l) }
             }
             if let Some(m) = machine {
                 <p class="why-machine">{ m }</p>
             }
         </aside>
+    }
+}
+
+/// What the panel says of a PLANE block. Out of line: the first screen's cursor is on BEGIN PGM,
+/// so the page split (scripts/split_pages.py) leaves this to the wasm loaded after it.
+#[inline(never)]
+fn plane_why(w: &PlaneWhy, on_hover: &Callback<Option<AxisValues>>, l: Lang) -> Html {
+    html! {
+        <div class="why-plane">
+            if let Some(e) = &w.error {
+                <p class="why-error" data-testid="why-error">{ e }</p>
+            }
+            if let Some(a) = &w.safe_alternative {
+                <p class="why-alternative" data-testid="why-alternative">{ a }</p>
+            }
+            if !w.plain.is_empty() {
+                <p class="why-plain" data-testid="why-plain">{ &w.plain }</p>
+            }
+            if !w.candidates.is_empty() {
+                <ul class="candidates">
+                    { for w.candidates.iter().zip(&w.candidate_axes).map(|((text, chosen), axes)| {
+                        let axes = *axes;
+                        let enter = on_hover.reform(move |_: MouseEvent| Some(axes));
+                        let leave = on_hover.reform(|_: MouseEvent| None);
+                        html! {
+                            <li class={classes!("candidate", chosen.then_some("chosen"))}
+                                onmouseenter={enter} onmouseleave={leave}>{ text }</li>
+                        }
+                    }) }
+                </ul>
+                <p class="why-rule">{ &w.rule }</p>
+                <p>{ &w.symmetry }</p>
+                <p>{ l.t("Werkzeugachse", "Tool axis") }{ " " }{ &w.tool_axis }</p>
+                <p class="equiv"><code>{ &w.spatial }</code><br/><code>{ &w.euler }</code></p>
+            }
+            if !w.assumptions.is_empty() {
+                <details class="assumptions">
+                    <summary>{ l.t("Annahmen (nicht bestätigt)", "Assumptions (unconfirmed)") }</summary>
+                    <ul>{ for w.assumptions.iter().map(|a| html! { <li>{ a }</li> }) }</ul>
+                </details>
+            }
+        </div>
     }
 }
