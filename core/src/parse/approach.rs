@@ -27,9 +27,6 @@ struct Words<'a> {
 }
 
 /// `APPR …` (`approach`) or `DEP …`; `rest` follows the keyword.
-// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
-// wasm loaded after the first screen (whose program has no such block).
-#[inline(never)]
 pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockBody> {
     cx.axes.clear();
     cx.m.clear();

@@ -10,9 +10,6 @@ use crate::ast::{BlockBody, PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
 use crate::diag::Expected;
 
 /// `FUNCTION …`.
-// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
-// wasm loaded after the first screen (whose program has no such block).
-#[inline(never)]
 pub(super) fn function(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(i) = keyword(body, "FUNCTION").map(sp) else { return super::unknown(cx, body) };
     if let Some(r) = keyword(i, "TCPM").map(sp) {

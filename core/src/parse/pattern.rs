@@ -12,9 +12,6 @@ use crate::ast::{BlockBody, PatternItem, PatternKey, PatternKind};
 use crate::diag::{DiagCode, Expected};
 
 /// `PATTERN DEF …` (`body` is the whole block text).
-// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
-// wasm loaded after the first screen (whose program has no such block).
-#[inline(never)]
 pub(super) fn pattern_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(mut i) = keyword(body, "PATTERN").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
         return super::unknown(cx, body);
