@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
 BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
-# Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, 213,
+# Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, 217,
 # 316 (its lessons' first screens run most of the trainer too) and 131 KB. The ceilings stop a
 # blow-up (or a page left whole by the split).
 COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-330}"
