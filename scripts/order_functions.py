@@ -21,6 +21,9 @@ import sys
 import tempfile
 from collections import defaultdict
 
+import wasm_split
+from wasm_split import enc_name, enc_u, sections, uleb
+
 SHINGLE = 5
 # A shingle found in more bodies than this is boilerplate (prologues, common calls): skipped.
 COMMON = 200
@@ -28,98 +31,29 @@ COMMON = 200
 LIKE = 3
 
 
-def leb(b, i):
-    r = s = 0
-    while True:
-        x = b[i]
-        i += 1
-        r |= (x & 0x7F) << s
-        s += 7
-        if x < 0x80:
-            return r, i
-
-
-def enc(n):
-    out = bytearray()
-    while True:
-        x, n = n & 0x7F, n >> 7
-        out.append(x | 0x80 if n else x)
-        if not n:
-            return bytes(out)
-
-
-def name_str(s):
-    s = s.encode()
-    return enc(len(s)) + s
-
-
-def sections(b):
-    i, out = 8, []
-    while i < len(b):
-        sid = b[i]
-        n, j = leb(b, i + 1)
-        out.append((sid, b[j:j + n]))
-        i = j + n
-    return out
-
-
-def imported_functions(body):
-    """How many functions the import section brings (they come first in the index space)."""
-    count, k = leb(body, 0)
-    funcs = 0
-    for _ in range(count):
-        for _ in range(2):  # module and field name
-            n, k = leb(body, k)
-            k += n
-        kind = body[k]
-        k += 1
-        if kind == 0:  # function: type index
-            _, k = leb(body, k)
-            funcs += 1
-        elif kind in (1, 2):  # table (reftype first) or memory: limits
-            k += kind == 1
-            flags, k = leb(body, k)
-            _, k = leb(body, k)
-            if flags & 1:
-                _, k = leb(body, k)
-        elif kind == 3:  # global: valtype, mutability
-            k += 2
-        elif kind == 4:  # tag: attribute, type index
-            k += 1
-            _, k = leb(body, k)
-        else:
-            sys.exit(f"order_functions: unknown import kind {kind}")
-    return funcs
-
-
 def read(b):
-    imports, bodies, names = 0, [], {}
-    for sid, body in sections(b):
-        if sid == 2:
-            imports = imported_functions(body)
-        elif sid == 10:
-            count, k = leb(body, 0)
-            for _ in range(count):
-                n, k = leb(body, k)
-                bodies.append(body[k:k + n])
-                k += n
-        elif sid == 0:
-            n, k = leb(body, 0)
-            if body[k:k + n] != b"name":
-                continue
-            k += n
-            while k < len(body):
-                sub = body[k]
-                n, k = leb(body, k + 1)
-                part, k = body[k:k + n], k + n
-                if sub == 1:  # function names
-                    count, q = leb(part, 0)
-                    for _ in range(count):
-                        index, q = leb(part, q)
-                        n, q = leb(part, q)
-                        names[index] = part[q:q + n].decode("utf-8", "replace")
-                        q += n
-    return imports, bodies, names
+    """(imported function count, function bodies, names by function index)."""
+    m = wasm_split.Module(b)
+    names = {}
+    for sid, body in m.secs:
+        if sid != 0:
+            continue
+        n, k = uleb(body, 0)
+        if body[k:k + n] != b"name":
+            continue
+        k += n
+        while k < len(body):
+            sub = body[k]
+            n, k = uleb(body, k + 1)
+            part, k = body[k:k + n], k + n
+            if sub == 1:  # function names
+                count, q = uleb(part, 0)
+                for _ in range(count):
+                    index, q = uleb(part, q)
+                    n, q = uleb(part, q)
+                    names[index] = part[q:q + n].decode("utf-8", "replace")
+                    q += n
+    return len(m.imp_funcs), m.bodies, names
 
 
 def order(bodies, names, imports):
@@ -154,16 +88,16 @@ def order(bodies, names, imports):
 
 
 def renamed(b, new_names):
-    sub = enc(len(new_names)) + b"".join(enc(i) + name_str(new_names[i]) for i in sorted(new_names))
-    name_section = name_str("name") + bytes([1]) + enc(len(sub)) + sub
+    sub = enc_u(len(new_names)) + b"".join(enc_u(i) + enc_name(new_names[i]) for i in sorted(new_names))
+    name_section = enc_name("name") + bytes([1]) + enc_u(len(sub)) + sub
     out = bytearray(b[:8])
     for sid, body in sections(b):
         if sid == 0:
-            n, k = leb(body, 0)
+            n, k = uleb(body, 0)
             if body[k:k + n] == b"name":
                 continue
-        out += bytes([sid]) + enc(len(body)) + body
-    out += bytes([0]) + enc(len(name_section)) + name_section
+        out += bytes([sid]) + enc_u(len(body)) + body
+    out += bytes([0]) + enc_u(len(name_section)) + name_section
     return bytes(out)
 
 

@@ -26,7 +26,8 @@ memory and starts at the old end)."""
 # --- LEB128 ---------------------------------------------------------------------------------
 
 
-def uleb(b, i):
+def leb(b, i, signed=False):
+    """The LEB128 number at b[i] and the offset after it."""
     r = s = 0
     while True:
         x = b[i]
@@ -34,20 +35,15 @@ def uleb(b, i):
         r |= (x & 0x7F) << s
         s += 7
         if x < 0x80:
-            return r, i
+            return (r - (1 << s) if signed and x & 0x40 else r), i
+
+
+def uleb(b, i):
+    return leb(b, i)
 
 
 def sleb(b, i):
-    r = s = 0
-    while True:
-        x = b[i]
-        i += 1
-        r |= (x & 0x7F) << s
-        s += 7
-        if x < 0x80:
-            if x & 0x40:
-                r -= 1 << s
-            return r, i
+    return leb(b, i, signed=True)
 
 
 def enc_u(n):
@@ -116,9 +112,7 @@ def const_expr_end(b, i):
         i += 1
         if op == 0x0B:
             return i
-        if op in (0x41,):
-            _, i = sleb(b, i)
-        elif op == 0x42:
+        if op in (0x41, 0x42):
             _, i = sleb(b, i)
         elif op == 0x43:
             i += 4
@@ -185,8 +179,6 @@ class Module:
                     kind = body[k + ln]
                     idx, k = uleb(body, k + ln + 1)
                     self.exports.append((name, kind, idx))
-            elif sid == 8:
-                raise Unsupported("a start function")
             elif sid == 10:
                 n, k = uleb(body, 0)
                 for _ in range(n):
@@ -234,23 +226,13 @@ class Module:
         return next((body for s, body in self.secs if s == sid), None)
 
     def write(self, replace):
-        """The module with the sections in `replace` (id -> bytes; None drops it) and new ones
-        (ids not present, put in the standard order)."""
-        order = [1, 2, 3, 4, 5, 13, 6, 7, 8, 9, 12, 10, 11]
+        """The module with the sections in `replace` (id -> bytes) in place of its own."""
+        if not set(replace) <= {sid for sid, _ in self.secs}:
+            raise Unsupported("a section to replace is missing")
         out = bytearray(b"\0asm\x01\0\0\0")
-        present = {s for s, _ in self.secs}
-        pending = sorted((s for s in replace if s not in present and s != 0), key=order.index)
         for sid, body in self.secs:
-            while pending and sid != 0 and order.index(pending[0]) < order.index(sid):
-                s = pending.pop(0)
-                out += bytes([s]) + enc_u(len(replace[s])) + replace[s]
-            if sid in replace and sid != 0:
-                body = replace[sid]
-                if body is None:
-                    continue
+            body = replace.get(sid, body) if sid != 0 else body
             out += bytes([sid]) + enc_u(len(body)) + body
-        for s in pending:
-            out += bytes([s]) + enc_u(len(replace[s])) + replace[s]
         return bytes(out)
 
 
@@ -395,6 +377,8 @@ def split(data, run):
     deferred count)."""
     m = Module(data)
     nimp = len(m.imp_funcs)
+    if m.section(8) is not None:
+        raise Unsupported("a start function (it would run before the loader is in its slot)")
     if len(run) != len(m.funcs):
         raise Unsupported("the profile is of another build")
     if m.imp_tables or not m.tables or m.tables[0][0] != 0x70:
@@ -411,16 +395,11 @@ def split(data, run):
 
     # Types: a [] -> [] type for LOADER.
     types = list(m.types)
-    try:
-        void = types.index((b"", b""))
-        type_sec = None
-    except ValueError:
-        void = len(types)
+    if (b"", b"") not in types:
         types.append((b"", b""))
-        type_sec = bytearray(enc_u(len(types)))
-        for p, r in types:
-            type_sec += b"\x60" + enc_u(len(p)) + p + enc_u(len(r)) + r
-        type_sec = bytes(type_sec)
+    void = types.index((b"", b""))
+    type_sec = enc_u(len(types)) + b"".join(
+        b"\x60" + enc_u(len(p)) + p + enc_u(len(r)) + r for p, r in types)
 
     reftype, (lo, hi) = m.tables[0]
     if hi is not None and hi != lo:
@@ -469,8 +448,7 @@ def split(data, run):
     for name, kind, idx in m.exports + new_exports:
         exp_sec += enc_name(name) + bytes([kind]) + enc_u(idx)
     replace = {10: bytes(code), 4: table_sec, 7: bytes(exp_sec)}
-    if type_sec:
-        replace[1] = type_sec
+    replace[1] = type_sec
     primary = m.write(replace)
 
     # Deferred: imports in the primary's order, then its own functions.
@@ -493,10 +471,7 @@ def split(data, run):
     def sec(sid, body):
         out.extend(bytes([sid]) + enc_u(len(body)) + body)
 
-    tsec = bytearray(enc_u(len(types)))
-    for p, r in types:
-        tsec += b"\x60" + enc_u(len(p)) + p + enc_u(len(r)) + r
-    sec(1, bytes(tsec))
+    sec(1, type_sec)
     sec(2, enc_u(len(imps)) + b"".join(imps))
     sec(3, enc_u(len(deferred)) + b"".join(enc_u(m.funcs[k]) for k in deferred))
     elem = (b"\x00" + b"\x41" + enc_s(base) + b"\x0b" + enc_u(len(deferred))
