@@ -186,6 +186,11 @@ ERRORS = ("window.__schwenkbarErrors = [];"
           "addEventListener('unhandledrejection', (e) => window.__schwenkbarErrors.push(String(e.reason)));")
 
 
+# The page as the DOM has it: texts, classes and attributes (read-only data the primary would
+# lack shows as an empty or wrong string somewhere in there).
+PAGE_HTML = "return document.body.outerHTML;"
+
+
 def split_state(driver):
     state = driver.js(SPLIT)
     if state is None:
@@ -231,6 +236,32 @@ def split_tests(driver, dist, run):
                 raise Failure(f"a deferred function ran before the background load: {state}")
             return "loaded in the background, no deferred call before it"
 
+        def first_screen_same_without_deferred_data():
+            # The deferred wasm also carries the read-only data (texts, tables) only its functions
+            # read: the first screen must read none of it (scripts/wasm_split.py, plan_data). The same page, with the state the
+            # loads before saved, once whole (the deferred part loaded) and once with it blocked.
+            driver.go(base + "?whole")
+            rendered(driver, TRAINER, ["Schwenkbar"])
+            wait_for("the deferred wasm loaded", lambda: split_state(driver)["state"] == 2, 20)
+            time.sleep(1)
+            whole = driver.js(PAGE_HTML)
+            driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
+            try:
+                driver.go(base + "?primary")
+                rendered(driver, TRAINER, ["Schwenkbar"])
+                time.sleep(1)
+                state = split_state(driver)
+                alone = driver.js(PAGE_HTML)
+            finally:
+                driver.cdp("Network.setBlockedURLs", {"urls": []})
+            if state["state"] == 2 or state["sync"]:
+                raise Failure(f"the first screen needed the deferred wasm: {state}")
+            if alone != whole:
+                at = next(i for i, (a, b) in enumerate(zip(alone + "\0", whole + "\0")) if a != b)
+                raise Failure("the first screen differs without the deferred wasm: "
+                              f"{alone[max(0, at - 80):at + 40]!r} instead of {whole[max(0, at - 80):at + 40]!r}")
+            return f"the same page ({len(whole)} characters of HTML) with and without the deferred wasm"
+
         def loads_on_first_use():
             hooks.append(driver.cdp("Page.addScriptToEvaluateOnNewDocument",
                                     {"source": "globalThis.__schwenkbarNoPrefetch = true;"})["identifier"])
@@ -265,6 +296,7 @@ def split_tests(driver, dist, run):
 
         run("split::trainer_first_screen_without_the_deferred_wasm", first_screen_alone)
         run("split::deferred_wasm_loads_after_the_first_screen", loads_after_first_screen)
+        run("split::first_screen_the_same_without_the_deferred_data", first_screen_same_without_deferred_data)
         run("split::deferred_call_before_the_load_loads_it_at_once", loads_on_first_use)
         run("split::deferred_wasm_missing_says_so", missing_says_so)
     finally:
@@ -342,7 +374,7 @@ def main():
             return ok
         return run
 
-    groups = {"split wasm (dist/)": 4, "offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
+    groups = {"split wasm (dist/)": 5, "offline (service worker, dist/)": 6, "single file (dist-single/)": 2}
     signal.signal(signal.SIGALRM, out_of_time)
     signal.alarm(TIME_LIMIT_S)
     work = tempfile.mkdtemp(prefix="schwenkbar-offline-")

@@ -94,7 +94,9 @@ def renamed(b, new_names):
     for sid, body in sections(b):
         if sid == 0:
             n, k = uleb(body, 0)
-            if body[k:k + n] == b"name":
+            # The old names, and the linker's symbols and relocations (web/build.rs keeps them
+            # for scripts/split_pages.py; after wasm-bindgen they no longer fit the code).
+            if body[k:k + n] in (b"name", b"linking") or body[k:k + n].startswith(b"reloc."):
                 continue
         out += bytes([sid]) + enc_u(len(body)) + body
     out += bytes([0]) + enc_u(len(name_section)) + name_section

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Splits each built page's wasm (DIST/index.html, kurs.html, maschine.html) into what its first
 screen runs and the rest (scripts/wasm_split.py), so that a page loads less before it shows.
-Usage: split_pages.py DIST. Run by build_pages (scripts/env.sh) after trunk, before
+Usage: split_pages.py DIST [LINKED_DIR] (cargo's wasm32 release folder: the linked binaries, for
+the data, see wasm_split.plan_data). Run by build_pages (scripts/env.sh) after trunk, before
 scripts/order_functions.py.
 
 1. Profile: each page's wasm gets a profile byte per function; a copy of DIST with those is
@@ -211,8 +212,24 @@ def patch_glue(text, deferred, facts):
     return text[:end] + "\n" + loader + text[end:]
 
 
+def split_with_data(original, run, linked_dir, wasm):
+    """wasm_split.split with the read-only data only deferred functions read, when cargo's linked
+    binary of this page (trunk's name without its hash) is there and fits; else the code alone."""
+    linked = None if linked_dir is None else linked_dir / (wasm.rsplit("-", 1)[0] + ".wasm")
+    if linked is not None and linked.is_file():
+        try:
+            return wasm_split.split(original, run, linked.read_bytes())
+        except wasm_split.Unsupported as e:
+            print(f"split: WARNING {wasm}: its data stays in the primary: {e}", file=sys.stderr)
+    else:
+        print(f"split: WARNING {wasm}: its data stays in the primary: no linked binary {linked}",
+              file=sys.stderr)
+    return wasm_split.split(original, run)
+
+
 def main():
     dist = pathlib.Path(sys.argv[1])
+    linked_dir = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else None
     if os.environ.get("SCHWENKBAR_NO_SPLIT"):
         print("split: SCHWENKBAR_NO_SPLIT is set, every page stays whole", file=sys.stderr)
         return
@@ -235,7 +252,7 @@ def main():
     for page, (glue, wasm, _, _, _) in plan.items():
         try:
             original = (dist / wasm).read_bytes()
-            primary, deferred, facts = wasm_split.split(original, runs[page])
+            primary, deferred, facts = split_with_data(original, runs[page], linked_dir, wasm)
         except (wasm_split.Unsupported, KeyError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
             continue
@@ -265,7 +282,7 @@ def main():
         (dist / page).write_text(html.replace(old, new), encoding="utf-8")
         print(f"split: {page}: {facts['functions'] - facts['deferred']} of {facts['functions']} functions "
               f"ran on the first screen; {len(original)} bytes -> {new}_bg.wasm {len(primary)} bytes, "
-              f"{new}_deferred.wasm {len(deferred)} bytes")
+              f"{new}_deferred.wasm {len(deferred)} bytes, with {facts['data']} bytes of read-only data")
 
 
 def invalid(data, what):

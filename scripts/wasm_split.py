@@ -23,6 +23,8 @@ primary, as do SIMD bodies (the decoder does not read them).
 Instrumentation (for the profile of what the first screen runs): each body first stores 1 in
 its own byte of a page added above the initial memory, where dlmalloc never allocates (it grows
 memory and starts at the old end)."""
+import bisect
+
 # --- LEB128 ---------------------------------------------------------------------------------
 
 
@@ -255,8 +257,9 @@ def code_start(body):
 
 def scan(body):
     """Walks a body's instructions. Returns (funcidx immediates as (start, end, index),
-    whether it uses passive segments). Raises Unsupported on opcodes it does not know."""
-    refs, passive = [], False
+    whether it uses passive segments, every address it may form: its integer constants (each
+    half of an i64) and memory offsets). Raises Unsupported on opcodes it does not know."""
+    refs, passive, consts = [], False, []
     i = code_start(body)
     end = len(body)
     while i < end:
@@ -289,11 +292,18 @@ def scan(body):
             align, i = uleb(body, i)
             if align & 0x40:
                 _, i = uleb(body, i)
-            _, i = uleb(body, i)
+            offset, i = uleb(body, i)
+            consts.append(offset)
         elif op in (0x3F, 0x40):
             _, i = uleb(body, i)
-        elif op in (0x41, 0x42):
-            _, i = sleb(body, i)
+        elif op == 0x41:
+            v, i = sleb(body, i)
+            consts.append(v & 0xFFFFFFFF)
+        elif op == 0x42:
+            # Both halves: wasm-opt joins two i32 stores into one i64 store (a &str's address
+            # and length in one constant).
+            v, i = sleb(body, i)
+            consts += [v & 0xFFFFFFFF, (v >> 32) & 0xFFFFFFFF]
         elif op == 0x43:
             i += 4
         elif op == 0x44:
@@ -322,7 +332,7 @@ def scan(body):
             raise Unsupported(f"opcode {op:#x}")
     if i != end or body[-1] != 0x0B:
         raise Unsupported("a body does not end where its size says")
-    return refs, passive
+    return refs, passive, consts
 
 
 def renumbered(body, refs, new_index):
@@ -332,6 +342,299 @@ def renumbered(body, refs, new_index):
         last = e
     out += body[last:]
     return bytes(out)
+
+
+# --- read-only data ---------------------------------------------------------------------------
+# The texts and tables only deferred functions read can wait for the deferred module too: it
+# writes them into the memory it imports when it is instantiated (active data segments), before
+# any deferred function can run. Which those are comes from the linked binary (cargo's output,
+# linked with --emit-relocs, web/build.rs): its symbol table bounds each read-only object, its
+# relocations say which object each address in the code and in the data means (also an address
+# folded with an offset that points outside its object). An object stays in the primary when the
+# code the primary keeps holds an address inside it, at its end or meant for it, or when data
+# that stays points to it; everything wasm-bindgen and wasm-opt did after the link is seen in the
+# final code, which is what is searched.
+
+# Relocation types (LLVM's WasmRelocs.def) with an addend; of those, the absolute memory
+# addresses of wasm32. The others with an addend (PIC-relative, TLS, 64-bit) are refused.
+RELOC_ADDEND = {3, 4, 5, 8, 9, 11, 14, 15, 16, 17, 21, 22, 23, 25}
+RELOC_MEMORY = {3, 4, 5}
+RELOC_NO_ADDEND = {0, 1, 2, 6, 7, 10, 12, 13, 18, 19, 20, 24, 26}
+
+
+def data_segments(m):
+    """(address or None, start of the bytes in the data section, length) of each segment."""
+    body = m.section(11)
+    if body is None:
+        return []
+    n, k = uleb(body, 0)
+    out = []
+    for _ in range(n):
+        flags, k = uleb(body, k)
+        if flags == 0 and body[k] == 0x41 and body[k + 1] != 0x0B:
+            addr, k = sleb(body, k + 1)
+            if body[k] != 0x0B:
+                raise Unsupported("a data segment's offset is not a constant")
+            addr, k = addr & 0xFFFFFFFF, k + 1
+        elif flags == 1:
+            addr = None
+        else:
+            raise Unsupported(f"data segment flags {flags}")
+        ln, k = uleb(body, k)
+        out.append((addr, k, ln))
+        k += ln
+    return out
+
+
+def custom(m, name):
+    for sid, body in m.secs:
+        if sid == 0:
+            n, k = uleb(body, 0)
+            if body[k:k + n] == name.encode():
+                return body[k + n:]
+    return None
+
+
+def linked_data(linked):
+    """From the linked binary: (read-only objects as sorted [start, end) intervals, merged where
+    they overlap; what each address the code's relocations write means, {value: {object}};
+    edges between data, [(site address, target object)]; the linked memory image as
+    {segment address: bytes})."""
+    lm = Module(linked)
+    segs = data_segments(lm)
+    link, rcode, rdata = custom(lm, "linking"), custom(lm, "reloc.CODE"), custom(lm, "reloc.DATA")
+    if link is None or rcode is None:
+        raise Unsupported("the linked binary has no relocations (linked without --emit-relocs)")
+    version, k = uleb(link, 0)
+    if version != 2:
+        raise Unsupported(f"linking section version {version}")
+    seg_names, symbols = [], []  # symbols: address of each (None: not a defined data symbol)
+    while k < len(link):
+        sub = link[k]
+        n, k = uleb(link, k + 1)
+        end = k + n
+        if sub == 5:
+            c, q = uleb(link, k)
+            for _ in range(c):
+                ln, q = uleb(link, q)
+                seg_names.append(link[q:q + ln].decode())
+                q += ln
+                _, q = uleb(link, q)
+                _, q = uleb(link, q)
+        elif sub == 8:
+            c, q = uleb(link, k)
+            for _ in range(c):
+                kind = link[q]
+                flags, q = uleb(link, q + 1)
+                defined = not flags & 0x10
+                if kind in (0, 2, 4, 5):
+                    _, q = uleb(link, q)
+                    if defined or flags & 0x40:
+                        ln, q = uleb(link, q)
+                        q += ln
+                    symbols.append(None)
+                elif kind == 1:
+                    ln, q = uleb(link, q)
+                    q += ln
+                    if defined:
+                        seg, q = uleb(link, q)
+                        off, q = uleb(link, q)
+                        size, q = uleb(link, q)
+                        symbols.append((seg, off, size))
+                    else:
+                        symbols.append(None)
+                elif kind == 3:
+                    _, q = uleb(link, q)
+                    symbols.append(None)
+                else:
+                    raise Unsupported(f"symbol kind {kind}")
+        k = end
+    if len(seg_names) != len(segs) or any(a is None for a, _, _ in segs):
+        raise Unsupported("the linked binary's data segments are not the ones its symbols name")
+    address = [None if s is None else segs[s[0]][0] + s[1] for s in symbols]
+    # Read-only objects: the defined data symbols in .rodata segments, overlapping ones merged.
+    spans = sorted((segs[s[0]][0] + s[1], segs[s[0]][0] + s[1] + s[2]) for s in symbols
+                   if s is not None and s[2] and seg_names[s[0]].startswith(".rodata"))
+    objects = []
+    for a, e in spans:
+        if objects and a < objects[-1][1]:
+            objects[-1][1] = max(objects[-1][1], e)
+        else:
+            objects.append([a, e])
+    starts = [a for a, _ in objects]
+
+    def containing(v):
+        i = bisect.bisect_right(starts, v) - 1
+        return i if i >= 0 and v < objects[i][1] else None
+
+    def relocs(body):
+        _, q = uleb(body, 0)
+        c, q = uleb(body, q)
+        for _ in range(c):
+            t = body[q]
+            off, q = uleb(body, q + 1)
+            idx, q = uleb(body, q)
+            addend = 0
+            if t in RELOC_ADDEND:
+                addend, q = sleb(body, q)
+            elif t not in RELOC_NO_ADDEND:
+                raise Unsupported(f"relocation type {t}")
+            if t in RELOC_ADDEND - RELOC_MEMORY - {8, 9, 22}:
+                raise Unsupported(f"relocation type {t} (not an absolute wasm32 address)")
+            if t in RELOC_MEMORY:
+                if idx >= len(symbols) or address[idx] is None:
+                    raise Unsupported("a memory relocation names no defined data symbol")
+                yield t, off, address[idx], (address[idx] + addend) & 0xFFFFFFFF
+
+    def written(body, t, off):
+        """The value the linker wrote at a relocation's site (checks how it was read)."""
+        if t == 5:
+            return int.from_bytes(body[off:off + 4], "little")
+        return (sleb(body, off) if t == 4 else uleb(body, off))[0] & 0xFFFFFFFF
+
+    code_body, data_body = lm.section(10), lm.section(11) or b""
+    meant = {}
+    for t, off, sym, value in relocs(rcode):
+        if written(code_body, t, off) != value:
+            raise Unsupported(f"a code relocation at {off} does not hold its address")
+        o = containing(sym)
+        if o is not None:
+            meant.setdefault(value, set()).add(o)
+    edges = []
+    for t, off, sym, value in relocs(rdata) if rdata is not None else ():
+        seg = next((s for s in segs if s[1] <= off < s[1] + s[2]), None)
+        if seg is None or written(data_body, t, off) != value:
+            raise Unsupported(f"a data relocation at {off} is not a pointer in the data")
+        edges.append((seg[0] + off - seg[1], containing(sym)))
+    image = {a: data_body[s:s + n] for a, s, n in segs}
+    return [tuple(o) for o in objects], meant, edges, image
+
+
+
+def plan_data(m, linked, kept_consts):
+    """The read-only objects (start, end) only deferred code reads, checked to hold the same
+    bytes in the linked binary and in `m`. `kept_consts`: the addresses the primary's code may
+    form (scan)."""
+    objects, meant, edges, image = linked_data(linked)
+    if not objects:
+        return []
+    starts = [a for a, _ in objects]
+
+    def containing(v):
+        i = bisect.bisect_right(starts, v) - 1
+        return i if i >= 0 and v < objects[i][1] else None
+
+    by_end = {e: i for i, (_, e) in enumerate(objects)}
+    need, todo = set(), []
+
+    def mark(v):
+        # The object an address is inside, the one it ends (an end pointer wasm-opt folded
+        # itself), and those its relocation means.
+        for o in (containing(v), by_end.get(v), *meant.get(v, ())):
+            if o is not None and o not in need:
+                need.add(o)
+                todo.append(o)
+
+    for consts in [*kept_consts, global_consts(m)]:
+        for v in consts:
+            mark(v)
+    out_edges = {}
+    for site, target in edges:
+        if target is None:
+            continue
+        source = containing(site)
+        if source is None:  # a pointer in mutable data (or between objects): always there
+            if target not in need:
+                need.add(target)
+                todo.append(target)
+        else:
+            out_edges.setdefault(source, []).append(target)
+    while todo:
+        for t in out_edges.get(todo.pop(), ()):
+            if t not in need:
+                need.add(t)
+                todo.append(t)
+    deferred = [objects[i] for i in range(len(objects)) if i not in need]
+    # The same bytes after wasm-bindgen and wasm-opt (which must not have moved any data).
+    final = MemoryImage(m)
+    for a, e in deferred:
+        seg = next((s for s in image if s <= a and e <= s + len(image[s])), None)
+        if seg is None or image[seg][a - seg:e - seg] != final.read(a, e):
+            raise Unsupported(f"the data at {a:#x} differs from the linked binary's")
+    return deferred
+
+
+def global_consts(m):
+    """The integer constants the globals start with (wasm-opt may keep an address in one)."""
+    out = []
+    body = m.section(6)
+    if body is not None:
+        n, k = uleb(body, 0)
+        for _ in range(n):
+            k += 2
+            if body[k] in (0x41, 0x42):
+                v, _ = sleb(body, k + 1)
+                out += [v & 0xFFFFFFFF, (v >> 32) & 0xFFFFFFFF]
+            k = const_expr_end(body, k)
+    return out
+
+
+class MemoryImage:
+    """A module's initial memory from its active data segments."""
+
+    def __init__(self, m):
+        self.segs = []
+        body = m.section(11) or b""
+        for addr, start, n in data_segments(m):
+            if addr is None:
+                raise Unsupported("a passive data segment")
+            self.segs.append((addr, body[start:start + n]))
+
+    def read(self, a, e):
+        out = bytearray(e - a)
+        for addr, b in self.segs:
+            lo, hi = max(a, addr), min(e, addr + len(b))
+            if lo < hi:
+                out[lo - a:hi - a] = b[lo - addr:hi - addr]
+        return bytes(out)
+
+
+def data_section(segments):
+    """An active data section of (address, bytes), leaving out the bytes that are zero anyway."""
+    out, n = bytearray(), 0
+    for addr, b in segments:
+        if any(b):
+            out += b"\x00\x41" + enc_s(addr) + b"\x0b" + enc_u(len(b)) + b
+            n += 1
+    return enc_u(n) + bytes(out), n
+
+
+def gathered(objects, image):
+    """The objects (sorted) as (address, bytes) runs for the deferred module; a gap of up to 8
+    bytes between two is written along with them (the primary keeps it: the same bytes again)."""
+    runs = []
+    for a, e in objects:
+        if runs and a - runs[-1][1] <= 8:
+            runs[-1][1] = e
+        else:
+            runs.append([a, e])
+    return [(a, image.read(a, e)) for a, e in runs]
+
+
+def without(segments, cut):
+    """The segments (address, bytes) with the intervals `cut` (sorted, disjoint) taken out."""
+    out = []
+    for addr, b in segments:
+        pos, end = addr, addr + len(b)
+        for a, e in cut:
+            if e <= pos or a >= end:
+                continue
+            if a > pos:
+                out.append((pos, b[pos - addr:a - addr]))
+            pos = max(pos, e)
+        if pos < end:
+            out.append((pos, b[pos - addr:]))
+    return out
 
 
 # --- instrumenting ----------------------------------------------------------------------------
@@ -371,10 +674,11 @@ def short_name(prefix, n):
             return prefix + s
 
 
-def split(data, run):
-    """Splits by `run` (one flag per defined function: ran on the first screen). Returns
-    (primary bytes, deferred bytes, facts for the loader: loader slot, table export name,
-    deferred count)."""
+def split(data, run, linked=None):
+    """Splits by `run` (one flag per defined function: ran on the first screen); with `linked`
+    (the linked binary, see plan_data) the read-only data only deferred functions read goes too.
+    Returns (primary bytes, deferred bytes, facts for the loader: loader slot, table export name,
+    deferred count, deferred data bytes)."""
     m = Module(data)
     nimp = len(m.imp_funcs)
     if m.section(8) is not None:
@@ -449,6 +753,15 @@ def split(data, run):
         exp_sec += enc_name(name) + bytes([kind]) + enc_u(idx)
     replace = {10: bytes(code), 4: table_sec, 7: bytes(exp_sec)}
     replace[1] = type_sec
+    moved = []
+    if linked is not None:
+        image = MemoryImage(m)
+        objects = plan_data(m, linked, [scans[k][2] for k in range(len(m.bodies)) if nimp + k not in dset])
+        moved = gathered(objects, image)
+        if moved:
+            replace[11], count = data_section(without(image.segs, objects))
+            if m.section(12) is not None:
+                replace[12] = enc_u(count)
     primary = m.write(replace)
 
     # Deferred: imports in the primary's order, then its own functions.
@@ -482,14 +795,16 @@ def split(data, run):
     for k in deferred:
         body = renumbered(m.bodies[k], scans[k][0], new_index)
         # Read back: the same body once its calls are numbered as in the original.
-        refs, _ = scan(body)
+        refs, _, _ = scan(body)
         if renumbered(body, refs, old_index) != m.bodies[k]:
             raise Unsupported(f"function {nimp + k} does not read back the same")
         dcode += enc_u(len(body)) + body
     sec(10, bytes(dcode))
+    if moved:
+        sec(11, data_section(moved)[0])
     # The features the bodies use, for tools that validate the module (wasm-opt).
     for sid, body in m.secs:
         if sid == 0 and body.startswith(enc_name("target_features")):
             sec(0, body)
     return primary, bytes(out), {"loader": loader, "table": EXPORT_TABLE, "deferred": len(deferred),
-                                 "functions": len(m.funcs)}
+                                 "functions": len(m.funcs), "data": sum(len(b) for _, b in moved)}

@@ -5,7 +5,9 @@ split, with the loader wired as the pages' glue wires it (split_pages.HELPER): e
 give the same results and make the same calls to its import, the deferred module must load once,
 at the first deferred call, and never when only primary functions run. Also: the profile bytes
 of an instrumented module name exactly the functions that ran, and bodies the decoder does not
-know leave the module whole.
+know leave the module whole. Read-only data: what only deferred code reads moves to the deferred
+module, what the primary reads (through an address outside the object, through a pointer in
+data, inside it with no relocation, in half an i64) stays, and memory after the load is the whole module's.
 
 Prints one line per test and cargo's summary line, which --log appends to scripts/test.sh's log.
 Usage: wasm_split_test.py [--log FILE]"""
@@ -102,11 +104,128 @@ console.log(JSON.stringify(out));
 """
 
 
-def assemble(tmp):
-    wat = os.path.join(tmp, "m.wat")
-    wasm = os.path.join(tmp, "m.wasm")
+# Read-only data: a module laid out as a linker lays out Rust's statics, with the linker's symbol
+# table and relocations written beside it as `wasm-ld --emit-relocs` writes them (linked()).
+# .rodata (256..336) holds the objects below, .data (340) the pointer F. p_* functions run on the
+# first screen (primary), d_* not (deferred; called through the exported call_*).
+# - A: read by d_a only: moves.          - B: read by p_b at 252 + 12: the constant is B - 12,
+# - C: read through P, which p_c reads:    which lies outside B (the relocation says it means B).
+#   stays.                               - D: read by d_e only, points to E: both move.
+# - G: pointed to by F (mutable .data,    - H: p_h reads H + 4 (316), an address with no
+#   always in the primary): stays.          relocation (as wasm-opt folds one): stays.
+# - I: read by d_i only: moves.
+# - J: p_j stores its address and length as one i64 (as wasm-opt joins two i32 stores): stays.
+DATA = {"A": (256, 4), "B": (264, 4), "C": (272, 4), "P": (280, 4), "D": (288, 4), "E": (296, 4),
+        "G": (304, 4), "H": (312, 8), "J": (320, 4), "I": (328, 8)}
+DATA_WAT = r"""
+(module
+  (memory (export "memory") 1)
+  (table 1 1 funcref)
+  (data (i32.const 256) "\65\00\00\00\00\00\00\00\ca\00\00\00\00\00\00\00\2f\01\00\00\00\00\00\00"
+    "\10\01\00\00\00\00\00\00\28\01\00\00\00\00\00\00\f9\01\00\00\00\00\00\00\c3\02\00\00\00\00\00\00"
+    "\28\03\00\00\29\03\00\00\e8\03\00\00\00\00\00\00\8d\03\00\00\8e\03\00\00")
+  (data (i32.const 340) "\30\01\00\00")
+  (func $p_b (export "p_b") (param i32) (result i32) (i32.load (i32.add (i32.const 252) (local.get 0))))
+  (func $p_c (export "p_c") (result i32) (i32.load (i32.load (i32.const 280))))
+  (func $p_g (export "p_g") (result i32) (i32.load (i32.load (i32.const 340))))
+  (func $p_h (export "p_h") (result i32) (i32.load (i32.const 316)))
+  (func $p_j (export "p_j") (result i32)
+    (i64.store (i32.const 0) (i64.const 17179869504))
+    (i32.load (i32.load (i32.const 0))))
+  (func $d_a (result i32) (i32.load (i32.const 256)))
+  (func $d_e (result i32) (i32.load (i32.load (i32.const 288))))
+  (func $d_i (result i32) (i32.add (i32.load (i32.const 328)) (i32.load (i32.const 332))))
+  (func $call_a (export "call_a") (result i32) (call $d_a))
+  (func $call_e (export "call_e") (result i32) (call $d_e))
+  (func $call_i (export "call_i") (result i32) (call $d_i))
+)
+"""
+DATA_RUN = [True, True, True, True, True, False, False, False, True, True, True]
+# The code's addresses and what they mean (symbol, addend); 316 has none (see H).
+CODE_RELOCS = {252: ("B", -12), 280: ("P", 0), 340: ("F", 0), 256: ("A", 0), 288: ("D", 0),
+               328: ("I", 0), 332: ("I", 4)}
+DATA_RELOCS = {280: "C", 288: "E", 340: "G"}  # pointer site -> object
+DATA_JOBS = [["p_b", 12], ["p_c"], ["p_g"], ["p_h"], ["p_j"], ["call_a"], ["call_e"], ["call_i"]]
+
+DATA_HARNESS = r"""
+const fs = require('fs');
+const [whole, primary, deferred, helper, slot, table, jobs] = process.argv.slice(2);
+const out = { whole: [], split: [], loads: [], early: {} };
+let w = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(whole)), {});
+for (const [f, ...a] of JSON.parse(jobs)) out.whole.push(w.exports[f](...a));
+const inst = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(primary)), {});
+let loads = 0;
+const h = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array(JSON.parse(helper))), {
+  j: { l: () => {
+    loads += 1;
+    new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(deferred)), { p: inst.exports });
+    inst.exports[table].set(Number(slot), h.exports.n);
+  } },
+});
+inst.exports[table].set(Number(slot), h.exports.l);
+const mem = () => new Int32Array(inst.exports.memory.buffer);
+out.before = Array.from(mem().slice(64, 88));  // bytes 256..352 before the deferred module
+for (const [f, ...a] of JSON.parse(jobs)) { out.split.push(inst.exports[f](...a)); out.loads.push(loads); }
+out.after = Array.from(mem().slice(64, 88));
+out.whole_mem = Array.from(new Int32Array(w.exports.memory.buffer).slice(64, 88));
+console.log(JSON.stringify(out));
+"""
+
+
+def linked(module):
+    """`module` with the custom sections wasm-ld --emit-relocs writes: linking (segment info,
+    symbol table: the data symbols of DATA and F) and reloc.CODE / reloc.DATA."""
+    m = wasm_split.Module(module)
+    segs = wasm_split.data_segments(m)
+    names = list(DATA) + ["F"]
+    symtab = wasm_split.enc_u(len(names))
+    for n in names:
+        seg, (addr, size) = (1, (340, 4)) if n == "F" else (0, DATA[n])
+        symtab += (b"\x01\x00" + wasm_split.enc_name(n) + wasm_split.enc_u(seg)
+                   + wasm_split.enc_u(addr - segs[seg][0]) + wasm_split.enc_u(size))
+    info = wasm_split.enc_u(2) + b"".join(wasm_split.enc_name(n) + b"\x02\x00" for n in (".rodata", ".data"))
+    link = (wasm_split.enc_name("linking") + wasm_split.enc_u(2) + b"\x05" + wasm_split.enc_u(len(info)) + info
+            + b"\x08" + wasm_split.enc_u(len(symtab)) + symtab)
+    code = m.section(10)
+    rc = b""
+    for value, (sym, addend) in CODE_RELOCS.items():
+        at = code.index(b"\x41" + wasm_split.enc_s(value)) + 1
+        rc += b"\x04" + wasm_split.enc_u(at) + wasm_split.enc_u(names.index(sym)) + wasm_split.enc_s(addend)
+    rd = b""
+    for site, target in DATA_RELOCS.items():
+        seg = segs[0] if site < 336 else segs[1]
+        at = seg[1] + site - seg[0]
+        rd += b"\x05" + wasm_split.enc_u(at) + wasm_split.enc_u(names.index(target)) + wasm_split.enc_s(0)
+    out = bytearray(module)
+    for body in (link,
+                 wasm_split.enc_name("reloc.CODE") + b"\x0a" + wasm_split.enc_u(len(CODE_RELOCS)) + rc,
+                 wasm_split.enc_name("reloc.DATA") + b"\x0b" + wasm_split.enc_u(len(DATA_RELOCS)) + rd):
+        out += b"\x00" + wasm_split.enc_u(len(body)) + body
+    return bytes(out)
+
+
+def split_data_and_run(tmp):
+    whole = assemble(tmp, DATA_WAT, "d")
+    data = open(whole, "rb").read()
+    primary, deferred, facts = wasm_split.split(data, DATA_RUN, linked(data))
+    for name, b in (("dp.wasm", primary), ("dd.wasm", deferred)):
+        with open(os.path.join(tmp, name), "wb") as f:
+            f.write(b)
+    js = os.path.join(tmp, "data_harness.js")
+    with open(js, "w", encoding="utf-8") as f:
+        f.write(DATA_HARNESS)
+    got = json.loads(subprocess.run(
+        ["node", js, whole, os.path.join(tmp, "dp.wasm"), os.path.join(tmp, "dd.wasm"),
+         "[" + split_pages.HELPER + "]", str(facts["loader"]), facts["table"], json.dumps(DATA_JOBS)],
+        check=True, capture_output=True, text=True).stdout)
+    return got, facts
+
+
+def assemble(tmp, text=WAT, name="m"):
+    wat = os.path.join(tmp, name + ".wat")
+    wasm = os.path.join(tmp, name + ".wasm")
     with open(wat, "w", encoding="utf-8") as f:
-        f.write(WAT)
+        f.write(text)
     subprocess.run(["wasm-as", wat, "-o", wasm, "--enable-bulk-memory"], check=True)
     return wasm
 
@@ -176,6 +295,27 @@ def main():
                 return f"refused: {e}"
             raise AssertionError("a SIMD body was read")
 
+        try:
+            dgot, dfacts = split_data_and_run(tmp)
+        except (wasm_split.Unsupported, subprocess.CalledProcessError, ValueError, OSError) as e:
+            print(f"wasm_split data tests: {type(e).__name__}: {e}", flush=True)
+            dgot = None
+
+        def word(name):
+            return (DATA[name][0] - 256) // 4
+
+        def data_moves_with_the_deferred_code():
+            moved = [n for n in DATA if dgot["before"][word(n)] == 0 and dgot["whole_mem"][word(n)] != 0]
+            assert moved == ["A", "D", "E", "I"], f"moved before the deferred module: {moved}"
+            assert dgot["after"] == dgot["whole_mem"], f"memory after {dgot['after']} != {dgot['whole_mem']}"
+            assert dfacts["data"] >= 4 * 4 + 8, dfacts
+            return f"A, D, E, I moved ({dfacts['data']} bytes with padding); B, C, P, G, H, J stay"
+
+        def data_read_first_screen_then_deferred():
+            assert dgot["split"] == dgot["whole"], f"split {dgot['split']} != whole {dgot['whole']}"
+            assert dgot["loads"] == [0, 0, 0, 0, 0, 1, 1, 1], dgot["loads"]
+            return f"{dgot['whole']}: the five primary reads before any load, the deferred ones after"
+
         if got is None:
             results.extend([False] * 4)
         else:
@@ -183,6 +323,11 @@ def main():
             run("wasm_split::deferred_loads_once_at_the_first_deferred_call", loads_once_at_first_deferred_call)
             run("wasm_split::profile_names_the_functions_that_ran", profile_names_what_ran)
             run("wasm_split::unknown_opcode_is_refused", unknown_code_stays_whole)
+        if dgot is None:
+            results.extend([False] * 2)
+        else:
+            run("wasm_split::read_only_data_only_deferred_code_reads_moves", data_moves_with_the_deferred_code)
+            run("wasm_split::primary_reads_its_data_before_the_load", data_read_first_screen_then_deferred)
 
     passed = sum(results)
     line = f"test result: {'ok' if all(results) else 'FAILED'}. {passed} passed; {len(results) - passed} failed; wasm_split"

@@ -10,6 +10,10 @@ use crate::ast::{BlockBody, PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
 use crate::diag::Expected;
 
 /// `FUNCTION …`.
+// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
+// wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
+// it cost 5-7 % of bench_parse.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn function(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(i) = keyword(body, "FUNCTION").map(sp) else { return super::unknown(cx, body) };
     if let Some(r) = keyword(i, "TCPM").map(sp) {

@@ -28,6 +28,10 @@ fn label(i: &str) -> Step<'_, Label> {
 }
 
 /// `LBL …`, `CALL LBL …`, `CALL PGM …`.
+// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
+// wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
+// it cost 5-7 % of bench_parse.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     if let Some(r) = keyword(body, "LBL") {
         return match label(sp(r)) {
@@ -71,6 +75,10 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 
 /// `FN 0: Q1 = +5`, the arithmetic `FN 1..5` and the jumps `FN 9..12`; other FN functions are
 /// kept as unknown blocks.
+// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
+// wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
+// it cost 5-7 % of bench_parse.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(r) = keyword(body, "FN").map(sp) else { return super::unknown(cx, body) };
     let Ok((rest, n)) = uint(r) else { return super::unknown(cx, body) };
@@ -153,6 +161,10 @@ fn jump(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
 }
 
 /// `Q<n> = expr`.
+// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
+// wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
+// it cost 5-7 % of bench_parse.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn assign(cx: &mut Cx, body: &str, fn0: bool) -> Option<BlockBody> {
     let Some(q) = body.strip_prefix('Q') else { return cx.invalid(body, Some(Expected::Nc("Q"))) };
     let (r, target) = match uint(q) {

@@ -8,6 +8,10 @@ use crate::ast::{Axis, BlockBody};
 use crate::diag::{DiagCode, Expected};
 
 /// `TRANS …` (`TRANS SCALE` and others are kept as unknown blocks).
+// Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
+// wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
+// it cost 5-7 % of bench_parse.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(i) = keyword(body, "TRANS").map(sp) else { return super::unknown(cx, body) };
     if let Some(r) = keyword(i, "DATUM").map(sp) {
