@@ -11,8 +11,9 @@ cd "$(dirname "$0")/.."
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
 BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
-# Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, 217,
-# 316 (its lessons' first screens run most of the trainer too) and 131 KB. The ceilings stop a
+# Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, with
+# the read-only data only the deferred code reads, 197, 309 (its lessons' first screens run most
+# of the trainer too) and 123 KB. The ceilings stop a
 # blow-up (or a page left whole by the split).
 COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-330}"
 EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-160}"
@@ -45,6 +46,11 @@ if [ "$total" -le $((BUNDLE_BUDGET_KB * 1024)) ]; then
   echo "bundle within the budget of $BUNDLE_BUDGET_KB KB"
 else
   echo "bundle OVER the budget of $BUNDLE_BUDGET_KB KB by $(( (total - BUNDLE_BUDGET_KB * 1024 + 1023) / 1024 )) KB"
+fi
+if [ "$total" -le $((200 * 1024)) ]; then
+  echo "bundle within issue 16's 200 KB"
+else
+  echo "bundle above issue 16's 200 KB by $(( (total - 200 * 1024 + 1023) / 1024 )) KB (the budget that fails is $BUNDLE_BUDGET_KB KB)"
 fi
 echo "  then, after the first screen: $(deferred_size index.html)"
 course=$(page_size kurs.html)

@@ -5,8 +5,9 @@ use schwenkbar_core::machine::Machine;
 
 use schwenkbar_core::plane::PlaneKind;
 
-use crate::dialog::Key;
+use crate::dialog::{Dialog, Key};
 use crate::i18n::{Lang, Text};
+use crate::run::Run;
 use crate::samples::SAMPLES;
 use crate::state::{Action, AppState, SoftkeyLevel};
 
@@ -88,155 +89,194 @@ fn softkey_lines(name: &str, width: usize) -> String {
 /// The row the control shows in `state`.
 #[must_use]
 pub fn row(state: &AppState) -> Row {
-    let l = state.lang;
     if let Some((dialog, _)) = &state.dialog {
-        let mut row: Row = Default::default();
-        for (slot, (k, label)) in row.iter_mut().zip(dialog.softkeys()) {
-            let active = matches!((&k, dialog.selection), (Key::Selection(s), Some(sel)) if *s == sel);
-            let id = format!("dlg-{}", label.to_ascii_lowercase().replace([' ', '.'], "-"));
-            *slot =
-                Some(Softkey { id, label: label.replace(' ', "\n"), action: Action::DialogKey(k), active });
-        }
-        return row;
+        return dialog_row(dialog);
     }
     if let Some(run) = &state.run {
-        let speed = format!("{}\n×{}", Text::new("SCHNELLER", "FASTER").get(l), run.speed_factor());
-        return [
-            Some(Softkey {
-                id: "run-play".to_owned(),
-                label: if run.playing {
-                    Text::new("NC-STOPP", "NC STOP")
-                } else {
-                    Text::new("NC-START\nSATZFOLGE", "NC START\nSEQUENCE")
-                }
-                .get(l)
-                .to_owned(),
-                action: Action::RunPlay,
-                active: run.playing,
-            }),
-            if run.asking {
-                // The class has answered: show it.
-                text_key("run-next", Text::new("ZEIGEN ▶", "SHOW ▶"), l, Action::RunNext)
-            } else {
-                text_key("run-next", Text::new("EINZEL-\nSATZ ▶", "SINGLE\nBLOCK ▶"), l, Action::RunNext)
-            },
-            text_key("run-prev", Text::new("◀ SATZ\nZURÜCK", "◀ BLOCK\nBACK"), l, Action::RunPrev),
-            text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
-            text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),
-            key("run-faster", &speed, Action::RunFaster),
-            Some(Softkey {
-                id: "stock".to_owned(),
-                label: Text::new("ROHTEIL", "STOCK").get(l).to_owned(),
-                action: Action::ToggleStock,
-                active: state.stock_shown,
-            }),
-            back(l),
-        ];
+        return run_row(state, run);
     }
     if state.link.is_some() {
-        return [
-            text_key("take-link", Text::new("LINK\nÜBER-\nNEHMEN", "TAKE\nLINK"), l, Action::TakeLink),
-            text_key("keep-own", Text::new("EIGENES\nBEHALTEN", "KEEP\nMINE"), l, Action::KeepOwn),
-            None,
-            None,
-            None,
-            text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
-            None,
-            text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
-        ];
+        return link_row(state.lang);
     }
     match state.level {
-        SoftkeyLevel::Main => [
-            key("spec-fct", "SPEC\nFCT", Action::SpecFct),
-            text_key("machines", Text::new("MASCHINE\nWÄHLEN", "SELECT\nMACHINE"), l, Action::ShowMachines),
-            text_key("samples", Text::new("BEISPIEL\nÖFFNEN", "OPEN\nSAMPLE"), l, Action::ShowSamples),
-            Some(Softkey {
-                id: "text-edit".to_owned(),
-                label: Text::new("TEXT\nEDITIEREN", "EDIT\nAS TEXT").get(l).to_owned(),
-                action: Action::ToggleTextEditing,
-                active: state.text_editing,
-            }),
-            text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
-            text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
-            Some(Softkey {
-                id: "projector".to_owned(),
-                label: Text::new("PROJEKTOR", "PROJECTOR").get(l).to_owned(),
-                action: Action::ToggleProjector,
-                active: state.projector,
-            }),
-            text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
-        ],
-        SoftkeyLevel::SpecFct => [
-            None,
-            None,
-            text_key(
-                "tilt-plane",
-                Text::new("BEARB.-\nEBENE\nSCHWENKEN", "TILT\nMACHINING\nPLANE"),
-                l,
-                Action::TiltPlane,
-            ),
-            None,
-            None,
-            None,
-            None,
-            back(l),
-        ],
-        SoftkeyLevel::TiltPlane => PlaneKind::ALL.map(|f| {
-            let label = function_label(f);
-            key(
-                &format!("fn-{}", label.to_ascii_lowercase().replace([' ', '.'], "")),
-                label,
-                Action::Function(f),
-            )
-        }),
-        SoftkeyLevel::Machines => {
-            let mut row: Row = Default::default();
-            for (slot, id) in row.iter_mut().zip(Machine::builtin_ids()) {
-                *slot = Machine::builtin(id).ok().map(|m| machine_key(state, &m));
-            }
-            if !state.own_machines.is_empty() {
-                row[5] = Some(Softkey {
-                    id: "own-machines".to_owned(),
-                    label: Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES").get(l).to_owned(),
-                    action: Action::ShowOwnMachines,
-                    active: state
-                        .machine
-                        .as_ref()
-                        .is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
-                });
-            }
-            row[6] = text_key("edit-machine", Text::new("EDITIEREN", "EDIT"), l, Action::EditMachine);
-            row[7] = back(l);
-            row
-        }
-        SoftkeyLevel::OwnMachines => {
-            let mut row: Row = Default::default();
-            for (slot, m) in row.iter_mut().zip(state.own_machines.iter()) {
-                *slot = Some(machine_key(state, m));
-            }
-            row[7] = back(l);
-            row
-        }
-        SoftkeyLevel::Files => [
-            // Rendered as a file picker by the softkey row; F1 opens it through Effect::PickFile.
-            text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::PickFile),
-            text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
-            text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
-            None,
-            None,
-            None,
-            None,
-            back(l),
-        ],
-        SoftkeyLevel::Samples => {
-            let mut row: Row = Default::default();
-            for (slot, s) in row.iter_mut().zip(&SAMPLES) {
-                *slot = key(&format!("sample-{}", s.id), s.title.get(l), Action::LoadSample(s.id.to_owned()));
-            }
-            row[7] = back(l);
-            row
-        }
+        SoftkeyLevel::Main => main_row(state),
+        SoftkeyLevel::SpecFct => spec_fct_row(state.lang),
+        SoftkeyLevel::TiltPlane => tilt_plane_row(),
+        SoftkeyLevel::Machines => machines_row(state),
+        SoftkeyLevel::OwnMachines => own_machines_row(state),
+        SoftkeyLevel::Files => files_row(state.lang),
+        SoftkeyLevel::Samples => samples_row(state.lang),
     }
+}
+
+fn main_row(state: &AppState) -> Row {
+    let l = state.lang;
+    [
+        key("spec-fct", "SPEC\nFCT", Action::SpecFct),
+        text_key("machines", Text::new("MASCHINE\nWÄHLEN", "SELECT\nMACHINE"), l, Action::ShowMachines),
+        text_key("samples", Text::new("BEISPIEL\nÖFFNEN", "OPEN\nSAMPLE"), l, Action::ShowSamples),
+        Some(Softkey {
+            id: "text-edit".to_owned(),
+            label: Text::new("TEXT\nEDITIEREN", "EDIT\nAS TEXT").get(l).to_owned(),
+            action: Action::ToggleTextEditing,
+            active: state.text_editing,
+        }),
+        text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
+        text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
+        Some(Softkey {
+            id: "projector".to_owned(),
+            label: Text::new("PROJEKTOR", "PROJECTOR").get(l).to_owned(),
+            action: Action::ToggleProjector,
+            active: state.projector,
+        }),
+        text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
+    ]
+}
+
+// The other rows out of line: the page split (scripts/split_pages.py) can then leave them, with
+// their labels, to the wasm loaded after the first screen, which shows the main row only.
+#[inline(never)]
+fn dialog_row(dialog: &Dialog) -> Row {
+    let mut row: Row = Default::default();
+    for (slot, (k, label)) in row.iter_mut().zip(dialog.softkeys()) {
+        let active = matches!((&k, dialog.selection), (Key::Selection(s), Some(sel)) if *s == sel);
+        let id = format!("dlg-{}", label.to_ascii_lowercase().replace([' ', '.'], "-"));
+        *slot = Some(Softkey { id, label: label.replace(' ', "\n"), action: Action::DialogKey(k), active });
+    }
+    row
+}
+
+#[inline(never)]
+fn run_row(state: &AppState, run: &Run) -> Row {
+    let l = state.lang;
+    let speed = format!("{}\n×{}", Text::new("SCHNELLER", "FASTER").get(l), run.speed_factor());
+    [
+        Some(Softkey {
+            id: "run-play".to_owned(),
+            label: if run.playing {
+                Text::new("NC-STOPP", "NC STOP")
+            } else {
+                Text::new("NC-START\nSATZFOLGE", "NC START\nSEQUENCE")
+            }
+            .get(l)
+            .to_owned(),
+            action: Action::RunPlay,
+            active: run.playing,
+        }),
+        if run.asking {
+            // The class has answered: show it.
+            text_key("run-next", Text::new("ZEIGEN ▶", "SHOW ▶"), l, Action::RunNext)
+        } else {
+            text_key("run-next", Text::new("EINZEL-\nSATZ ▶", "SINGLE\nBLOCK ▶"), l, Action::RunNext)
+        },
+        text_key("run-prev", Text::new("◀ SATZ\nZURÜCK", "◀ BLOCK\nBACK"), l, Action::RunPrev),
+        text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
+        text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),
+        key("run-faster", &speed, Action::RunFaster),
+        Some(Softkey {
+            id: "stock".to_owned(),
+            label: Text::new("ROHTEIL", "STOCK").get(l).to_owned(),
+            action: Action::ToggleStock,
+            active: state.stock_shown,
+        }),
+        back(l),
+    ]
+}
+
+#[inline(never)]
+fn link_row(l: Lang) -> Row {
+    [
+        text_key("take-link", Text::new("LINK\nÜBER-\nNEHMEN", "TAKE\nLINK"), l, Action::TakeLink),
+        text_key("keep-own", Text::new("EIGENES\nBEHALTEN", "KEEP\nMINE"), l, Action::KeepOwn),
+        None,
+        None,
+        None,
+        text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
+        None,
+        text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
+    ]
+}
+
+#[inline(never)]
+fn spec_fct_row(l: Lang) -> Row {
+    [
+        None,
+        None,
+        text_key(
+            "tilt-plane",
+            Text::new("BEARB.-\nEBENE\nSCHWENKEN", "TILT\nMACHINING\nPLANE"),
+            l,
+            Action::TiltPlane,
+        ),
+        None,
+        None,
+        None,
+        None,
+        back(l),
+    ]
+}
+
+#[inline(never)]
+fn tilt_plane_row() -> Row {
+    PlaneKind::ALL.map(|f| {
+        let label = function_label(f);
+        key(&format!("fn-{}", label.to_ascii_lowercase().replace([' ', '.'], "")), label, Action::Function(f))
+    })
+}
+
+#[inline(never)]
+fn machines_row(state: &AppState) -> Row {
+    let l = state.lang;
+    let mut row: Row = Default::default();
+    for (slot, id) in row.iter_mut().zip(Machine::builtin_ids()) {
+        *slot = Machine::builtin(id).ok().map(|m| machine_key(state, &m));
+    }
+    if !state.own_machines.is_empty() {
+        row[5] = Some(Softkey {
+            id: "own-machines".to_owned(),
+            label: Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES").get(l).to_owned(),
+            action: Action::ShowOwnMachines,
+            active: state.machine.as_ref().is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
+        });
+    }
+    row[6] = text_key("edit-machine", Text::new("EDITIEREN", "EDIT"), l, Action::EditMachine);
+    row[7] = back(l);
+    row
+}
+
+#[inline(never)]
+fn own_machines_row(state: &AppState) -> Row {
+    let mut row: Row = Default::default();
+    for (slot, m) in row.iter_mut().zip(state.own_machines.iter()) {
+        *slot = Some(machine_key(state, m));
+    }
+    row[7] = back(state.lang);
+    row
+}
+
+#[inline(never)]
+fn files_row(l: Lang) -> Row {
+    [
+        // Rendered as a file picker by the softkey row; F1 opens it through Effect::PickFile.
+        text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::PickFile),
+        text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
+        text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
+        None,
+        None,
+        None,
+        None,
+        back(l),
+    ]
+}
+
+#[inline(never)]
+fn samples_row(l: Lang) -> Row {
+    let mut row: Row = Default::default();
+    for (slot, s) in row.iter_mut().zip(&SAMPLES) {
+        *slot = key(&format!("sample-{}", s.id), s.title.get(l), Action::LoadSample(s.id.to_owned()));
+    }
+    row[7] = back(l);
+    row
 }
 
 #[cfg(test)]

@@ -7,8 +7,8 @@ use glam::{DMat3, DVec3};
 
 use crate::angle::short_delta;
 use crate::ast::{
-    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnOp, Func, Label, Line,
-    OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
+    Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnJump, FnMath, FnOp, Func,
+    Label, Line, OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;
@@ -414,27 +414,8 @@ impl Interp {
                     )
                 });
             }
-            BlockBody::FnMath(f) => {
-                let a = self.value(&f.a)?;
-                let b = f.b.map(|b| self.value(&b)).transpose()?.unwrap_or(0.0);
-                let v = match f.op {
-                    FnOp::Add => a + b,
-                    FnOp::Sub => a - b,
-                    FnOp::Mul => a * b,
-                    FnOp::Div => a / b,
-                    FnOp::Sqrt => a.sqrt(),
-                };
-                if !v.is_finite() {
-                    return Err(SimErrorCode::Arithmetic { index: f.target });
-                }
-                self.q.insert(f.target, v);
-            }
-            BlockBody::FnJump(j) => {
-                let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
-                if j.condition.holds(a, b) {
-                    self.pc = self.label_index(cx, &j.label)?;
-                }
-            }
+            BlockBody::FnMath(f) => self.fn_math(f)?,
+            BlockBody::FnJump(j) => self.fn_jump(cx, j)?,
             BlockBody::MFunctions(m) => {
                 self.spindle_m(m);
                 m_note(&mut rec, m);
@@ -459,25 +440,13 @@ impl Interp {
                 self.tf.datum_i = DVec3::ZERO;
                 self.sync_pos();
             }
-            BlockBody::TransMirror { axes } => {
-                let mut set = [false; 3];
-                for a in axes.iter() {
-                    if let Some(i) = linear_index(*a) {
-                        set[i] = true;
-                    }
-                }
-                self.set_mirror(set);
-            }
+            BlockBody::TransMirror { axes } => self.mirror(axes),
             BlockBody::TransMirrorReset => {
                 self.tf.mirror_w = [false; 3];
                 self.tf.mirror_i = [false; 3];
                 self.sync_pos();
             }
-            BlockBody::TransRotation { rot, incremental } => {
-                let v = self.value(rot)?;
-                self.tf.rotation = if *incremental { self.tf.rotation + v } else { v };
-                self.sync_pos();
-            }
+            BlockBody::TransRotation { rot, incremental } => self.rotation(rot, *incremental)?,
             BlockBody::TransRotationReset => {
                 self.tf.rotation = 0.0;
                 self.sync_pos();
@@ -501,13 +470,7 @@ impl Interp {
                     )
                 })
             }
-            BlockBody::QAssign { target, expr, .. } => {
-                let v = self.eval(expr)?;
-                if !v.is_finite() {
-                    return Err(SimErrorCode::Arithmetic { index: *target });
-                }
-                self.q.insert(*target, v);
-            }
+            BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
             BlockBody::Unknown { text } => {
                 let t = text.clone();
                 note(&mut rec, || {
@@ -517,6 +480,64 @@ impl Interp {
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
         }
         Ok(true)
+    }
+
+    // Out of line, like the other block kinds below: the page split (scripts/split_pages.py)
+    // can then leave them to the wasm loaded after the first screen, whose program has none.
+    #[inline(never)]
+    fn fn_math(&mut self, f: &FnMath) -> R<()> {
+        let a = self.value(&f.a)?;
+        let b = f.b.map(|b| self.value(&b)).transpose()?.unwrap_or(0.0);
+        let v = match f.op {
+            FnOp::Add => a + b,
+            FnOp::Sub => a - b,
+            FnOp::Mul => a * b,
+            FnOp::Div => a / b,
+            FnOp::Sqrt => a.sqrt(),
+        };
+        self.set_q(f.target, v)
+    }
+
+    #[inline(never)]
+    fn fn_jump(&mut self, cx: &Cx<'_>, j: &FnJump) -> R<()> {
+        let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
+        if j.condition.holds(a, b) {
+            self.pc = self.label_index(cx, &j.label)?;
+        }
+        Ok(())
+    }
+
+    #[inline(never)]
+    fn q_assign(&mut self, target: u32, expr: &Expr) -> R<()> {
+        let v = self.eval(expr)?;
+        self.set_q(target, v)
+    }
+
+    fn set_q(&mut self, target: u32, v: f64) -> R<()> {
+        if !v.is_finite() {
+            return Err(SimErrorCode::Arithmetic { index: target });
+        }
+        self.q.insert(target, v);
+        Ok(())
+    }
+
+    #[inline(never)]
+    fn mirror(&mut self, axes: &[Axis]) {
+        let mut set = [false; 3];
+        for a in axes {
+            if let Some(i) = linear_index(*a) {
+                set[i] = true;
+            }
+        }
+        self.set_mirror(set);
+    }
+
+    #[inline(never)]
+    fn rotation(&mut self, rot: &Value, incremental: bool) -> R<()> {
+        let v = self.value(rot)?;
+        self.tf.rotation = if incremental { self.tf.rotation + v } else { v };
+        self.sync_pos();
+        Ok(())
     }
 
     fn spindle_m(&mut self, m: &[u32]) {
@@ -555,6 +576,7 @@ impl Interp {
         })
     }
 
+    #[inline(never)]
     fn call_lbl(&mut self, cx: &Cx<'_>, idx: usize, label: &Label, rep: Option<u32>) -> R<()> {
         let target = self.label_index(cx, label)?;
         match rep {

@@ -100,6 +100,8 @@ impl Interp {
         DVec3::from_array(std::array::from_fn(|i| written[i].unwrap_or(if keep { base[i] } else { 0.0 })))
     }
 
+    // Out of line: the page split can leave it to the wasm loaded after the first screen.
+    #[inline(never)]
     pub(super) fn datum(&mut self, axes: &[AxisWord]) -> R<()> {
         let level = self.tf.level_now();
         let base = match level {
