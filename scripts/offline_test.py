@@ -45,6 +45,10 @@ return tnc && head ? head.textContent : null;"""
 COURSE = """
 const head = document.querySelector('.course-head .course-title');
 return head ? head.textContent : null;"""
+# The machine editor showing a machine (its id in an input).
+EDITOR = """
+const inputs = [...document.querySelectorAll('input')].map((i) => i.value);
+return document.querySelector('.ed-inputs') ? inputs.join(' ') : null;"""
 
 
 def rendered(driver, probe, words, seconds=30):
@@ -238,29 +242,33 @@ def split_tests(driver, dist, run):
 
         def first_screen_same_without_deferred_data():
             # The deferred wasm also carries the read-only data (texts, tables) only its functions
-            # read: the first screen must read none of it (scripts/wasm_split.py, plan_data). The same page, with the state the
-            # loads before saved, once whole (the deferred part loaded) and once with it blocked.
-            driver.go(base + "?whole")
-            rendered(driver, TRAINER, ["Schwenkbar"])
-            wait_for("the deferred wasm loaded", lambda: split_state(driver)["state"] == 2, 20)
-            time.sleep(1)
-            whole = driver.js(PAGE_HTML)
-            driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
-            try:
-                driver.go(base + "?primary")
-                rendered(driver, TRAINER, ["Schwenkbar"])
+            # read: a first screen must read none of it (scripts/wasm_split.py, plan_data). Each
+            # page, with the state the loads before saved, once whole (the deferred part loaded)
+            # and once with it blocked: the same HTML.
+            sizes = []
+            for page, probe in (("", TRAINER), ("kurs.html", COURSE), ("maschine.html#ac-table", EDITOR)):
+                driver.go(f"{base}{page.split('#')[0]}?whole#{page.partition('#')[2]}")
+                rendered(driver, probe, ["Schwenkbar"] if probe != EDITOR else ["ac-table"])
+                wait_for("the deferred wasm loaded", lambda: split_state(driver)["state"] == 2, 20)
                 time.sleep(1)
-                state = split_state(driver)
-                alone = driver.js(PAGE_HTML)
-            finally:
-                driver.cdp("Network.setBlockedURLs", {"urls": []})
-            if state["state"] == 2 or state["sync"]:
-                raise Failure(f"the first screen needed the deferred wasm: {state}")
-            if alone != whole:
-                at = next(i for i, (a, b) in enumerate(zip(alone + "\0", whole + "\0")) if a != b)
-                raise Failure("the first screen differs without the deferred wasm: "
-                              f"{alone[max(0, at - 80):at + 40]!r} instead of {whole[max(0, at - 80):at + 40]!r}")
-            return f"the same page ({len(whole)} characters of HTML) with and without the deferred wasm"
+                whole = driver.js(PAGE_HTML)
+                driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
+                try:
+                    driver.go(f"{base}{page.split('#')[0]}?primary#{page.partition('#')[2]}")
+                    rendered(driver, probe, ["Schwenkbar"] if probe != EDITOR else ["ac-table"])
+                    time.sleep(1)
+                    state = split_state(driver)
+                    alone = driver.js(PAGE_HTML)
+                finally:
+                    driver.cdp("Network.setBlockedURLs", {"urls": []})
+                if state["state"] == 2 or state["sync"]:
+                    raise Failure(f"{page or 'index.html'}: the first screen needed the deferred wasm: {state}")
+                if alone != whole:
+                    at = next(i for i, (x, y) in enumerate(zip(alone + "\0", whole + "\0")) if x != y)
+                    raise Failure(f"{page or 'index.html'}: the first screen differs without the deferred wasm: "
+                                  f"{alone[max(0, at - 80):at + 40]!r} instead of {whole[max(0, at - 80):at + 40]!r}")
+                sizes.append(f"{page or 'index.html'} {len(whole)}")
+            return f"the same HTML with and without the deferred wasm ({', '.join(sizes)} characters)"
 
         def loads_on_first_use():
             hooks.append(driver.cdp("Page.addScriptToEvaluateOnNewDocument",

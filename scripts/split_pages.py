@@ -32,13 +32,13 @@ import time
 import wasm_split
 from chromium import Driver, Failure, free_port, port_open, wait_for
 
-# Each page and the screens it is opened at ("reload": opened again, with what the first visit
+# Each page and the screens it is opened at ("reload": opened again, with what the visit before
 # saved in the browser): the trainer on a first and a later visit; the course at each lesson (the
-# trainer's Kurs link, a lesson link or the course's own next/previous, which set #kurs/N); the
-# machine editor as the trainer's EDITIEREN opens it (#machine-id).
+# trainer's Kurs link, a lesson link or the course's own next/previous, which set #kurs/N) and
+# opened again; the machine editor as the trainer's EDITIEREN opens it (#machine-id).
 PAGES = {
     "index.html": ["", "reload"],
-    "kurs.html": [""] + [f"#kurs/{n}" for n in range(1, 12)],
+    "kurs.html": [""] + [f"#kurs/{n}" for n in range(1, 12)] + ["reload"],
     "maschine.html": ["#ac-table"],
 }
 PROFILE_QUIET_S = 1.5
