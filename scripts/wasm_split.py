@@ -359,6 +359,7 @@ def renumbered(body, refs, new_index):
 # addresses of wasm32. The others with an addend (PIC-relative, TLS, 64-bit) are refused.
 RELOC_ADDEND = {3, 4, 5, 8, 9, 11, 14, 15, 16, 17, 21, 22, 23, 25}
 RELOC_MEMORY = {3, 4, 5}
+RELOC_OFFSETS = {8, 9, 22}  # function and section offsets (debug info): not memory
 RELOC_NO_ADDEND = {0, 1, 2, 6, 7, 10, 12, 13, 18, 19, 20, 24, 26}
 
 
@@ -371,7 +372,7 @@ def data_segments(m):
     out = []
     for _ in range(n):
         flags, k = uleb(body, k)
-        if flags == 0 and body[k] == 0x41 and body[k + 1] != 0x0B:
+        if flags == 0 and body[k] == 0x41:
             addr, k = sleb(body, k + 1)
             if body[k] != 0x0B:
                 raise Unsupported("a data segment's offset is not a constant")
@@ -395,11 +396,28 @@ def custom(m, name):
     return None
 
 
+class Objects:
+    """Sorted, disjoint [start, end) intervals; which one holds an address."""
+
+    def __init__(self, spans):
+        self.spans = []
+        for a, e in sorted(spans):
+            if self.spans and a < self.spans[-1][1]:  # overlapping symbols: one object
+                self.spans[-1] = (self.spans[-1][0], max(self.spans[-1][1], e))
+            else:
+                self.spans.append((a, e))
+        self.starts = [a for a, _ in self.spans]
+
+    def at(self, v):
+        i = bisect.bisect_right(self.starts, v) - 1
+        return i if i >= 0 and v < self.spans[i][1] else None
+
+
 def linked_data(linked):
-    """From the linked binary: (read-only objects as sorted [start, end) intervals, merged where
-    they overlap; what each address the code's relocations write means, {value: {object}};
-    edges between data, [(site address, target object)]; the linked memory image as
-    {segment address: bytes})."""
+    """From the linked binary: (its read-only objects (Objects): the defined data symbols of
+    its .rodata segments; the .rodata segments as [start, end) intervals; what each address the
+    code's relocations write means, {value: {object}}; edges between data, [(site address,
+    target object)]; the linked memory image as {segment address: bytes})."""
     lm = Module(linked)
     segs = data_segments(lm)
     link, rcode, rdata = custom(lm, "linking"), custom(lm, "reloc.CODE"), custom(lm, "reloc.DATA")
@@ -452,20 +470,9 @@ def linked_data(linked):
     if len(seg_names) != len(segs) or any(a is None for a, _, _ in segs):
         raise Unsupported("the linked binary's data segments are not the ones its symbols name")
     address = [None if s is None else segs[s[0]][0] + s[1] for s in symbols]
-    # Read-only objects: the defined data symbols in .rodata segments, overlapping ones merged.
-    spans = sorted((segs[s[0]][0] + s[1], segs[s[0]][0] + s[1] + s[2]) for s in symbols
-                   if s is not None and s[2] and seg_names[s[0]].startswith(".rodata"))
-    objects = []
-    for a, e in spans:
-        if objects and a < objects[-1][1]:
-            objects[-1][1] = max(objects[-1][1], e)
-        else:
-            objects.append([a, e])
-    starts = [a for a, _ in objects]
-
-    def containing(v):
-        i = bisect.bisect_right(starts, v) - 1
-        return i if i >= 0 and v < objects[i][1] else None
+    rodata = [(a, a + n) for (a, _, n), name in zip(segs, seg_names) if name.startswith(".rodata")]
+    objects = Objects((segs[s[0]][0] + s[1], segs[s[0]][0] + s[1] + s[2]) for s in symbols
+                      if s is not None and s[2] and seg_names[s[0]].startswith(".rodata"))
 
     def relocs(body):
         _, q = uleb(body, 0)
@@ -479,7 +486,7 @@ def linked_data(linked):
                 addend, q = sleb(body, q)
             elif t not in RELOC_NO_ADDEND:
                 raise Unsupported(f"relocation type {t}")
-            if t in RELOC_ADDEND - RELOC_MEMORY - {8, 9, 22}:
+            if t in RELOC_ADDEND - RELOC_MEMORY - RELOC_OFFSETS:
                 raise Unsupported(f"relocation type {t} (not an absolute wasm32 address)")
             if t in RELOC_MEMORY:
                 if idx >= len(symbols) or address[idx] is None:
@@ -497,7 +504,7 @@ def linked_data(linked):
     for t, off, sym, value in relocs(rcode):
         if written(code_body, t, off) != value:
             raise Unsupported(f"a code relocation at {off} does not hold its address")
-        o = containing(sym)
+        o = objects.at(sym)
         if o is not None:
             meant.setdefault(value, set()).add(o)
     edges = []
@@ -505,32 +512,24 @@ def linked_data(linked):
         seg = next((s for s in segs if s[1] <= off < s[1] + s[2]), None)
         if seg is None or written(data_body, t, off) != value:
             raise Unsupported(f"a data relocation at {off} is not a pointer in the data")
-        edges.append((seg[0] + off - seg[1], containing(sym)))
+        edges.append((seg[0] + off - seg[1], objects.at(sym)))
     image = {a: data_body[s:s + n] for a, s, n in segs}
-    return [tuple(o) for o in objects], meant, edges, image
-
+    return objects, rodata, meant, edges, image
 
 
 def plan_data(m, linked, kept_consts):
-    """The read-only objects (start, end) only deferred code reads, checked to hold the same
-    bytes in the linked binary and in `m`. `kept_consts`: the addresses the primary's code may
-    form (scan)."""
-    objects, meant, edges, image = linked_data(linked)
-    if not objects:
-        return []
-    starts = [a for a, _ in objects]
-
-    def containing(v):
-        i = bisect.bisect_right(starts, v) - 1
-        return i if i >= 0 and v < objects[i][1] else None
-
-    by_end = {e: i for i, (_, e) in enumerate(objects)}
+    """The runs of (address, bytes) the deferred module writes: the read-only objects only
+    deferred code reads, checked to hold the same bytes in the linked binary and in `m`, and
+    the cut out of the primary: those objects as [start, end). `kept_consts`: the addresses the
+    primary's code may form (scan)."""
+    objects, rodata, meant, edges, image = linked_data(linked)
+    by_end = {e: i for i, (_, e) in enumerate(objects.spans)}
     need, todo = set(), []
 
     def mark(v):
         # The object an address is inside, the one it ends (an end pointer wasm-opt folded
         # itself), and those its relocation means.
-        for o in (containing(v), by_end.get(v), *meant.get(v, ())):
+        for o in (objects.at(v), by_end.get(v), *meant.get(v, ())):
             if o is not None and o not in need:
                 need.add(o)
                 todo.append(o)
@@ -542,7 +541,7 @@ def plan_data(m, linked, kept_consts):
     for site, target in edges:
         if target is None:
             continue
-        source = containing(site)
+        source = objects.at(site)
         if source is None:  # a pointer in mutable data (or between objects): always there
             if target not in need:
                 need.add(target)
@@ -554,14 +553,22 @@ def plan_data(m, linked, kept_consts):
             if t not in need:
                 need.add(t)
                 todo.append(t)
-    deferred = [objects[i] for i in range(len(objects)) if i not in need]
+    deferred = [span for i, span in enumerate(objects.spans) if i not in need]
     # The same bytes after wasm-bindgen and wasm-opt (which must not have moved any data).
     final = MemoryImage(m)
     for a, e in deferred:
         seg = next((s for s in image if s <= a and e <= s + len(image[s])), None)
         if seg is None or image[seg][a - seg:e - seg] != final.read(a, e):
             raise Unsupported(f"the data at {a:#x} differs from the linked binary's")
-    return deferred
+    # As runs: a gap of up to 8 bytes (padding) between two objects of one .rodata segment is
+    # written along with them, the same read-only bytes the primary keeps there.
+    runs = []
+    for a, e in deferred:
+        if runs and a - runs[-1][1] <= 8 and any(lo <= runs[-1][0] and a < hi for lo, hi in rodata):
+            runs[-1][1] = e
+        else:
+            runs.append([a, e])
+    return [(a, final.read(a, e)) for a, e in runs], deferred
 
 
 def global_consts(m):
@@ -607,18 +614,6 @@ def data_section(segments):
             out += b"\x00\x41" + enc_s(addr) + b"\x0b" + enc_u(len(b)) + b
             n += 1
     return enc_u(n) + bytes(out), n
-
-
-def gathered(objects, image):
-    """The objects (sorted) as (address, bytes) runs for the deferred module; a gap of up to 8
-    bytes between two is written along with them (the primary keeps it: the same bytes again)."""
-    runs = []
-    for a, e in objects:
-        if runs and a - runs[-1][1] <= 8:
-            runs[-1][1] = e
-        else:
-            runs.append([a, e])
-    return [(a, image.read(a, e)) for a, e in runs]
 
 
 def without(segments, cut):
@@ -755,11 +750,9 @@ def split(data, run, linked=None):
     replace[1] = type_sec
     moved = []
     if linked is not None:
-        image = MemoryImage(m)
-        objects = plan_data(m, linked, [scans[k][2] for k in range(len(m.bodies)) if nimp + k not in dset])
-        moved = gathered(objects, image)
+        moved, cut = plan_data(m, linked, [scans[k][2] for k in range(len(m.bodies)) if nimp + k not in dset])
         if moved:
-            replace[11], count = data_section(without(image.segs, objects))
+            replace[11], count = data_section(without(MemoryImage(m).segs, cut))
             if m.section(12) is not None:
                 replace[12] = enc_u(count)
     primary = m.write(replace)

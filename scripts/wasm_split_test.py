@@ -61,9 +61,27 @@ WAT = r"""
 # What ran "on the first screen": sq, run, only_sq, fill, via_table; add3, fact, twice deferred.
 RUN = [True, False, False, False, True, True, True, True, False]
 
-# The harness: the whole module, then the split pair wired like the glue does.
-HARNESS = r"""
+# The split pair wired like the pages' glue wires it: `wired(imports)` gives the primary's
+# instance and how often the deferred module was loaded so far.
+WIRE = r"""
 const fs = require('fs');
+function wired(primary, deferred, helper, slot, table, imports) {
+  const inst = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(primary)), imports);
+  let loads = 0;
+  const h = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array(JSON.parse(helper))), {
+    j: { l: () => {
+      loads += 1;
+      new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(deferred)), { p: inst.exports });
+      inst.exports[table].set(Number(slot), h.exports.n);
+    } },
+  });
+  inst.exports[table].set(Number(slot), h.exports.l);
+  return { inst, loads: () => loads };
+}
+"""
+
+# The harness: the whole module, then the split pair.
+HARNESS = WIRE + r"""
 const [whole, primary, deferred, helper, slot, table] = process.argv.slice(2);
 const calls = (name) => {
   const log = [];
@@ -79,18 +97,9 @@ const out = {};
 }
 {
   const c = calls();
-  const inst = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(primary)), c.imports);
-  let loads = 0;
+  const { inst, loads } = wired(primary, deferred, helper, slot, table, c.imports);
   const loadsAt = [];
-  const h = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array(JSON.parse(helper))), {
-    j: { l: () => {
-      loads += 1;
-      new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(deferred)), { p: inst.exports });
-      inst.exports[table].set(Number(slot), h.exports.n);
-    } },
-  });
-  inst.exports[table].set(Number(slot), h.exports.l);
-  out.split = jobs.map(([f, ...a]) => { const r = inst.exports[f](...a); loadsAt.push(loads); return r; });
+  out.split = jobs.map(([f, ...a]) => { const r = inst.exports[f](...a); loadsAt.push(loads()); return r; });
   out.split_log = c.log;
   out.loads_after_each = loadsAt;
 }
@@ -147,25 +156,15 @@ CODE_RELOCS = {252: ("B", -12), 280: ("P", 0), 340: ("F", 0), 256: ("A", 0), 288
 DATA_RELOCS = {280: "C", 288: "E", 340: "G"}  # pointer site -> object
 DATA_JOBS = [["p_b", 12], ["p_c"], ["p_g"], ["p_h"], ["p_j"], ["call_a"], ["call_e"], ["call_i"]]
 
-DATA_HARNESS = r"""
-const fs = require('fs');
+DATA_HARNESS = WIRE + r"""
 const [whole, primary, deferred, helper, slot, table, jobs] = process.argv.slice(2);
-const out = { whole: [], split: [], loads: [], early: {} };
-let w = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(whole)), {});
+const out = { whole: [], split: [], loads: [] };
+const w = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(whole)), {});
 for (const [f, ...a] of JSON.parse(jobs)) out.whole.push(w.exports[f](...a));
-const inst = new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(primary)), {});
-let loads = 0;
-const h = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array(JSON.parse(helper))), {
-  j: { l: () => {
-    loads += 1;
-    new WebAssembly.Instance(new WebAssembly.Module(fs.readFileSync(deferred)), { p: inst.exports });
-    inst.exports[table].set(Number(slot), h.exports.n);
-  } },
-});
-inst.exports[table].set(Number(slot), h.exports.l);
+const { inst, loads } = wired(primary, deferred, helper, slot, table, {});
 const mem = () => new Int32Array(inst.exports.memory.buffer);
 out.before = Array.from(mem().slice(64, 88));  // bytes 256..352 before the deferred module
-for (const [f, ...a] of JSON.parse(jobs)) { out.split.push(inst.exports[f](...a)); out.loads.push(loads); }
+for (const [f, ...a] of JSON.parse(jobs)) { out.split.push(inst.exports[f](...a)); out.loads.push(loads()); }
 out.after = Array.from(mem().slice(64, 88));
 out.whole_mem = Array.from(new Int32Array(w.exports.memory.buffer).slice(64, 88));
 console.log(JSON.stringify(out));

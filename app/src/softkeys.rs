@@ -33,6 +33,11 @@ fn text_key(id: &str, text: Text, lang: Lang, action: Action) -> Option<Softkey>
     key(id, text.get(lang), action)
 }
 
+/// A softkey shown pressed while what it switches is on (or chosen).
+fn toggle_key(id: &str, text: Text, lang: Lang, action: Action, active: bool) -> Option<Softkey> {
+    Some(Softkey { id: id.to_owned(), label: text.get(lang).to_owned(), action, active })
+}
+
 fn back(lang: Lang) -> Option<Softkey> {
     text_key("back", Text::new("ENDE", "END"), lang, Action::Back)
 }
@@ -115,20 +120,22 @@ fn main_row(state: &AppState) -> Row {
         key("spec-fct", "SPEC\nFCT", Action::SpecFct),
         text_key("machines", Text::new("MASCHINE\nWÄHLEN", "SELECT\nMACHINE"), l, Action::ShowMachines),
         text_key("samples", Text::new("BEISPIEL\nÖFFNEN", "OPEN\nSAMPLE"), l, Action::ShowSamples),
-        Some(Softkey {
-            id: "text-edit".to_owned(),
-            label: Text::new("TEXT\nEDITIEREN", "EDIT\nAS TEXT").get(l).to_owned(),
-            action: Action::ToggleTextEditing,
-            active: state.text_editing,
-        }),
+        toggle_key(
+            "text-edit",
+            Text::new("TEXT\nEDITIEREN", "EDIT\nAS TEXT"),
+            l,
+            Action::ToggleTextEditing,
+            state.text_editing,
+        ),
         text_key("files", Text::new("DATEI", "FILE"), l, Action::ShowFiles),
         text_key("run", Text::new("PGM-LAUF", "PGM RUN"), l, Action::StartRun),
-        Some(Softkey {
-            id: "projector".to_owned(),
-            label: Text::new("PROJEKTOR", "PROJECTOR").get(l).to_owned(),
-            action: Action::ToggleProjector,
-            active: state.projector,
-        }),
+        toggle_key(
+            "projector",
+            Text::new("PROJEKTOR", "PROJECTOR"),
+            l,
+            Action::ToggleProjector,
+            state.projector,
+        ),
         text_key("lang", Text::new("SPRACHE\nENGLISH", "LANGUAGE\nDEUTSCH"), l, Action::ToggleLang),
     ]
 }
@@ -173,12 +180,7 @@ fn run_row(state: &AppState, run: &Run) -> Row {
         text_key("run-start", Text::new("ZUM\nANFANG", "TO\nSTART"), l, Action::RunToStart),
         text_key("run-slower", Text::new("LANG-\nSAMER", "SLOWER"), l, Action::RunSlower),
         key("run-faster", &speed, Action::RunFaster),
-        Some(Softkey {
-            id: "stock".to_owned(),
-            label: Text::new("ROHTEIL", "STOCK").get(l).to_owned(),
-            action: Action::ToggleStock,
-            active: state.stock_shown,
-        }),
+        toggle_key("stock", Text::new("ROHTEIL", "STOCK"), l, Action::ToggleStock, state.stock_shown),
         back(l),
     ]
 }
@@ -232,12 +234,14 @@ fn machines_row(state: &AppState) -> Row {
         *slot = Machine::builtin(id).ok().map(|m| machine_key(state, &m));
     }
     if !state.own_machines.is_empty() {
-        row[5] = Some(Softkey {
-            id: "own-machines".to_owned(),
-            label: Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES").get(l).to_owned(),
-            action: Action::ShowOwnMachines,
-            active: state.machine.as_ref().is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id)),
-        });
+        let own = state.machine.as_ref().is_some_and(|m| state.own_machines.iter().any(|o| o.id == m.id));
+        row[5] = toggle_key(
+            "own-machines",
+            Text::new("EIGENE\nMASCHINEN", "OWN\nMACHINES"),
+            l,
+            Action::ShowOwnMachines,
+            own,
+        );
     }
     row[6] = text_key("edit-machine", Text::new("EDITIEREN", "EDIT"), l, Action::EditMachine);
     row[7] = back(l);
