@@ -246,16 +246,18 @@ def split_tests(driver, dist, run):
             # page, with the state the loads before saved, once whole (the deferred part loaded)
             # and once with it blocked: the same HTML.
             sizes = []
-            for page, probe in (("", TRAINER), ("kurs.html", COURSE), ("maschine.html#ac-table", EDITOR)):
-                driver.go(f"{base}{page.split('#')[0]}?whole#{page.partition('#')[2]}")
-                rendered(driver, probe, ["Schwenkbar"] if probe != EDITOR else ["ac-table"])
+            for page, probe, words in (("", TRAINER, ["Schwenkbar"]), ("kurs.html", COURSE, ["Schwenkbar"]),
+                                       ("maschine.html#ac-table", EDITOR, ["ac-table"])):
+                path, _, fragment = page.partition("#")
+                driver.go(f"{base}{path}?whole#{fragment}")
+                rendered(driver, probe, words)
                 wait_for("the deferred wasm loaded", lambda: split_state(driver)["state"] == 2, 20)
                 time.sleep(1)
                 whole = driver.js(PAGE_HTML)
                 driver.cdp("Network.setBlockedURLs", {"urls": ["*_deferred.wasm"]})
                 try:
-                    driver.go(f"{base}{page.split('#')[0]}?primary#{page.partition('#')[2]}")
-                    rendered(driver, probe, ["Schwenkbar"] if probe != EDITOR else ["ac-table"])
+                    driver.go(f"{base}{path}?primary#{fragment}")
+                    rendered(driver, probe, words)
                     time.sleep(1)
                     state = split_state(driver)
                     alone = driver.js(PAGE_HTML)

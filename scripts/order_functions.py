@@ -35,24 +35,19 @@ def read(b):
     """(imported function count, function bodies, names by function index)."""
     m = wasm_split.Module(b)
     names = {}
-    for sid, body in m.secs:
-        if sid != 0:
-            continue
-        n, k = uleb(body, 0)
-        if body[k:k + n] != b"name":
-            continue
-        k += n
-        while k < len(body):
-            sub = body[k]
-            n, k = uleb(body, k + 1)
-            part, k = body[k:k + n], k + n
-            if sub == 1:  # function names
-                count, q = uleb(part, 0)
-                for _ in range(count):
-                    index, q = uleb(part, q)
-                    n, q = uleb(part, q)
-                    names[index] = part[q:q + n].decode("utf-8", "replace")
-                    q += n
+    body = wasm_split.custom(m, "name") or b""
+    k = 0
+    while k < len(body):
+        sub = body[k]
+        n, k = uleb(body, k + 1)
+        part, k = body[k:k + n], k + n
+        if sub == 1:  # function names
+            count, q = uleb(part, 0)
+            for _ in range(count):
+                index, q = uleb(part, q)
+                n, q = uleb(part, q)
+                names[index] = part[q:q + n].decode("utf-8", "replace")
+                q += n
     return len(m.imp_funcs), m.bodies, names
 
 

@@ -518,10 +518,10 @@ def linked_data(linked):
 
 
 def plan_data(m, linked, kept_consts):
-    """The runs of (address, bytes) the deferred module writes: the read-only objects only
-    deferred code reads, checked to hold the same bytes in the linked binary and in `m`, and
-    the cut out of the primary: those objects as [start, end). `kept_consts`: the addresses the
-    primary's code may form (scan)."""
+    """(The runs of (address, bytes) the deferred module writes: the read-only objects only
+    deferred code reads, checked to hold the same bytes in the linked binary and in `m`; the
+    primary's segments without those objects). `kept_consts`: the addresses the primary's code
+    may form (scan)."""
     objects, rodata, meant, edges, image = linked_data(linked)
     by_end = {e: i for i, (_, e) in enumerate(objects.spans)}
     need, todo = set(), []
@@ -568,7 +568,7 @@ def plan_data(m, linked, kept_consts):
             runs[-1][1] = e
         else:
             runs.append([a, e])
-    return [(a, final.read(a, e)) for a, e in runs], deferred
+    return [(a, final.read(a, e)) for a, e in runs], without(final.segs, deferred)
 
 
 def global_consts(m):
@@ -750,9 +750,9 @@ def split(data, run, linked=None):
     replace[1] = type_sec
     moved = []
     if linked is not None:
-        moved, cut = plan_data(m, linked, [scans[k][2] for k in range(len(m.bodies)) if nimp + k not in dset])
+        moved, kept = plan_data(m, linked, [scans[k][2] for k in range(len(m.bodies)) if nimp + k not in dset])
         if moved:
-            replace[11], count = data_section(without(MemoryImage(m).segs, cut))
+            replace[11], count = data_section(kept)
             if m.section(12) is not None:
                 replace[12] = enc_u(count)
     primary = m.write(replace)
