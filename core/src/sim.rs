@@ -39,12 +39,14 @@
 //! * `STAY`: nothing moves; Q120–Q122 hold the axis angles for a later `L A+Q120 C+Q122`. The
 //!   block still gets a [`SegmentKind::SwivelStay`] segment (axes constant, the plane's turn in
 //!   [`SegmentPath::Stay`]) so the view can show the coordinate system turning.
-//! * TCPM (`M128` … `M129`, `FUNCTION TCPM … AXIS POS` … `FUNCTION RESET TCPM`, issue 17): a block with rotary axes keeps the tool tip on the
-//!   programmed point; the linear axes are `L(θ) = W_θ(preset + p(f)) − H_θ(0)` with the rotary
-//!   axes linear in time and the tip `p(f)` straight from the start to the programmed end (W-CS)
-//!   ([`SegmentPath::Tcpm`]); timing in [`crate::unconfirmed::TCPM_FROM_BLOCK_START`]. `AXIS SPAT`
-//!   is refused with an error; `TOOL CALL`, `M91`, `M92` with TCPM on in
-//!   [`crate::unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92`].
+//! * TCPM (`M128` … `M129`, `FUNCTION TCPM … AXIS POS|AXIS SPAT` … `FUNCTION RESET TCPM`, issue
+//!   17): a block with rotary axes keeps the tool tip on the programmed point; the linear axes
+//!   are `L(θ) = W_θ(preset + p(f)) − H_θ(0)` with the rotary axes linear in time and the tip
+//!   `p(f)` straight from the start to the programmed end (W-CS) ([`SegmentPath::Tcpm`]); timing
+//!   in [`crate::unconfirmed::TCPM_FROM_BLOCK_START`]. With `AXIS SPAT`, `A`, `B`, `C` are spatial
+//!   angles in the active coordinate system, solved to axis positions as a PLANE block without
+//!   SEQ ([`crate::unconfirmed::Decision::TcpmAxisSpat`]); `TOOL CALL`, `M91`, `M92` with TCPM on
+//!   in [`crate::unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92`].
 //!
 //! # Contour (issue 15)
 //! `CC`, `C`, `CR`, `CT`, polar `LP`/`CP` (helix with `IZ`), `RND` and `CHF` run in the main

@@ -81,9 +81,6 @@ pub enum SimErrorCode {
     ContourElementTooSmall { radius: f64 },
     /// RL after RR (or RR after RL) without a block with R0 between them.
     CompensationChange,
-    /// `FUNCTION TCPM … AXIS SPAT`: rotary coordinates as spatial angles, which the trainer does
-    /// not simulate (refused rather than moved as axis angles).
-    TcpmAxisSpat,
     /// `TOOL CALL`, `M91` or `M92` (`word`) while TCPM is on: the manual has TCPM reset first.
     TcpmActive { word: &'static str },
     /// `APPR`/`DEP` whose path cannot be built.
@@ -182,7 +179,6 @@ impl SimErrorCode {
             SimErrorCode::CompensationChange => {
                 t("Radiuskorrektur RL/RR ohne R0 gewechselt", "Radius compensation RL/RR changed without R0")
             }
-            SimErrorCode::TcpmAxisSpat => t("AXIS SPAT nicht simuliert", "AXIS SPAT not simulated"),
             SimErrorCode::TcpmActive { word } => t(
                 format!("{word} bei aktivem TCPM nicht erlaubt"),
                 format!("{word} not permitted with TCPM active"),
@@ -370,10 +366,6 @@ impl SimErrorCode {
             SimErrorCode::CompensationChange => t(
                 "Zwischen Sätzen mit RL und RR muss ein Verfahrsatz in der Bearbeitungsebene mit R0 stehen",
                 "Between blocks with RL and RR there must be a positioning block in the working plane with R0",
-            ),
-            SimErrorCode::TcpmAxisSpat => t(
-                "FUNCTION TCPM mit AXIS SPAT (Drehachskoordinaten als Raumwinkel) simuliert der Trainer nicht: AXIS POS programmieren",
-                "The trainer does not simulate FUNCTION TCPM with AXIS SPAT (rotary coordinates as spatial angles): program AXIS POS",
             ),
             SimErrorCode::TcpmActive { word } => t(
                 format!("Vor {word} TCPM zurücksetzen: FUNCTION RESET TCPM oder M129"),

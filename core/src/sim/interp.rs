@@ -121,6 +121,9 @@ pub(crate) struct Interp {
     m89: bool,
     /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
     tcpm: bool,
+    /// `FUNCTION TCPM … AXIS SPAT` is active: `A`, `B`, `C` in positioning blocks are the spatial
+    /// angles SPA, SPB, SPC (modal; `None` before the first positioning block since it was switched on).
+    spat: Option<[Option<f64>; 3]>,
     /// The bodies every motion is checked against ([`super::collision`]), for this tool and blank.
     bodies: Option<Arc<Bodies>>,
     /// What the check knows from the motions before ([`Clearances`]).
@@ -235,6 +238,7 @@ impl Interp {
             pattern: None,
             m89: false,
             tcpm: false,
+            spat: None,
             bodies: None,
             clearances: Clearances::default(),
         };
@@ -451,7 +455,7 @@ impl Interp {
                 self.tf.rotation = 0.0;
                 self.sync_pos();
             }
-            BlockBody::FunctionTcpm(t) => self.function_tcpm(&mut rec, *t)?,
+            BlockBody::FunctionTcpm(t) => self.function_tcpm(&mut rec, *t),
             BlockBody::FunctionResetTcpm => self.function_reset_tcpm(&mut rec),
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)

@@ -58,6 +58,9 @@ pub enum Decision {
     /// Simulator: [`TCPM_REFUSES_TOOL_CALL_M91_M92`](super::TCPM_REFUSES_TOOL_CALL_M91_M92) and the `FUNCTION TCPM` modes the simulator
     /// does not tell apart (its text).
     TcpmFunction,
+    /// Simulator: `FUNCTION TCPM … AXIS SPAT`, how spatial angles in a positioning block become
+    /// axis positions (`sim::interp::tcpm`, its text).
+    TcpmAxisSpat,
     /// Simulator: [`MB_RETRACT_AT_RAPID`](super::MB_RETRACT_AT_RAPID), [`MB_MAX_CLEARANCE`](super::MB_MAX_CLEARANCE).
     MbRetractRapid,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`](super::ROTARY_FEED_DEG_PER_MIN).
@@ -109,7 +112,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 41] = [
+    pub const ALL: [Decision; 42] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -133,6 +136,7 @@ impl Decision {
         Decision::MoveDefaultDist,
         Decision::TcpmTiming,
         Decision::TcpmFunction,
+        Decision::TcpmAxisSpat,
         Decision::MbRetractRapid,
         Decision::RotaryFeed,
         Decision::Cycle19Spatial,
@@ -248,6 +252,10 @@ impl Decision {
             Decision::TcpmFunction => Text::new(
                 "TOOL CALL, M91 und M92 bei aktivem TCPM sind ein Fehler (das Handbuch verlangt, TCPM vorher zurückzusetzen). FUNCTION RESET TCPM und M129 schalten jedes TCPM aus. PATHCTRL VECTOR wird wie PATHCTRL AXIS simuliert (gleiche Werkzeugspitze, nur die Zwischenstellungen der Werkzeugachse weichen ab); F TCP und F CONT werden nicht unterschieden (nur die Animationsdauer hinge davon ab).",
                 "TOOL CALL, M91 and M92 with TCPM active are an error (the manual has TCPM reset before them). FUNCTION RESET TCPM and M129 switch off either kind of TCPM. PATHCTRL VECTOR is simulated as PATHCTRL AXIS (the same tool tip, only the tool axis' intermediate orientations differ); F TCP and F CONT are not told apart (only the animation time would depend on them).",
+            ),
+            Decision::TcpmAxisSpat => Text::new(
+                "FUNCTION TCPM mit AXIS SPAT: A, B, C im Positioniersatz sind die Raumwinkel SPA, SPB, SPC bezogen auf das aktive (ggf. geschwenkte) Koordinatensystem, selbsthaltend; nicht programmierte gelten bis zu ihrer ersten Programmierung als 0° (mit Hinweis). Die Drehachsstellung wählt der Simulator wie bei PLANE ohne SEQ (innerhalb der Endschalter, kürzester Weg); die Werkzeugspitze bleibt auf dem programmierten Punkt.",
+                "FUNCTION TCPM with AXIS SPAT: A, B, C in a positioning block are the spatial angles SPA, SPB, SPC relative to the active (possibly tilted) coordinate system, modal; unprogrammed ones count as 0° until first programmed (with a note). The simulator chooses the rotary axis positions as for PLANE without SEQ (within the limit switches, shortest path); the tool tip stays on the programmed point.",
             ),
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",

@@ -177,12 +177,19 @@ impl Interp {
         let mut l = self.axes.linear;
         let mut rot = self.axes.rotary;
         let (mut lin_prog, mut rot_prog) = (false, false);
+        // AXIS SPAT: A, B, C are the spatial angles SPA, SPB, SPC, whatever axes the machine has.
+        let mut spatial: [Option<(f64, bool)>; 3] = [None; 3];
         for w in line.axes.iter() {
             if let Some(i) = linear_index(w.axis) {
                 let v = self.value(&w.value)?;
                 lin_prog = true;
                 let slot = if m91 { &mut l[i] } else { &mut p[i] };
                 *slot = if w.incremental { *slot + v } else { v };
+            } else if let Some(ra) = rotary_of(w.axis).filter(|_| self.spat.is_some()) {
+                let k =
+                    [RotaryAxis::A, RotaryAxis::B, RotaryAxis::C].iter().position(|&x| x == ra).unwrap_or(0);
+                spatial[k] = Some((self.value(&w.value)?, w.incremental));
+                rot_prog = true;
             } else if let Some(ra) = rotary_of(w.axis) {
                 // The axis must exist before its value matters ("Achse nicht vorhanden" first).
                 let Some(k) = self.axes.letters.iter().position(|&x| x == ra) else {
@@ -196,6 +203,9 @@ impl Interp {
             }
         }
         m_note(rec, &line.m);
+        if rot_prog && self.spat.is_some() {
+            rot = self.spatial_tool_axis(cx, rec, spatial)?;
+        }
         self.check_rotary(cx, rot)?;
         // A straight contour element in the working plane: it ends at the tangent point when a
         // RND/CHF follows, and leaves its direction for a CT.

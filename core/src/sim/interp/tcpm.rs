@@ -3,6 +3,7 @@
 //! (the motion itself is in `motion.rs`).
 
 use crate::ast::{Tcpm, TcpmAxis};
+use crate::solve::{axis_words, fmt_deg};
 
 use super::*;
 
@@ -31,7 +32,11 @@ fn switched_on(word: &str) -> Text {
 
 impl Interp {
     /// TCPM on or off; the programmed position is taken anew from where the tool tip is.
+    /// Off also ends `AXIS SPAT`.
     pub(super) fn set_tcpm(&mut self, on: bool) {
+        if !on {
+            self.spat = None;
+        }
         if on != self.tcpm {
             self.tcpm = on;
             self.sync_pos();
@@ -48,16 +53,79 @@ impl Interp {
         }
     }
 
-    /// `FUNCTION TCPM`: on as `M128` with `AXIS POS`; the feed and path modes are not told apart
-    /// (unconfirmed::Decision::TcpmFunction). `AXIS SPAT` is refused rather than run as axis
-    /// angles, which would move the machine elsewhere than the program means.
-    pub(super) fn function_tcpm(&mut self, rec: &mut Option<&mut Rec>, t: Tcpm) -> R<()> {
-        if t.axis == TcpmAxis::Spat {
-            return Err(SimErrorCode::TcpmAxisSpat);
-        }
+    /// `FUNCTION TCPM`: on as `M128`; the feed and path modes are not told apart
+    /// (unconfirmed::Decision::TcpmFunction). `AXIS POS` takes `A`, `B`, `C` as axis angles,
+    /// `AXIS SPAT` as spatial angles ([`Self::spatial_tool_axis`]), each block's anew.
+    pub(super) fn function_tcpm(&mut self, rec: &mut Option<&mut Rec>, t: Tcpm) {
         self.set_tcpm(true);
-        note(rec, || switched_on("FUNCTION TCPM"));
-        Ok(())
+        self.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
+        note(rec, || match t.axis {
+            TcpmAxis::Pos => switched_on("FUNCTION TCPM"),
+            TcpmAxis::Spat => {
+                let on = switched_on("FUNCTION TCPM");
+                Text::owned(
+                    format!("{}; A, B, C sind Raumwinkel (AXIS SPAT)", on.de),
+                    format!("{}; A, B, C are spatial angles (AXIS SPAT)", on.en),
+                )
+            }
+        });
+    }
+
+    /// `AXIS SPAT`: the rotary axis positions for the spatial angles `written` in a positioning
+    /// block (A, B, C = SPA, SPB, SPC; `None` = not in the block), which stay for the next
+    /// blocks. The iTNC 530 manual ("Interpretation of the programmed rotary axis coordinates"):
+    /// the angles are "given with respect to the currently active (perhaps tilted) coordinate
+    /// system", and the first block after switching on should program all three. So the tool
+    /// orientation is R = R_active·Rz(C)·Ry(B)·Rx(A) (mirrored as a PLANE block's, tilt.rs),
+    /// and the machine takes it as a PLANE block without SEQ would (solve.rs: within the
+    /// limits, the shorter path) — unconfirmed::Decision::TcpmAxisSpat.
+    pub(super) fn spatial_tool_axis(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        written: [Option<(f64, bool)>; 3],
+    ) -> R<[f64; 2]> {
+        let Some(modal) = self.spat.as_mut() else { return Ok(self.axes.rotary) };
+        let missing = (0..3).filter(|&k| modal[k].is_none() && written[k].is_none()).count();
+        for (slot, w) in modal.iter_mut().zip(written) {
+            if let Some((v, incremental)) = w {
+                *slot = Some(if incremental { slot.unwrap_or(0.0) + v } else { v });
+            }
+        }
+        // A missing angle is told once, in the first block, and is 0° from then on.
+        *modal = modal.map(|v| Some(v.unwrap_or(0.0)));
+        let [a, b, c] = modal.map(|v| v.unwrap_or(0.0));
+        let mw = self.tf.mirror_w_matrix();
+        let r = mw * (mw * self.tf.r() * mw * orientation::spatial(a, b, c)) * mw;
+        let start = self.axes.rotary_values();
+        let mut expl =
+            Self::solved(solve::solve(cx.machine, &r, &SolveOptions { start, ..SolveOptions::default() }))?;
+        expl.decisions.push(unconfirmed::Decision::TcpmAxisSpat);
+        let expl = Arc::new(expl);
+        let axes = expl.chosen_axes().unwrap_or_default();
+        let words = format!("SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c));
+        let chosen = axis_words(&axes);
+        note(rec, || {
+            if missing > 0 {
+                Text::owned(
+                    format!(
+                        "AXIS SPAT: {words} → {chosen}; im ersten Satz alle drei Raumwinkel programmieren, fehlende gelten als 0°"
+                    ),
+                    format!(
+                        "AXIS SPAT: {words} → {chosen}; program all three spatial angles in the first block, missing ones count as 0°"
+                    ),
+                )
+            } else {
+                Text::owned(
+                    format!("AXIS SPAT: {words} → {chosen}"),
+                    format!("AXIS SPAT: {words} → {chosen}"),
+                )
+            }
+        });
+        if let Some(r) = rec.as_deref_mut() {
+            r.explanation = Some(expl);
+        }
+        Ok(self.target_rotary(&axes))
     }
 
     /// `FUNCTION RESET TCPM`: off, whichever way it was switched on.
