@@ -52,7 +52,15 @@ impl Document {
         let (first, end, line) = (self.line_of(window.start), self.line_of(window.end), self.line_of(caret));
         (window.start > 0 && line < first + MARGIN)
             || (window.end < whole.end && line + MARGIN > end)
-            || end - first > 4 * HALF
+            || self.window_oversized(window)
+    }
+
+    /// Whether `window` holds far more lines than a window does (a paste into it): the text area
+    /// must not be laid out with it (seconds for 100,000 lines) before it holds the window again.
+    #[must_use]
+    pub fn window_oversized(&self, window: &Range<usize>) -> bool {
+        self.line_starts.len() > WHOLE_UP_TO + 1
+            && self.line_of(window.end).saturating_sub(self.line_of(window.start)) > 4 * HALF
     }
 }
 
@@ -105,6 +113,11 @@ mod tests {
         let bottom = big.window_at(9_999);
         assert_eq!(bottom.end, big.text.len());
         assert!(!big.window_moves(&bottom, big.text.len()), "nothing below the last line");
+        // A window is never oversized; the whole program pasted into one is, and moves.
+        assert!(![w.clone(), top, bottom].iter().any(|w| big.window_oversized(w)));
+        let pasted = 0..big.text.len();
+        assert!(big.window_oversized(&pasted) && big.window_moves(&pasted, big.line_starts[5_000]));
+        assert!(!small.window_oversized(&(0..small.text.len())), "a small program is held whole");
     }
 
     #[test]
