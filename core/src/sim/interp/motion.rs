@@ -186,9 +186,8 @@ impl Interp {
                 let slot = if m91 { &mut l[i] } else { &mut p[i] };
                 *slot = if w.incremental { *slot + v } else { v };
             } else if let Some(ra) = rotary_of(w.axis).filter(|_| self.spat.is_some()) {
-                let k =
-                    [RotaryAxis::A, RotaryAxis::B, RotaryAxis::C].iter().position(|&x| x == ra).unwrap_or(0);
-                spatial[k] = Some((self.value(&w.value)?, w.incremental));
+                // A, B, C in declaration order: SPA, SPB, SPC.
+                spatial[ra as usize] = Some((self.value(&w.value)?, w.incremental));
                 rot_prog = true;
             } else if let Some(ra) = rotary_of(w.axis) {
                 // The axis must exist before its value matters ("Achse nicht vorhanden" first).

@@ -93,10 +93,11 @@ impl Interp {
             }
         }
         // A missing angle is told once, in the first block, and is 0° from then on.
-        *modal = modal.map(|v| Some(v.unwrap_or(0.0)));
         let [a, b, c] = modal.map(|v| v.unwrap_or(0.0));
+        *modal = [Some(a), Some(b), Some(c)];
+        // As a PLANE block's R = M_W·(M_W·R_active·M_W·R_prog)·M_W (tilt.rs), with M_W² = 1.
         let mw = self.tf.mirror_w_matrix();
-        let r = mw * (mw * self.tf.r() * mw * orientation::spatial(a, b, c)) * mw;
+        let r = self.tf.r() * mw * orientation::spatial(a, b, c) * mw;
         let start = self.axes.rotary_values();
         let mut expl =
             Self::solved(solve::solve(cx.machine, &r, &SolveOptions { start, ..SolveOptions::default() }))?;
