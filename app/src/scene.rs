@@ -112,6 +112,16 @@ impl Default for Triads {
 }
 
 impl Triads {
+    /// None drawn: the moment of a collision shows the two bodies, not four triads over them
+    /// (classroom trial II found that view crowded); the switches bring any back.
+    pub const NONE: Triads = Triads { mcs: false, wcs: false, wpl: false, tcs: false };
+
+    /// The switches a moment starts with: all at a normal one, none at a collision.
+    #[must_use]
+    pub fn at_start(collision: bool) -> Triads {
+        if collision { Triads::NONE } else { Triads::default() }
+    }
+
     /// Switch `i` in the order M-CS, W-CS, WPL-CS, T-CS (`false` past the end).
     #[must_use]
     pub fn get(&self, i: usize) -> bool {

@@ -111,6 +111,7 @@ fn start_loop(viewer: Rc<RefCell<Viewer>>, status: UseStateHandle<GlStatus>) -> 
 
 /// Wheel zoom needs a non-passive listener so the page does not scroll at the same time.
 fn wheel_listener(canvas: &HtmlCanvasElement, viewer: Rc<RefCell<Viewer>>) -> impl FnOnce() + use<> {
+    let canvas_css = canvas.clone();
     let cb = Closure::<dyn FnMut(WheelEvent)>::new(move |e: WheelEvent| {
         e.prevent_default();
         // deltaMode 1 = lines (Firefox); a line is about 16 px.
@@ -118,7 +119,14 @@ fn wheel_listener(canvas: &HtmlCanvasElement, viewer: Rc<RefCell<Viewer>>) -> im
         let mut v = viewer.borrow_mut();
         // 0.15 % per pixel of scroll, the same in and out (no exp(): keeps libm out of the bundle).
         let step = (1.0 + dy.abs() * 0.0015).min(2.0) as f32;
-        v.camera.zoom(if dy > 0.0 { step } else { 1.0 / step });
+        let factor = if dy > 0.0 { step } else { 1.0 / step };
+        // Towards the pointer (offset_x/y: CSS pixels in the canvas).
+        let (w, h) = (canvas_css.client_width() as f32, canvas_css.client_height() as f32);
+        if w > 0.0 && h > 0.0 {
+            v.camera.zoom_at(factor, e.offset_x() as f32, e.offset_y() as f32, w, h);
+        } else {
+            v.camera.zoom(factor);
+        }
         v.follow = false;
         v.dirty = true;
     });

@@ -116,7 +116,12 @@ const TRIAD_SWITCHES: [(&str, &str, &str); 4] = [
 #[function_component(View3d)]
 pub fn view3d(props: &View3dProps) -> Html {
     let viewer = use_mut_ref(|| Viewer::new(Camera::default()));
-    let triads = use_state(Triads::default);
+    // Two sets of switches: the normal view's and the collision moment's (which starts with
+    // none, so the red bodies are not hidden under triads).
+    let collision = props.state.as_ref().is_some_and(|s| s.contact.is_some());
+    let normal_triads = use_state(|| Triads::at_start(false));
+    let contact_triads = use_state(|| Triads::at_start(true));
+    let triads = if collision { contact_triads } else { normal_triads };
     // Renders the toolbar again when a button changed the viewer (the "Werkstück" switch).
     let redraw = use_state(|| false);
     {

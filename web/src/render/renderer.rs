@@ -243,7 +243,7 @@ impl Renderer {
 
     /// Draws a machine scene; returns its labels on screen.
     pub fn paint(&mut self, scene: &Scene<'_>, camera: &Camera) -> Result<Vec<ScreenLabel>, RenderError> {
-        let list = triads::scene(scene);
+        let list = triads::scene(scene, camera.elevation >= super::machine_parts::FROM_ABOVE);
         let s = scene.state;
         let p =
             schwenkbar_app::scene::pose::poses(scene.machine, &s.axes.rotary, s.axes.linear, s.tool.length);

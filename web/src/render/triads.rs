@@ -52,11 +52,12 @@ fn compose(pose: DAffine3, f: &Frame) -> (DVec3, DMat3) {
     (pose.transform_point3(f.origin), pose.matrix3 * f.rot)
 }
 
-/// Builds the whole draw list of a scene: machine, ghost, working plane, triads.
+/// Builds the whole draw list of a scene: machine, ghost, working plane, triads; `from_above`:
+/// seen from above, the head veiled ([`machine_parts::HEAD_VEIL`]).
 #[must_use]
-pub fn scene(s: &Scene<'_>) -> DrawList {
+pub fn scene(s: &Scene<'_>, from_above: bool) -> DrawList {
     let mut list = DrawList::default();
-    let p = machine_parts::machine(&mut list, s.machine, s.state);
+    let p = machine_parts::machine(&mut list, s.machine, s.state, from_above);
     if let Some(g) = &s.state.ghost {
         machine_parts::ghost(&mut list, s.machine, s.state, g);
     }
@@ -108,15 +109,11 @@ mod tests {
     fn triads_are_switchable_and_labelled() {
         let m = Machine::builtin("ac-table").expect("machine");
         let state = SceneState::default();
-        let all = scene(&Scene { machine: &m, state: &state, triads: Triads::default() });
+        let all = scene(&Scene { machine: &m, state: &state, triads: Triads::default() }, false);
         for name in ["M-CS", "W-CS", "WPL-CS", "T-CS"] {
             assert!(labels(&all, name).is_some(), "{name}");
         }
-        let none = scene(&Scene {
-            machine: &m,
-            state: &state,
-            triads: Triads { mcs: false, wcs: false, wpl: false, tcs: false },
-        });
+        let none = scene(&Scene { machine: &m, state: &state, triads: Triads::NONE }, false);
         assert!(none.labels.is_empty());
         assert!(none.instances.iter().all(|i| i.pass != Pass::Overlay));
         assert_eq!(all.instances.iter().filter(|i| i.pass == Pass::Overlay).count(), 4 * 3 * 2);
@@ -133,14 +130,15 @@ mod tests {
         });
         let rod = Placed::cylinder(DVec3::ZERO, DVec3::Z, 5.0, 40.0);
         let state = SceneState { contact: Some([cube, rod]), ..SceneState::default() };
-        let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() });
+        let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() }, false);
         let red: Vec<_> = list.instances.iter().filter(|i| i.colour == machine_parts::CONTACT).collect();
         assert_eq!(red.len(), 2);
         assert!(red.iter().all(|i| i.pass == Pass::XRay), "the pair shows through the parts it is in");
         let corner = red[0].model.transform_point3(DVec3::splat(0.5));
         assert!((corner - DVec3::new(11.0, 22.0, 33.0)).length() < 1e-9, "{corner}");
         assert!((red[1].model.transform_point3(DVec3::Z) - DVec3::new(0.0, 0.0, 40.0)).length() < 1e-9);
-        let plain = scene(&Scene { machine: &m, state: &SceneState::default(), triads: Triads::default() });
+        let plain =
+            scene(&Scene { machine: &m, state: &SceneState::default(), triads: Triads::default() }, false);
         assert!(plain.instances.iter().all(|i| i.colour != machine_parts::CONTACT));
     }
 
@@ -152,7 +150,7 @@ mod tests {
         let mut state = SceneState::default();
         state.wpl.rot = spatial(0.0, 45.0, 0.0);
         state.axes.rotary = AxisValues::default().with(RotaryAxis::A, 45.0).with(RotaryAxis::C, 90.0);
-        let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() });
+        let list = scene(&Scene { machine: &m, state: &state, triads: Triads::default() }, false);
         let plane = list.instances.iter().find(|i| i.shape == Shape::Square).expect("plane");
         let normal = plane.model.matrix3.col(2).normalize();
         assert!((normal - DVec3::Z).length() < 1e-9, "working plane horizontal in the machine: {normal}");
