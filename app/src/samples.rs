@@ -18,7 +18,7 @@ pub const MUSTERPROGRAMM_1: Sample = Sample {
     text: include_str!("../../static/programs/musterprogramm1.h"),
 };
 
-pub static SAMPLES: [Sample; 5] = [
+pub static SAMPLES: [Sample; 6] = [
     MUSTERPROGRAMM_1,
     Sample {
         id: "euler_fasen",
@@ -47,6 +47,12 @@ pub static SAMPLES: [Sample; 5] = [
         machine: "ac-table",
         text: include_str!("../../static/programs/musterprogramm2.h"),
     },
+    Sample {
+        id: "kollision_schwenken",
+        title: Text::new("Kollision beim Schwenken", "Collision while swivelling"),
+        machine: "ac-table",
+        text: include_str!("../../static/programs/kollision_schwenken.h"),
+    },
 ];
 
 /// The program a first visit starts with.
@@ -68,5 +74,22 @@ mod tests {
             assert!(diags.is_empty(), "{}: {diags:?}", s.id);
             assert!(schwenkbar_core::machine::Machine::builtin(s.machine).is_ok(), "{}", s.machine);
         }
+    }
+
+    /// The collision sample stops where it says: at its PLANE block, the chosen SEQ− swivel
+    /// lifting the table's rim into the tool, with the free SEQ+ named (the geometry worked by
+    /// hand in core/tests/collision.rs for the same scene).
+    #[test]
+    fn the_collision_sample_stops_at_its_swivel_and_names_the_free_solution() {
+        use schwenkbar_core::machine::Machine;
+        use schwenkbar_core::sim::{SimOptions, simulate};
+        let s = by_id("kollision_schwenken").expect("the sample");
+        let (program, _) = schwenkbar_core::parse(s.text);
+        let sim = simulate(&program, &Machine::builtin(s.machine).expect("machine"), &SimOptions::default());
+        let e = sim.error.as_ref().expect("the run stops");
+        let block = &program.blocks[e.block];
+        assert!(s.text[block.span().start..block.span().end].contains("PLANE SPATIAL SPA-30"), "{e:?}");
+        let c = sim.collision().expect("a collision");
+        assert_eq!(c.alternative.as_ref().map(|a| a.word.as_str()), Some("SEQ+"));
     }
 }
