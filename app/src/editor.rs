@@ -245,20 +245,28 @@ impl Row {
     }
 }
 
-/// The sections' titles, in [`Row::section`] order.
-pub const SECTIONS: [Text; 4] = [
-    Text::new("Maschine", "Machine"),
-    Text::new("1. Drehachse (Werkstückseite, Slave)", "1st rotary axis (workpiece side, slave)"),
-    Text::new("2. Drehachse (Werkzeugseite, Master)", "2nd rotary axis (tool side, master)"),
-    Text::new("Geometrie", "Geometry"),
-];
+/// The sections before the collision bodies: the machine, the two rotary axes, the geometry.
+pub const SECTIONS: usize = 4;
 
-/// The title of section `s` ([`Row::section`]).
+/// The title of section `s` ([`Row::section`]) of `form`: a rotary axis is named by its place in
+/// the chain and by what carries it as typed (a table-table machine's master is on the table,
+/// a head-head machine's slave on the head).
 #[must_use]
-pub fn section_title(s: usize) -> Text {
-    match SECTIONS.get(s) {
-        Some(t) => t.clone(),
-        None => Text::owned(format!("Kollisionskörper {}", s - 3), format!("Collision body {}", s - 3)),
+pub fn section_title(s: usize, form: &Form) -> Text {
+    let joint = |i: usize, de: &str, en: &str| {
+        let (on_de, on_en) = match form.joints[i].carrier.as_str() {
+            "table" => (", am Tisch", ", on the table"),
+            "head" => (", am Kopf", ", on the head"),
+            _ => ("", ""),
+        };
+        Text::owned(format!("{de}{on_de})"), format!("{en}{on_en})"))
+    };
+    match s {
+        0 => Text::new("Maschine", "Machine"),
+        1 => joint(0, "1. Drehachse (Slave", "1st rotary axis (slave"),
+        2 => joint(1, "2. Drehachse (Master", "2nd rotary axis (master"),
+        3 => Text::new("Geometrie", "Geometry"),
+        _ => Text::owned(format!("Kollisionskörper {}", s - 3), format!("Collision body {}", s - 3)),
     }
 }
 

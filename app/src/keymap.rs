@@ -1,7 +1,7 @@
 //! The physical keyboard mapped onto the control's keys, so the whole app works by keyboard:
 //! F1–F8 are the softkeys (left to right), Enter = ENT, Shift+Enter = NO ENT, End = END,
 //! Esc = DEL (abort), digits/sign/point type into the dialog, arrows move the cursor, `p` the
-//! projector mode, `h` the right-hand rule.
+//! projector mode, `h` the right-hand rule, Ctrl+Z/Ctrl+Y undo and redo a change of the program.
 
 use crate::dialog::Key;
 use crate::softkeys;
@@ -20,7 +20,15 @@ pub struct KeyPress<'a> {
 #[must_use]
 pub fn action(state: &AppState, press: &KeyPress<'_>) -> Option<Action> {
     if press.ctrl_or_alt {
-        return None;
+        // The editor's undo, wherever the focus is (the text editor's too: its history is this
+        // one); every other combination stays the browser's.
+        return match press.key {
+            "z" | "Z" if press.shift => Some(Action::Redo),
+            "z" | "Z" => Some(Action::Undo),
+            "y" | "Y" => Some(Action::Redo),
+            _ => None,
+        }
+        .filter(|_| state.dialog.is_none());
     }
     if let Some(n) = press.key.strip_prefix('F').and_then(|n| n.parse::<usize>().ok())
         && (1..=8).contains(&n)
@@ -85,6 +93,15 @@ mod tests {
         );
         assert_eq!(action(&s, &press("Escape")), Some(Action::Abort));
         assert_eq!(action(&s, &KeyPress { key: "r", shift: false, ctrl_or_alt: true }), None);
+        assert_eq!(
+            action(&s, &KeyPress { key: "z", shift: false, ctrl_or_alt: true }),
+            None,
+            "not in a dialog"
+        );
+        let s = AppState::default();
+        assert_eq!(action(&s, &KeyPress { key: "z", shift: false, ctrl_or_alt: true }), Some(Action::Undo));
+        assert_eq!(action(&s, &KeyPress { key: "Z", shift: true, ctrl_or_alt: true }), Some(Action::Redo));
+        assert_eq!(action(&s, &KeyPress { key: "y", shift: false, ctrl_or_alt: true }), Some(Action::Redo));
         assert_eq!(action(&s, &press("Tab")), None, "Tab keeps moving the focus");
     }
 }

@@ -16,6 +16,8 @@ pub const STATE_KEY: &str = "schwenkbar.state";
 pub const PROGRAM_KEY: &str = "schwenkbar.program";
 pub const PREFS_KEY: &str = "schwenkbar.prefs";
 pub const COURSE_KEY: &str = "schwenkbar.kurs";
+/// The program a sample, an import or a share link last replaced (one undo step after a reload).
+pub const REPLACED_KEY: &str = "schwenkbar.replaced";
 
 /// What the browser kept for the trainer, as read at start-up (each `None` when not there).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -28,6 +30,8 @@ pub struct Stored {
     pub program: Option<String>,
     /// The machine editor's own machines ([`crate::saved_machines`]).
     pub machines: Option<String>,
+    /// The program last replaced ([`REPLACED_KEY`]).
+    pub replaced: Option<String>,
 }
 
 /// Why a saved record could not be used.
@@ -134,30 +138,45 @@ pub(crate) fn read_flag(s: &str) -> Result<bool, RestoreError> {
 pub struct Saved {
     pub cursor: usize,
     pub machine: String,
+    /// The program has edits never exported (a sample or an import over it asks first).
+    pub unexported: bool,
 }
 
 impl Saved {
     const KIND: char = 's';
     /// 1 was the JSON object of the builds before records (with language and projector mode,
-    /// now in [`Prefs`]).
-    const VERSION: u32 = 2;
+    /// now in [`Prefs`]); 2 had no `unexported` (read as unexported: asking once too often
+    /// loses nothing).
+    const VERSION: u32 = 3;
 
     #[must_use]
     pub fn to_record(&self) -> String {
         write_record(
             Self::KIND,
             Self::VERSION,
-            &[("cursor", &self.cursor.to_string()), ("machine", &self.machine)],
+            &[
+                ("cursor", &self.cursor.to_string()),
+                ("machine", &self.machine),
+                ("unexported", flag(self.unexported)),
+            ],
         )
     }
 
     pub fn from_record(text: &str) -> Result<Saved, RestoreError> {
-        let [cursor, machine] = read_record(text, Self::KIND, Self::VERSION, ["cursor", "machine"])?;
+        let (cursor, machine, unexported) =
+            match read_record(text, Self::KIND, Self::VERSION, ["cursor", "machine", "unexported"]) {
+                Ok([cursor, machine, unexported]) => (cursor, machine, read_flag(&unexported)?),
+                Err(RestoreError::OldVersion) => {
+                    let [cursor, machine] = read_record(text, Self::KIND, 2, ["cursor", "machine"])?;
+                    (cursor, machine, true)
+                }
+                Err(e) => return Err(e),
+            };
         // `usize::from_str` takes a leading '+'; a record never has one.
         if !cursor.bytes().all(|b| b.is_ascii_digit()) {
             return Err(RestoreError::Corrupt);
         }
-        Ok(Saved { cursor: cursor.parse().map_err(|_| RestoreError::Corrupt)?, machine })
+        Ok(Saved { cursor: cursor.parse().map_err(|_| RestoreError::Corrupt)?, machine, unexported })
     }
 }
 
@@ -213,6 +232,14 @@ impl Prefs {
             _ => return Err(RestoreError::Corrupt),
         };
         Ok(Prefs { lang, classroom: read_flag(&classroom)? })
+    }
+
+    /// A first visit's preferences: the browser's language (`navigator.language`, e.g. `de-AT`,
+    /// `en-US`) where it is German or another language (English then), no projector.
+    #[must_use]
+    pub fn first_visit(browser_language: &str) -> Prefs {
+        let german = browser_language.get(..2).is_some_and(|p| p.eq_ignore_ascii_case("de"));
+        Prefs { lang: if german { Lang::De } else { Lang::En }, classroom: false }
     }
 
     /// The preferences at start-up and, when the saved ones could not be used, why.
@@ -325,12 +352,19 @@ mod tests {
     #[test]
     fn records_round_trip_with_any_machine_id() {
         for machine in ["ac-table", "a;b=c%", "Ä 45° \u{1F600}", "", "tab\tnew\nline+%41"] {
-            let s = Saved { cursor: 12, machine: machine.into() };
-            assert_eq!(Saved::from_record(&s.to_record()), Ok(s), "{machine}");
+            for unexported in [false, true] {
+                let s = Saved { cursor: 12, machine: machine.into(), unexported };
+                assert_eq!(Saved::from_record(&s.to_record()), Ok(s), "{machine}");
+            }
         }
         assert_eq!(
-            Saved { cursor: 7, machine: "ac-table".into() }.to_record(),
-            "s2;cursor=7;machine=ac-table"
+            Saved { cursor: 7, machine: "ac-table".into(), unexported: true }.to_record(),
+            "s3;cursor=7;machine=ac-table;unexported=1"
+        );
+        // The record before the undo history is read, its program taken as unexported.
+        assert_eq!(
+            Saved::from_record("s2;cursor=7;machine=ac-table"),
+            Ok(Saved { cursor: 7, machine: "ac-table".into(), unexported: true })
         );
         for p in [Prefs::default(), Prefs { lang: Lang::En, classroom: true }] {
             assert_eq!(Prefs::from_record(&p.to_record()), Ok(p));
@@ -345,7 +379,7 @@ mod tests {
             r#"{"version":1,"cursor":10,"machine":"ac-table","lang":"De","projector":true}"#,
             "{kaputt",
             "s1;cursor=1;machine=x",
-            "s3;cursor=1;machine=x;more=1",
+            "s4;cursor=1;machine=x;more=1",
         ] {
             assert_eq!(Saved::from_record(old), Err(RestoreError::OldVersion), "{old}");
         }
@@ -359,6 +393,8 @@ mod tests {
             "s2;machine=x;cursor=1",
             "s2;cursor=1;machine=x;extra=1",
             "s2;cursor=1;machine=%ZZ",
+            "s3;cursor=1;machine=x",
+            "s3;cursor=1;machine=x;unexported=2",
             "s2x;cursor=1;machine=x",
             "p1;lang=de;classroom=0",
             "x",
@@ -370,6 +406,17 @@ mod tests {
         }
         assert_eq!(Prefs::load(Some("p1;lang=xx;classroom=0")), (Prefs::default(), Some(PREFS_UNREADABLE)));
         assert_eq!(Prefs::load(None), (Prefs::default(), None));
+        for (browser, lang) in [
+            ("de", Lang::De),
+            ("de-AT", Lang::De),
+            ("DE-ch", Lang::De),
+            ("en-US", Lang::En),
+            ("fr", Lang::En),
+            ("", Lang::En),
+            ("d", Lang::En),
+        ] {
+            assert_eq!(Prefs::first_visit(browser), Prefs { lang, classroom: false }, "{browser}");
+        }
         let huge = format!("s2;cursor=1;machine={}", "x".repeat(1_000_000));
         assert_eq!(Saved::from_record(&huge).map(|s| s.machine.len()), Ok(1_000_000));
     }

@@ -103,14 +103,54 @@ pub fn row(state: &AppState) -> Row {
     if state.link.is_some() {
         return link_row(state.lang);
     }
+    if state.replace.is_some() {
+        return replace_row(state.lang);
+    }
     match state.level {
         SoftkeyLevel::Main => main_row(state),
         SoftkeyLevel::SpecFct => spec_fct_row(state.lang),
         SoftkeyLevel::TiltPlane => tilt_plane_row(),
         SoftkeyLevel::Machines => machines_row(state),
         SoftkeyLevel::OwnMachines => own_machines_row(state),
-        SoftkeyLevel::Files => files_row(state.lang),
+        SoftkeyLevel::Files => files_row(state),
         SoftkeyLevel::Samples => samples_row(state.lang),
+    }
+}
+
+/// The shown row's name with the way back, above the softkeys: after a PLANE dialog the
+/// control keeps the function row up (F6 is REL. SPA. there, not PGM-LAUF), which surprises a
+/// trainee who does not see which row is up.
+#[must_use]
+pub fn row_name(state: &AppState) -> Text {
+    let back = |de: &str, en: &str| {
+        Text::owned(format!("Softkeys: {de} · END = zurück"), format!("Softkeys: {en} · END = back"))
+    };
+    if let Some((dialog, _)) = &state.dialog {
+        let f = function_label(dialog.function);
+        return Text::owned(
+            format!("Softkeys: Dialog PLANE {f} · Esc = abbrechen"),
+            format!("Softkeys: dialog PLANE {f} · Esc = abort"),
+        );
+    }
+    if state.run.is_some() {
+        return back("PGM-LAUF", "PGM RUN");
+    }
+    if state.link.is_some() {
+        return Text::new("Softkeys: Programm aus dem Link", "Softkeys: program from the link");
+    }
+    if state.replace.is_some() {
+        return Text::new("Softkeys: Programm ersetzen?", "Softkeys: replace the program?");
+    }
+    match state.level {
+        SoftkeyLevel::Main => {
+            Text::new("Softkeys: Programmieren (Hauptleiste)", "Softkeys: programming (main row)")
+        }
+        SoftkeyLevel::SpecFct => back("SPEC FCT", "SPEC FCT"),
+        SoftkeyLevel::TiltPlane => back("BEARB.-EBENE SCHWENKEN", "TILT MACHINING PLANE"),
+        SoftkeyLevel::Machines => back("MASCHINE WÄHLEN", "SELECT MACHINE"),
+        SoftkeyLevel::OwnMachines => back("EIGENE MASCHINEN", "OWN MACHINES"),
+        SoftkeyLevel::Samples => back("BEISPIEL ÖFFNEN", "OPEN SAMPLE"),
+        SoftkeyLevel::Files => back("DATEI", "FILE"),
     }
 }
 
@@ -258,16 +298,50 @@ fn own_machines_row(state: &AppState) -> Row {
     row
 }
 
+/// "Replace the own, unexported program?" — the answer "replace" first, "keep" second and at
+/// END, so the key that chose the sample, pressed again by a slip, replaces nothing.
 #[inline(never)]
-fn files_row(l: Lang) -> Row {
+fn replace_row(l: Lang) -> Row {
+    [
+        text_key(
+            "confirm-replace",
+            Text::new("PROGRAMM\nERSETZEN", "REPLACE\nPROGRAM"),
+            l,
+            Action::ConfirmReplace,
+        ),
+        text_key("keep-own", Text::new("EIGENES\nBEHALTEN", "KEEP\nMINE"), l, Action::KeepOwn),
+        None,
+        None,
+        None,
+        None,
+        None,
+        back(l),
+    ]
+}
+
+#[inline(never)]
+fn files_row(state: &AppState) -> Row {
+    let l = state.lang;
+    let undo = Softkey {
+        id: "undo".to_owned(),
+        label: Text::new("RÜCK-\nGÄNGIG", "UNDO").get(l).to_owned(),
+        action: Action::Undo,
+        active: false,
+    };
+    let redo = Softkey {
+        id: "redo".to_owned(),
+        label: Text::new("WIEDER-\nHERSTELLEN", "REDO").get(l).to_owned(),
+        action: Action::Redo,
+        active: false,
+    };
     [
         // Rendered as a file picker by the softkey row; F1 opens it through Effect::PickFile.
         text_key("import", Text::new("IMPORT\n.H", "IMPORT\n.H"), l, Action::PickFile),
         text_key("download", Text::new("HERUNTER-\nLADEN .H", "DOWNLOAD\n.H"), l, Action::Download),
         text_key("share", Text::new("LINK\nTEILEN", "SHARE\nLINK"), l, Action::Share),
         None,
-        None,
-        None,
+        state.history.can_undo().then_some(undo),
+        state.history.can_redo().then_some(redo),
         None,
         back(l),
     ]
@@ -312,6 +386,25 @@ mod tests {
                 "fn-reset"
             ]
         );
+    }
+
+    #[test]
+    fn the_row_name_says_the_function_row_is_still_up_after_a_plane_dialog() {
+        use crate::dialog::Key;
+        let s = AppState::default().then(Action::SpecFct).then(Action::TiltPlane);
+        let s = s.then(Action::Function(PlaneKind::Reset));
+        assert!(row_name(&s).de.contains("Dialog PLANE RESET"));
+        let mut s = s.then(Action::DialogKey(Key::Positioning(crate::dialog::PosKind::Stay)));
+        for _ in 0..4 {
+            if s.dialog.is_none() {
+                break;
+            }
+            s = s.then(Action::DialogKey(Key::End));
+        }
+        assert!(s.dialog.is_none(), "the dialog is finished");
+        assert_eq!(row(&s)[5].as_ref().map(|k| k.id.as_str()), Some("fn-relspa"), "F6 is REL. SPA. here");
+        assert_eq!(row_name(&s).de, "Softkeys: BEARB.-EBENE SCHWENKEN · END = zurück");
+        assert_eq!(row_name(&s.then(Action::Back).then(Action::Back)).en, "Softkeys: programming (main row)");
     }
 
     #[test]

@@ -19,6 +19,7 @@ use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
 use crate::stock::StockRef;
 
+mod history;
 mod run_mode;
 mod start;
 #[cfg(test)]
@@ -39,6 +40,8 @@ impl Then for AppState {
 }
 
 pub use crate::effect::{Effect, Reducer};
+use history::Change;
+pub use history::History;
 use run_mode::next_or_ask;
 pub use start::LinkPreview;
 
@@ -97,6 +100,36 @@ pub struct AppState {
     /// The cut stock of `sim`: made after a program run starts with the switch on
     /// ([`Effect::BuildStock`]), never while typing; dropped when the simulation changes.
     pub stock: Option<StockRef>,
+    /// The programs before the shown one (RÜCKGÄNGIG, Ctrl+Z) and after it (Ctrl+Y).
+    pub history: History,
+    /// The program has edits made here that were never exported (downloaded or shared): a
+    /// sample or an import over it asks first.
+    pub unexported: bool,
+    /// A sample or an imported file waiting for "replace the own program?".
+    pub replace: Option<Replacement>,
+}
+
+/// What an action does to the program, for the history and the "unexported" mark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum ProgramChange {
+    /// An edit of the trainee's: a step back is kept.
+    Edit(Change),
+    /// A new program (sample, import, link): its own code keeps the replaced one.
+    Fresh,
+    /// Undo, redo, the own program back from a link preview.
+    Travel,
+    /// Anything else.
+    Aside,
+}
+
+/// A program that would replace the trainee's unexported work, held until they answer.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Replacement {
+    pub doc: Rc<Document>,
+    /// A sample's machine.
+    pub machine: Option<&'static str>,
+    /// What it is, for the question and the message after.
+    pub what: Text,
 }
 
 impl Default for AppState {
@@ -121,6 +154,9 @@ impl Default for AppState {
             // and re-meshing more than a frame (issue 14's budgets not reached yet).
             stock_shown: false,
             stock: None,
+            history: History::default(),
+            unexported: false,
+            replace: None,
         }
         .simulated(None)
     }
@@ -176,9 +212,15 @@ pub enum Action {
     /// HERUNTERLADEN and LINK TEILEN: carried out by the shell ([`Effect`]).
     Download,
     Share,
-    /// The opened share link: take its program as the own one, or keep the own one.
+    /// The opened share link: take its program as the own one, or keep the own one (also the
+    /// answer "keep mine" to a sample or an import over unexported edits).
     TakeLink,
     KeepOwn,
+    /// The answer "replace" to a sample or an import over unexported edits.
+    ConfirmReplace,
+    /// RÜCKGÄNGIG (Ctrl+Z) and WIEDERHERSTELLEN (Ctrl+Y): the program one step back or forward.
+    Undo,
+    Redo,
     /// The app shell reports the outcome of a side effect in the dialog line.
     Notice(Text),
     /// Program run: enter (single block), step, play/pause (Satzfolge), speed, back to start.
@@ -214,6 +256,23 @@ impl Reducer for AppState {
     }
 }
 
+impl Replacement {
+    /// The question in the dialog line.
+    #[must_use]
+    pub fn question(&self) -> Text {
+        Text::owned(
+            format!(
+                "Ihr Programm hat Änderungen, die nicht exportiert wurden. Durch „{}“ ersetzen? F1 = ERSETZEN, F2/END = BEHALTEN",
+                self.what.get(Lang::De)
+            ),
+            format!(
+                "Your program has edits that were never exported. Replace it with “{}”? F1 = REPLACE, F2/END = KEEP",
+                self.what.get(Lang::En)
+            ),
+        )
+    }
+}
+
 impl AppState {
     fn transition(&self, action: Action, fx: &mut Vec<Effect>) -> AppState {
         let mut next = self.clone();
@@ -227,6 +286,11 @@ impl AppState {
             ));
             return next;
         }
+        if let Some(r) = self.replace.as_ref().filter(|_| !action.allowed_while_asked()) {
+            next.message = Some(r.question());
+            return next;
+        }
+        let change = self.change_of(&action);
         match action {
             Action::SpecFct => {
                 next.dialog = None;
@@ -239,6 +303,10 @@ impl AppState {
             Action::Abort => {
                 next.dialog = None;
                 next.message = Some(Text::new("Dialog abgebrochen", "Dialog aborted"));
+            }
+            Action::Back if self.replace.is_some() => {
+                next.replace = None;
+                next.message = Some(Text::new("Eigenes Programm behalten", "Own program kept"));
             }
             Action::Back if self.run.is_some() => next.run = None,
             Action::Back => {
@@ -292,25 +360,48 @@ impl AppState {
             Action::SelectMachine(id) => next.select_machine(&id),
             Action::ShowSamples => next.level = SoftkeyLevel::Samples,
             Action::LoadSample(id) => match samples::by_id(&id) {
-                Some(sample) => {
-                    next.doc = Rc::new(Document::new(sample.text.to_owned()));
-                    next.cursor = 0;
-                    next.select_machine(sample.machine);
-                }
+                Some(sample) => next.replace_with(
+                    Replacement {
+                        doc: Rc::new(Document::new(sample.text.to_owned())),
+                        machine: Some(sample.machine),
+                        what: sample.title.clone(),
+                    },
+                    fx,
+                ),
                 None => next.message = Some(Text::new("Beispiel unbekannt", "Unknown sample")),
             },
             Action::ShowFiles => next.level = SoftkeyLevel::Files,
             Action::PickFile => fx.push(Effect::PickFile),
-            Action::Import(bytes) => next.import(bytes),
+            Action::Import(bytes) => next.import(bytes, fx),
             Action::Download => {
+                next.unexported = false;
                 fx.push(Effect::Download { name: self.file_name(), text: self.doc.text.clone() })
             }
-            Action::Share => fx.push(Effect::Share { fragment: self.share_fragment() }),
-            Action::TakeLink => {
-                next.link = None;
-                next.message =
-                    Some(Text::new("Programm aus dem Link übernommen", "Program from the link taken"));
+            Action::Share => {
+                next.unexported = false;
+                fx.push(Effect::Share { fragment: self.share_fragment() })
             }
+            Action::TakeLink => {
+                if let Some(own) = next.link.take() {
+                    next.keep_replaced(&own.own, fx);
+                    next.history.record(own.own, Change::Whole);
+                    next.unexported = false;
+                }
+                next.message = Some(Text::new(
+                    "Programm aus dem Link übernommen – Ihr bisheriges: RÜCKGÄNGIG (Strg+Z)",
+                    "Program from the link taken – your previous one: UNDO (Ctrl+Z)",
+                ));
+            }
+            Action::KeepOwn if self.replace.is_some() => {
+                next.replace = None;
+                next.message = Some(Text::new("Eigenes Programm behalten", "Own program kept"));
+            }
+            Action::ConfirmReplace => {
+                if let Some(r) = next.replace.take() {
+                    next.replace_now(r, fx);
+                }
+            }
+            Action::Undo | Action::Redo => next.travel(action == Action::Undo),
             Action::KeepOwn => {
                 if let Some(own) = next.link.take() {
                     next.run = None;
@@ -367,6 +458,18 @@ impl AppState {
                 }
             }
         }
+        if !Rc::ptr_eq(&self.doc, &next.doc) {
+            match change {
+                ProgramChange::Edit(kind) => {
+                    next.history.record(self.doc.clone(), kind);
+                    next.unexported = true;
+                }
+                ProgramChange::Fresh | ProgramChange::Travel | ProgramChange::Aside => {}
+            }
+        } else if change == ProgramChange::Aside {
+            // Another key between two runs of typing: the next typed edit is a step of its own.
+            next.history.break_typing();
+        }
         let machine_changed = match (&self.machine, &next.machine) {
             (Some(a), Some(b)) => !Rc::ptr_eq(a, b),
             (a, b) => a.is_some() != b.is_some(),
@@ -396,7 +499,7 @@ impl AppState {
 
     /// IMPORT: a text file becomes the program; a binary file (an image, a CAD model, a zip)
     /// is refused and the program stays.
-    fn import(&mut self, bytes: Vec<u8>) {
+    fn import(&mut self, bytes: Vec<u8>, fx: &mut Vec<Effect>) {
         if schwenkbar_core::text::looks_binary(&bytes) {
             self.message = Some(Text::new(
                 "Datei ist kein NC-Programm (Binärdatei): nicht importiert",
@@ -404,10 +507,96 @@ impl AppState {
             ));
             return;
         }
-        self.doc = Rc::new(Document::new(schwenkbar_core::text::decode(bytes)));
-        self.cursor = 0;
         self.level = SoftkeyLevel::Main;
-        self.message = Some(Text::new("Datei importiert", "File imported"));
+        self.replace_with(
+            Replacement {
+                doc: Rc::new(Document::new(schwenkbar_core::text::decode(bytes))),
+                machine: None,
+                what: Text::new("Importierte Datei", "Imported file"),
+            },
+            fx,
+        );
+    }
+
+    /// A sample or an import: at once over a program without unexported edits, else asked.
+    fn replace_with(&mut self, r: Replacement, fx: &mut Vec<Effect>) {
+        if self.unexported && !self.embedded {
+            self.message = Some(r.question());
+            self.replace = Some(r);
+        } else {
+            self.replace_now(r, fx);
+        }
+    }
+
+    /// The program becomes `r`'s; the one it replaces stays one undo step back (and in the
+    /// browser, for an undo after a reload).
+    fn replace_now(&mut self, r: Replacement, fx: &mut Vec<Effect>) {
+        let before = std::mem::replace(&mut self.doc, r.doc);
+        self.keep_replaced(&before, fx);
+        self.history.record(before, Change::Whole);
+        self.unexported = false;
+        self.cursor = 0;
+        if let Some(m) = r.machine {
+            self.select_machine(m);
+        }
+        self.message = Some(Text::owned(
+            format!("{} geöffnet – Ihr bisheriges Programm: RÜCKGÄNGIG (Strg+Z)", r.what.get(Lang::De)),
+            format!("{} opened – your previous program: UNDO (Ctrl+Z)", r.what.get(Lang::En)),
+        ));
+    }
+
+    /// Keeps a replaced program in the browser beside the shown one (not a lesson's trainer).
+    fn keep_replaced(&self, before: &Document, fx: &mut Vec<Effect>) {
+        if !self.embedded {
+            fx.push(Effect::Save { key: persist::REPLACED_KEY, value: before.text.clone() });
+        }
+    }
+
+    /// One step back (`back`) or forward in the program's history.
+    fn travel(&mut self, back: bool) {
+        let current = self.doc.clone();
+        let to = if back { self.history.undo(current) } else { self.history.redo(current) };
+        match to {
+            Some(doc) => {
+                self.doc = doc;
+                self.unexported = true;
+                self.cursor = self.cursor.min(self.doc.last_index());
+                self.run = None;
+                self.dialog = None;
+                self.message = Some(if back {
+                    Text::new("Änderung rückgängig gemacht", "Change undone")
+                } else {
+                    Text::new("Änderung wiederhergestellt", "Change redone")
+                });
+            }
+            None => {
+                self.message = Some(if back {
+                    Text::new("Nichts rückgängig zu machen", "Nothing to undo")
+                } else {
+                    Text::new("Nichts wiederherzustellen", "Nothing to redo")
+                });
+            }
+        }
+    }
+
+    /// How `action` would change the program, for the history.
+    fn change_of(&self, action: &Action) -> ProgramChange {
+        let breaks = |old: &str, new: &str| old.matches('\n').count() != new.matches('\n').count();
+        match action {
+            Action::SetText(text) => {
+                ProgramChange::Edit(Change::Typing { new_line: breaks(&self.doc.text, text) })
+            }
+            Action::EditText { at, text } => {
+                let old = self.doc.text.get(at.clone()).unwrap_or_default();
+                ProgramChange::Edit(Change::Typing { new_line: breaks(old, text) })
+            }
+            Action::LoadSample(_) | Action::Import(_) | Action::ConfirmReplace | Action::TakeLink => {
+                ProgramChange::Fresh
+            }
+            Action::Undo | Action::Redo | Action::KeepOwn => ProgramChange::Travel,
+            Action::DialogKey(_) => ProgramChange::Edit(Change::Whole),
+            _ => ProgramChange::Aside,
+        }
     }
 
     fn select_machine(&mut self, id: &str) {

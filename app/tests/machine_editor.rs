@@ -620,3 +620,20 @@ fn an_imported_body_of_both_or_no_shape_opens_as_a_box() {
     assert!(!s.valid && s.form.collision[0].size[0].is_empty());
     assert_eq!(s.issues_at("collision[0].box.size").count(), 1, "{:?}", s.issues);
 }
+
+#[test]
+fn a_rotary_axis_section_names_what_carries_it() {
+    use schwenkbar_app::editor::section_title;
+    // The A/C table: both axes on the table (the A axis, the master, too: classroom trial II).
+    let ac = EditorState::start(None, None, Some("ac-table")).0;
+    assert_eq!(section_title(2, &ac.form).get(Lang::De), "2. Drehachse (Master, am Tisch)");
+    assert_eq!(section_title(1, &ac.form).get(Lang::En), "1st rotary axis (slave, on the table)");
+    // The fork head: both on the head.
+    let ca = EditorState::start(None, None, Some("ca-head")).0;
+    assert_eq!(section_title(1, &ca.form).get(Lang::De), "1. Drehachse (Slave, am Kopf)");
+    // B head on a C table: the slave on the table, the master on the head.
+    let bc = EditorState::start(None, None, Some("bc-head-table")).0;
+    assert_eq!(section_title(1, &bc.form).get(Lang::De), "1. Drehachse (Slave, am Tisch)");
+    assert_eq!(section_title(2, &bc.form).get(Lang::De), "2. Drehachse (Master, am Kopf)");
+    assert_eq!(section_title(4, &bc.form).get(Lang::De), "Kollisionskörper 1");
+}

@@ -17,14 +17,18 @@ pub fn document() -> web_sys::Document {
 pub fn save_trainer_state(cursor: usize, machine: &str, lang: schwenkbar_app::i18n::Lang, projector: bool) {
     use schwenkbar_app::persist::{PREFS_KEY, Prefs, STATE_KEY, Saved};
     let storage = web_sys::window().and_then(|w| w.local_storage().ok().flatten()).expect("localStorage");
-    let state = Saved { cursor, machine: machine.to_owned() };
+    let state = Saved { cursor, machine: machine.to_owned(), unexported: false };
     storage.set_item(STATE_KEY, &state.to_record()).expect("save state");
     storage.set_item(PREFS_KEY, &Prefs { lang, classroom: projector }.to_record()).expect("save prefs");
 }
 
+/// Clears what an earlier test saved, so every test starts like a first visit in a German
+/// browser (the language a first visit takes from the browser is tested on its own).
 pub fn clear_storage() {
+    use schwenkbar_app::persist::{PREFS_KEY, Prefs};
     if let Some(s) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
         s.clear().expect("clear localStorage");
+        s.set_item(PREFS_KEY, &Prefs::default().to_record()).expect("German first");
     }
 }
 
@@ -78,6 +82,18 @@ pub async fn key(root: &Element, key: &str, shift: bool) {
     let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
     let target = query(root, ".tnc").expect("the app");
     target.dispatch_event(&event).expect("dispatch");
+    settle().await;
+}
+
+/// Ctrl + `key` pressed with the app focused (undo, redo).
+pub async fn key_ctrl(root: &Element, key: &str) {
+    let init = KeyboardEventInit::new();
+    init.set_key(key);
+    init.set_ctrl_key(true);
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("keyboard event");
+    query(root, ".tnc").expect("the app").dispatch_event(&event).expect("dispatch");
     settle().await;
 }
 

@@ -35,7 +35,7 @@ async fn import(root: &web_sys::Element, name: &str, program: &str) -> f64 {
     loop {
         yew::platform::time::sleep(std::time::Duration::from_millis(0)).await;
         let shown = text(root, ".program-pane .line[data-line='1']");
-        if text(root, ".dialog-line") == "Datei importiert" && shown == first {
+        if text(root, ".dialog-line").starts_with("Importierte Datei geöffnet") && shown == first {
             return now() - t0;
         }
         assert!(now() - t0 < 120_000.0, "the import never showed: {shown:?}");

@@ -314,3 +314,195 @@ async fn hovering_a_candidate_in_the_why_panel_shows_it_as_the_ghost() {
     chosen.dispatch_event(&web_sys::MouseEvent::new("mouseleave").expect("event")).expect("leave");
     assert!(eventually(|| ghost(&root).as_deref() == Some("A-15 C-90")).await, "back to the other one");
 }
+
+// Classroom trial II.
+
+#[wasm_bindgen_test]
+async fn the_classroom_slip_never_loses_the_program_and_ctrl_z_brings_it_back() {
+    use schwenkbar_tests::browser::key_ctrl;
+    clear_storage();
+    let root = mount().await;
+    let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n";
+    paste_program(&root, own).await;
+    // edit → F6 → F2 → F3 (◀ SATZ ZURÜCK) → F8 (END) → F3 F3
+    for k in ["F6", "F2", "F3", "F8", "F3", "F3"] {
+        key_on(&root, ".tnc", k).await;
+    }
+    assert!(program_lines(&root)[0].contains("MEIN"), "the own program is still there");
+    assert!(text(&root, ".dialog-line").contains("nicht exportiert"), "{}", text(&root, ".dialog-line"));
+    assert!(query(&root, "[data-key=confirm-replace]").is_some());
+    key_on(&root, ".tnc", "F1").await;
+    assert!(eventually(|| !program_lines(&root)[0].contains("MEIN")).await, "PROGRAMM ERSETZEN");
+    assert_eq!(storage().get_item("schwenkbar.replaced").ok().flatten().as_deref(), Some(own));
+    key_ctrl(&root, "z").await;
+    assert!(eventually(|| program_lines(&root)[0].contains("MEIN")).await, "Ctrl+Z: the own program back");
+    key_ctrl(&root, "y").await;
+    assert!(eventually(|| !program_lines(&root)[0].contains("MEIN")).await, "Ctrl+Y: replaced again");
+    // After a reload the replaced program is still one undo step away, by the softkey too.
+    let again = mount().await;
+    key_on(&again, ".tnc", "F5").await;
+    click(&again, "[data-key=undo]").await;
+    assert!(eventually(|| program_lines(&again)[0].contains("MEIN")).await, "RÜCKGÄNGIG after a reload");
+    unmount(&again);
+    unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn keys_work_after_a_click_on_a_view_checkbox_or_the_slider() {
+    clear_storage();
+    let root = mount().await;
+    key_on(&root, ".tnc", "F6").await;
+    let boxes =
+        root.query_selector_all(".tnc input[type=checkbox], .tnc input[type=range]").expect("selector");
+    assert!(boxes.length() > 0, "the run shows view switches or the slider");
+    for i in 0..boxes.length() {
+        let el: HtmlElement = boxes.item(i).expect("item").dyn_into().expect("element");
+        el.focus().expect("focus");
+        let before = query(&root, ".tnc.projector").is_some();
+        let init = web_sys::KeyboardEventInit::new();
+        init.set_key("p");
+        init.set_bubbles(true);
+        init.set_cancelable(true);
+        let event =
+            web_sys::KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("event");
+        el.dispatch_event(&event).expect("dispatch");
+        settle().await;
+        assert_ne!(query(&root, ".tnc.projector").is_some(), before, "p from {:?}", el.outer_html());
+    }
+    unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn a_course_answer_field_keeps_the_keyboard_through_check_and_correction() {
+    use schwenkbar_tests::browser::type_into;
+    clear_storage();
+    let root = mount_at("#kurs/2").await;
+    wait_for(&root, "[data-lesson='2']", 5_000).await.expect("lesson 2");
+    let field = "[data-testid=answer-0]";
+    let input: HtmlElement = query(&root, field).expect("answer field").dyn_into().expect("input");
+    input.focus().expect("focus");
+    settle().await;
+    type_into(&root, field, "falsch").await;
+    key_on(&root, field, "Enter").await;
+    let focused = || {
+        document().active_element().and_then(|e| e.get_attribute("data-testid")).as_deref()
+            == Some("answer-0")
+    };
+    assert!(wait_for(&root, "[data-testid=verdict-0]", 3_000).await.is_some(), "checked");
+    assert!(eventually(focused).await, "the field keeps the focus after Enter");
+    type_into(&root, field, "falsch2").await;
+    assert!(eventually(focused).await, "and after the first edit of a wrong answer");
+    // Letters and arrows typed there are the field's, not the page's shortcuts.
+    for k in ["i", "p", "ArrowRight", "PageDown"] {
+        let active = document().active_element().expect("active");
+        let init = web_sys::KeyboardEventInit::new();
+        init.set_key(k);
+        init.set_bubbles(true);
+        init.set_cancelable(true);
+        let event =
+            web_sys::KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init).expect("event");
+        active.dispatch_event(&event).expect("dispatch");
+        settle().await;
+        assert!(query(&root, ".course.projector").is_none(), "{k} is no shortcut in the field");
+        assert!(query(&root, "[data-lesson='2']").is_some(), "{k} leaves the lesson alone");
+    }
+    unmount(&root);
+    web_sys::window().expect("window").location().set_hash("").expect("hash");
+    settle().await;
+}
+
+#[wasm_bindgen_test]
+async fn a_first_visit_follows_the_browsers_language_and_prompts_carry_no_internal_note() {
+    if let Some(s) = web_sys::window().and_then(|w| w.local_storage().ok().flatten()) {
+        s.clear().expect("clear");
+    }
+    let language = web_sys::window().expect("window").navigator().language().unwrap_or_default();
+    let root = mount().await;
+    let want = if language.to_ascii_lowercase().starts_with("de") { "de" } else { "en" };
+    let lang = query(&root, ".tnc").and_then(|t| t.get_attribute("lang"));
+    assert_eq!(lang.as_deref(), Some(want), "navigator.language = {language}");
+    // The choice stays once made: the page saved it.
+    assert!(storage().get_item("schwenkbar.prefs").ok().flatten().is_some_and(|p| p.contains(want)));
+    unmount(&root);
+    clear_storage();
+    let root = mount().await;
+    key_on(&root, ".tnc", "F1").await;
+    key_on(&root, ".tnc", "F3").await;
+    key_on(&root, ".tnc", "F1").await;
+    assert!(eventually(|| query(&root, ".dialog-area.open").is_some()).await, "the SPATIAL dialog");
+    assert!(!text(&root, ".dialog-area").contains("unbestätigt"), "{}", text(&root, ".dialog-area"));
+    unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn the_program_pane_stays_filled_when_the_run_reaches_the_end() {
+    // The pane's scrolling comes with the shipped styles.
+    schwenkbar_tests::browser::inject_app_css();
+    clear_storage();
+    let root = mount().await;
+    root.set_attribute("style", "width: 1280px").expect("style");
+    key_on(&root, ".tnc", "F6").await;
+    // Screens of several heights: the last scroll asked for lies past the end on some.
+    for height in [500, 800, 1000, 1300] {
+        query(&root, ".tnc")
+            .expect("app")
+            .set_attribute("style", &format!("height: {height}px"))
+            .expect("style");
+        key_on(&root, ".tnc", "F4").await;
+        let mut last = String::new();
+        for _ in 0..200 {
+            key_on(&root, ".tnc", "F2").await;
+            let now = text(&root, ".program-pane .line.cursor");
+            if now == last {
+                break;
+            }
+            last = now;
+        }
+        assert!(last.contains("END PGM"), "the run reached the end: {last}");
+        let scroller: HtmlElement =
+            query(&root, ".program-pane .lines").expect("list").dyn_into().expect("element");
+        let list: HtmlElement =
+            query(&root, ".program-pane .blocks").expect("blocks").dyn_into().expect("element");
+        let (top, height) = (scroller.scroll_top(), scroller.client_height());
+        let (from, to) = (list.offset_top(), list.offset_top() + list.offset_height());
+        let info =
+            format!("{height} px: top {top} list {from}..{to} scroll height {}", scroller.scroll_height());
+        assert!(from <= top, "the drawn lines start at or above the visible top: {info}");
+        assert!(
+            to >= top + height || to >= scroller.scroll_height() - 1,
+            "the drawn lines reach the visible bottom: {info}"
+        );
+    }
+    unmount(&root);
+}
+
+#[wasm_bindgen_test]
+async fn the_collision_sample_stops_at_its_swivel_with_the_triads_out_of_the_way() {
+    clear_storage();
+    let root = mount().await;
+    let checked = |root: &Element| {
+        let list = root.query_selector_all("[data-triad]").expect("selector");
+        (0..list.length())
+            .filter_map(|i| list.item(i))
+            .filter_map(|n| n.dyn_into::<web_sys::HtmlInputElement>().ok())
+            .filter(|i| i.checked())
+            .count()
+    };
+    key_on(&root, ".tnc", "F3").await;
+    assert_eq!(text(&root, "[data-key=sample-kollision_schwenken]"), "Kollision beim Schwenken");
+    click(&root, "[data-key=sample-kollision_schwenken]").await;
+    assert!(eventually(|| program_lines(&root)[0].contains("KOLLISION")).await);
+    key_on(&root, ".tnc", "F6").await;
+    assert_eq!(checked(&root), 4, "a normal moment shows the four triads");
+    for _ in 0..20 {
+        key_on(&root, ".tnc", "F2").await;
+    }
+    assert!(
+        eventually(|| text(&root, ".dialog-line").contains("Kollision")).await,
+        "{}",
+        text(&root, ".dialog-line")
+    );
+    assert!(text(&root, ".program-pane .line.cursor").contains("PLANE SPATIAL SPA-30"));
+    assert!(eventually(|| checked(&root) == 0).await, "the collision moment hides the triads");
+    unmount(&root);
+}

@@ -38,6 +38,23 @@ fn cut(el: &Element) -> bool {
     el.scroll_width() > el.client_width() + 1 || el.scroll_height() > el.client_height() + 1
 }
 
+/// Every drawn program line wraps inside the program pane: not cut by its own box nor by the
+/// pane (classroom trial II: "10 PLANE SPATIAL SPA+0 SPB+15 SP").
+fn lines_fit_the_pane(root: &Element) {
+    let lines = query(root, ".program-pane .lines").expect("lines");
+    let visible_right = lines.get_bounding_client_rect().left() + f64::from(lines.client_width());
+    for line in all(root, ".program-pane .line") {
+        assert!(!cut(&line), "cut: {:?}", line.text_content());
+        let r = line.get_bounding_client_rect();
+        assert!(
+            r.right() <= visible_right + 1.0,
+            "beyond the pane: {:?} {} > {visible_right}",
+            line.text_content(),
+            r.right()
+        );
+    }
+}
+
 /// The app in projector mode, 1280 px wide, the cursor on Musterprogramm 1's block 10.
 async fn projector_app() -> Element {
     clear_storage();
@@ -70,10 +87,8 @@ async fn projector_type_scales_and_the_program_and_view_take_the_why_panels_colu
     );
     assert!(program.width() > panes.width() * 0.35, "the program pane gets its share: {}", program.width());
     // Long blocks wrap, nothing is cut; the cursor block is in the pane.
-    for line in all(&root, ".program-pane .line") {
-        assert!(!cut(&line), "cut: {:?}", line.text_content());
-    }
     let pane = query(&root, ".program-pane").expect("pane").get_bounding_client_rect();
+    lines_fit_the_pane(&root);
     let cursor = query(&root, ".line.cursor").expect("cursor line");
     assert!(cursor.text_content().unwrap_or_default().contains("PLANE SPATIAL"), "block 10");
     let c = cursor.get_bounding_client_rect();
@@ -97,6 +112,15 @@ async fn projector_type_scales_and_the_program_and_view_take_the_why_panels_colu
     click(&root, "[data-key=run-next]").await;
     let side = wait_for(&root, ".side .position", 3_000).await.expect("position display");
     assert!(side.get_bounding_client_rect().width() >= 250.0, "the position display is readable");
+    // It fills its column: no empty black under it.
+    let column = query(&root, ".side").expect("side").get_bounding_client_rect();
+    let shown = side.get_bounding_client_rect();
+    assert!(
+        column.bottom() - shown.bottom() <= 2.0,
+        "empty under the position display: {} < {}",
+        shown.bottom(),
+        column.bottom()
+    );
     root.remove();
 }
 
@@ -151,6 +175,7 @@ async fn the_instructor_view_fits_1366_pixels_and_its_trainer_has_projector_type
     assert!(trainer.get_bounding_client_rect().right() <= course.get_bounding_client_rect().right() + 1.0);
     let line = query(&root, ".lesson-trainer .program-pane .line").expect("program line");
     assert_eq!(px(&line, "font-size"), 22.0, "the embedded program in projector type");
+    lines_fit_the_pane(&query(&root, ".lesson-trainer").expect("trainer"));
     for key in all(&root, ".lesson-trainer .softkey, .lesson-trainer .hard-key") {
         assert!(!cut(&key), "{:?} fits", key.text_content());
     }

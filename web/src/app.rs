@@ -98,7 +98,8 @@ pub fn app(props: &AppProps) -> Html {
             let listener = browser::on_page_keys(own, embedded, move |e| {
                 let state = current.borrow().clone();
                 let key = e.key();
-                let press = KeyPress { key: &key, shift: e.shift_key(), ctrl_or_alt: false };
+                let press =
+                    KeyPress { key: &key, shift: e.shift_key(), ctrl_or_alt: e.ctrl_key() || e.meta_key() };
                 let action = keymap::action(&state, &press);
                 action.map(|a| state.dispatch(a)).is_some()
             });
@@ -160,7 +161,7 @@ pub fn app(props: &AppProps) -> Html {
                     </div>
                 </main>
                 <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />
-                <SoftkeyRow row={softkeys::row(&state)} {on_action} {on_import} />
+                <SoftkeyRow row={softkeys::row(&state)} name={AttrValue::from(softkeys::row_name(&state).get(l).to_owned())} {on_action} {on_import} />
             </div>
         }
 }

@@ -8,7 +8,7 @@ use wasm_bindgen_futures::JsFuture;
 use web_sys::{Blob, BlobPropertyBag, Element, File, HtmlAnchorElement, HtmlElement, KeyboardEvent, Url};
 
 use schwenkbar_app::i18n::Text;
-use schwenkbar_app::persist::{COURSE_KEY, PREFS_KEY, PROGRAM_KEY, STATE_KEY, Stored};
+use schwenkbar_app::persist::{COURSE_KEY, PREFS_KEY, PROGRAM_KEY, Prefs, REPLACED_KEY, STATE_KEY, Stored};
 use schwenkbar_app::saved_machines::MACHINES_KEY;
 
 fn storage() -> Option<web_sys::Storage> {
@@ -25,16 +25,17 @@ fn load(key: &str) -> Option<String> {
 pub fn load_stored() -> Stored {
     Stored {
         state: load(STATE_KEY),
-        prefs: load(PREFS_KEY),
+        prefs: load_prefs(),
         program: load(PROGRAM_KEY),
         machines: load(MACHINES_KEY),
+        replaced: load(REPLACED_KEY),
     }
 }
 
 /// The machine editor's own machines and the shared preferences.
 #[must_use]
 pub fn load_editor() -> (Option<String>, Option<String>) {
-    (load(MACHINES_KEY), load(PREFS_KEY))
+    (load(MACHINES_KEY), load_prefs())
 }
 
 /// Goes to another page of the app (relative `url`); without a window nothing happens.
@@ -48,7 +49,16 @@ pub fn open_page(url: &str) {
 /// The course's progress record and the shared preferences.
 #[must_use]
 pub fn load_course() -> (Option<String>, Option<String>) {
-    (load(COURSE_KEY), load(PREFS_KEY))
+    (load(COURSE_KEY), load_prefs())
+}
+
+/// The shared preferences; on a first visit (none saved) the browser's language, which the
+/// page then saves, so a choice made later stays.
+fn load_prefs() -> Option<String> {
+    load(PREFS_KEY).or_else(|| {
+        let language = web_sys::window()?.navigator().language()?;
+        Some(Prefs::first_visit(&language).to_record())
+    })
 }
 
 const REFUSED: Text = Text::new(
@@ -137,11 +147,13 @@ pub fn on_hash_change(mut f: impl FnMut(String) + 'static) -> Listener {
 const KEY_OWNERS: &str = ".tnc, [data-testid=course]";
 
 /// Keys for the whole page, wherever the focus is (on BODY after a load or after the focused
-/// softkey was re-rendered), as long as the page lives: `f` gets every keydown that no text
-/// field, focused button or canvas has taken and that was pressed in `own` (the app's root
-/// element) or, unless `only_inside`, outside every app — not inside another one, so a lesson's
-/// embedded trainer keeps its keys from the course around it. `f` returns whether it used the
-/// key.
+/// softkey was re-rendered, on a view's checkbox or slider after a click), as long as the page
+/// lives: `f` gets every keydown that no text field, focused button or canvas has taken and
+/// that was pressed in `own` (the app's root element) or, unless `only_inside`, outside every
+/// app — not inside another one, so a lesson's embedded trainer keeps its keys from the course
+/// around it. Of the combinations with Ctrl only undo and redo (Ctrl+Z, Ctrl+Y, Ctrl+Shift+Z)
+/// come through, also from the program's text area (its history is the trainer's). `f`
+/// returns whether it used the key.
 #[must_use]
 pub fn on_page_keys(
     own: impl Fn() -> Option<Element> + 'static,
@@ -152,9 +164,14 @@ pub fn on_page_keys(
         let Some(e) = e.dyn_ref::<KeyboardEvent>() else { return };
         let target = e.target().and_then(|t| t.dyn_into::<Element>().ok());
         let app = target.as_ref().and_then(|t| t.closest(KEY_OWNERS).ok().flatten());
+        let key = e.key();
+        let undo = (e.ctrl_key() || e.meta_key()) && matches!(key.as_str(), "z" | "Z" | "y" | "Y");
         // Inside an app, a key some element already used (a canvas's view keys, an answer
         // field's Enter) is not used twice; a key pressed outside every app is offered to each.
-        if (app.is_some() && e.default_prevented()) || e.ctrl_key() || e.alt_key() || e.meta_key() {
+        if (app.is_some() && e.default_prevented())
+            || e.alt_key()
+            || ((e.ctrl_key() || e.meta_key()) && !undo)
+        {
             return;
         }
         let mine = match (&own(), &app) {
@@ -165,12 +182,23 @@ pub fn on_page_keys(
         if !mine {
             return;
         }
-        let key = e.key();
         let tag = target.as_ref().map(Element::tag_name).unwrap_or_default();
-        // Typing in a field belongs to the field, except the softkeys F1–F8.
+        // Typing in a field belongs to the field, except the softkeys F1–F8 (and undo in the
+        // program's text area). A checkbox, a slider or a button takes no letters: the page's
+        // keys work there, as USAGE says.
         let function_key =
             key.len() >= 2 && key.starts_with('F') && key[1..].bytes().all(|b| b.is_ascii_digit());
-        if matches!(tag.as_str(), "TEXTAREA" | "INPUT" | "SELECT") && !function_key {
+        let types = match tag.as_str() {
+            "TEXTAREA" | "SELECT" => true,
+            "INPUT" => !matches!(
+                target.as_ref().and_then(|t| t.get_attribute("type")).as_deref(),
+                Some("checkbox" | "radio" | "range" | "button" | "submit" | "reset" | "color" | "file")
+            ),
+            _ => false,
+        };
+        let program_undo =
+            undo && target.as_ref().is_some_and(|t| t.matches(".program-text").unwrap_or(false));
+        if types && !function_key && !program_undo {
             return;
         }
         // Enter and Space on a focused button press that button, as everywhere on the web.

@@ -59,6 +59,9 @@ pub struct CourseState {
     /// The PLANE block under the trainer's cursor, for "take the block from the program".
     pub trainer_block: Option<String>,
     pub notice: Option<Text>,
+    /// The answer field the keyboard is in: it keeps the focus through the check, the verdict
+    /// and every re-render (classroom trial II: a keyboard-only instructor lost it at Enter).
+    pub keyboard: Option<usize>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -76,6 +79,8 @@ pub enum CourseAction {
     /// Fill the answer field with the trainer's cursor block.
     TakeBlock(usize),
     TrainerBlock(Option<String>),
+    /// The keyboard went into an answer field, or to another element (`None`).
+    FocusAnswer(Option<usize>),
     /// A message from a side effect (e.g. the progress could not be saved).
     Notice(Text),
 }
@@ -94,7 +99,11 @@ impl Reducer for CourseState {
     /// The embedded trainer reports its cursor block after every render of its own; an
     /// unchanged one changes nothing.
     fn ignores(&self, action: &CourseAction) -> bool {
-        matches!(action, CourseAction::TrainerBlock(b) if *b == self.trainer_block)
+        match action {
+            CourseAction::TrainerBlock(b) => *b == self.trainer_block,
+            CourseAction::FocusAnswer(i) => *i == self.keyboard,
+            _ => false,
+        }
     }
 }
 
@@ -138,6 +147,7 @@ impl CourseState {
             trainer_program: None,
             trainer_generation: 0,
             trainer_block: None,
+            keyboard: None,
             notice,
         };
         let state = state.transition(CourseAction::Go(route));
@@ -183,7 +193,9 @@ impl CourseState {
             CourseAction::Go(_) => {}
             CourseAction::ToggleInstructor => s.prefs.classroom = !s.prefs.classroom,
             CourseAction::ToggleLang => s.prefs.lang = s.prefs.lang.other(),
+            CourseAction::FocusAnswer(i) => s.keyboard = i.filter(|i| *i < s.exercises.len()),
             CourseAction::Input(i, text) => {
+                s.keyboard = Some(i);
                 // Editing the answer clears the old verdict: it spoke of the old text.
                 if let Some(e) = s.exercises.get_mut(i) {
                     e.input = text;
@@ -191,6 +203,8 @@ impl CourseState {
                 }
             }
             CourseAction::Check(i) => {
+                // Checked by Enter or by the button: the next keys correct the answer.
+                s.keyboard = Some(i);
                 let answer = s.exercises.get(i).map(|e| Answer::typed(&e.input));
                 if let Some(answer) = answer {
                     s.check(i, &answer);
@@ -234,6 +248,7 @@ impl CourseState {
         self.route = route;
         self.trainer_program = None;
         self.trainer_block = None;
+        self.keyboard = None;
         self.exercises.clear();
         if let Some(lesson) = self.lesson_index().and_then(lessons::lesson) {
             self.exercises = lesson.exercises.iter().map(|&spec| ExerciseState::new(spec, 0)).collect();
@@ -402,6 +417,7 @@ mod tests {
             "the instructor view is the shared classroom preference"
         );
         assert!(solved.ignores(&CourseAction::TrainerBlock(None)));
+        assert!(solved.ignores(&CourseAction::FocusAnswer(solved.keyboard)));
         assert!(!solved.ignores(&CourseAction::TrainerBlock(Some("1 PLANE RESET STAY".into()))));
     }
 }

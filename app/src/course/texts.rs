@@ -158,8 +158,8 @@ pub static LESSONS: [LessonText; 11] = [
                 "MOVE: the linear axes compensate while swivelling, the tool swivels about a fixed centre of rotation on the workpiece. DIST is the distance from the centre of rotation to the tool tip, F the path feed. In the example the tip stands 50 mm above the surface first; with MOVE DIST50 F1000 the centre of rotation therefore lies on it.",
             ),
             Text::new(
-                "TURN: Nur die Drehachsen bewegen sich, die Werkzeugspitze wandert vom Werkstück weg. MB zieht vorher in der Werkzeugachse zurück, MB MAX bis an die Grenze des Arbeitsraums.",
-                "TURN: only the rotary axes move, the tool tip moves away from the workpiece. MB retracts along the tool axis first, MB MAX up to the limit of the working space.",
+                "TURN: Nur die Drehachsen bewegen sich, die Linearachsen bleiben stehen. Die Werkzeugspitze fährt dabei einen Bogen um die Drehachsen – je nach Maschine und Lage vom Werkstück weg oder auf es zu. Steht das Werkzeug nah am Werkstück oder noch im Material, kann es beim Schwenken hineinfahren: Kollisionsgefahr. Deshalb vorher freifahren – MB zieht in der Werkzeugachse um den Betrag zurück, MB MAX bis kurz vor den Software-Endschalter.",
+                "TURN: only the rotary axes move, the linear axes stand still. The tool tip follows an arc about the rotary axes – away from the workpiece or towards it, depending on the machine and the position. A tool close to the workpiece or still in the material can swivel into it: danger of collision. So retract first – MB retracts along the tool axis by the value, MB MAX to just before the software limit switch.",
             ),
             Text::new(
                 "STAY: Nur das Koordinatensystem wird geschwenkt, keine Achse fährt. Die Achswinkel stehen in Q120 bis Q122; Sie fahren sie selbst, z. B. mit L A+Q120 C+Q122 R0 FMAX.",

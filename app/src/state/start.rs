@@ -51,6 +51,27 @@ impl Action {
     }
 }
 
+impl Action {
+    /// While "replace the own program?" is asked: the answers, and what only looks or
+    /// switches the screen.
+    pub(super) fn allowed_while_asked(&self) -> bool {
+        matches!(
+            self,
+            Action::ConfirmReplace
+                | Action::KeepOwn
+                | Action::Back
+                | Action::Abort
+                | Action::CursorUp
+                | Action::CursorDown
+                | Action::CursorTo(_)
+                | Action::Notice(_)
+                | Action::ToggleLang
+                | Action::ToggleProjector
+                | Action::ToggleRightHand
+        )
+    }
+}
+
 impl AppState {
     /// What survives a reload beside the program and the preferences.
     #[must_use]
@@ -58,6 +79,7 @@ impl AppState {
         Saved {
             cursor: self.cursor,
             machine: self.machine.as_ref().map_or_else(|| DEFAULT_MACHINE.to_owned(), |m| m.id.clone()),
+            unexported: self.unexported,
         }
     }
 
@@ -108,7 +130,7 @@ impl AppState {
     /// and replaced by the default.
     #[must_use]
     pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
-        let Stored { state: saved, prefs, program, machines } = stored;
+        let Stored { state: saved, prefs, program, machines, replaced } = stored;
         let mut state = AppState::default();
         let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
         state.lang = prefs.lang;
@@ -119,6 +141,10 @@ impl AppState {
         let own_work = program.is_some();
         if let Some(text) = program {
             state.doc = Rc::new(Document::new(text));
+        }
+        // The program a sample, an import or a link last replaced: one undo step back.
+        if let Some(text) = replaced {
+            state.history = super::History::with(Rc::new(Document::new(text)));
         }
         let mut fx = Vec::new();
         if let Some(text) = machines {
@@ -138,6 +164,7 @@ impl AppState {
             Some(Ok(s)) => {
                 state.cursor = s.cursor.min(state.doc.last_index());
                 state.select_machine(&s.machine);
+                state.unexported = s.unexported && own_work;
             }
             Some(Err(e)) => state.message = Some(e.message()),
         }

@@ -69,6 +69,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         prefs: Some(s.prefs().to_record()),
         program: Some(s.doc.text.clone()),
         machines: None,
+        replaced: None,
     };
     let (back, _) = AppState::start(stored, None);
     assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
@@ -98,6 +99,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         prefs: Some("p1;lang=xx".into()),
         program: None,
         machines: None,
+        replaced: None,
     };
     let (old, _) = AppState::start(stored, None);
     assert_eq!(
@@ -202,7 +204,7 @@ fn a_binary_file_is_not_imported_and_the_program_stays() {
     assert!(refused.message.is_some_and(|m| m.de.contains("kein NC-Programm")));
     let imported = s.then(Action::Import(b"0 BEGIN PGM I MM\r\n1 END PGM I MM\r\n".to_vec()));
     assert_eq!(imported.doc.program.blocks.len(), 2);
-    assert_eq!(imported.message.as_ref().map(|m| m.get(Lang::En)), Some("File imported"));
+    assert!(imported.message.as_ref().is_some_and(|m| m.get(Lang::En).starts_with("Imported file opened")));
 }
 
 #[test]
@@ -257,7 +259,13 @@ fn the_classroom_run_asks_before_a_swivel_and_reveals_on_nc_start() {
 fn what_changed_is_saved_and_a_lessons_trainer_saves_nothing() {
     let s = AppState::default();
     let (s, fx) = s.apply(Action::CursorTo(10));
-    assert_eq!(fx, [Effect::Save { key: persist::STATE_KEY, value: "s2;cursor=10;machine=ac-table".into() }]);
+    assert_eq!(
+        fx,
+        [Effect::Save {
+            key: persist::STATE_KEY,
+            value: "s3;cursor=10;machine=ac-table;unexported=0".into()
+        }]
+    );
     let (s, fx) = s.apply(Action::ToggleProjector);
     assert_eq!(fx, [Effect::Save { key: persist::PREFS_KEY, value: "p1;lang=de;classroom=1".into() }]);
     let (s, fx) = s.apply(Action::SetText("0 BEGIN PGM X MM\n1 END PGM X MM\n".into()));
@@ -265,7 +273,10 @@ fn what_changed_is_saved_and_a_lessons_trainer_saves_nothing() {
         fx,
         [
             Effect::Save { key: persist::PROGRAM_KEY, value: s.doc.text.clone() },
-            Effect::Save { key: persist::STATE_KEY, value: "s2;cursor=1;machine=ac-table".into() },
+            Effect::Save {
+                key: persist::STATE_KEY,
+                value: "s3;cursor=1;machine=ac-table;unexported=1".into()
+            },
         ]
     );
     assert!(s.apply(Action::ShowFiles).1.is_empty(), "a softkey level is not saved");
@@ -324,4 +335,109 @@ fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_i
     );
     let other = cut.then(Action::SelectMachine("ba-table".into()));
     assert!(other.stock.is_none(), "a new simulation drops the old stock");
+}
+
+/// Presses a key as the keyboard would (`F3`, `Enter`, `z` with Ctrl …).
+fn press(s: &AppState, key: &str, ctrl: bool) -> AppState {
+    use crate::keymap::{KeyPress, action};
+    let press = KeyPress { key, shift: false, ctrl_or_alt: ctrl };
+    match action(s, &press) {
+        Some(a) => s.then(a),
+        None => s.clone(),
+    }
+}
+
+fn edited() -> AppState {
+    let mut text = AppState::default().doc.text.clone();
+    text = text.replacen("SPB+15", "SPB+20", 1);
+    AppState::default().then(Action::SetText(text))
+}
+
+#[test]
+fn the_classroom_slip_asks_before_a_sample_replaces_unexported_work() {
+    // Classroom trial II: edit → F6 → F2 → F3 (◀ SATZ ZURÜCK) → F8 (END) → F3 F3.
+    let own = edited();
+    assert!(own.unexported);
+    let mut s = own.clone();
+    for k in ["F6", "F2", "F3", "F8", "F3", "F3"] {
+        s = press(&s, k, false);
+    }
+    assert_eq!(s.doc.text, own.doc.text, "nothing replaced yet");
+    let asked = s.replace.as_ref().expect("the question");
+    assert_eq!(asked.what.de, crate::samples::SAMPLES[2].title.de);
+    assert!(s.dialog_text().de.contains("nicht exportiert"), "{:?}", s.dialog_text());
+    // The same key pressed once more by a slip does nothing; other keys wait for the answer.
+    let again = press(&s, "F3", false);
+    assert_eq!((again.doc.text.as_str(), again.replace.is_some()), (own.doc.text.as_str(), true));
+    assert!(press(&s, "F6", false).replace.is_some());
+    // END keeps the own program, F2 too.
+    for k in ["End", "F2", "F8"] {
+        let kept = press(&s, k, false);
+        assert_eq!((kept.doc.text.as_str(), kept.replace.is_none()), (own.doc.text.as_str(), true), "{k}");
+    }
+    // F1 replaces; the own program is one undo step back, kept in the browser too.
+    let (replaced, fx) = s.apply(Action::ConfirmReplace);
+    assert_eq!(replaced.doc.text, crate::samples::SAMPLES[2].text);
+    assert!(!replaced.unexported);
+    assert!(fx.contains(&Effect::Save { key: persist::REPLACED_KEY, value: own.doc.text.clone() }), "{fx:?}");
+    let back = press(&replaced, "z", true);
+    assert_eq!(back.doc.text, own.doc.text, "Ctrl+Z brings the own program back");
+    assert!(back.unexported);
+    let forward = press(&back, "y", true);
+    assert_eq!(forward.doc.text, replaced.doc.text, "Ctrl+Y replaces it again");
+}
+
+#[test]
+fn without_unexported_edits_a_sample_opens_at_once_and_undo_goes_back() {
+    let s = AppState::default();
+    let opened = s.then(Action::LoadSample("euler_fasen".into()));
+    assert!(opened.replace.is_none());
+    assert_ne!(opened.doc.text, s.doc.text);
+    assert!(opened.message.as_ref().is_some_and(|m| m.de.contains("RÜCKGÄNGIG")));
+    // The softkey on the DATEI row does what Ctrl+Z does.
+    let files = opened.then(Action::ShowFiles);
+    let undo = crate::softkeys::row(&files)[4].clone().expect("RÜCKGÄNGIG");
+    assert_eq!(undo.action, Action::Undo);
+    assert_eq!(files.then(undo.action).doc.text, s.doc.text);
+    // Exporting ends "unexported": after a download a sample opens without a question.
+    let downloaded = edited().then(Action::Download);
+    assert!(!downloaded.unexported);
+    assert!(downloaded.then(Action::LoadSample("euler_fasen".into())).replace.is_none());
+}
+
+#[test]
+fn an_import_over_unexported_work_asks_and_a_taken_link_is_undone() {
+    let own = edited();
+    let asked = own.then(Action::Import(b"0 BEGIN PGM NEU MM\n1 END PGM NEU MM\n".to_vec()));
+    assert_eq!(asked.doc.text, own.doc.text);
+    let replaced = asked.then(Action::ConfirmReplace);
+    assert_eq!(replaced.doc.text, "0 BEGIN PGM NEU MM\n1 END PGM NEU MM\n");
+    assert_eq!(replaced.then(Action::Undo).doc.text, own.doc.text);
+
+    let link = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
+    let stored = Stored { program: Some(own.doc.text.clone()), ..Stored::default() };
+    let (preview, _) = AppState::start(stored, Some(&link));
+    let (taken, fx) = preview.apply(Action::TakeLink);
+    assert!(fx.contains(&Effect::Save { key: persist::REPLACED_KEY, value: own.doc.text.clone() }));
+    assert_eq!(taken.then(Action::Undo).doc.text, own.doc.text, "the link taken is undone");
+}
+
+#[test]
+fn typing_is_undone_a_line_at_a_time_and_the_replaced_program_survives_a_reload() {
+    let s = AppState::default();
+    let base = s.doc.text.clone();
+    let typed = s
+        .then(Action::SetText(format!("{base}; a")))
+        .then(Action::SetText(format!("{base}; ab")))
+        .then(Action::SetText(format!("{base}; ab\n")))
+        .then(Action::SetText(format!("{base}; ab\n; c")));
+    let one = typed.then(Action::Undo);
+    assert_eq!(one.doc.text, format!("{base}; ab"));
+    assert_eq!(one.then(Action::Undo).doc.text, base);
+    assert!(one.then(Action::Undo).then(Action::Undo).message.is_some_and(|m| m.de.contains("Nichts")));
+
+    let stored =
+        Stored { program: Some("0 L X+1\n".into()), replaced: Some(base.clone()), ..Stored::default() };
+    let (reloaded, _) = AppState::start(stored, None);
+    assert_eq!(reloaded.then(Action::Undo).doc.text, base, "one step back after a reload");
 }

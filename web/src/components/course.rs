@@ -186,6 +186,7 @@ fn lesson_page(state: &CourseState, i: usize, dispatch: &Callback<CourseAction>)
                 { for state.exercises.iter().enumerate().map(|(n, e)| html! {
                     <ExerciseCard index={n} exercise={e.clone()} lang={l} instructor={state.instructor()}
                         refusal={state.offers_refusal(n)} in_trainer={matches!(lesson.widget, Widget::Trainer { .. })}
+                        keyboard={state.keyboard == Some(n)}
                         on_action={dispatch.clone()} />
                 }) }
             </section>

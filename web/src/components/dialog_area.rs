@@ -79,12 +79,10 @@ fn open_dialog(props: &DialogAreaProps, d: &Dialog, hard_keys: Html) -> Html {
                         <span class="caret" aria-hidden="true">{ "▏" }</span>
                     </div>
                 }
-                <div class="dialog-help">
+                // Only the German wording can be unconfirmed (the English prompts are the
+                // manual's): said on hover, not on every prompt a trainee reads.
+                <div class="dialog-help" title={d.wording().filter(|_| l == Lang::De).map(|w| w.text().get(l).to_owned())}>
                     { d.help().get(l) }
-                    // Only the German wording can be unconfirmed: the English prompts are the manual's.
-                    if let (Lang::De, Some(decision)) = (l, d.wording()) {
-                        <span class="unconfirmed" title={decision.text().get(l).to_owned()}>{ " · Wortlaut unbestätigt" }</span>
-                    }
                 </div>
                 <div class="keys-hint">
                     { l.t("Tastatur: Enter = ENT · Umschalt+Enter = NO ENT · Ende = END · Esc = DEL · F1–F8 = Softkeys",

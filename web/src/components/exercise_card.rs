@@ -2,6 +2,7 @@
 //! a fresh variant, and the solution only when asked for.
 
 use schwenkbar_core::course::{AnswerKind, Verdict};
+use wasm_bindgen::JsCast;
 use yew::prelude::*;
 
 use schwenkbar_app::course::state::{CourseAction, ExerciseState};
@@ -17,6 +18,8 @@ pub struct ExerciseCardProps {
     pub refusal: bool,
     /// The lesson shows a trainer: offer "open in the trainer" and "take the block".
     pub in_trainer: bool,
+    /// The keyboard is in this exercise's answer field: it gets the focus back after a render.
+    pub keyboard: bool,
     pub on_action: Callback<CourseAction>,
 }
 
@@ -28,8 +31,8 @@ impl PartialEq for ExerciseCardProps {
             && self.exercise.verdict == o.exercise.verdict
             && self.exercise.solution_shown == o.exercise.solution_shown
             && self.exercise.tries == o.exercise.tries
-            && (self.lang, self.instructor, self.refusal, self.in_trainer)
-                == (o.lang, o.instructor, o.refusal, o.in_trainer)
+            && (self.lang, self.instructor, self.refusal, self.in_trainer, self.keyboard)
+                == (o.lang, o.instructor, o.refusal, o.in_trainer, o.keyboard)
     }
 }
 
@@ -52,6 +55,35 @@ pub fn exercise_card(props: &ExerciseCardProps) -> Html {
             }
         })
     };
+    // The field keeps the keyboard through the check, the verdict and any re-render: a focus
+    // lost to the page would hand the next letters to its shortcuts.
+    let field = use_node_ref();
+    {
+        let field = field.clone();
+        let keyboard = props.keyboard;
+        use_effect(move || {
+            let active = web_sys::window().and_then(|w| w.document()).and_then(|d| d.active_element());
+            if let Some(input) = field.cast::<web_sys::HtmlElement>().filter(|_| keyboard)
+                && active.as_ref() != Some(input.as_ref())
+            {
+                let _ = input.focus();
+            }
+        });
+    }
+    let onfocus = props.on_action.reform(move |_: FocusEvent| CourseAction::FocusAnswer(Some(i)));
+    // Focus moved on to another element (not lost to a re-render, which has no such target):
+    // the keyboard left the field. Its own buttons keep it (checking hands it back).
+    let onblur = {
+        let on_action = props.on_action.clone();
+        Callback::from(move |ev: FocusEvent| {
+            let to = ev.related_target().and_then(|t| t.dyn_into::<web_sys::Element>().ok());
+            let own =
+                to.as_ref().and_then(|t| t.closest(&format!("[data-testid=exercise-{i}]")).ok().flatten());
+            if to.is_some() && own.is_none() {
+                on_action.emit(CourseAction::FocusAnswer(None));
+            }
+        })
+    };
     let placeholder = match ex.answer_kind {
         AnswerKind::PlaneBlock => "PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN FMAX",
         AnswerKind::Axes => "A+0 C+0",
@@ -70,7 +102,7 @@ pub fn exercise_card(props: &ExerciseCardProps) -> Html {
             <h3>{ format!("{} {}", l.t("Aufgabe", "Exercise"), i + 1) }</h3>
             <p class="prompt" data-testid={format!("prompt-{i}")}>{ l.t(&ex.prompt.de, &ex.prompt.en) }</p>
             <div class="answer">
-                <input type="text" value={e.input.clone()} {placeholder} {oninput} {onkeydown} spellcheck="false"
+                <input type="text" ref={field} value={e.input.clone()} {placeholder} {oninput} {onkeydown} {onfocus} {onblur} spellcheck="false"
                     aria-label={l.t("Antwort", "Answer")} data-testid={format!("answer-{i}")} />
                 <button onclick={act(CourseAction::Check(i))} data-testid={format!("check-{i}")}>{ l.t("Prüfen", "Check") }</button>
                 if props.refusal {

@@ -155,16 +155,16 @@ pub fn editor_root() -> Html {
             }
         });
         // A collision body's section ends with its remove button.
-        let remove = s.checked_sub(SECTIONS.len()).map(|i| {
+        let remove = s.checked_sub(SECTIONS).map(|i| {
             html! {
                 <button type="button" data-action="remove-body" onclick={send(EditorAction::RemoveBody(i))}>
                     { l.t("Körper entfernen", "Remove body") }
                 </button>
             }
         });
-        html! { <><h2>{ section_title(s).get(l).to_owned() }</h2>{ for rows }{ for remove }</> }
+        html! { <><h2>{ section_title(s, &state.form).get(l).to_owned() }</h2>{ for rows }{ for remove }</> }
     };
-    let sections = SECTIONS.len() + state.form.collision.len();
+    let sections = SECTIONS + state.form.collision.len();
     let preview =
         use_memo(state.preview.clone(), |m| m.as_deref().map(|m| Rc::new(SceneState::with_bodies(m))));
     let n = state.issues.len();

@@ -17,6 +17,10 @@ use schwenkbar_app::syntax::highlight;
 const OVERSCAN: usize = 4;
 /// Lines drawn at most (a pane without its stylesheet is as tall as its content).
 const MAX_ROWS: usize = 160;
+/// A program of up to this many lines is drawn whole, in the page's flow: its lines may wrap
+/// (the projector's long PLANE blocks) and the cursor is brought into sight by the lines' real
+/// positions. A longer one is virtualised, one line a row.
+const WHOLE_LINES: usize = 400;
 /// The list's tallest scroll height in px: browsers cap an element's height (Firefox near
 /// 17.9 million px); beyond it the scroll position maps to lines in proportion.
 const MAX_HEIGHT: f64 = 8_000_000.0;
@@ -231,8 +235,17 @@ fn program_list(props: &ListProps) -> Html {
         let (scroller, view) = (scroller.clone(), view.clone());
         use_effect_with((props.cursor, doc.clone()), move |_| {
             let Some(el) = scroller.cast::<web_sys::Element>() else { return };
-            let line =
-                el.query_selector(".line").ok().flatten().map_or(0.0, |l| f64::from(l.client_height()));
+            if lines <= WHOLE_LINES {
+                reveal_drawn(&el, cur_first, cur_last);
+                return;
+            }
+            // The line's real height, fractions kept (22.5 px at 15 px type): a rounded one
+            // drifted the drawn lines off the spacer by half a pixel a line.
+            let line = el
+                .query_selector(".line")
+                .ok()
+                .flatten()
+                .map_or(0.0, |l| l.get_bounding_client_rect().height());
             let mut v =
                 View { top: f64::from(el.scroll_top()), height: f64::from(el.client_height()), ..*view };
             if line > 0.0 {
@@ -240,16 +253,20 @@ fn program_list(props: &ListProps) -> Html {
             }
             let first = v.first(lines, v.top);
             if cur_first < first || cur_last + 1 > first + v.rows().saturating_sub(1) {
-                v.top = v.top_of(lines, cur_first.saturating_sub(v.rows() / 3)).round();
-                el.set_scroll_top(v.top as i32);
+                el.set_scroll_top(v.top_of(lines, cur_first.saturating_sub(v.rows() / 3)).round() as i32);
+                // What the browser took: near the end it stops at the last full page, and lines
+                // drawn for the asked position left the page's upper part blank.
+                v.top = f64::from(el.scroll_top());
             }
             view.set(v);
         });
     }
     let onscroll = {
         let view = view.clone();
+        // A whole-drawn list has nothing to redraw when it scrolls.
+        let virtual_list = lines > WHOLE_LINES;
         Callback::from(move |e: Event| {
-            if let Some(el) = e.target_dyn_into::<web_sys::Element>() {
+            if let Some(el) = e.target_dyn_into::<web_sys::Element>().filter(|_| virtual_list) {
                 view.set(View {
                     top: f64::from(el.scroll_top()),
                     height: f64::from(el.client_height()),
@@ -259,8 +276,15 @@ fn program_list(props: &ListProps) -> Html {
         })
     };
     let v = *view;
-    let first = v.first(lines, v.top).saturating_sub(OVERSCAN);
-    let last = (v.first(lines, v.top) + v.rows() + OVERSCAN).min(lines);
+    let whole = lines <= WHOLE_LINES;
+    let (first, last) = if whole {
+        (0, lines)
+    } else {
+        (
+            v.first(lines, v.top).saturating_sub(OVERSCAN),
+            (v.first(lines, v.top) + v.rows() + OVERSCAN).min(lines),
+        )
+    };
     // The list stands where its first line belongs (in proportion: at the scroll position).
     let offset = if v.total(lines) < MAX_HEIGHT {
         first as f64 * v.line
@@ -299,9 +323,27 @@ fn program_list(props: &ListProps) -> Html {
     });
     html! {
         <div class="lines" ref={scroller} {onscroll}>
-            <div class="spacer" style={format!("height:{}px", v.total(lines))} />
-            <ol class="blocks" style={format!("top:{offset}px")} start={(first + 1).to_string()}>{ for rows }</ol>
+            if whole {
+                <ol class="blocks whole">{ for rows }</ol>
+            } else {
+                <div class="spacer" style={format!("height:{}px", v.total(lines))} />
+                <ol class="blocks" style={format!("top:{offset}px")} start={(first + 1).to_string()}>{ for rows }</ol>
+            }
         </div>
+    }
+}
+
+/// Scrolls the scroller `el` of a whole-drawn list so that the lines `first..=last` (0-based)
+/// are in sight, a third of the way down when they were not, by their drawn positions.
+fn reveal_drawn(el: &web_sys::Element, first: usize, last: usize) {
+    let line = |i: usize| el.query_selector(&format!(".line[data-line='{}']", i + 1)).ok().flatten();
+    let (Some(a), Some(b)) = (line(first), line(last)) else { return };
+    let pane = el.get_bounding_client_rect();
+    let height = f64::from(el.client_height());
+    let (top, bottom) =
+        (a.get_bounding_client_rect().top() - pane.top(), b.get_bounding_client_rect().bottom() - pane.top());
+    if top < 0.0 || bottom > height {
+        el.set_scroll_top((f64::from(el.scroll_top()) + top - height / 3.0).round() as i32);
     }
 }
 

@@ -10,6 +10,8 @@ use schwenkbar_app::state::Action;
 #[derive(Properties, PartialEq)]
 pub struct SoftkeyRowProps {
     pub row: Row,
+    /// The row's name and the way back ([`schwenkbar_app::softkeys::row_name`]).
+    pub name: AttrValue,
     pub on_action: Callback<Action>,
     pub on_import: Callback<File>,
 }
@@ -48,5 +50,10 @@ pub fn softkey_row(props: &SoftkeyRowProps) -> Html {
             html! { <button class="softkey blank" disabled=true aria-hidden="true" tabindex="-1"></button> }
         }
     });
-    html! { <nav class="softkeys" aria-label="Softkeys">{ for keys }</nav> }
+    html! {
+        <div class="softkey-bar">
+            <div class="softkey-row-name" data-testid="row-name">{ props.name.clone() }</div>
+            <nav class="softkeys" aria-label="Softkeys">{ for keys }</nav>
+        </div>
+    }
 }
