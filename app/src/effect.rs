@@ -30,6 +30,9 @@ pub enum Effect {
     /// Send `BuildStock` once the screen is painted (cutting a run's stock takes about a
     /// second in the browser; the run's first render should not wait for it).
     BuildStock,
+    /// Send `PassStock` once the screen is painted again: the stock's first pass goes on by a
+    /// share ([`crate::stock::PASS_RAYS`]) until every note of the run is known.
+    PassStock,
     /// A lesson's trainer tells the course which PLANE block its cursor is on (`None`: none).
     TellCourse(Option<String>),
 }

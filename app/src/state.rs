@@ -241,6 +241,8 @@ pub enum Action {
     ToggleStock,
     /// Cut the run's stock now (sent by the shell for [`Effect::BuildStock`], after a render).
     BuildStock,
+    /// The stock's first pass one share on ([`Effect::PassStock`]).
+    PassStock,
 }
 
 impl Reducer for AppState {
@@ -455,6 +457,16 @@ impl AppState {
             Action::BuildStock => {
                 if let Some(sim) = self.sim.as_ref().filter(|_| self.wants_stock()) {
                     next.stock = Some(StockRef::of(sim, &self.doc.program));
+                    fx.push(Effect::PassStock);
+                }
+            }
+            // The stock is shared (`Rc`): its pass goes on in place, and the render that
+            // follows shows the notes it found.
+            Action::PassStock => {
+                if let Some(stock) = &self.stock
+                    && !stock.pass_on(crate::stock::PASS_RAYS)
+                {
+                    fx.push(Effect::PassStock);
                 }
             }
         }

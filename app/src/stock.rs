@@ -20,6 +20,10 @@ use crate::run::SimRef;
 /// 8 ms frame (`scripts/bench.sh`).
 pub const FRAME_RAYS: usize = 4_000;
 
+/// The first pass's share of one [`crate::state::Action::PassStock`] (it cuts the whole run
+/// once for the notes): about 10 ms in a release wasm build, a paint between two of them.
+pub const PASS_RAYS: usize = 3 * FRAME_RAYS;
+
 /// What the view shows and where it is going.
 #[derive(Default)]
 struct Shown {
@@ -34,7 +38,8 @@ struct Shown {
 /// The cuts of one simulation and where the view stands in them.
 pub struct StockView {
     sim: SimRef,
-    cutting: Cutting,
+    /// Its first pass (the notes) goes on in shares, [`StockRef::pass_on`].
+    cutting: RefCell<Cutting>,
     at: RefCell<Shown>,
 }
 
@@ -55,11 +60,19 @@ impl std::fmt::Debug for StockRef {
 }
 
 impl StockRef {
-    /// Cuts the whole run of `sim` once (the notes and the checkpoints).
+    /// The cuts of `sim` planned, none made yet: the first pass, which cuts the whole run once
+    /// for the notes and the checkpoints, goes on in shares ([`StockRef::pass_on`]), so that
+    /// switching the stock on is no long task (classroom trial II: 0.85 s in one). The view
+    /// cuts what it shows on its own meanwhile.
     #[must_use]
     pub fn of(sim: &SimRef, program: &Program) -> StockRef {
-        let cutting = Cutting::new(program, &sim.0, StockOptions::default());
+        let cutting = RefCell::new(Cutting::planned(program, &sim.0, StockOptions::default()));
         StockRef(Rc::new(StockView { sim: sim.clone(), cutting, at: RefCell::new(Shown::default()) }))
+    }
+
+    /// Goes on with the first pass by about `rays`; whether it is done (every note known).
+    pub fn pass_on(&self, rays: usize) -> bool {
+        self.0.cutting.borrow_mut().pass_on(rays)
     }
 
     /// Whether this is the stock of `sim`.
@@ -76,7 +89,7 @@ impl StockRef {
     pub fn mesh_toward(&self, step: usize, fraction: f64, budget: usize) -> (Option<Rc<TiledMesh>>, bool) {
         let mut guard = self.0.at.borrow_mut();
         let at = &mut *guard;
-        let cutting = &self.0.cutting;
+        let cutting = &*self.0.cutting.borrow();
         let fraction = fraction.clamp(0.0, 1.0);
         let done = if cutting.is_past(&at.cursor, step, fraction) {
             let pending = at.pending.get_or_insert_with(StockCursor::default);
@@ -103,7 +116,8 @@ impl StockRef {
     /// What the stock says about step `step` (a rapid into the material), German and English.
     #[must_use]
     pub fn notes_at(&self, step: usize) -> Option<Text> {
-        let mut notes = self.0.cutting.notes_at(step).map(|n| n.message());
+        let cutting = self.0.cutting.borrow();
+        let mut notes = cutting.notes_at(step).map(|n| n.message());
         let first = notes.next()?;
         Some(
             notes.fold(first, |a, b| {
@@ -215,6 +229,12 @@ mod tests {
         let sim = SimRef::of(&p, &machine);
         let stock = StockRef::of(&sim, &p);
         let step = sim.0.step_of_block(5).expect("executed");
+        assert!(stock.notes_at(step).is_none(), "nothing cut yet when the stock is switched on");
+        let mut shares = 0;
+        while !stock.pass_on(PASS_RAYS) {
+            shares += 1;
+            assert!(shares < 10_000);
+        }
         let note = stock.notes_at(step).expect("rapid into the material");
         assert_eq!(note.de, "Eilgang ins Material");
         assert!(stock.notes_at(step - 1).is_none());

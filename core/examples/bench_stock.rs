@@ -33,6 +33,28 @@ fn main() {
         cutting = Cutting::new(&program, &sim, options);
         best = best.min(t.elapsed().as_secs_f64());
     }
+    // What switching the stock on costs in the trainer: the plan at once, then the first pass
+    // in shares of PASS_RAYS, one after each paint (`schwenkbar_app::stock::StockRef::pass_on`);
+    // the longest task is the longer of the two (issue 29: no long task over 100 ms).
+    let t = Instant::now();
+    let mut planned = Cutting::planned(&program, &sim, options);
+    let plan = t.elapsed().as_secs_f64();
+    let (mut share, mut shares) = (0.0_f64, 0);
+    loop {
+        let t = Instant::now();
+        let done = planned.pass_on(PASS_RAYS);
+        share = share.max(t.elapsed().as_secs_f64());
+        shares += 1;
+        if done {
+            break;
+        }
+    }
+    println!(
+        "stock: switched on: plan {:.2} ms, then {shares} shares of ≤ {PASS_RAYS} rays, the longest {:.2} ms \
+         (wasm about 2-4× native; budget: no task over 100 ms)",
+        plan * 1e3,
+        share * 1e3
+    );
     let last = sim.len().saturating_sub(1);
     let mut cursor = StockCursor::default();
     cutting.seek(&mut cursor, last, 1.0);
@@ -97,3 +119,5 @@ fn main() {
 const FRAMES: u32 = 60;
 /// Rays per frame (`schwenkbar_app::stock::FRAME_RAYS`).
 const FRAME_RAYS: usize = 4_000;
+/// Rays per share of the first pass (`schwenkbar_app::stock::PASS_RAYS`).
+const PASS_RAYS: usize = 3 * FRAME_RAYS;

@@ -147,7 +147,8 @@ async fn the_program_list_draws_only_the_lines_in_sight() {
     assert!(drawn() > 5 && drawn() < 200, "only the lines in sight: {}", drawn());
     let lines = query(&root, ".program-pane .lines").expect("the list");
     let first = query(&root, ".program-pane .line").expect("a line");
-    let height = f64::from(first.client_height());
+    // The drawn height, fractions kept, as the list measures it.
+    let height = first.get_bounding_client_rect().height();
     // Scrolled to line 50,001: that line is drawn, with its own text.
     lines.set_scroll_top((50_000.0 * height) as i32);
     lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
@@ -179,7 +180,7 @@ async fn list_line(root: &web_sys::Element, line: usize) -> web_sys::Element {
     // sight once it is drawn).
     for _ in 0..5 {
         let lines = query(root, ".program-pane .lines").expect("the list");
-        let height = f64::from(query(root, ".program-pane .line").expect("a line").client_height());
+        let height = query(root, ".program-pane .line").expect("a line").get_bounding_client_rect().height();
         lines.set_scroll_top((line.saturating_sub(2) as f64 * height) as i32);
         lines.dispatch_event(&web_sys::Event::new("scroll").expect("event")).expect("dispatch");
         if let Some(drawn) =

@@ -63,6 +63,7 @@ pub fn app(props: &AppProps) -> Html {
             notice: on_action.reform(Action::Notice),
             tick: on_action.reform(Action::RunTick),
             build_stock: on_action.reform(|()| Action::BuildStock),
+            pass_stock: on_action.reform(|()| Action::PassStock),
             root: root.clone(),
             tell_course: props.embed.as_ref().map(|e| e.on_plane_block.clone()),
         },

@@ -83,6 +83,8 @@ pub struct Shell {
     pub tick: Callback<usize>,
     /// Cut the run's stock (`BuildStock`), after the screen is painted.
     pub build_stock: Callback<()>,
+    /// The stock's first pass on by a share (`PassStock`), after the next paint.
+    pub pass_stock: Callback<()>,
     /// The app's root element (file input, text area).
     pub root: NodeRef,
     /// A lesson's trainer: the course wants the cursor's PLANE block.
@@ -94,7 +96,14 @@ impl Shell {
     /// it has no run timer, no stock and no course to tell.
     #[must_use]
     pub fn saving(notice: Callback<Text>, root: NodeRef) -> Shell {
-        Shell { notice, tick: Callback::noop(), build_stock: Callback::noop(), root, tell_course: None }
+        Shell {
+            notice,
+            tick: Callback::noop(),
+            build_stock: Callback::noop(),
+            pass_stock: Callback::noop(),
+            root,
+            tell_course: None,
+        }
     }
 }
 
@@ -220,6 +229,14 @@ fn run(list: &Rc<[Effect]>, at: usize, shell: &Shell) {
                 // Long enough for the browser to paint the run's first screen.
                 yew::platform::time::sleep(std::time::Duration::from_millis(50)).await;
                 build.emit(());
+            });
+        }
+        Effect::PassStock => {
+            let pass = shell.pass_stock.clone();
+            yew::platform::spawn_local(async move {
+                // A frame: the browser paints (and the view cuts its own share) between two.
+                yew::platform::time::sleep(std::time::Duration::from_millis(16)).await;
+                pass.emit(());
             });
         }
         Effect::TellCourse(block) => {

@@ -47,6 +47,7 @@ impl Action {
                 | Action::ToggleProjector
                 | Action::ToggleStock
                 | Action::BuildStock
+                | Action::PassStock
         )
     }
 }
@@ -68,6 +69,7 @@ impl Action {
                 | Action::ToggleLang
                 | Action::ToggleProjector
                 | Action::ToggleRightHand
+                | Action::PassStock
         )
     }
 }

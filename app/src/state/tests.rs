@@ -321,6 +321,7 @@ fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_i
     assert!(!fx.contains(&Effect::BuildStock), "asked for already");
     let (cut, fx) = run.apply(Action::BuildStock);
     assert!(!fx.contains(&Effect::BuildStock));
+    assert_eq!(fx, [Effect::PassStock], "the first pass goes on after the next paint");
     let stock = cut.shown_stock().expect("the stock of this run");
     assert!(stock.is_for(cut.sim.as_ref().expect("sim")));
     let hidden = cut.then(Action::ToggleStock);
@@ -440,4 +441,31 @@ fn typing_is_undone_a_line_at_a_time_and_the_replaced_program_survives_a_reload(
         Stored { program: Some("0 L X+1\n".into()), replaced: Some(base.clone()), ..Stored::default() };
     let (reloaded, _) = AppState::start(stored, None);
     assert_eq!(reloaded.then(Action::Undo).doc.text, base, "one step back after a reload");
+}
+
+/// Switching the stock on cuts nothing at once: the first pass goes on a bounded share per
+/// `PassStock` (each after a paint) until it is done, and the note of a rapid into the material
+/// shows on its block once the pass has got there (classroom trial II: 0.85 s in one task).
+#[test]
+fn the_stocks_first_pass_goes_on_in_bounded_shares_and_its_note_follows() {
+    let text = "0 BEGIN PGM R MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 1 Z S1000\n4 L X+50 Y+50 Z+50 R0 FMAX\n5 L Z-5 R0 FMAX\n6 L X+90 F200\n7 END PGM R MM\n";
+    let s = AppState::default().then(Action::SetText(text.into())).then(Action::StartRun);
+    let s = s.then(Action::ToggleStock).then(Action::BuildStock);
+    let block = s.doc.program.blocks.iter().position(|b| b.number() == Some(5)).expect("block 5");
+    let rapid = s.sim.as_ref().expect("sim").0.step_of_block(block).expect("executed");
+    let stock = s.stock.clone().expect("planned");
+    assert!(stock.notes_at(rapid).is_none(), "nothing cut at the switch");
+    let mut shares = 0;
+    let mut state = s;
+    loop {
+        let (next, fx) = state.apply(Action::PassStock);
+        state = next;
+        shares += 1;
+        if !fx.contains(&Effect::PassStock) {
+            break;
+        }
+        assert!(shares < 1_000, "the pass ends");
+    }
+    assert!(stock.notes_at(rapid).is_some_and(|n| n.de == "Eilgang ins Material"));
+    assert!(state.apply(Action::PassStock).1.is_empty(), "done: no more shares asked for");
 }

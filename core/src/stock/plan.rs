@@ -131,10 +131,26 @@ pub struct Cutting {
     /// `work[k]`: the work ([`Removal::work`]) of the first `k` events (one more entry than
     /// events).
     work: Vec<usize>,
-    /// Notes, by step.
+    /// Notes, by step (of the part the first pass has cut, [`Cutting::passed`]).
     pub notes: Vec<StockNote>,
     /// This run's number in the tiles' stamps.
     run: u64,
+    /// The first pass under way (`None` once every event was cut once).
+    pass: Option<FirstPass>,
+}
+
+/// Where the first pass stands: it cuts every event once, in parts, for the notes and the
+/// checkpoints ([`Cutting::pass_on`]).
+#[derive(Debug, Clone, Default)]
+struct FirstPass {
+    cursor: StockCursor,
+    last_rapid_note: Option<usize>,
+    /// Rays between two checkpoints; doubles when there would be too many.
+    budget: usize,
+    /// Rays since the last checkpoint.
+    since: usize,
+    /// The parts of a cut made so far (a cut may stop between two rows).
+    removal: Removal,
 }
 
 impl Cutting {
@@ -142,6 +158,17 @@ impl Cutting {
     /// place the checkpoints.
     #[must_use]
     pub fn new(program: &Program, sim: &Simulation, options: StockOptions) -> Cutting {
+        let mut c = Cutting::planned(program, sim, options);
+        c.pass_on(usize::MAX);
+        c
+    }
+
+    /// The cuts of `sim` planned, none cut yet: the first pass (notes, checkpoints) goes on a
+    /// bounded share at a time with [`Cutting::pass_on`], so that switching the stock on in the
+    /// browser never blocks a frame (classroom trial II: 0.85 s). Seeking works at once; it
+    /// only has fewer checkpoints to start from until the pass is done.
+    #[must_use]
+    pub fn planned(program: &Program, sim: &Simulation, options: StockOptions) -> Cutting {
         let mut c = Cutting {
             options,
             events: Vec::new(),
@@ -151,6 +178,7 @@ impl Cutting {
             work: Vec::new(),
             notes: Vec::new(),
             run: Stamp::run(),
+            pass: Some(FirstPass { budget: FIRST_CHECKPOINT_RAYS, ..FirstPass::default() }),
         };
         let mut blank = None;
         let mut tool: Option<(ToolState, usize)> = None;
@@ -183,7 +211,9 @@ impl Cutting {
             c.plan_step(sim, &state, cutter);
         }
         c.step_events.push(c.events.len());
-        c.first_pass();
+        c.checkpoints.push((0, None));
+        c.work = Vec::with_capacity(c.events.len() + 1);
+        c.work.push(0);
         c
     }
 
@@ -257,21 +287,21 @@ impl Cutting {
         }
     }
 
-    /// Cuts every event once: the notes, and the checkpoints evenly over the work. The total is
-    /// known only at the end, so a checkpoint is taken after every `budget` rays; when there are
-    /// too many, every other one goes and the budget doubles (so they stay within a factor of
-    /// two of even).
-    fn first_pass(&mut self) {
-        let mut cursor = StockCursor::default();
-        let mut last_rapid_note = None;
-        let mut budget = FIRST_CHECKPOINT_RAYS;
-        let mut work = 0usize;
-        self.checkpoints.push((0, None));
-        self.work = vec![0; self.events.len() + 1];
-        for k in 0..self.events.len() {
-            if work >= budget && self.options.checkpoints > 0 {
-                self.checkpoints.push((k, cursor.stock.clone()));
-                work = 0;
+    /// Goes on with the first pass by about `rays` rays (a cut may stop between two rows and go
+    /// on in the next call); returns whether it is done. It cuts every event once: the notes,
+    /// the work up to each event, and the checkpoints evenly over the work. The total is known
+    /// only at the end, so a checkpoint is taken after every `budget` rays; when there are too
+    /// many, every other one goes and the budget doubles (so they stay within a factor of two of
+    /// even).
+    pub fn pass_on(&mut self, rays: usize) -> bool {
+        let Some(mut pass) = self.pass.take() else { return true };
+        let mut spent = 0usize;
+        while pass.cursor.applied < self.events.len() && spent < rays {
+            let k = pass.cursor.applied;
+            // Checkpoints only between events: a part-cut stock is never kept.
+            if pass.cursor.partial.is_none() && pass.since >= pass.budget && self.options.checkpoints > 0 {
+                self.checkpoints.push((k, pass.cursor.stock.clone()));
+                pass.since = 0;
                 if self.checkpoints.len() > self.options.checkpoints + 1 {
                     let mut i = 0;
                     // Keep the blank (index 0) and every second checkpoint after it.
@@ -279,20 +309,54 @@ impl Cutting {
                         i += 1;
                         i == 1 || i % 2 == 1
                     });
-                    budget *= 2;
+                    pass.budget *= 2;
                 }
             }
             let event = &self.events[k];
             let (step, block) = (event.step, event.block);
-            match self.apply(&mut cursor, k) {
+            let rapid = matches!(event.action, Action::Cut { rapid: true, .. });
+            let applied = match (&event.action, pass.cursor.stock.as_mut()) {
+                (Action::Cut { cutter, axis, from, to, .. }, Some(stock)) => {
+                    // The whole cut's stamp on every part: no one sees the stock before it is
+                    // done (the pass's cursor is its own).
+                    let start = pass.cursor.partial.take().unwrap_or_default();
+                    let (r, rest) = stock.cut_part(
+                        &self.cutters[*cutter],
+                        *axis,
+                        *from,
+                        *to,
+                        start,
+                        rays - spent,
+                        Stamp::done(self.run, k),
+                    );
+                    spent += r.work().max(1);
+                    if r.depth > 0.0 {
+                        pass.cursor.version += 1;
+                    }
+                    let sum = &mut pass.removal;
+                    sum.volume += r.volume;
+                    sum.depth = sum.depth.max(r.depth);
+                    (sum.rays, sum.visited, sum.tiles) =
+                        (sum.rays + r.rays, sum.visited + r.visited, sum.tiles + r.tiles);
+                    pass.cursor.partial = rest;
+                    if rest.is_some() {
+                        continue;
+                    }
+                    pass.cursor.applied += 1;
+                    Applied::Removed(std::mem::take(&mut pass.removal))
+                }
+                _ => {
+                    spent += 1;
+                    self.apply(&mut pass.cursor, k)
+                }
+            };
+            let mut work = 0;
+            match applied {
                 Applied::Removed(r) => {
-                    work += r.rays;
-                    self.work[k + 1] = r.work();
-                    if matches!(event.action, Action::Cut { rapid: true, .. })
-                        && r.depth > ENTERS_MATERIAL
-                        && last_rapid_note != Some(step)
-                    {
-                        last_rapid_note = Some(step);
+                    pass.since += r.rays;
+                    work = r.work();
+                    if rapid && r.depth > ENTERS_MATERIAL && pass.last_rapid_note != Some(step) {
+                        pass.last_rapid_note = Some(step);
                         self.notes.push(StockNote { step, block, kind: StockNoteKind::RapidIntoMaterial });
                     }
                 }
@@ -309,9 +373,22 @@ impl Cutting {
                     self.notes.push(StockNote { step, block, kind: StockNoteKind::InvalidBlank });
                 }
             }
+            let before = self.work.last().copied().unwrap_or(0);
+            self.work.push(before + work);
         }
-        for k in 1..self.work.len() {
-            self.work[k] += self.work[k - 1];
+        let done = pass.cursor.applied >= self.events.len();
+        if !done {
+            self.pass = Some(pass);
+        }
+        done
+    }
+
+    /// The steps the first pass has cut (their notes are known): all of them once it is done.
+    #[must_use]
+    pub fn passed(&self) -> usize {
+        match &self.pass {
+            None => self.step_events.len().saturating_sub(1),
+            Some(p) => self.step_events.partition_point(|&e| e <= p.cursor.applied).saturating_sub(1),
         }
     }
 
