@@ -147,6 +147,17 @@ pub async fn timed_key(root: &Element, key_name: &str) -> f64 {
     now() - t0
 }
 
+/// Waits for the browser's next animation frame; its time stamp (ms since page load). Frames
+/// the app's 3D view asked for before run first, so the view has painted when this returns.
+pub async fn next_frame() -> f64 {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Some(w) = web_sys::window() {
+            let _ = w.request_animation_frame(&resolve);
+        }
+    });
+    wasm_bindgen_futures::JsFuture::from(promise).await.ok().and_then(|t| t.as_f64()).unwrap_or_else(now)
+}
+
 /// The median of `samples`.
 #[must_use]
 pub fn median(mut samples: Vec<f64>) -> f64 {
