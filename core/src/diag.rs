@@ -65,11 +65,18 @@ pub enum DiagCode {
     ZeroVector {
         word: &'static str,
     },
+    /// Said once per file, at the first block whose number is not above the one before.
     BlockNumberNotAscending {
         previous: u32,
         number: u32,
     },
+    /// Said once per file, at the first block without a number.
     MissingBlockNumber,
+    /// Said once per file, at the first block numbered `N…` (as ISO programs and some CAM
+    /// systems write it): read as its block number.
+    BlockNumberPrefixed {
+        number: u32,
+    },
     PgmNameMismatch {
         begin: String,
         end: String,
@@ -233,10 +240,21 @@ impl DiagCode {
                 format!("Invalid input: {word} is a zero vector"),
             ),
             DiagCode::BlockNumberNotAscending { previous, number } => t(
-                format!("Satznummer nicht aufsteigend: {number} nach {previous}"),
-                format!("Block number not ascending: {number} after {previous}"),
+                format!(
+                    "Satznummern nicht aufsteigend (zuerst {number} nach {previous}): die Sätze laufen in ihrer Reihenfolge in der Datei"
+                ),
+                format!(
+                    "Block numbers not ascending (first {number} after {previous}): the blocks run in their order in the file"
+                ),
             ),
-            DiagCode::MissingBlockNumber => Text::new("Satznummer fehlt", "Block number missing"),
+            DiagCode::MissingBlockNumber => Text::new(
+                "Satznummern fehlen (zuerst hier): die Sätze laufen in ihrer Reihenfolge in der Datei",
+                "Block numbers missing (first here): the blocks run in their order in the file",
+            ),
+            DiagCode::BlockNumberPrefixed { number } => t(
+                format!("N-Satznummern gelesen (zuerst N{number}): Klartext schreibt die Nummer ohne N"),
+                format!("N block numbers read (first N{number}): Klartext writes the number without N"),
+            ),
             DiagCode::PgmNameMismatch { begin, end } => t(
                 format!("Programmname falsch: END PGM {end} zu BEGIN PGM {begin}"),
                 format!("Wrong program name: END PGM {end} for BEGIN PGM {begin}"),

@@ -201,7 +201,13 @@ pub(crate) fn split_comment(text: &str) -> (&str, Option<&str>) {
 }
 
 fn starts_new_block(text: &str) -> bool {
-    matches!(text.trim_start().as_bytes().first(), Some(b'0'..=b'9' | b'/'))
+    let t = text.trim_start().as_bytes();
+    matches!(t.first(), Some(b'0'..=b'9' | b'/')) || n_number(t).is_some()
+}
+
+/// The length of an `N` block number's prefix (`N25 L …`: 1) when `text` starts with one.
+fn n_number(text: &[u8]) -> Option<usize> {
+    (text.first() == Some(&b'N') && text.get(1).is_some_and(u8::is_ascii_digit)).then_some(1)
 }
 
 /// Parses a Klartext program (or a single block without block number).
@@ -259,7 +265,8 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
             }
             p.block()
         };
-        across.check(src, &block, |code, span| p.diag_at(Severity::Error, code, span.start, span.end, None));
+        across
+            .check(src, &block, |severity, code, span| p.diag_at(severity, code, span.start, span.end, None));
         p.blocks.push(block);
     }
     if across.end_missing() {
@@ -273,33 +280,58 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
 /// the END PGM name equal to the BEGIN PGM name, a BEGIN PGM without END PGM. The parser makes
 /// them, and an edit that re-read only some blocks makes them again over the whole program
 /// (`Document::edited` in the app).
+///
+/// Block numbers are the control's own bookkeeping (its editor numbers the blocks itself), so
+/// numbers that are missing, not ascending or written `N…` are never an error: each is said
+/// once per file, a warning at its first block, and the blocks run in their order in the file
+/// (`unconfirmed::IMPORT_BLOCK_NUMBERS`).
 #[derive(Debug, Default)]
 pub struct AcrossBlocks {
     previous: Option<u32>,
     begin: Option<String>,
     end_seen: bool,
+    not_ascending_said: bool,
+    missing_said: bool,
+    prefixed_said: bool,
 }
 
 impl AcrossBlocks {
-    /// The errors `block` (of the text `src`) adds, each with its span.
-    pub fn check(&mut self, src: &str, block: &Block, mut error: impl FnMut(DiagCode, Span)) {
+    /// The findings `block` (of the text `src`) adds, each with its severity and span.
+    pub fn check(&mut self, src: &str, block: &Block, mut found: impl FnMut(Severity, DiagCode, Span)) {
         let span = block.span();
+        let numbers = if crate::unconfirmed::IMPORT_BLOCK_NUMBERS_ARE_WARNINGS {
+            Severity::Warning
+        } else {
+            Severity::Error
+        };
+        let text = src.get(span.start..).unwrap_or("");
+        let lead = text.len() - text.trim_start_matches('/').trim_start().len();
         if let Some(n) = block.number() {
-            if let Some(previous) = self.previous.filter(|&p| n <= p) {
-                let digits = digits_len(src.get(span.start..).unwrap_or(""));
-                error(
-                    DiagCode::BlockNumberNotAscending { previous, number: n },
-                    Span::new(span.start, span.start + digits),
-                );
+            let prefix = n_number(&text.as_bytes()[lead..]).unwrap_or(0);
+            let digits = prefix + text[lead + prefix..].bytes().take_while(u8::is_ascii_digit).count();
+            let at = Span::new(span.start + lead, span.start + lead + digits);
+            if prefix > 0 && !std::mem::replace(&mut self.prefixed_said, true) {
+                found(numbers, DiagCode::BlockNumberPrefixed { number: n }, at);
+            }
+            if let Some(previous) = self.previous.filter(|&p| n <= p)
+                && !std::mem::replace(&mut self.not_ascending_said, true)
+            {
+                found(numbers, DiagCode::BlockNumberNotAscending { previous, number: n }, at);
             }
             self.previous = Some(n);
+        } else if !std::mem::replace(&mut self.missing_said, true) {
+            found(numbers, DiagCode::MissingBlockNumber, Span::new(span.start, span.start));
         }
         match block.stored_body() {
             Some(BlockBody::BeginPgm { name, .. }) if self.begin.is_none() => self.begin = Some(name.clone()),
             Some(BlockBody::EndPgm { name, .. }) => {
                 self.end_seen = true;
                 if let Some(begin) = self.begin.as_ref().filter(|b| !b.eq_ignore_ascii_case(name)) {
-                    error(DiagCode::PgmNameMismatch { begin: begin.clone(), end: name.clone() }, span);
+                    found(
+                        Severity::Error,
+                        DiagCode::PgmNameMismatch { begin: begin.clone(), end: name.clone() },
+                        span,
+                    );
                 }
             }
             _ => {}
@@ -311,11 +343,6 @@ impl AcrossBlocks {
     pub fn end_missing(&self) -> bool {
         self.begin.is_some() && !self.end_seen
     }
-}
-
-fn digits_len(s: &str) -> usize {
-    let t = s.trim_start_matches('/');
-    (s.len() - t.len()) + t.bytes().take_while(u8::is_ascii_digit).count()
 }
 
 struct Parser<'s> {
@@ -378,6 +405,10 @@ impl Parser<'_> {
             rest = r.trim_start();
         }
         let mut number = None;
+        // `N25 L …`: the number read, the prefix said once per file (AcrossBlocks).
+        if let Some(n) = n_number(rest.as_bytes()) {
+            rest = &rest[n..];
+        }
         let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
         if digits > 0 {
             let at = first.start + (line_text.len() - rest.len());
@@ -402,8 +433,6 @@ impl Parser<'_> {
                 skip = true;
                 rest = r.trim_start();
             }
-        } else {
-            self.diag_at(Severity::Warning, DiagCode::MissingBlockNumber, span.start, span.start, None);
         }
 
         let (body_text, comment) = split_comment(rest);

@@ -142,6 +142,7 @@ macro_rules! fixtures {
 fixtures!(ok, check_ok:
     cam_hypermill,
     contour_manual,
+    cam_spellings,
     cycles_continuation,
     euler_example,
     function_tcpm,
@@ -152,7 +153,6 @@ fixtures!(ok, check_ok:
 );
 
 fixtures!(err, check_err:
-    block_numbers,
     cycle_param_without_value,
     duplicate_axis,
     end_pgm_name,

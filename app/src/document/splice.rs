@@ -74,7 +74,11 @@ fn region(old: &str, new: &str, prefix: usize, suffix: usize) -> Option<Region> 
 fn across_blocks(code: &DiagCode) -> bool {
     matches!(
         code,
-        DiagCode::BlockNumberNotAscending { .. } | DiagCode::PgmNameMismatch { .. } | DiagCode::MissingEndPgm
+        DiagCode::BlockNumberNotAscending { .. }
+            | DiagCode::MissingBlockNumber
+            | DiagCode::BlockNumberPrefixed { .. }
+            | DiagCode::PgmNameMismatch { .. }
+            | DiagCode::MissingEndPgm
     )
 }
 
@@ -177,8 +181,8 @@ impl Document {
             while let Some(d) = own.next_if(|d| d.span.start < next_start) {
                 out.push(d);
             }
-            across.check(&self.text, b, |code, span| {
-                out.push(Diagnostic::new(Severity::Error, code, span, b.line(), b.column()));
+            across.check(&self.text, b, |severity, code, span| {
+                out.push(Diagnostic::new(severity, code, span, b.line(), b.column()));
             });
         }
         out.extend(own);

@@ -80,7 +80,8 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let Some(r) = keyword(body, "FN").map(sp) else { return super::unknown(cx, body) };
+    // `FN 0:` as the control writes it, `FN0:` as CAM systems do.
+    let Some(r) = body.strip_prefix("FN").map(sp) else { return super::unknown(cx, body) };
     let Ok((rest, n)) = uint(r) else { return super::unknown(cx, body) };
     if !matches!(n, 0..=5 | 9..=12) {
         return super::unknown(cx, body);
@@ -122,7 +123,11 @@ fn math(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
         Err(e) => return cx.fail(e),
     };
     let r = sp(r);
-    let Some(r) = keyword(r, op.word()).map(sp) else { return cx.invalid(r, Some(Expected::Nc(op.word()))) };
+    // `+ +90` as the control writes it; `+90` (the operand without its own sign) as older
+    // programs and CAM systems do: the same operation.
+    let Some(r) = r.strip_prefix(op.word()).map(sp) else {
+        return cx.invalid(r, Some(Expected::Nc(op.word())));
+    };
     match word_value(r) {
         Ok((rest, b)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: Some(b) }))),
         Err(e) => cx.fail(e),

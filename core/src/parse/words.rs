@@ -185,6 +185,21 @@ pub(crate) fn quoted(i: &str) -> Step<'_, &str> {
     }
 }
 
+/// ` + v` or ` - v`: a sign with blanks around it before an unsigned value; `Some((negative,
+/// value))`.
+fn spaced_sign(i: &str) -> Option<(bool, &str)> {
+    let t = i.trim_start_matches([' ', '\t']);
+    let (negative, v) = match t.as_bytes().first() {
+        Some(b'+') => (false, &t[1..]),
+        Some(b'-') => (true, &t[1..]),
+        _ => return None,
+    };
+    let v = v.trim_start_matches([' ', '\t']);
+    let blank = t.len() < i.len() || v.len() + 1 < t.len();
+    let unsigned = v.as_bytes().first().is_some_and(|b| b.is_ascii_digit() || *b == b'.' || *b == b'Q');
+    (blank && unsigned).then_some((negative, v))
+}
+
 /// An axis word `[I]X±v`; `Expected` if the input does not start with an axis letter.
 pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
     let (incremental, rest) = match i.strip_prefix('I') {
@@ -198,6 +213,17 @@ pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
     let after = &rest[1..];
     if after.as_bytes().first().is_none_or(|b| b.is_ascii_alphabetic()) {
         return expected(i, Expected::Axis);
+    }
+    // `Z + Q13`, `X - 5` (blanks around the sign, as some CAM systems write): the same word as
+    // `Z+Q13`, `X-5`.
+    if let Some((sign, value)) = spaced_sign(after) {
+        let (rest, value) = word_value(value).map_err(Stop::cut)?;
+        let value = match (sign, value) {
+            (true, Value::Number(v)) => Value::Number(-v),
+            (true, Value::Param { index, negate }) => Value::Param { index, negate: !negate },
+            (false, v) => v,
+        };
+        return Ok((rest, crate::ast::AxisWord { axis, value, incremental }));
     }
     let (rest, value) = word_value(after).map_err(Stop::cut)?;
     Ok((rest, crate::ast::AxisWord { axis, value, incremental }))
