@@ -42,6 +42,18 @@ fn fn_blocks_in_every_spacing() {
     same("FN 2: Q4 = +Q1 -Q2", "FN 2: Q4 = +Q1 - +Q2");
 }
 
+#[test]
+fn cycle_def_without_a_blank_before_its_number() {
+    let (a, da) = parse("1 CYCL DEF9.0 VERWEILZEIT\n2 CYCL DEF9.1 V.ZEIT1\n");
+    let (b, _) = parse("1 CYCL DEF 9.0 VERWEILZEIT\n2 CYCL DEF 9.1 V.ZEIT1\n");
+    assert!(da.is_empty(), "{da:?}");
+    assert_eq!(format_program(&a), format_program(&b));
+    let (a, da) = parse("1 CYCL DEF200 BOHREN ~\n  Q200=+2 ;SICHERHEITS-ABST.\n");
+    let (b, _) = parse("1 CYCL DEF 200 BOHREN ~\n  Q200=+2 ;SICHERHEITS-ABST.\n");
+    assert!(da.is_empty(), "{da:?}");
+    assert_eq!(a.blocks[0].body(), b.blocks[0].body());
+}
+
 fn warnings(src: &str) -> Vec<(Severity, DiagCode)> {
     parse(src).1.into_iter().map(|d| (d.severity, d.code)).collect()
 }

@@ -4,13 +4,19 @@
 //!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS axis… [F…|FMAX] { Mn }
 
 use super::Cx;
-use super::words::{axis_word, feed, keyword, m_function, sp, uint, word_value};
+use super::words::{at_boundary, axis_word, feed, keyword, m_function, sp, uint, word_value};
 use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
 use crate::diag::{DiagCode, Expected};
 
 /// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
+/// `DEF` after `CYCL`: `CYCL DEF 9.0` as the control writes it, `CYCL DEF9.0` as some programs
+/// do.
+fn def(i: &str) -> Option<&str> {
+    i.strip_prefix("DEF").filter(|r| at_boundary(r) || r.starts_with(|c: char| c.is_ascii_digit()))
+}
+
 pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<BlockBody> {
-    let Some(rest) = keyword(header, "CYCL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
+    let Some(rest) = keyword(header, "CYCL").map(sp).and_then(def).map(sp) else {
         return cx.invalid(header, Some(Expected::Nc("CYCL DEF")));
     };
     let (rest, number) = match uint(rest) {
@@ -102,7 +108,7 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             BlockBody::CyclCall { m }
         });
     }
-    let Some(rest) = keyword(rest, "DEF").map(sp) else {
+    let Some(rest) = def(rest).map(sp) else {
         return cx.invalid(rest, Some(Expected::Nc("DEF|CALL")));
     };
     let (after, number) = match uint(rest) {
