@@ -309,7 +309,8 @@ impl AcrossBlocks {
         if let Some(n) = block.number() {
             let prefix = n_number(&text.as_bytes()[lead..]).unwrap_or(0);
             let digits = prefix + text[lead + prefix..].bytes().take_while(u8::is_ascii_digit).count();
-            let at = Span::new(span.start + lead, span.start + lead + digits);
+            // From the block's start (a skip `/` included), where the splice places it too.
+            let at = Span::new(span.start, span.start + lead + digits);
             if prefix > 0 && !std::mem::replace(&mut self.prefixed_said, true) {
                 found(numbers, DiagCode::BlockNumberPrefixed { number: n }, at);
             }
