@@ -189,22 +189,26 @@ fn holes(src: &str) -> Holes {
 }
 
 #[test]
-fn m89_calls_the_last_defined_cycle_at_every_positioning_block_until_m99_or_cycl_call() {
+fn m89_calls_the_last_defined_cycle_at_every_positioning_block_until_m99_or_a_new_cycl_def() {
     // "M89 as a cycle-call is modally effective, i.e. for every following positioning block
-    // there will be a call of the last-programmed machining-cycle. M89 is canceled by M99 or a
-    // CYCL CALL-block" (TNC 306/406 technical manual, "M-function M89").
+    // there will be a call of the last-programmed machining-cycle" (TNC 306/406 technical
+    // manual, "M-function M89"); on the iTNC 530 it ends with M99 in the last positioning block
+    // or with a new CYCL DEF (iTNC 530 cycle manual; DOMAIN.md §11) — a CYCL CALL ending it is
+    // the old controls' rule only.
     let src = drilling(
         "4 L X+10 Y+10 Z+20 R0 FMAX M89\n5 L X+20\n6 L X+30 M99\n7 L X+40\n8 M89\n9 L X+50\n\
-         10 CYCL DEF 200 BOHREN ~\n  Q200=+2 ~\n  Q201=-7 ~\n  Q206=+150 ~\n  Q202=+5 ~\n  Q210=+0 ~\n  Q203=+0 ~\n  Q204=+10 ~\n  Q211=+0\n\
-         11 L X+60\n12 CYCL CALL\n13 L X+70\n",
+         10 CYCL CALL\n11 L X+60\n\
+         12 CYCL DEF 200 BOHREN ~\n  Q200=+2 ~\n  Q201=-7 ~\n  Q206=+150 ~\n  Q202=+5 ~\n  Q210=+0 ~\n  Q203=+0 ~\n  Q204=+10 ~\n  Q211=+0\n\
+         13 L X+70\n14 L X+80 M89\n15 L X+90\n",
     );
     let got: Vec<(u32, Option<i64>)> = holes(&src)
         .into_iter()
         .map(|(n, h, z)| (n, (!h.is_empty() && z < -4.0).then(|| z.round() as i64)))
         .collect();
     // 4, 5: M89 active; 6: M99 calls once more and ends it; 7 not; 8 (M89 alone) starts it
-    // again but does not position; 9 drills; 10 defines a cycle 7 deep, which 11 drills; the
-    // CYCL CALL 12 drills and ends M89: 13 does not drill.
+    // again but does not position; 9 drills; the CYCL CALL 10 drills and leaves M89 on, so 11
+    // drills; the CYCL DEF 12 (7 deep) ends it: 13 does not drill; 14 starts it again with the
+    // new cycle, 15 drills 7 deep.
     assert_eq!(
         got,
         vec![
@@ -214,12 +218,32 @@ fn m89_calls_the_last_defined_cycle_at_every_positioning_block_until_m99_or_cycl
             (7, None),
             (8, None),
             (9, Some(-5)),
-            (10, None),
-            (11, Some(-7)),
-            (12, Some(-7)),
-            (13, None)
+            (10, Some(-5)),
+            (11, Some(-5)),
+            (12, None),
+            (13, None),
+            (14, Some(-7)),
+            (15, Some(-7))
         ]
     );
+}
+
+#[test]
+fn cycl_call_pos_without_all_three_axes_is_refused() {
+    // "In the CYCL CALL POS block you must always program all three coordinate axes" (iTNC 530
+    // cycle manual; DOMAIN.md §11).
+    for (block, missing) in [
+        ("CYCL CALL POS X+10 Y+20 FMAX", "Z"),
+        ("CYCL CALL POS X+10 Z+0", "Y"),
+        ("CYCL CALL POS Y+1 Z+0", "X"),
+    ] {
+        let (_, d) = schwenkbar_core::parse(&format!("1 {block}\n"));
+        assert_eq!(d.len(), 1, "{block}: {d:?}");
+        assert_eq!(d[0].code, schwenkbar_core::diag::DiagCode::MissingWord { word: missing }, "{block}");
+        assert!(d[0].is_error());
+    }
+    let (_, d) = schwenkbar_core::parse("1 CYCL CALL POS X+10 Y+20 Z+0 FMAX\n");
+    assert!(d.is_empty(), "{d:?}");
 }
 
 #[test]

@@ -1,20 +1,21 @@
 //! Cycle definitions and calls.
 //!   def  := CYCL DEF n name [~] { NL Q<n>=value [;label] [~] }   (continuation lines, DOMAIN.md §8)
 //!   old  := CYCL DEF n.0 name | CYCL DEF n.s words
-//!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS axis… [F…|FMAX] { Mn }
+//!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS X… Y… Z… [F…|FMAX] { Mn }
+//!   (CYCL CALL POS with all three axes: iTNC 530 cycle manual, DOMAIN.md §11)
 
 use super::Cx;
 use super::words::{at_boundary, axis_word, feed, keyword, m_function, sp, uint, word_value};
 use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
 use crate::diag::{DiagCode, Expected};
 
-/// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
 /// `DEF` after `CYCL`: `CYCL DEF 9.0` as the control writes it, `CYCL DEF9.0` as some programs
 /// do.
 fn def(i: &str) -> Option<&str> {
     i.strip_prefix("DEF").filter(|r| at_boundary(r) || r.starts_with(|c: char| c.is_ascii_digit()))
 }
 
+/// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
 pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<BlockBody> {
     let Some(rest) = keyword(header, "CYCL").map(sp).and_then(def).map(sp) else {
         return cx.invalid(header, Some(Expected::Nc("CYCL DEF")));
@@ -66,7 +67,19 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         if let Some(r) = keyword(i, "POS") {
             // The words of a straight line without radius compensation.
             return match super::motion::path(cx, "L", r)? {
-                BlockBody::L(line) if line.comp.is_none() => Some(BlockBody::CyclCallPos(Box::new(line))),
+                BlockBody::L(line) if line.comp.is_none() => {
+                    // All three axes, as the iTNC 530 cycle manual demands of CYCL CALL POS.
+                    let has = |a: Axis| line.axes.iter().any(|w| w.axis == a);
+                    if let Some(word) = [(Axis::X, "X"), (Axis::Y, "Y"), (Axis::Z, "Z")]
+                        .into_iter()
+                        .find_map(|(a, word)| (!has(a)).then_some(word))
+                    {
+                        let end = &r[r.len()..];
+                        cx.error(end, 0, DiagCode::MissingWord { word });
+                        return None;
+                    }
+                    Some(BlockBody::CyclCallPos(Box::new(line)))
+                }
                 _ => {
                     let word = r.split([' ', '\t']).find(|w| matches!(*w, "R0" | "RL" | "RR")).unwrap_or(r);
                     cx.error(word, word.len(), DiagCode::NotAllowed { word: word.to_owned() });

@@ -429,10 +429,17 @@ impl Interp {
                 self.m89 = m.contains(&89) || (self.m89 && !m.contains(&99));
                 self.end_m(m);
             }
-            BlockBody::CycleDef(d) => self.cycle_def(cx, &mut rec, idx, d)?,
-            BlockBody::CycleDefOld(d) => self.old_cycle(cx, &mut rec, idx, d)?,
-            BlockBody::CyclCall { m } => {
+            // A new cycle definition ends a modal M89 call (iTNC 530 cycle manual: "define a new
+            // cycle with CYCL DEF"; DOMAIN.md §11); a CYCL CALL does not (the TNC 306/406 rule).
+            BlockBody::CycleDef(d) => {
                 self.m89 = false;
+                self.cycle_def(cx, &mut rec, idx, d)?;
+            }
+            BlockBody::CycleDefOld(d) => {
+                self.m89 &= d.sub != 0;
+                self.old_cycle(cx, &mut rec, idx, d)?;
+            }
+            BlockBody::CyclCall { m } => {
                 self.spindle_m(m);
                 self.call_cycle(cx, &mut rec, idx)?;
                 self.end_m(m);

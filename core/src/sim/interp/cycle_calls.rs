@@ -194,8 +194,9 @@ impl Interp {
 
     /// After an `L` block: `M89` starts the modal cycle call ([`unconfirmed::M89_CALLS_AT_ITS_BLOCK`]):
     /// "for every following positioning block there will be a call of the last-programmed
-    /// machining cycle. M89 is cancelled by M99 or a CYCL CALL block" (HEIDENHAIN TNC 306/406
-    /// technical manual, "M-function M89"; `M99` calls once more, in [`Self::line`]).
+    /// machining cycle" (HEIDENHAIN TNC 306/406 technical manual, "M-function M89"); it ends with
+    /// `M99` (which calls once more, in [`Self::line`]) or a new `CYCL DEF` (iTNC 530 cycle
+    /// manual, DOMAIN.md §11).
     pub(super) fn modal_call(
         &mut self,
         cx: &Cx<'_>,
