@@ -64,6 +64,9 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
     let perf = web_sys::window().and_then(|w| w.performance()).expect("performance");
     let t0 = perf.now();
     let stock = StockRef::of(&sim, &doc.program);
+    // The first pass at once (the trainer spreads it over frames): the checkpoints the shots
+    // below start from, and the figure of the whole cut.
+    stock.pass_on(usize::MAX);
     let cut_ms = perf.now() - t0;
     let block = doc.program.blocks.iter().position(|b| b.number() == Some(13)).expect("block 13");
     let after = sim.0.step_of_block(block).expect("executed");
