@@ -14,6 +14,9 @@ CHROME_ARGS = [
     "--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
     "--disable-background-networking", "--disable-component-update", "--disable-sync",
     "--no-first-run", "--window-size=1280,800",
+    # A German browser, as most trainees have: a first visit opens in the browser's language, and
+    # the pages' first screens are profiled (split_pages.py) and tested in German.
+    "--lang=de-DE",
 ]
 
 
@@ -53,7 +56,8 @@ class Driver:
                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.session = None
         wait_for("chromedriver", self._ready, 20)
-        options = {"args": CHROME_ARGS + [f"--user-data-dir={profile}"]}
+        options = {"args": CHROME_ARGS + [f"--user-data-dir={profile}"],
+                   "prefs": {"intl.accept_languages": "de-DE,de"}}
         if os.path.exists("/usr/bin/chromium"):
             options["binary"] = "/usr/bin/chromium"
         caps = {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options}}}

@@ -43,8 +43,9 @@ for _ in $(seq 50); do
   python3 -c "import socket,sys; s=socket.socket(); sys.exit(s.connect_ex(('127.0.0.1', $port)))" && break
   sleep 0.1
 done
+# German, as a first visit in a German browser opens (the app follows the browser's language).
 chromium --headless=new --no-sandbox --disable-gpu --disable-background-networking \
-  --disable-component-update --disable-sync --no-first-run --user-data-dir="$profile" \
+  --disable-component-update --disable-sync --no-first-run --lang=de-DE --user-data-dir="$profile" \
   --virtual-time-budget=4000 --window-size="$size" --screenshot="$(realpath -m "$out")" \
   "$url" 2>/dev/null
 echo "screenshot: $out"
