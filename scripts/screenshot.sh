@@ -5,10 +5,11 @@
 #   QUERY is appended to the URL ("#pgm=…" a share link, "kurs.html#kurs/5" a lesson).
 # Environment:
 #   SCREENSHOT_SIZE=W,H         the window (default 1920,1080)
-#   SCREENSHOT_PROJECTOR=1      the classroom view: the trainer in projector mode (saved state,
-#                               web/src/persist.rs) and the course's instructor view (course
-#                               progress, web/src/course/progress.rs), set in localStorage by a
-#                               small page of the same origin before the app loads
+#   SCREENSHOT_PROJECTOR=1      the classroom view: the trainer in projector mode and the course's
+#                               instructor view (the shared preferences, app/src/persist.rs)
+# Every screenshot is German (the preferences `p1;lang=de;…` in localStorage, set by a small
+# page of the same origin before the app loads; a first visit would follow the browser's
+# language).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-target/screenshot.png}"
@@ -21,21 +22,17 @@ port="${SCREENSHOT_PORT:-8765}"
 site=$(mktemp -d)
 profile=$(mktemp -d)
 cp -rs "$PWD/dist/." "$site/"
-url="http://127.0.0.1:$port/$query"
-if [ -n "${SCREENSHOT_PROJECTOR:-}" ]; then
-  lessons=$(printf '0:0,%.0s' $(seq 11)); lessons=${lessons%,}
-  python3 - "$site/_screenshot-setup.html" "/$query" "k1;de;1;$lessons" <<'PY'
+classroom=0
+[ -n "${SCREENSHOT_PROJECTOR:-}" ] && classroom=1
+python3 - "$site/_screenshot-setup.html" "/$query" "p1;lang=de;classroom=$classroom" <<'PY'
 import json, sys
-path, target, course = sys.argv[1:]
-state = '{"version":1,"cursor":0,"machine":"ac-table","lang":"De","projector":true}'
+path, target, prefs = sys.argv[1:]
 with open(path, "w", encoding="utf-8") as f:
     f.write("<!doctype html><meta charset=utf-8><script>"
-            f"localStorage.setItem('schwenkbar.state', {json.dumps(state)});"
-            f"localStorage.setItem('schwenkbar.kurs', {json.dumps(course)});"
+            f"localStorage.setItem('schwenkbar.prefs', {json.dumps(prefs)});"
             f"location.replace({json.dumps(target)});</script>")
 PY
-  url="http://127.0.0.1:$port/_screenshot-setup.html"
-fi
+url="http://127.0.0.1:$port/_screenshot-setup.html"
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$site" >/dev/null 2>&1 &
 server=$!
 trap 'kill "$server" 2>/dev/null || true; rm -rf "$site" "$profile"' EXIT
