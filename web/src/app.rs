@@ -144,7 +144,7 @@ pub fn app(props: &AppProps) -> Html {
                 <Header lang={l} machine={machine_name} mode={mode} course_link={props.embed.is_none()} />
                 <main class="panes">
                     <ProgramPane doc={DocRef(state.doc.clone())} cursor={state.cursor} lang={l}
-                        text_editing={state.text_editing} {on_select} {on_edit} />
+                        text_editing={state.text_editing} wrap={state.projector} {on_select} {on_edit} />
     if state.right_hand {
                         <RightHandDemo lang={l} block={state.cursor_plane_text().map(AttrValue::from)} />
                     } else {

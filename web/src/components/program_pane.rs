@@ -17,9 +17,10 @@ use schwenkbar_app::syntax::highlight;
 const OVERSCAN: usize = 4;
 /// Lines drawn at most (a pane without its stylesheet is as tall as its content).
 const MAX_ROWS: usize = 160;
-/// A program of up to this many lines is drawn whole, in the page's flow: its lines may wrap
-/// (the projector's long PLANE blocks) and the cursor is brought into sight by the lines' real
-/// positions. A longer one is virtualised, one line a row.
+/// Where lines wrap (projector mode), a program of up to this many lines is drawn whole, in the
+/// page's flow, and the cursor is brought into sight by the lines' real positions; elsewhere,
+/// and for a longer program, the list is virtualised, one line a row (drawing all lines cost a
+/// keystroke 4× the time).
 const WHOLE_LINES: usize = 400;
 /// The list's tallest scroll height in px: browsers cap an element's height (Firefox near
 /// 17.9 million px); beyond it the scroll position maps to lines in proportion.
@@ -31,6 +32,9 @@ pub struct ProgramPaneProps {
     pub cursor: usize,
     pub lang: Lang,
     pub text_editing: bool,
+    /// Long lines wrap (projector mode): a short program is drawn whole ([`WHOLE_LINES`]).
+    #[prop_or_default]
+    pub wrap: bool,
     pub on_select: Callback<usize>,
     /// The editor's window, bytes `.0` of the program, now reads `.1`.
     pub on_edit: Callback<(Range<usize>, String)>,
@@ -50,7 +54,7 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
                 <ProgramText doc={doc.clone()} cursor={props.cursor} lang={l} on_edit={props.on_edit.clone()} />
                 { diagnostics_list(doc, 0, usize::MAX, l) }
             } else {
-                <ProgramList doc={doc.clone()} cursor={props.cursor} lang={l} on_select={props.on_select.clone()} />
+                <ProgramList doc={doc.clone()} cursor={props.cursor} lang={l} wrap={props.wrap} on_select={props.on_select.clone()} />
             }
         </section>
     }
@@ -181,6 +185,7 @@ struct ListProps {
     doc: DocRef,
     cursor: usize,
     lang: Lang,
+    wrap: bool,
     on_select: Callback<usize>,
 }
 
@@ -228,14 +233,15 @@ fn program_list(props: &ListProps) -> Html {
     let view = use_state_eq(|| View { top: 0.0, height: 600.0, line: 21.0 });
     let doc = &props.doc;
     let lines = doc.line_count();
+    let whole = props.wrap && lines <= WHOLE_LINES;
     let (cur_first, cur_last) = doc.block_lines(props.cursor).unwrap_or((0, 0));
     {
         // Measures the scroller and a line, and brings the cursor block into sight (a third of
         // the way down) when it moved out of it.
         let (scroller, view) = (scroller.clone(), view.clone());
-        use_effect_with((props.cursor, doc.clone()), move |_| {
+        use_effect_with((props.cursor, doc.clone(), whole), move |_| {
             let Some(el) = scroller.cast::<web_sys::Element>() else { return };
-            if lines <= WHOLE_LINES {
+            if whole {
                 reveal_drawn(&el, cur_first, cur_last);
                 return;
             }
@@ -264,7 +270,7 @@ fn program_list(props: &ListProps) -> Html {
     let onscroll = {
         let view = view.clone();
         // A whole-drawn list has nothing to redraw when it scrolls.
-        let virtual_list = lines > WHOLE_LINES;
+        let virtual_list = !whole;
         Callback::from(move |e: Event| {
             if let Some(el) = e.target_dyn_into::<web_sys::Element>().filter(|_| virtual_list) {
                 view.set(View {
@@ -276,7 +282,6 @@ fn program_list(props: &ListProps) -> Html {
         })
     };
     let v = *view;
-    let whole = lines <= WHOLE_LINES;
     let (first, last) = if whole {
         (0, lines)
     } else {
