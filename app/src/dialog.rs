@@ -591,7 +591,9 @@ fn rel_word(axis: RelAxis) -> Word {
 fn value_text(v: Value) -> String {
     match v {
         Value::Number(x) => format!("{x}"),
-        Value::Param { index, negate } => format!("{}Q{index}", if negate { "-" } else { "" }),
+        Value::Param { index, negate } => {
+            format!("{}{}", if negate { "-" } else { "" }, schwenkbar_core::ast::QName(index))
+        }
     }
 }
 

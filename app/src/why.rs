@@ -265,7 +265,7 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
             l.t("Unterprogramm: Marke oder Aufruf.", "Subprogram: label or call.")
         }
         BlockBody::QAssign { .. } | BlockBody::FnMath(_) => l.t("Weist einem Q-Parameter einen Wert zu.", "Assigns a value to a Q parameter."),
-        BlockBody::MFunctions(_) => l.t("Zusatzfunktionen (M).", "Miscellaneous functions (M)."),
+        BlockBody::MFunctions(..) => l.t("Zusatzfunktionen (M).", "Miscellaneous functions (M)."),
         BlockBody::Unknown { .. } => l.t(
             "Ein Satz, den dieser Trainer nicht nachbildet: er wird angezeigt, aber nicht ausgeführt.",
             "A block this trainer does not model: shown, not executed.",

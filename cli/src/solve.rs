@@ -120,7 +120,9 @@ fn plane_block(src: &str, lang: Lang) -> Result<PlaneBlock<f64>, String> {
         PlaneTextError::Invalid(d) => format!("{}:{}: {}", d.line, d.column, d.message(lang)),
         PlaneTextError::NoPlane | PlaneTextError::SeveralPlanes => "expected exactly one PLANE block".into(),
     })?;
-    block.numbers().map_err(|index| format!("Q{index}: Q parameters have no value here"))
+    block
+        .numbers()
+        .map_err(|index| format!("{}: Q parameters have no value here", schwenkbar_core::ast::QName(index)))
 }
 
 /// `msg` on stderr, each line marked (a machine file's problems are one a line).

@@ -14,10 +14,11 @@ mod path;
 mod q;
 
 pub use cycles::{
-    CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord, PatternItem, PatternKey, PatternKind,
+    CycleDef, CycleDefOld, CycleParam, CycleValue, OldCycleData, OldCycleWord, PatternItem, PatternKey,
+    PatternKind,
 };
-pub use path::{ApprDep, ApprKind, Line, Motion, PolarWord, RadiusComp};
-pub use q::{BinOp, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label};
+pub use path::{ApprDep, ApprKind, Line, MWords, Motion, PolarWord, RadiusComp};
+pub use q::{BinOp, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, QL_BASE, QName, QR_BASE};
 
 /// A byte range `start..end` into the source text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize)]
@@ -127,7 +128,7 @@ impl CompactLine {
         } else {
             None
         };
-        Line { axes, comp: self.comp, feed, m: Box::default() }
+        Line { axes, comp: self.comp, feed, m: Box::default(), m_words: MWords::default() }
     }
 }
 
@@ -415,8 +416,8 @@ pub enum BlockBody {
         length: Value,
         feed: Option<Feed>,
     },
-    /// A block of only M functions (`M30`, `M99`).
-    MFunctions(Box<[u32]>),
+    /// A block of only M functions (`M30`, `M99`, `M140 MB MAX`).
+    MFunctions(Box<[u32]>, MWords),
     /// New-style `CYCL DEF 200 BOHREN ~` with its `Q…=` continuation lines.
     CycleDef(Box<CycleDef>),
     /// Old-style cycle with sub-numbers: `CYCL DEF 7.0 NULLPUNKT`, `CYCL DEF 7.1 X+10`.
@@ -480,6 +481,37 @@ pub enum BlockBody {
     FnMath(Box<FnMath>),
     /// `FN 9..12: IF a EQU|NE|GT|LT b GOTO LBL …`: conditional jumps.
     FnJump(Box<FnJump>),
+    /// `TOOL DEF n [L…] [R…]`: a tool defined in the program (older programs and CAM output);
+    /// a later `TOOL CALL n` takes its length and radius instead of the tool table's.
+    ToolDef {
+        tool: ToolRef,
+        length: Option<Value>,
+        radius: Option<Value>,
+    },
+    /// `STOP [M…]`: the program run stops until NC start.
+    Stop {
+        m: Box<[u32]>,
+    },
+    /// `QS n = …`: a string parameter (kept verbatim after the `=`; strings are not simulated).
+    QsAssign {
+        index: u32,
+        text: String,
+    },
+    /// `TCH PROBE n name ~` with its `Q…=` lines: a touch-probe cycle (not simulated, kept as a
+    /// cycle definition so its parameters are read and written back).
+    TouchProbe(Box<CycleDef>),
+    /// A line in parentheses before `BEGIN PGM`, as a training simulator writes its setup
+    /// sheet (machine, blank, tool list): the program's header, shown as it is.
+    Header {
+        text: String,
+    },
+    /// `FN n: …` of a function this trainer does not compute (`FN 14: ERROR`, `FN 15: PRINT`,
+    /// `FN 16: F-PRINT`, `FN 18: SYSREAD`, `FN 19: PLC`, …): the text after the colon, verbatim.
+    /// The run says so on the block; `FN 14` stops it, as the control's error message does.
+    FnOther {
+        number: u32,
+        text: String,
+    },
     /// A well-formed block of a kind this trainer does not model (kept verbatim, with a warning).
     Unknown {
         text: String,

@@ -77,6 +77,12 @@ pub enum DiagCode {
     BlockNumberPrefixed {
         number: u32,
     },
+    /// Said once per kind and file, at its first occurrence: a spelling read as its canonical
+    /// form ([`crate::parse::Lenient`]); `text` as written there.
+    Lenient {
+        kind: crate::parse::Lenient,
+        text: String,
+    },
     PgmNameMismatch {
         begin: String,
         end: String,
@@ -254,6 +260,18 @@ impl DiagCode {
             DiagCode::BlockNumberPrefixed { number } => t(
                 format!("N-Satznummern gelesen (zuerst N{number}): Klartext schreibt die Nummer ohne N"),
                 format!("N block numbers read (first N{number}): Klartext writes the number without N"),
+            ),
+            DiagCode::Lenient { kind: crate::parse::Lenient::DecimalComma, text } => t(
+                format!("Dezimalkomma gelesen (zuerst „{text}“): Klartext schreibt einen Dezimalpunkt"),
+                format!("Decimal comma read (first \"{text}\"): Klartext writes a decimal point"),
+            ),
+            DiagCode::Lenient { kind: crate::parse::Lenient::BlankAfterAddress, text } => t(
+                format!(
+                    "Leerzeichen nach dem Adressbuchstaben gelesen (zuerst „{text}“): Klartext schreibt den Wert direkt dahinter"
+                ),
+                format!(
+                    "Blank after the address letter read (first \"{text}\"): Klartext writes the value right after it"
+                ),
             ),
             DiagCode::PgmNameMismatch { begin, end } => t(
                 format!("Programmname falsch: END PGM {end} zu BEGIN PGM {begin}"),

@@ -6,9 +6,9 @@
 use std::fmt::Write as _;
 
 use crate::ast::{
-    ApprDep, AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, Expr, Label, Line, Motion, OldCycleData,
-    OldCycleWord, PatternItem, PatternKey, PatternKind, PolarWord, Program, RadiusComp, ToolCall, ToolRef,
-    Unit,
+    ApprDep, AxisWord, BinOp, BlkForm, Block, BlockBody, CycleDef, CycleValue, Expr, Label, Line, MWords,
+    Motion, OldCycleData, OldCycleWord, PatternItem, PatternKey, PatternKind, PolarWord, Program, QName,
+    RadiusComp, ToolCall, ToolRef, Unit,
 };
 use crate::plane::{
     Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection, Sign, TransformMode,
@@ -42,9 +42,10 @@ fn block(out: &mut String, n: usize, b: &Block) {
     let start = out.len();
     out.push(' ');
     let said = b.body();
-    if let BlockBody::CycleDef(c) = &*said {
-        cycle_def(out, c, b.comment());
-        return;
+    match &*said {
+        BlockBody::CycleDef(c) => return cycle_def(out, "CYCL DEF", c, b.comment()),
+        BlockBody::TouchProbe(c) => return cycle_def(out, "TCH PROBE", c, b.comment()),
+        _ => {}
     }
     body(out, &said);
     if out.len() == start + 1 {
@@ -70,7 +71,7 @@ fn value(out: &mut String, v: Value) {
     match v {
         Value::Number(x) => signed(out, x),
         Value::Param { index, negate } => {
-            let _ = write!(out, "{}Q{index}", if negate { '-' } else { '+' });
+            let _ = write!(out, "{}{}", if negate { '-' } else { '+' }, QName(index));
         }
     }
 }
@@ -83,7 +84,7 @@ fn plain(out: &mut String, v: Value) {
             let _ = write!(out, "{}", x.abs());
         }
         Value::Param { index, negate } => {
-            let _ = write!(out, "{}Q{index}", if negate { "-" } else { "" });
+            let _ = write!(out, "{}{}", if negate { "-" } else { "" }, QName(index));
         }
     }
 }
@@ -115,6 +116,10 @@ fn axes(out: &mut String, words: &[AxisWord]) {
 }
 
 fn tail(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32]) {
+    tail_with(out, comp, f, m, MWords::default());
+}
+
+fn tail_with(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32], w: MWords) {
     if let Some(c) = comp {
         out.push_str(match c {
             RadiusComp::R0 => " R0",
@@ -125,12 +130,31 @@ fn tail(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32]) 
     if let Some(f) = f {
         feed(out, f);
     }
-    ms(out, m);
+    ms(out, m, w);
 }
 
-fn ms(out: &mut String, m: &[u32]) {
-    for m in m {
+/// ` M…` for each M function, with the words that belong to it ([`MWords`]).
+fn ms(out: &mut String, m: &[u32], w: MWords) {
+    for &m in m {
         let _ = write!(out, " M{m}");
+        match (m, w.mb, w.m128_feed) {
+            (140, Some(mb), _) => mb_words(out, mb),
+            (128, _, Some(f)) => {
+                out.push_str(" F");
+                plain(out, f);
+            }
+            _ => {}
+        }
+    }
+}
+
+fn mb_words(out: &mut String, mb: MoveBack) {
+    match mb {
+        MoveBack::Max => out.push_str(" MB MAX"),
+        MoveBack::Dist(d) => {
+            out.push_str(" MB");
+            value(out, d);
+        }
     }
 }
 
@@ -173,10 +197,10 @@ fn body(out: &mut String, b: &BlockBody) {
         }
         BlockBody::BlkForm(f) => blk_form(out, f),
         BlockBody::ToolCall(t) => tool_call(out, t),
-        BlockBody::L(Line { axes: a, comp, feed: f, m }) => {
+        BlockBody::L(Line { axes: a, comp, feed: f, m, m_words }) => {
             out.push('L');
             axes(out, a);
-            tail(out, *comp, *f, m);
+            tail_with(out, *comp, *f, m, *m_words);
         }
         BlockBody::Cc(m) => motion(out, "CC", m),
         BlockBody::C(m) => motion(out, "C", m),
@@ -198,12 +222,36 @@ fn body(out: &mut String, b: &BlockBody) {
                 feed(out, *f);
             }
         }
-        BlockBody::MFunctions(m) => {
-            for (k, m) in m.iter().enumerate() {
-                let _ = write!(out, "{}M{m}", if k == 0 { "" } else { " " });
+        BlockBody::MFunctions(m, w) => {
+            let start = out.len();
+            ms(out, m, *w);
+            // Without the blank `ms` writes before the first one.
+            if out[start..].starts_with(' ') {
+                out.remove(start);
             }
         }
-        BlockBody::CycleDef(c) => cycle_def(out, c, None),
+        BlockBody::CycleDef(c) => cycle_def(out, "CYCL DEF", c, None),
+        BlockBody::TouchProbe(c) => cycle_def(out, "TCH PROBE", c, None),
+        BlockBody::ToolDef { tool, length, radius } => {
+            out.push_str("TOOL DEF ");
+            tool_ref(out, tool);
+            if let Some(l) = length {
+                out.push_str(" L");
+                value(out, *l);
+            }
+            if let Some(r) = radius {
+                out.push_str(" R");
+                value(out, *r);
+            }
+        }
+        BlockBody::Stop { m } => {
+            out.push_str("STOP");
+            ms(out, m, MWords::default());
+        }
+        BlockBody::QsAssign { index, text } => {
+            let _ = write!(out, "QS{index} = {text}");
+        }
+        BlockBody::Header { text } => out.push_str(text),
         BlockBody::CycleDefOld(c) => {
             let _ = write!(out, "CYCL DEF {}.{}", c.number, c.sub);
             match &c.data {
@@ -238,7 +286,7 @@ fn body(out: &mut String, b: &BlockBody) {
         }
         BlockBody::CyclCall { m } => {
             out.push_str("CYCL CALL");
-            ms(out, m);
+            ms(out, m, MWords::default());
         }
         BlockBody::CyclCallPat { feed: f, m } => {
             out.push_str("CYCL CALL PAT");
@@ -258,7 +306,7 @@ fn body(out: &mut String, b: &BlockBody) {
         BlockBody::Appr(a) => appr_dep(out, "APPR", a),
         BlockBody::Dep(a) => appr_dep(out, "DEP", a),
         BlockBody::FnMath(f) => {
-            let _ = write!(out, "FN {}: Q{} = ", f.op.number(), f.target);
+            let _ = write!(out, "FN {}: {} = ", f.op.number(), QName(f.target));
             match f.b {
                 None => {
                     out.push_str(f.op.word());
@@ -322,11 +370,14 @@ fn body(out: &mut String, b: &BlockBody) {
             let _ = write!(out, "CALL PGM {path}");
         }
         BlockBody::QAssign { target, expr: e, fn0 } => {
-            let _ = write!(out, "{}Q{target} = ", if *fn0 { "FN 0: " } else { "" });
+            let _ = write!(out, "{}{} = ", if *fn0 { "FN 0: " } else { "" }, QName(*target));
             match e {
                 Expr::Num(v) => signed(out, *v),
                 e => expr(out, e),
             }
+        }
+        BlockBody::FnOther { number, text } => {
+            let _ = write!(out, "FN {number}: {text}");
         }
         BlockBody::Unknown { text } | BlockBody::Invalid { text } => out.push_str(text),
     }
@@ -341,16 +392,18 @@ fn blk_form(out: &mut String, f: &BlkForm) {
     axes(out, &f.axes);
 }
 
+fn tool_ref(out: &mut String, t: &ToolRef) {
+    let _ = match t {
+        ToolRef::Number(n) => write!(out, "{n}"),
+        ToolRef::Name(s) => write!(out, "\"{s}\""),
+    };
+}
+
 fn tool_call(out: &mut String, t: &ToolCall) {
     out.push_str("TOOL CALL");
-    match &t.tool {
-        Some(ToolRef::Number(n)) => {
-            let _ = write!(out, " {n}");
-        }
-        Some(ToolRef::Name(s)) => {
-            let _ = write!(out, " \"{s}\"");
-        }
-        None => {}
+    if let Some(tool) = &t.tool {
+        out.push(' ');
+        tool_ref(out, tool);
     }
     if let Some(a) = t.axis {
         out.push(' ');
@@ -432,8 +485,8 @@ fn pattern_item(out: &mut String, item: &PatternItem) {
     out.push(')');
 }
 
-fn cycle_def(out: &mut String, c: &CycleDef, comment: Option<&str>) {
-    let _ = write!(out, "CYCL DEF {}", c.number);
+fn cycle_def(out: &mut String, key: &str, c: &CycleDef, comment: Option<&str>) {
+    let _ = write!(out, "{key} {}", c.number);
     if !c.name.is_empty() {
         out.push(' ');
         out.push_str(&c.name);
@@ -452,7 +505,10 @@ fn cycle_def(out: &mut String, c: &CycleDef, comment: Option<&str>) {
     for (k, p) in c.params.iter().enumerate() {
         let start = out.len();
         let _ = write!(out, "  Q{}=", p.index);
-        value(out, p.value);
+        match p.value {
+            CycleValue::Value(v) => value(out, v),
+            w => out.push_str(w.word().unwrap_or_default()),
+        }
         if let Some(l) = &p.label {
             // Labels start in one column, like on the control's screen.
             while out.len() - start < 16 {
@@ -542,13 +598,8 @@ fn plane(out: &mut String, p: &PlaneBlock) {
         }
         Some(Positioning::Turn { move_back, feed: f }) => {
             out.push_str(" TURN");
-            match move_back {
-                None => {}
-                Some(MoveBack::Max) => out.push_str(" MB MAX"),
-                Some(MoveBack::Dist(d)) => {
-                    out.push_str(" MB");
-                    value(out, d);
-                }
+            if let Some(mb) = move_back {
+                mb_words(out, mb);
             }
             if let Some(f) = f {
                 feed(out, f);
@@ -600,7 +651,7 @@ fn expr(out: &mut String, e: &Expr) {
             let _ = write!(out, "{}", if *v == 0.0 { 0.0 } else { *v });
         }
         Expr::Param(n) => {
-            let _ = write!(out, "Q{n}");
+            let _ = write!(out, "{}", QName(*n));
         }
         Expr::Pi => out.push_str("PI"),
         Expr::Neg(x) => {

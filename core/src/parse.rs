@@ -14,6 +14,7 @@ mod fast;
 mod frame;
 mod function;
 mod labels_q;
+mod lenient;
 mod motion;
 mod pattern;
 mod plane;
@@ -27,6 +28,7 @@ use crate::ast::{AxisWord, AxisWords, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
 use crate::plane::Value;
 
+pub use lenient::Lenient;
 pub(crate) use words::Stop;
 
 /// A finding inside one block, with offsets relative to the block text being read.
@@ -293,6 +295,7 @@ pub struct AcrossBlocks {
     not_ascending_said: bool,
     missing_said: bool,
     prefixed_said: bool,
+    lenient_said: [bool; 2],
 }
 
 impl AcrossBlocks {
@@ -323,6 +326,12 @@ impl AcrossBlocks {
         } else if !std::mem::replace(&mut self.missing_said, true) {
             found(numbers, DiagCode::MissingBlockNumber, Span::new(span.start, span.start));
         }
+        if let Some(body) = block.stored_body()
+            && !matches!(body, BlockBody::CycleDef(_) | BlockBody::TouchProbe(_))
+            && self.lenient_said.contains(&false)
+        {
+            self.lenient(src, span, &mut found);
+        }
         match block.stored_body() {
             Some(BlockBody::BeginPgm { name, .. }) if self.begin.is_none() => self.begin = Some(name.clone()),
             Some(BlockBody::EndPgm { name, .. }) => {
@@ -336,6 +345,21 @@ impl AcrossBlocks {
                 }
             }
             _ => {}
+        }
+    }
+
+    /// The lenient spellings of the block at `span` not yet said in this file.
+    fn lenient(&mut self, src: &str, span: Span, found: &mut impl FnMut(Severity, DiagCode, Span)) {
+        let mut at = span.start;
+        for line in src.get(span.start..span.end).unwrap_or("").split('\n') {
+            let (body, _) = split_comment(line);
+            lenient::first_of_each(body, |kind, a, b| {
+                if !std::mem::replace(&mut self.lenient_said[kind as usize], true) {
+                    let text = body[a..b].to_owned();
+                    found(Severity::Warning, DiagCode::Lenient { kind, text }, Span::new(at + a, at + b));
+                }
+            });
+            at += line.len() + 1;
         }
     }
 
@@ -450,7 +474,8 @@ impl Parser<'_> {
         }
         let body_start = first.start + (body_text.as_ptr() as usize - line_text.as_ptr() as usize);
 
-        let is_cycle = body_text.starts_with("CYCL DEF") && !is_old_cycle(body_text);
+        let probe = body_text.strip_prefix("TCH PROBE").is_some_and(|r| !is_old_cycle(r));
+        let is_cycle = probe || body_text.strip_prefix("CYCL DEF").is_some_and(|r| !is_old_cycle(r));
         // Non-cycle blocks continued with `~` are read as one line: join their words and keep a
         // map from the joined text back to the source for diagnostics.
         let mut segments: Vec<(usize, usize)> = Vec::new();
@@ -484,13 +509,19 @@ impl Parser<'_> {
             Cow::Borrowed(body_text)
         };
 
+        // A decimal comma or a blank after an address letter: read as written canonically
+        // (the same length, so offsets stay); AcrossBlocks says it once per file.
+        let text = match (is_cycle, lenient::normalize(&text)) {
+            (false, Some(canonical)) if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => Cow::Owned(canonical),
+            _ => text,
+        };
         self.cx.base = text.as_ptr() as usize;
         // A cycle's parameter lines follow its header in the source: offsets reach up to there.
         self.cx.len = if is_cycle { last.end - body_start } else { text.len() };
         self.cx.issues.clear();
         let body = if is_cycle {
             let params: Vec<&str> = self.block_lines[1..].iter().map(|l| &src[l.start..l.end]).collect();
-            cycles::cycle_def(&mut self.cx, &text, &params)
+            cycles::cycle_def(&mut self.cx, &text, &params, probe)
         } else {
             parse_body(&mut self.cx, &text)
         };
@@ -530,9 +561,10 @@ fn invalid(text: &str) -> BlockBody {
     BlockBody::Invalid { text: text.to_owned() }
 }
 
-/// `CYCL DEF 7.0 …`: the cycle number has a sub-number.
-fn is_old_cycle(body: &str) -> bool {
-    let rest = words::sp(&body["CYCL DEF".len()..]);
+/// `CYCL DEF 7.0 …`, `TCH PROBE 0.1 …` (`after` follows the keyword): the cycle number has a
+/// sub-number.
+fn is_old_cycle(after: &str) -> bool {
+    let rest = words::sp(after);
     let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
     rest.as_bytes().get(digits) == Some(&b'.')
 }
@@ -545,6 +577,9 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     if let Some(text) = body.strip_prefix('*') {
         return Some(BlockBody::Structure { text: text.trim().to_owned() });
     }
+    if body.starts_with('(') {
+        return Some(BlockBody::Header { text: body.to_owned() });
+    }
     let Ok((rest, kw)) = words::letters(body) else {
         return cx.invalid(body, None);
     };
@@ -553,6 +588,9 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         "BEGIN" | "END" => frame::pgm(cx, body),
         "BLK" => tool::blk_form(cx, body),
         "TOOL" if words::keyword(words::sp(rest), "CALL").is_some() => tool::tool_call(cx, body),
+        "TOOL" if words::keyword(words::sp(rest), "DEF").is_some() => tool::tool_def(cx, body),
+        "STOP" if !digit_follows => motion::stop(cx, rest),
+        "QS" if digit_follows => labels_q::qs_assign(cx, body),
         "L" | "CC" | "C" | "CR" | "CT" | "LP" | "CP" | "RND" | "CHF" if !digit_follows => {
             motion::path(cx, kw, rest)
         }
@@ -567,6 +605,7 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         "LBL" | "CALL" => labels_q::label_or_call(cx, body),
         "FN" => labels_q::fn_block(cx, body),
         "Q" if digit_follows => labels_q::assign(cx, body, false),
+        "QL" | "QR" if digit_follows => labels_q::assign(cx, body, false),
         _ => unknown(cx, body),
     }
 }

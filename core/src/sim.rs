@@ -233,7 +233,7 @@ pub fn simulate_listed(
 fn looked_over(body: &BlockBody) -> bool {
     match body {
         BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::CycleDef(_) | BlockBody::Cc(_) => true,
-        BlockBody::MFunctions(m) => !m.contains(&99),
+        BlockBody::MFunctions(m, _) => !m.contains(&99),
         BlockBody::L(l) => l.axes.is_empty() && !l.m.contains(&99),
         _ => false,
     }

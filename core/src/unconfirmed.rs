@@ -404,6 +404,39 @@ pub const COMP_CORNER_ARC_WITH_NEXT_BLOCK: bool = true;
 /// smaller or larger by the tool radius like any compensated arc. **UNCONFIRMED**.
 pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
+/// A decimal comma (`X-49,000`) and a blank between an address letter and its value
+/// (`L Z 25.000`), as some CAM posts and exporting simulators write: read as the canonical
+/// spelling, said once per kind and file (`parse::Lenient`). **UNCONFIRMED** whether the control
+/// reads them on import.
+pub const IMPORT_LENIENT_SPELLINGS: bool = true;
+
+/// A cycle parameter written `FMAX` (`Q253=FMAX`, `Q208=FMAX`): the cycle's moves at this feed
+/// in mm/min, the largest the cycle dialogs take ("0…99999.999, alternatively FMAX"), so they
+/// are drawn and timed as the cycle's own feed moves. **UNCONFIRMED**: the control moves at
+/// the machine's rapid.
+pub const CYCLE_FMAX_FEED: f64 = 99_999.0;
+
+/// A cycle parameter written `PREDEF`: the value of the global program settings (`GLOBAL DEF`),
+/// which the trainer does not simulate. These are the values it assumes (set-up clearance Q200
+/// 2 mm, 2nd set-up clearance Q204 50 mm, pre-positioning feed Q253 750 mm/min, retraction feed
+/// Q208 rapid, chip-breaking distance Q256 0.2 mm, dwell times Q210/Q211 0 s, overlap factor
+/// Q370 1, climb milling Q351 +1, helical plunge Q366 1); any other parameter written `PREDEF`
+/// stops the run with a message. **UNCONFIRMED**: a real control takes them from its
+/// GLOBAL DEF settings.
+#[must_use]
+pub fn predef(param: u32) -> Option<f64> {
+    Some(match param {
+        200 => 2.0,
+        204 => 50.0,
+        253 => 750.0,
+        208 => CYCLE_FMAX_FEED,
+        256 => 0.2,
+        210 | 211 => 0.0,
+        370 | 351 | 366 => 1.0,
+        _ => return None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,7 +2,7 @@
 //! program gives the same program back.
 
 use proptest::prelude::*;
-use schwenkbar_core::ast::{Axis, AxisWord, BinOp, Expr, Func, Line, RadiusComp};
+use schwenkbar_core::ast::{Axis, AxisWord, BinOp, Expr, Func, Line, MWords, RadiusComp};
 use schwenkbar_core::plane::{
     Feed, PlaneBlock, PlaneDef, Positioning, Selection, Sign, TransformMode, Value,
 };
@@ -40,7 +40,15 @@ fn line() -> impl Strategy<Value = BlockBody> {
     });
     let comp = prop::option::of(prop::sample::select(vec![RadiusComp::R0, RadiusComp::Rl, RadiusComp::Rr]));
     (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(
-        |(a, comp, feed, m)| BlockBody::L(Line { axes: a.into(), comp, feed, m: m.into_boxed_slice() }),
+        |(a, comp, feed, m)| {
+            BlockBody::L(Line {
+                axes: a.into(),
+                comp,
+                feed,
+                m: m.into_boxed_slice(),
+                m_words: MWords::default(),
+            })
+        },
     )
 }
 
@@ -100,7 +108,7 @@ fn body() -> impl Strategy<Value = BlockBody> {
         2 => plane(),
         1 => Just(BlockBody::Empty),
         1 => (0u32..2000, expr(), any::<bool>()).prop_map(|(target, expr, fn0)| BlockBody::QAssign { target, expr, fn0 }),
-        1 => (0u32..100).prop_map(|n| BlockBody::MFunctions(vec![n].into_boxed_slice())),
+        1 => (0u32..100).prop_map(|n| BlockBody::MFunctions(vec![n].into_boxed_slice(), MWords::default())),
     ]
 }
 

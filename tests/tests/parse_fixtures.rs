@@ -150,6 +150,7 @@ fixtures!(ok, check_ok:
     musterprogramm1_as_printed,
     paths,
     plane_all,
+    real_families,
 );
 
 fixtures!(err, check_err:

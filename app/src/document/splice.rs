@@ -77,6 +77,7 @@ fn across_blocks(code: &DiagCode) -> bool {
         DiagCode::BlockNumberNotAscending { .. }
             | DiagCode::MissingBlockNumber
             | DiagCode::BlockNumberPrefixed { .. }
+            | DiagCode::Lenient { .. }
             | DiagCode::PgmNameMismatch { .. }
             | DiagCode::MissingEndPgm
     )
@@ -182,7 +183,12 @@ impl Document {
                 out.push(d);
             }
             across.check(&self.text, b, |severity, code, span| {
-                out.push(Diagnostic::new(severity, code, span, b.line(), b.column()));
+                // Where the parser puts it: its own line and column (a lenient spelling lies
+                // inside the block, maybe on a continuation line).
+                let line = self.line_of(span.start);
+                let from = self.line_start(line);
+                let column = self.text.get(from..span.start).map_or(0, |s| s.chars().count()) as u32 + 1;
+                out.push(Diagnostic::new(severity, code, span, line as u32 + 1, column));
             });
         }
         out.extend(own);

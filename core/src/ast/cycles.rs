@@ -148,9 +148,36 @@ pub struct CycleDef {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CycleParam {
     pub index: u32,
-    pub value: Value,
+    pub value: CycleValue,
     /// The text after `;` without the trailing `~`; a label only, the control ignores it.
     pub label: Option<String>,
+}
+
+/// What stands after `Q…=` in a cycle definition: a number or Q parameter, or one of the words
+/// the control's cycle dialog offers in its place (TNC 640 cycle manual, parameters such as
+/// "Q253 F PRE-POSITIONING … alternatively FMAX, FAUTO, PREDEF").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum CycleValue {
+    Value(Value),
+    /// `PREDEF`: the value of the global program settings (`GLOBAL DEF`).
+    Predef,
+    /// `FMAX`: rapid traverse.
+    Fmax,
+    /// `FAUTO` (CAM systems also write `AUTO`): the feed of the `TOOL CALL`.
+    Fauto,
+}
+
+impl CycleValue {
+    /// The word as the control writes it; `None` for a number or Q parameter.
+    #[must_use]
+    pub fn word(self) -> Option<&'static str> {
+        match self {
+            CycleValue::Value(_) => None,
+            CycleValue::Predef => Some("PREDEF"),
+            CycleValue::Fmax => Some("FMAX"),
+            CycleValue::Fauto => Some("FAUTO"),
+        }
+    }
 }
 
 /// Old-style cycle block `CYCL DEF 7.1 X+10`.

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::{AxisWord, AxisWords};
-use crate::plane::{Feed, Sign, Value};
+use crate::plane::{Feed, MoveBack, Sign, Value};
 
 /// Tool radius compensation `R0`, `RL`, `RR`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
@@ -22,6 +22,17 @@ pub struct Line {
     pub comp: Option<RadiusComp>,
     pub feed: Option<Feed>,
     pub m: Box<[u32]>,
+    pub m_words: MWords,
+}
+
+/// Words that belong to an M function rather than to the block: the retract of `M140`
+/// (`M140 MB MAX`, `M140 MB+50`: "retraction in the tool axis direction", TNC 640 user's
+/// manual) and the feed of `M128` (`M128 F1000`: the largest feed of the compensating moves).
+/// Each is written right after its M function.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct MWords {
+    pub mb: Option<MoveBack>,
+    pub m128_feed: Option<Value>,
 }
 
 /// `PR…`/`PA…` of a polar block, `IPR`/`IPA` incremental.

@@ -4,7 +4,43 @@ use serde::Serialize;
 
 use crate::plane::Value;
 
-/// `FN 1: ADDITION` … `FN 5: SQUARE ROOT` (`FN 4: Q4 = +8 DIV +Q2`, `FN 5: Q20 = SQRT 4`).
+/// The numeric parameters share one index space in the AST (`Value::Param`, `Expr::Param`, a
+/// Q target, the simulator's table): `Q n` is `n`, `QL n` (local to the program) is
+/// `QL_BASE + n`, `QR n` (remanent) is `QR_BASE + n`. The control numbers Q0…Q1999,
+/// QL0…QL499 and QR0…QR499 (TNC 640 user's manual, "Q parameters"), so plain indices stay far
+/// below `QL_BASE`; the parser refuses a larger one. The simulator treats all three kinds the
+/// same (a run is one program from the start).
+pub const QL_BASE: u32 = 1_000_000;
+/// See [`QL_BASE`].
+pub const QR_BASE: u32 = 2_000_000;
+
+/// A parameter index written as the program writes it (`Q5`, `QL5`, `QR5`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct QName(pub u32);
+
+impl QName {
+    /// `("QL", 5)` for `QL5`.
+    #[must_use]
+    pub fn parts(self) -> (&'static str, u32) {
+        match self.0 {
+            n if n >= QR_BASE => ("QR", n - QR_BASE),
+            n if n >= QL_BASE => ("QL", n - QL_BASE),
+            n => ("Q", n),
+        }
+    }
+}
+
+impl std::fmt::Display for QName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (kind, n) = self.parts();
+        write!(f, "{kind}{n}")
+    }
+}
+
+/// `FN 1: ADDITION` … `FN 5: SQUARE ROOT` (`FN 4: Q4 = +8 DIV +Q2`, `FN 5: Q20 = SQRT 4`) and
+/// the trigonometric `FN 6: SINE`, `FN 7: COSINE` (degrees) and `FN 8: ROOT SUM OF SQUARES`
+/// (`Q10 = +5 LEN +4`) of the TNC manuals' Q parameter chapter. (`FN 13: ANGLE` is not
+/// modelled: which operand is the sine the sources at hand do not say.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum FnOp {
     Add,
@@ -12,6 +48,9 @@ pub enum FnOp {
     Mul,
     Div,
     Sqrt,
+    Sin,
+    Cos,
+    Len,
 }
 
 impl FnOp {
@@ -24,7 +63,32 @@ impl FnOp {
             FnOp::Mul => 3,
             FnOp::Div => 4,
             FnOp::Sqrt => 5,
+            FnOp::Sin => 6,
+            FnOp::Cos => 7,
+            FnOp::Len => 8,
         }
+    }
+
+    /// The operation of FN number `n`.
+    #[must_use]
+    pub fn of(n: u32) -> Option<FnOp> {
+        Some(match n {
+            1 => FnOp::Add,
+            2 => FnOp::Sub,
+            3 => FnOp::Mul,
+            4 => FnOp::Div,
+            5 => FnOp::Sqrt,
+            6 => FnOp::Sin,
+            7 => FnOp::Cos,
+            8 => FnOp::Len,
+            _ => return None,
+        })
+    }
+
+    /// Takes one operand, written after the word (`SQRT a`, `SIN a`).
+    #[must_use]
+    pub fn unary(self) -> bool {
+        matches!(self, FnOp::Sqrt | FnOp::Sin | FnOp::Cos)
     }
 
     /// The operator word as the control writes it between the operands (`SQRT` before the one).
@@ -36,11 +100,14 @@ impl FnOp {
             FnOp::Mul => "*",
             FnOp::Div => "DIV",
             FnOp::Sqrt => "SQRT",
+            FnOp::Sin => "SIN",
+            FnOp::Cos => "COS",
+            FnOp::Len => "LEN",
         }
     }
 }
 
-/// `FN n: Q<target> = a op b`; `FN 5` has only `a` (`SQRT a`).
+/// `FN n: Q<target> = a op b`; the unary ones have only `a` (`SQRT a`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FnMath {
     pub op: FnOp,

@@ -256,8 +256,8 @@ fn answer_block(answer: &Answer) -> Result<PlaneBlock<f64>, Text> {
         .map_err(|e| Text::owned(e.message(crate::Lang::De), e.message(crate::Lang::En)))?;
     block.numbers().map_err(|index| {
         Text::owned(
-            format!("Q{index} hat hier keinen Wert: bitte Zahlen eingeben"),
-            format!("Q{index} has no value here: please enter numbers"),
+            format!("{} hat hier keinen Wert: bitte Zahlen eingeben", crate::ast::QName(index)),
+            format!("{} has no value here: please enter numbers", crate::ast::QName(index)),
         )
     })
 }

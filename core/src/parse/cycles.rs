@@ -1,12 +1,14 @@
 //! Cycle definitions and calls.
-//!   def  := CYCL DEF n name [~] { NL Q<n>=value [;label] [~] }   (continuation lines, DOMAIN.md §8)
+//!   def  := CYCL DEF n name [~] { NL Q<n>=(value|PREDEF|FMAX|FAUTO|AUTO) [;label] [~] }   (continuation lines, DOMAIN.md §8)
 //!   old  := CYCL DEF n.0 name | CYCL DEF n.s words
 //!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS X… Y… Z… [F…|FMAX] { Mn }
 //!   (CYCL CALL POS with all three axes: iTNC 530 cycle manual, DOMAIN.md §11)
 
 use super::Cx;
 use super::words::{at_boundary, axis_word, feed, keyword, m_function, sp, uint, word_value};
-use crate::ast::{Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, OldCycleData, OldCycleWord};
+use crate::ast::{
+    Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, CycleValue, OldCycleData, OldCycleWord,
+};
 use crate::diag::{DiagCode, Expected};
 
 /// `DEF` after `CYCL`: `CYCL DEF 9.0` as the control writes it, `CYCL DEF9.0` as some programs
@@ -16,9 +18,15 @@ fn def(i: &str) -> Option<&str> {
 }
 
 /// `CYCL DEF 200 BOHREN` (without its `~`) and its parameter lines (whole source lines).
-pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<BlockBody> {
-    let Some(rest) = keyword(header, "CYCL").map(sp).and_then(def).map(sp) else {
-        return cx.invalid(header, Some(Expected::Nc("CYCL DEF")));
+/// With `probe`, the same for a touch-probe cycle `TCH PROBE 400 BASISDREHUNG ~`.
+pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool) -> Option<BlockBody> {
+    let rest = if probe {
+        keyword(header, "TCH").map(sp).and_then(|r| keyword(r, "PROBE")).map(sp)
+    } else {
+        keyword(header, "CYCL").map(sp).and_then(def).map(sp)
+    };
+    let Some(rest) = rest else {
+        return cx.invalid(header, Some(Expected::Nc(if probe { "TCH PROBE" } else { "CYCL DEF" })));
     };
     let (rest, number) = match uint(rest) {
         Ok(ok) => ok,
@@ -40,9 +48,21 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<Bl
         let Some(r) = sp(r).strip_prefix('=') else {
             return cx.invalid(sp(r), Some(Expected::Nc("=")));
         };
-        let (r, value) = match word_value(sp(r)) {
-            Ok(ok) => ok,
-            Err(e) => return cx.fail(e),
+        let r = sp(r);
+        let word = [
+            ("PREDEF", CycleValue::Predef),
+            ("FMAX", CycleValue::Fmax),
+            ("FAUTO", CycleValue::Fauto),
+            ("AUTO", CycleValue::Fauto),
+        ]
+        .into_iter()
+        .find_map(|(w, v)| keyword(r, w).map(|rest| (rest, v)));
+        let (r, value) = match word {
+            Some(ok) => ok,
+            None => match word_value(r) {
+                Ok((rest, v)) => (rest, CycleValue::Value(v)),
+                Err(e) => return cx.fail(e),
+            },
         };
         if !sp(r).is_empty() {
             return cx.invalid(sp(r), None);
@@ -57,7 +77,8 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str]) -> Option<Bl
         }
         out.push(CycleParam { index, value, label: label.filter(|l| !l.is_empty()).map(str::to_owned) });
     }
-    Some(BlockBody::CycleDef(Box::new(CycleDef { number, name, params: out })))
+    let def = Box::new(CycleDef { number, name, params: out });
+    Some(if probe { BlockBody::TouchProbe(def) } else { BlockBody::CycleDef(def) })
 }
 
 /// `CYCL CALL …` and old-style `CYCL DEF 7.1 …`.
@@ -129,7 +150,7 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         Err(e) => return cx.fail(e),
     };
     let Some(after) = after.strip_prefix('.') else {
-        return cycle_def(cx, body, &[]);
+        return cycle_def(cx, body, &[], false);
     };
     let (after, sub) = match uint(after) {
         Ok(ok) => ok,
@@ -139,15 +160,16 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let data = if sub == 0 {
         OldCycleData::Name(text.to_owned())
     } else if matches!(number, 7 | 8 | 10 | 11 | 19) {
-        OldCycleData::Words(old_words(cx, sp(after))?)
+        OldCycleData::Words(old_words(cx, sp(after), number == 8)?)
     } else {
         OldCycleData::Text(text.to_owned())
     };
     Some(BlockBody::CycleDefOld(Box::new(CycleDefOld { number, sub, data })))
 }
 
-/// Words of cycles 7 (datum), 8 (mirror), 10 (rotation), 11 (scaling), 19 (working plane).
-fn old_words(cx: &mut Cx, mut i: &str) -> Option<Vec<OldCycleWord>> {
+/// Words of cycles 7 (datum), 8 (mirror), 10 (rotation), 11 (scaling), 19 (working plane); an
+/// axis letter alone is a mirrored axis only in cycle 8 (`mirror`), elsewhere `X + 0` is `X+0`.
+fn old_words(cx: &mut Cx, mut i: &str, mirror: bool) -> Option<Vec<OldCycleWord>> {
     let mut out = Vec::new();
     while !i.is_empty() {
         let (r, w) = if let Some(r) = i.strip_prefix("IROT").or_else(|| i.strip_prefix("ROT")) {
@@ -166,7 +188,9 @@ fn old_words(cx: &mut Cx, mut i: &str) -> Option<Vec<OldCycleWord>> {
                 Ok((r, v)) => (r, OldCycleWord::Feed(v)),
                 Err(e) => return cx.fail(e),
             }
-        } else if let Some((r, a)) = Axis::ALL.iter().find_map(|&a| keyword(i, a.as_str()).map(|r| (r, a))) {
+        } else if let Some((r, a)) =
+            Axis::ALL.iter().find_map(|&a| keyword(i, a.as_str()).map(|r| (r, a))).filter(|_| mirror)
+        {
             (r, OldCycleWord::MirrorAxis(a))
         } else {
             match axis_word(i) {

@@ -2,13 +2,16 @@
 //!   lbl := LBL (n|"name")    call := CALL LBL (n|"name") [REP m[/m]] | CALL PGM path
 //!   q   := [FN 0:] Q<n> = expr      expr := term {(+|-) term}   term := unary {(*|/) unary}
 //!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
-//!   fn  := FN (1|2|3|4): Q<n> = value (+|-|*|DIV) value | FN 5: Q<n> = SQRT value
+//!   fn  := FN (1|2|3|4|8): Q<n> = value (+|-|*|DIV|LEN) value | FN (5|6|7): Q<n> = (SQRT|SIN|COS) value
 //!        | FN (9|10|11|12): IF value (EQU|NE|GT|LT) value GOTO LBL (n|"name")
+//!        | FN n: text    (every other FN function, kept verbatim)
 //! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
 //! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)
 
 use super::Cx;
-use super::words::{Step, failure, keyword, number, quoted, sp, token, uint, word_value};
+use super::words::{
+    Step, at_boundary, failure, keyword, number, q_param, quoted, sp, token, uint, word_value,
+};
 use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label};
 use crate::diag::{DiagCode, Expected};
 
@@ -27,14 +30,25 @@ fn label(i: &str) -> Step<'_, Label> {
     failure(i, Expected::LabelNumberOrName)
 }
 
+/// The keyword `LBL` before a label: `LBL 1` as the control writes it, `LBL1` and `LBL"name"`
+/// as some programs do.
+fn lbl(i: &str) -> Option<&str> {
+    let r = i.strip_prefix("LBL")?;
+    if at_boundary(r) {
+        Some(sp(r))
+    } else {
+        r.starts_with(|c: char| c.is_ascii_digit() || c == '"').then_some(r)
+    }
+}
+
 /// `LBL …`, `CALL LBL …`, `CALL PGM …`.
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    if let Some(r) = keyword(body, "LBL") {
-        return match label(sp(r)) {
+    if let Some(r) = lbl(body) {
+        return match label(r) {
             Ok((rest, l)) => end(cx, rest, BlockBody::Lbl(l)),
             Err(e) => cx.fail(e),
         };
@@ -46,7 +60,7 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             Err(e) => cx.fail(e),
         };
     }
-    let Some(r) = keyword(r, "LBL").map(sp) else { return super::unknown(cx, body) };
+    let Some(r) = lbl(r) else { return super::unknown(cx, body) };
     let (r, l) = match label(r) {
         Ok(ok) => ok,
         Err(e) => return cx.fail(e),
@@ -73,8 +87,8 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     end(cx, rest, BlockBody::CallLbl { label: l, rep })
 }
 
-/// `FN 0: Q1 = +5`, the arithmetic `FN 1..5` and the jumps `FN 9..12`; other FN functions are
-/// kept as unknown blocks.
+/// `FN 0: Q1 = +5`, the arithmetic `FN 1..8` and the jumps `FN 9..12`; every other FN function
+/// is kept with its text ([`BlockBody::FnOther`]).
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
@@ -83,36 +97,31 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     // `FN 0:` as the control writes it, `FN0:` as CAM systems do.
     let Some(r) = body.strip_prefix("FN").map(sp) else { return super::unknown(cx, body) };
     let Ok((rest, n)) = uint(r) else { return super::unknown(cx, body) };
-    if !matches!(n, 0..=5 | 9..=12) {
-        return super::unknown(cx, body);
-    }
     let Some(q) = sp(rest).strip_prefix(':').map(sp) else {
         return cx.invalid(sp(rest), Some(Expected::Nc(":")));
     };
     match n {
         0 => assign(cx, q, true),
         9..=12 => jump(cx, n, q),
-        _ => math(cx, n, q),
+        n if FnOp::of(n).is_some() => math(cx, n, q),
+        _ if q.is_empty() => cx.invalid(q, Some(Expected::Nc("FN n: …"))),
+        _ => Some(BlockBody::FnOther { number: n, text: q.to_owned() }),
     }
 }
 
 /// `Q<n> = a op b` (`FN 1..4`) or `Q<n> = SQRT a` (`FN 5`).
 fn math(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
-    let op = match n {
-        1 => FnOp::Add,
-        2 => FnOp::Sub,
-        3 => FnOp::Mul,
-        4 => FnOp::Div,
-        _ => FnOp::Sqrt,
-    };
-    let Some(q) = i.strip_prefix('Q') else { return cx.invalid(i, Some(Expected::Nc("Q"))) };
-    let (r, target) = match uint(q) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
+    let Some(op) = FnOp::of(n) else { return cx.invalid(i, None) };
+    let (r, target) = match q_param(i) {
+        Some(Ok(ok)) => ok,
+        Some(Err(e)) => return cx.fail(e),
+        None => return cx.invalid(i, Some(Expected::Nc("Q|QL|QR"))),
     };
     let Some(r) = sp(r).strip_prefix('=').map(sp) else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
-    if op == FnOp::Sqrt {
-        let Some(r) = keyword(r, "SQRT").map(sp) else { return cx.invalid(r, Some(Expected::Nc("SQRT"))) };
+    if op.unary() {
+        let Some(r) = keyword(r, op.word()).map(sp) else {
+            return cx.invalid(r, Some(Expected::Nc(op.word())));
+        };
         return match word_value(r) {
             Ok((rest, a)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: None }))),
             Err(e) => cx.fail(e),
@@ -156,7 +165,7 @@ fn jump(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
         Err(e) => return cx.fail(e),
     };
     let r = sp(r);
-    let Some(r) = keyword(r, "GOTO").map(sp).and_then(|r| keyword(r, "LBL")).map(sp) else {
+    let Some(r) = keyword(r, "GOTO").map(sp).and_then(lbl) else {
         return cx.invalid(r, Some(Expected::Nc("GOTO LBL")));
     };
     match label(r) {
@@ -171,16 +180,28 @@ fn jump(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn assign(cx: &mut Cx, body: &str, fn0: bool) -> Option<BlockBody> {
-    let Some(q) = body.strip_prefix('Q') else { return cx.invalid(body, Some(Expected::Nc("Q"))) };
-    let (r, target) = match uint(q) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
+    let (r, target) = match q_param(body) {
+        Some(Ok(ok)) => ok,
+        Some(Err(e)) => return cx.fail(e),
+        None => return cx.invalid(body, Some(Expected::Nc("Q|QL|QR"))),
     };
     let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
     match expr(sp(r), 0) {
         Ok((rest, e)) => end(cx, rest, BlockBody::QAssign { target, expr: e, fn0 }),
         Err(e) => cx.fail(e),
     }
+}
+
+/// `QS<n> = …`: a string parameter, its right side kept as written.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn qs_assign(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let (r, index) = match body.strip_prefix("QS").map(uint) {
+        Some(Ok(ok)) => ok,
+        Some(Err(e)) => return cx.fail(e),
+        None => return cx.invalid(body, Some(Expected::Nc("QS"))),
+    };
+    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
+    Some(BlockBody::QsAssign { index, text: r.trim().to_owned() })
 }
 
 fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
@@ -281,10 +302,10 @@ fn atom<'a>(i: &'a str, depth: u32, b: &mut Budget) -> Step<'a, Expr> {
             let (r, v) = number(i)?;
             Ok((r, Expr::Num(v)))
         }
-        Some(b'Q') => {
-            let (r, n) = uint(&i[1..])?;
-            Ok((r, Expr::Param(n)))
-        }
+        Some(b'Q') => match q_param(i) {
+            Some(q) => q.map(|(r, n)| (r, Expr::Param(n))),
+            None => failure(i, Expected::Operand),
+        },
         Some(b'(') => {
             let (r, e) = expr_in(sp(&i[1..]), depth + 1, b)?;
             match sp(r).strip_prefix(')') {

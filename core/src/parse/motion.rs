@@ -1,12 +1,13 @@
 //! Path blocks: straight lines, arcs, polar moves, rounding and chamfer, lone M functions.
 //!   path := (L|CC|C|CR|CT|LP|CP) { [I]axis±v | [I]PR v | [I]PA v | R v | DR± | R0|RL|RR | feed | Mn }
 //!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
+//!   after M140: [MB (MAX|v)]      after M128: [F v]
 
 use super::Cx;
 use super::words::{Step, Stop, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
-use crate::ast::{BlockBody, Line, Motion, PolarWord, RadiusComp};
+use crate::ast::{BlockBody, Line, MWords, Motion, PolarWord, RadiusComp};
 use crate::diag::{DiagCode, Expected};
-use crate::plane::{Feed, Sign, Value};
+use crate::plane::{Feed, MoveBack, Sign, Value};
 
 const EXPECTED: &str = "X|Y|Z|A|B|C|R0|RL|RR|F|M";
 
@@ -20,6 +21,7 @@ struct Words<'a> {
     comp: Option<(RadiusComp, &'a str)>,
     feed: Option<(Feed, &'a str)>,
     first_m: Option<&'a str>,
+    m_words: MWords,
 }
 
 fn polar<'a>(i: &'a str, key: &'static str) -> Option<Step<'a, PolarWord>> {
@@ -86,7 +88,10 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
         if let Ok((r, m)) = m_function(i) {
             w.first_m.get_or_insert(at);
             cx.m.push(m);
-            i = sp(r);
+            i = match m_args(m, r, &mut w.m_words) {
+                Ok(r) => sp(r),
+                Err(e) => return cx.fail(e),
+            };
             continue;
         }
         match axis_word(i) {
@@ -184,7 +189,8 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
     let comp = w.comp.map(|c| c.0);
     let feed = w.feed.map(|f| f.0);
     if kw == "L" {
-        return Some(BlockBody::L(Line { axes: cx.take_line_axes(), comp, feed, m: cx.take_m() }));
+        let m_words = w.m_words;
+        return Some(BlockBody::L(Line { axes: cx.take_line_axes(), comp, feed, m: cx.take_m(), m_words }));
     }
     let motion = Box::new(Motion {
         axes: cx.take_axes(),
@@ -239,12 +245,28 @@ fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
     })
 }
 
-/// A block of only M functions (`M30`, `M99`).
+/// `STOP` with optional M functions (`STOP M0`); `rest` follows the keyword.
+pub(super) fn stop(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
+    if !at_boundary(rest) {
+        return super::unknown(cx, rest);
+    }
+    let rest = sp(rest);
+    if rest.is_empty() {
+        return Some(BlockBody::Stop { m: Box::default() });
+    }
+    match m_only(cx, rest)? {
+        BlockBody::MFunctions(m, _) => Some(BlockBody::Stop { m }),
+        _ => None,
+    }
+}
+
+/// A block of only M functions (`M30`, `M99`, `M140 MB MAX`).
 pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     cx.m.clear();
+    let mut words = MWords::default();
     let mut i = body;
     while !i.is_empty() {
-        match m_function(i) {
+        match m_function(i).and_then(|(r, m)| m_args(m, r, &mut words).map(|r| (r, m))) {
             Ok((r, m)) => {
                 cx.m.push(m);
                 i = sp(r);
@@ -252,5 +274,35 @@ pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             Err(e) => return cx.fail(e),
         }
     }
-    Some(BlockBody::MFunctions(cx.take_m()))
+    Some(BlockBody::MFunctions(cx.take_m(), words))
+}
+
+/// The words after M function `m` that belong to it ([`MWords`]): `MB MAX`, `MB+50` or `MB 50`
+/// after `M140`; `F…` after `M128` (so `L X+1 F500 M128 F1000` has both feeds). The rest.
+fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a>> {
+    let t = sp(i);
+    match m {
+        140 => {
+            let Some(after) = t.strip_prefix("MB") else { return Ok(i) };
+            let v = sp(after);
+            if let Some(r) = keyword(v, "MAX") {
+                words.mb = Some(MoveBack::Max);
+                return Ok(r);
+            }
+            let (r, d) = word_value(v).map_err(Stop::cut)?;
+            words.mb = Some(MoveBack::Dist(d));
+            Ok(r)
+        }
+        128 if t.starts_with('F') && keyword(t, "FMAX").is_none() => {
+            let (r, f) = feed(t)?;
+            match f {
+                Feed::Value(v) => {
+                    words.m128_feed = Some(v);
+                    Ok(r)
+                }
+                _ => Ok(i),
+            }
+        }
+        _ => Ok(i),
+    }
 }

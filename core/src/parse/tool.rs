@@ -1,6 +1,7 @@
 //! Blank form and tool call.
 //!   blk  := BLK FORM 0.1 (X|Y|Z) axis… | BLK FORM 0.2 [I]axis…
 //!   tool := TOOL CALL [n|"name"] [X|Y|Z] { S v | F v | DL v | DR v | DR2 v }
+//!   def  := TOOL DEF (n|"name") [L v] [R v]
 
 use super::Cx;
 use super::words::{axis_word, keyword, quoted, sp, uint, word_value};
@@ -54,6 +55,49 @@ pub(super) fn blk_form(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         }
     }
     Some(BlockBody::BlkForm(Box::new(BlkForm { part, tool_axis: axis, axes: cx.take_axes() })))
+}
+
+/// `TOOL DEF 2 L+75 R+5`, `TOOL DEF 0`, `TOOL DEF "name"`.
+pub(super) fn tool_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    let Some(mut i) = keyword(body, "TOOL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
+        return super::unknown(cx, body);
+    };
+    let tool = if i.starts_with('"') {
+        match quoted(i) {
+            Ok((r, name)) => {
+                i = sp(r);
+                ToolRef::Name(name.to_owned())
+            }
+            Err(e) => return cx.fail(e),
+        }
+    } else {
+        match uint(i) {
+            Ok((r, n)) => {
+                i = sp(r);
+                ToolRef::Number(n)
+            }
+            Err(_) => return cx.invalid(i, Some(Expected::LabelNumberOrName)),
+        }
+    };
+    let (mut length, mut radius) = (None, None);
+    while !i.is_empty() {
+        let slot = match i.as_bytes()[0] {
+            b'L' => &mut length,
+            b'R' => &mut radius,
+            _ => return cx.invalid(i, Some(Expected::Nc("L|R"))),
+        };
+        match word_value(&i[1..]) {
+            Ok((r, v)) => {
+                if slot.replace(v).is_some() {
+                    cx.error(i, i.len() - r.len(), DiagCode::Duplicate { word: i[..1].to_owned() });
+                    return None;
+                }
+                i = sp(r);
+            }
+            Err(e) => return cx.fail(e),
+        }
+    }
+    Some(BlockBody::ToolDef { tool, length, radius })
 }
 
 /// `TOOL CALL 16 Z S5000 F1000`, `TOOL CALL "name" Z S50 DL+0 DR+0`.

@@ -1,5 +1,5 @@
 //! The words every block family shares: blanks, numbers, values, feeds, M functions.
-//!   value  := [+|-] ( Q<digits> | <digits>[.<digits>] | .<digits> )
+//!   value  := [+|-] ( (Q|QL|QR)<digits> | <digits>[.<digits>] | .<digits> )
 //!   feed   := FMAX | F MAX | F AUTO | F value
 
 use crate::diag::Expected;
@@ -111,14 +111,31 @@ pub(crate) fn value(i: &str) -> Step<'_, Value> {
         Some(b'+') => (&i[1..], false),
         _ => (i, false),
     };
-    if let Some(q) = after_sign.strip_prefix('Q')
-        && q.as_bytes().first().is_some_and(u8::is_ascii_digit)
-    {
-        let (rest, index) = uint(q)?;
+    if let Some(q) = q_param(after_sign) {
+        let (rest, index) = q?;
         return Ok((rest, Value::Param { index, negate }));
     }
     let (rest, v) = number(i)?;
     Ok((rest, Value::Number(v)))
+}
+
+/// A numeric parameter `Q<n>`, `QL<n>` or `QR<n>` as its index in the AST
+/// ([`crate::ast::QL_BASE`]); `None` if `i` starts none of them.
+pub(crate) fn q_param(i: &str) -> Option<Step<'_, u32>> {
+    let after = i.strip_prefix('Q')?;
+    let (digits, base, max) = match after.as_bytes().first() {
+        Some(b'L') => (&after[1..], crate::ast::QL_BASE, 499),
+        Some(b'R') => (&after[1..], crate::ast::QR_BASE, 499),
+        _ => (after, 0, crate::ast::QL_BASE - 1),
+    };
+    if !digits.as_bytes().first().is_some_and(u8::is_ascii_digit) {
+        return None;
+    }
+    Some(match uint(digits) {
+        Ok((rest, n)) if n <= max => Ok((rest, base + n)),
+        Ok(_) => failure(i, Expected::Nc("Q0…Q1999|QL0…QL499|QR0…QR499")),
+        Err(e) => Err(e),
+    })
 }
 
 /// A value that must end its word (`SPA+0 ` but not `SPA+0X`).

@@ -4,6 +4,7 @@ use crate::Lang;
 use crate::number::prose;
 use serde::Serialize;
 
+use crate::ast::QName;
 use crate::lang::Text;
 use crate::orientation::PlaneError;
 use crate::solve::SolveError;
@@ -29,6 +30,9 @@ pub enum SimErrorCode {
     CycleParamsMissing { cycle: u32 },
     /// A cycle parameter the simulated cycle needs is missing.
     CycleParamMissing { cycle: u32, param: u32 },
+    /// A cycle parameter written `PREDEF` or `FAUTO` whose value the run does not know (no
+    /// global default for it, no feed in the TOOL CALL).
+    CycleWordUnknown { cycle: u32, param: u32, word: &'static str },
     /// A machining cycle with a positive depth Q201.
     DepthSign { cycle: u32, value: f64 },
     /// The tool is larger than the bore, pocket or slot the cycle mills (`size`: its diameter or
@@ -52,6 +56,8 @@ pub enum SimErrorCode {
     BlockBudget { steps: usize },
     /// A block the parser could not read.
     InvalidBlock,
+    /// `FN 14: ERROR = n`: the program itself stops with an error message.
+    FnError { text: String },
     /// `C`, `LP` or `CP` with no circle centre / pole (`CC`) before it.
     NoCircleCentre { word: &'static str },
     /// `C`: the end point is not on the circle around CC through the start point.
@@ -136,9 +142,9 @@ impl SimErrorCode {
             SimErrorCode::UndefinedQ { .. } => t("Q-Parameter nicht definiert", "Q parameter not defined"),
             SimErrorCode::Arithmetic { .. } => t("Rechenfehler", "Arithmetical error"),
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
-            SimErrorCode::CycleParamsMissing { .. } | SimErrorCode::CycleParamMissing { .. } => {
-                t("Zyklusparameter fehlt", "Cycle parameter missing")
-            }
+            SimErrorCode::CycleParamsMissing { .. }
+            | SimErrorCode::CycleParamMissing { .. }
+            | SimErrorCode::CycleWordUnknown { .. } => t("Zyklusparameter fehlt", "Cycle parameter missing"),
             SimErrorCode::DepthSign { .. } => t("Vorzeichen Tiefe falsch", "Depth sign wrong"),
             SimErrorCode::ToolTooLarge { .. } => t("Werkzeug-Radius zu groß", "Tool radius too large"),
             SimErrorCode::ToolTooSmall { .. } => t("Werkzeug-Radius zu klein", "Tool radius too small"),
@@ -157,6 +163,7 @@ impl SimErrorCode {
                 t("Programmlauf abgebrochen: Satzbudget erschöpft", "Run stopped: block budget exhausted")
             }
             SimErrorCode::InvalidBlock => t("Satz fehlerhaft", "Block syntax error"),
+            SimErrorCode::FnError { .. } => t("FN 14: Fehlermeldung", "FN 14: error message"),
             SimErrorCode::NoCircleCentre { .. } => {
                 t("Kreismittelpunkt undefiniert", "Circle center undefined")
             }
@@ -199,14 +206,19 @@ impl SimErrorCode {
         match self {
             SimErrorCode::Solve { error } => error.detail(),
             SimErrorCode::Plane { error } => error.message(),
-            SimErrorCode::UndefinedQ { index } => {
-                t(format!("Q{index} wurde noch kein Wert zugewiesen"), format!("Q{index} has no value yet"))
-            }
+            SimErrorCode::UndefinedQ { index } => t(
+                format!("{} wurde noch kein Wert zugewiesen", QName(*index)),
+                format!("{} has no value yet", QName(*index)),
+            ),
             SimErrorCode::Arithmetic { index } => t(
                 format!(
-                    "Q{index}: das Ergebnis ist keine Zahl (Division durch 0, Wurzel aus negativer Zahl …)"
+                    "{}: das Ergebnis ist keine Zahl (Division durch 0, Wurzel aus negativer Zahl …)",
+                    QName(*index)
                 ),
-                format!("Q{index}: the result is not a number (division by 0, root of a negative number, …)"),
+                format!(
+                    "{}: the result is not a number (division by 0, root of a negative number, …)",
+                    QName(*index)
+                ),
             ),
             SimErrorCode::NoCycle => {
                 t("M99/CYCL CALL ohne vorheriges CYCL DEF", "M99/CYCL CALL without a preceding CYCL DEF")
@@ -219,6 +231,22 @@ impl SimErrorCode {
                 format!("CYCL DEF {cycle}: Q{param} fehlt"),
                 format!("CYCL DEF {cycle}: Q{param} is missing"),
             ),
+            SimErrorCode::CycleWordUnknown { cycle, param, word } => match *word {
+                "PREDEF" => t(
+                    format!(
+                        "CYCL DEF {cycle}: Q{param}=PREDEF, aber kein Wert der globalen Programmeinstellungen \
+                         (GLOBAL DEF) bekannt: bitte eine Zahl eingeben"
+                    ),
+                    format!(
+                        "CYCL DEF {cycle}: Q{param}=PREDEF, but no value of the global program settings \
+                         (GLOBAL DEF) is known: please enter a number"
+                    ),
+                ),
+                _ => t(
+                    format!("CYCL DEF {cycle}: Q{param}={word}, aber kein Vorschub im TOOL CALL"),
+                    format!("CYCL DEF {cycle}: Q{param}={word}, but no feed in the TOOL CALL"),
+                ),
+            },
             SimErrorCode::DepthSign { cycle, value } => t(
                 format!("Zyklus {cycle}: Tiefe Q201 = {} ist positiv", prose(*value, Some(4), Lang::De)),
                 format!("Cycle {cycle}: depth Q201 = {} is positive", prose(*value, Some(4), Lang::En)),
@@ -278,6 +306,10 @@ impl SimErrorCode {
             SimErrorCode::InvalidBlock => {
                 t("Der Satz konnte nicht gelesen werden", "The block could not be read")
             }
+            SimErrorCode::FnError { text } => t(
+                format!("Das Programm hält mit seiner eigenen Fehlermeldung an: FN 14: {text}"),
+                format!("The program stops with its own error message: FN 14: {text}"),
+            ),
             SimErrorCode::NoCircleCentre { word } => t(
                 format!("{word} braucht einen Kreismittelpunkt/Pol: vorher CC programmieren"),
                 format!("{word} needs a circle centre/pole: program CC before it"),

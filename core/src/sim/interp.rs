@@ -94,6 +94,8 @@ pub(crate) struct Interp {
     tf: Transforms,
     pub plane: Option<Arc<ActivePlane>>,
     q: BTreeMap<u32, f64>,
+    /// `TOOL DEF n L… R…` of the program: length and radius (each if written) for `TOOL CALL n`.
+    tool_defs: Vec<(ToolRef, Option<f64>, Option<f64>)>,
     cycle: Option<StoredCycle>,
     calls: Vec<usize>,
     reps: Vec<(usize, u32)>,
@@ -222,6 +224,7 @@ impl Interp {
             tf: Transforms::default(),
             plane: None,
             q: BTreeMap::new(),
+            tool_defs: Vec::new(),
             cycle: None,
             calls: Vec::new(),
             reps: Vec::new(),
@@ -374,7 +377,52 @@ impl Interp {
         // A prepared rounding belongs to the block right after the element that prepared it.
         let pending_corner = self.corner.take();
         match &*body {
-            BlockBody::BeginPgm { .. } | BlockBody::Empty | BlockBody::Structure { .. } => {}
+            BlockBody::BeginPgm { unit, .. } => {
+                // Q113: the unit of the program (preassigned, TNC 410 user's manual "Preassigned
+                // Q parameters": 0 mm, 1 inch).
+                self.q.insert(113, if *unit == crate::ast::Unit::Inch { 1.0 } else { 0.0 });
+            }
+            BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::Header { .. } => {}
+            BlockBody::ToolDef { tool, length, radius } => {
+                let l = length.map(|v| self.value(&v)).transpose()?;
+                let r = radius.map(|v| self.value(&v)).transpose()?;
+                self.tool_defs.retain(|(t, ..)| t != tool);
+                self.tool_defs.push((tool.clone(), l, r));
+                note(&mut rec, || {
+                    Text::new(
+                        "TOOL DEF: Werkzeug im Programm definiert",
+                        "TOOL DEF: tool defined in the program",
+                    )
+                });
+            }
+            BlockBody::Stop { m } => {
+                self.spindle_m(m);
+                note(&mut rec, || {
+                    Text::new(
+                        "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
+                        "STOP: the control stops here (continue with NC start); the trainer runs on",
+                    )
+                });
+                self.end_m(m);
+            }
+            BlockBody::QsAssign { index, .. } => {
+                let n = *index;
+                note(&mut rec, || {
+                    Text::owned(
+                        format!("QS{n}: String-Parameter werden nicht simuliert"),
+                        format!("QS{n}: string parameters are not simulated"),
+                    )
+                });
+            }
+            BlockBody::TouchProbe(d) => {
+                let n = d.number;
+                note(&mut rec, || {
+                    Text::owned(
+                        format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
+                        format!("TCH PROBE {n}: touch-probe cycle not simulated"),
+                    )
+                });
+            }
             BlockBody::EndPgm { .. } => {
                 self.ended = true;
                 self.pc = cx.program.blocks.len();
@@ -383,6 +431,9 @@ impl Interp {
             BlockBody::ToolCall(t) => self.tool_call(cx, t, &mut rec)?,
             BlockBody::L(line) => {
                 self.line(cx, &mut rec, idx, line)?;
+                if let Some(mb) = line.m_words.mb {
+                    self.m140(cx, &mut rec, idx, mb)?;
+                }
                 self.modal_call(cx, &mut rec, idx, line)?;
             }
             BlockBody::Cc(m) => {
@@ -420,9 +471,12 @@ impl Interp {
             }
             BlockBody::FnMath(f) => self.fn_math(f)?,
             BlockBody::FnJump(j) => self.fn_jump(cx, j)?,
-            BlockBody::MFunctions(m) => {
+            BlockBody::MFunctions(m, w) => {
                 self.spindle_m(m);
                 m_note(&mut rec, m);
+                if let Some(mb) = w.mb {
+                    self.m140(cx, &mut rec, idx, mb)?;
+                }
                 if m.contains(&99) {
                     self.call_cycle(cx, &mut rec, idx)?;
                 }
@@ -482,6 +536,18 @@ impl Interp {
                 })
             }
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
+            BlockBody::FnOther { number: 14, text } => {
+                return Err(SimErrorCode::FnError { text: text.clone() });
+            }
+            BlockBody::FnOther { number, text } => {
+                let (n, t) = (*number, text.clone());
+                note(&mut rec, || {
+                    Text::owned(
+                        format!("FN {n}: {t} – wird nicht simuliert"),
+                        format!("FN {n}: {t} – not simulated"),
+                    )
+                })
+            }
             BlockBody::Unknown { text } => {
                 let t = text.clone();
                 note(&mut rec, || {
@@ -505,6 +571,9 @@ impl Interp {
             FnOp::Mul => a * b,
             FnOp::Div => a / b,
             FnOp::Sqrt => a.sqrt(),
+            FnOp::Sin => a.to_radians().sin(),
+            FnOp::Cos => a.to_radians().cos(),
+            FnOp::Len => a.hypot(b),
         };
         self.set_q(f.target, v)
     }

@@ -97,6 +97,10 @@ pub enum Decision {
     /// [`PATTERN_CYCLE_END`](super::PATTERN_CYCLE_END), [`CYCL_CALL_POS_CLEARANCE`](super::CYCL_CALL_POS_CLEARANCE), [`M89_CALLS_AT_ITS_BLOCK`](super::M89_CALLS_AT_ITS_BLOCK),
     /// [`CYCL_CALL_PAT_FEED_BETWEEN_POINTS`](super::CYCL_CALL_PAT_FEED_BETWEEN_POINTS)).
     PatternConventions,
+    /// Reading programs written elsewhere: [`IMPORT_BLOCK_NUMBERS_ARE_WARNINGS`](super::IMPORT_BLOCK_NUMBERS_ARE_WARNINGS),
+    /// [`IMPORT_LENIENT_SPELLINGS`](super::IMPORT_LENIENT_SPELLINGS),
+    /// [`CYCLE_FMAX_FEED`](super::CYCLE_FMAX_FEED), [`predef`](super::predef).
+    ImportReadings,
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`](super::ARC_DIRECTION_WITHOUT_DR), [`CIRCLE_END_TOLERANCE`](super::CIRCLE_END_TOLERANCE),
     /// [`ARC_TOOL_AXIS_LINEAR`](super::ARC_TOOL_AXIS_LINEAR), [`CP_IPA_DIRECTION_FROM_DR`](super::CP_IPA_DIRECTION_FROM_DR).
     ArcConventions,
@@ -112,7 +116,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 42] = [
+    pub const ALL: [Decision; 43] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -151,6 +155,7 @@ impl Decision {
         Decision::Q120OnlySpatial,
         Decision::ArcConventions,
         Decision::CycleConventions,
+        Decision::ImportReadings,
         Decision::PatternConventions,
         Decision::CompensationConventions,
         Decision::DialogWording,
@@ -320,6 +325,10 @@ impl Decision {
             Decision::PatternConventions => Text::new(
                 "Muster und Zyklusaufrufe: PATTERN DEF PAT/FRAME Zeile für Zeile, jede zweite rückwärts (wie Zyklus 221); Zyklus 220 mit Q247 = 0: Vollkreis in Q241 gleiche Schritte, sonst Start- und Endwinkel eingeschlossen; nach dem letzten Punkt von 220/221 auf den 2. Sicherheitsabstand; CYCL CALL POS unterhalb der Oberfläche: zuerst auf den 2. Sicherheitsabstand; M89 ruft den Zyklus schon in seinem eigenen Satz auf; der Vorschub von CYCL CALL PAT gilt zwischen den Punkten.",
                 "Patterns and cycle calls: PATTERN DEF PAT/FRAME row by row, every other row backwards (like cycle 221); cycle 220 with Q247 = 0: a full circle in Q241 equal steps, otherwise start and stop angle both included; after the last point of 220/221 to the 2nd set-up clearance; CYCL CALL POS below the surface: first to the 2nd set-up clearance; M89 calls the cycle already in its own block; the feed of CYCL CALL PAT applies between the points.",
+            ),
+            Decision::ImportReadings => Text::new(
+                "Programme von anderswo: fehlende, doppelte, nicht aufsteigende oder mit N geschriebene Satznummern sind ein Hinweis je Datei, die Sätze laufen in ihrer Reihenfolge; Dezimalkomma und Leerzeichen nach dem Adressbuchstaben werden gelesen (ein Hinweis je Datei); Zyklusparameter FMAX fahren mit 99999 mm/min; PREDEF nimmt angenommene Werte der globalen Programmeinstellungen (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0,2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1).",
+                "Programs from elsewhere: missing, repeated, non-ascending or N-prefixed block numbers are one note per file, the blocks run in their order; a decimal comma and a blank after the address letter are read (one note per file); cycle parameters FMAX move at 99999 mm/min; PREDEF takes assumed values of the global program settings (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0.2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1).",
             ),
             Decision::CompensationConventions => Text::new(
                 "Radiuskorrektur: der Übergangskreis an einer Außenecke gehört zum Satz nach der Ecke; RL/RR in einem Kreissatz fährt geradlinig senkrecht vor den Konturanfang; R0 in einem Kreissatz fährt geradlinig zum Kreisanfang; ein Satz, der das Werkzeug anders bewegt (Zyklus, M91, Drehachse, TOOL CALL, Transformation), beendet die Korrektur; RL↔RR ohne R0 ist ein Fehler. APPR/DEP: ohne RL/RR ein Fehler; R bei CT/LCT ist der Radius der Werkzeugmittelpunktsbahn; APPR fährt die Werkzeugachse auf der Geraden zum Hilfspunkt; DEP CT dreht wie APPR CT (RL mit R+ gegen den Uhrzeigersinn); alle Teilbahnen mit dem F des Satzes.",

@@ -87,7 +87,7 @@ impl Interp {
             match &*b.body() {
                 // Blocks that do not move the tool are looked over.
                 BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::CycleDef(_) => {}
-                BlockBody::MFunctions(m) if !m.contains(&99) => {}
+                BlockBody::MFunctions(m, _) if !m.contains(&99) => {}
                 BlockBody::L(l) if l.axes.is_empty() && !l.m.contains(&99) => {}
                 BlockBody::Cc(m) => pole = Some(self.pole_of(&m.axes, start).ok()?),
                 body => {

@@ -4,7 +4,7 @@
 //! segments in the I-CS, arcs and helices as [`SegmentPath::Arc`].
 
 use super::*;
-use crate::ast::{PatternItem, PatternKey};
+use crate::ast::{CycleParam, CycleValue, PatternItem, PatternKey};
 use crate::sim::cycles::{ArcTo, CycleRun, Params, PatternValues, rapid};
 
 impl Interp {
@@ -129,7 +129,26 @@ impl Interp {
         if d.params.is_empty() {
             return Err(SimErrorCode::CycleParamsMissing { cycle: d.number });
         }
-        let values = d.params.iter().map(|p| Ok((p.index, self.value(&p.value)?))).collect::<R<Vec<_>>>()?;
+        let word = |p: &CycleParam| SimErrorCode::CycleWordUnknown {
+            cycle: d.number,
+            param: p.index,
+            word: p.value.word().unwrap_or_default(),
+        };
+        let values = d
+            .params
+            .iter()
+            .map(|p| {
+                let v = match p.value {
+                    CycleValue::Value(v) => self.value(&v)?,
+                    CycleValue::Fmax => unconfirmed::CYCLE_FMAX_FEED,
+                    CycleValue::Fauto => {
+                        [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0).ok_or_else(|| word(p))?
+                    }
+                    CycleValue::Predef => unconfirmed::predef(p.index).ok_or_else(|| word(p))?,
+                };
+                Ok((p.index, v))
+            })
+            .collect::<R<Vec<_>>>()?;
         Ok(Params::new(d.number, values))
     }
 

@@ -49,7 +49,12 @@ impl Interp {
         let dl = t.dl.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
         if let Some(tool) = &t.tool {
-            let (entry, known) = tools::lookup(tool);
+            let (mut entry, mut known) = tools::lookup(tool);
+            if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
+                entry.length = l.unwrap_or(entry.length);
+                entry.radius = r.unwrap_or(entry.radius);
+                known = true;
+            }
             self.tool.shape = entry.shape(entry.radius + dr);
             self.tool.number = entry.number;
             self.tool.name = entry.name;
@@ -86,6 +91,10 @@ impl Interp {
             self.tool.feed = f;
             self.feed = f;
         }
+        // Q108 the active tool radius, Q114 the tool length (preassigned Q parameters, iTNC 530
+        // and TNC 410 user's manuals).
+        self.q.insert(108, self.tool.radius);
+        self.q.insert(114, self.tool.length);
         self.kin.tool_length = self.tool.length;
         self.rebuild_bodies(cx.machine);
         self.sync_pos();

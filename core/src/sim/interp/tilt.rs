@@ -112,19 +112,9 @@ impl Interp {
             }
             Some(Positioning::Turn { move_back, feed }) => {
                 if let Some(mb) = move_back {
-                    let d = self.kin.tool_axis_mcs(self.axes.rotary);
-                    let s = match mb {
-                        MoveBack::Dist(v) => v,
-                        MoveBack::Max => self.mb_max(cx, d),
-                    };
-                    let l = self.axes.linear + s * d;
-                    self.check_linear(cx, l)?;
-                    let target = MachineAxes { linear: l, ..self.axes };
                     let rate =
                         if unconfirmed::MB_RETRACT_AT_RAPID { Rate::Rapid } else { self.swivel_rate(feed) };
-                    self.go(cx, rec, idx, SegmentKind::Retract, target, [0.0; 2], rate, || {
-                        SegmentPath::Linear
-                    })?;
+                    self.retract(cx, rec, idx, mb, rate)?;
                 }
                 let rate = self.swivel_rate(feed);
                 let plan = |it: &Self, target: [f64; 2]| {
@@ -234,6 +224,50 @@ impl Interp {
             Some(Feed::Auto) if self.tool.feed > 0.0 => Rate::Feed(self.tool.feed),
             _ => Rate::Rapid,
         }
+    }
+
+    /// The retract along the tool axis of `TURN MB…` and `M140 MB…`, by the distance or to
+    /// just before the limits (`MB MAX`).
+    pub(super) fn retract(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        mb: MoveBack<f64>,
+        rate: Rate,
+    ) -> R<()> {
+        let d = self.kin.tool_axis_mcs(self.axes.rotary);
+        let s = match mb {
+            MoveBack::Dist(v) => v,
+            MoveBack::Max => self.mb_max(cx, d),
+        };
+        let l = self.axes.linear + s * d;
+        self.check_linear(cx, l)?;
+        let target = MachineAxes { linear: l, ..self.axes };
+        self.go(cx, rec, idx, SegmentKind::Retract, target, [0.0; 2], rate, || SegmentPath::Linear)
+    }
+
+    /// `M140 MB…` ("retraction in the tool axis direction", TNC 640 user's manual), at rapid,
+    /// after the block's own move.
+    pub(super) fn m140(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        mb: MoveBack,
+    ) -> R<()> {
+        let mb = match mb {
+            MoveBack::Dist(v) => MoveBack::Dist(self.value(&v)?),
+            MoveBack::Max => MoveBack::Max,
+        };
+        self.retract(cx, rec, idx, mb, Rate::Rapid)?;
+        note(rec, || {
+            Text::new(
+                "M140: Rückzug in Werkzeugachsrichtung (Eilgang)",
+                "M140: retraction in the tool axis direction (rapid)",
+            )
+        });
+        Ok(())
     }
 
     /// `MB MAX`: the longest retract along `d` that ends "just before the software limit
