@@ -18,7 +18,7 @@ pub use cycles::{
     PatternKind,
 };
 pub use path::{ApprDep, ApprKind, Line, MWords, Motion, PolarWord, RadiusComp};
-pub use q::{BinOp, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, QL_BASE, QName, QR_BASE};
+pub use q::{BinOp, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, QL_BASE, QName, QR_BASE, SysRead};
 
 /// A byte range `start..end` into the source text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize)]
@@ -505,6 +505,8 @@ pub enum BlockBody {
     Header {
         text: String,
     },
+    /// `FN 18: SYSREAD Q… = ID… NR… [IDX…]`.
+    SysRead(Box<SysRead>),
     /// `FN n: …` of a function this trainer does not compute (`FN 14: ERROR`, `FN 15: PRINT`,
     /// `FN 16: F-PRINT`, `FN 18: SYSREAD`, `FN 19: PLC`, …): the text after the colon, verbatim.
     /// The run says so on the block; `FN 14` stops it, as the control's error message does.

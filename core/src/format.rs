@@ -376,6 +376,14 @@ fn body(out: &mut String, b: &BlockBody) {
                 e => expr(out, e),
             }
         }
+        BlockBody::SysRead(r) => {
+            let _ = write!(out, "FN 18: SYSREAD {} = ID{} NR", QName(r.target), r.id);
+            plain(out, r.nr);
+            if let Some(idx) = r.idx {
+                out.push_str(" IDX");
+                plain(out, idx);
+            }
+        }
         BlockBody::FnOther { number, text } => {
             let _ = write!(out, "FN {number}: {text}");
         }

@@ -97,7 +97,7 @@ fn fn_functions_the_trainer_does_not_compute_are_kept_and_said() {
     same("FN15: PRINT Q1/Q2", "FN 15: PRINT Q1/Q2");
     same("FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:", "FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:");
     same("FN 28: TABREAD Q80 =0 /\"Stueck\"", "FN 28: TABREAD Q80 =0 /\"Stueck\"");
-    let (p, sim) = run("0 BEGIN PGM F MM\n1 FN 18: SYSREAD Q32 = ID270 NR1 IDX3\n2 END PGM F MM\n");
+    let (p, sim) = run("0 BEGIN PGM F MM\n1 FN 18: SYSREAD Q32 = ID50 NR1 IDX3\n2 END PGM F MM\n");
     let m = after(&p, &sim, 1).message.expect("said on its block");
     assert!(m.de.contains("nicht simuliert") && m.en.contains("not simulated"), "{m:?}");
     // FN 14 stops the run with the program's own error.
@@ -105,6 +105,26 @@ fn fn_functions_the_trainer_does_not_compute_are_kept_and_said() {
     let sim = simulate(&program, &Machine::builtin("ac-table").expect("m"), &SimOptions::default());
     let e = sim.error.expect("FN 14 stops");
     assert_eq!(e.block, 1);
+}
+
+#[test]
+fn sysread_gives_the_positions_the_simulator_knows() {
+    same("FN18 : SYSREAD Q12 = ID240 NR1 IDX2", "FN 18: SYSREAD Q12 = ID240 NR1 IDX2");
+    same("FN 18: SYSREAD QL1 = ID50 NR2 IDXQ11", "FN 18: SYSREAD QL1 = ID50 NR2 IDXQ11");
+    let (p, sim) = run("0 BEGIN PGM S MM\n\
+         1 TOOL CALL 1 Z S2000\n\
+         2 L X+10 Y+5 Z+20 R0 FMAX\n\
+         3 FN 18: SYSREAD Q1 = ID270 NR1 IDX1\n\
+         4 FN 18: SYSREAD Q3 = ID270 NR1 IDX3\n\
+         5 FN 18: SYSREAD Q4 = ID240 NR1 IDX3\n\
+         6 FN 18: SYSREAD Q5 = ID20 NR4\n\
+         7 FN 18: SYSREAD Q6 = ID10 NR1\n\
+         8 END PGM S MM\n");
+    let s = after(&p, &sim, 7);
+    // The active coordinate system is the programmed one; the REF system the machine axes.
+    assert_eq!((s.q[&1], s.q[&3]), (10.0, 20.0));
+    assert!((s.q[&4] - s.axes.linear.z).abs() < 1e-12, "{} vs {:?}", s.q[&4], s.axes.linear);
+    assert_eq!((s.q[&5], s.q[&6]), (2000.0, 0.0));
 }
 
 #[test]

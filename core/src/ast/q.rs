@@ -167,6 +167,17 @@ pub struct FnJump {
     pub label: Label,
 }
 
+/// `FN 18: SYSREAD Q32 = ID270 NR1 IDX3`: a datum of the control read into a parameter
+/// (iTNC 530 technical manual, "Data transfer NC > NC program (FN18: SYSREAD)": group `ID`,
+/// system data number `NR`, index `IDX`, each a number or a Q parameter).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SysRead {
+    pub target: u32,
+    pub id: u32,
+    pub nr: Value,
+    pub idx: Option<Value>,
+}
+
 /// `LBL 1`, `LBL "name"`.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub enum Label {

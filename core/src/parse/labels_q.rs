@@ -4,6 +4,7 @@
 //!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
 //!   fn  := FN (1|2|3|4|8): Q<n> = value (+|-|*|DIV|LEN) value | FN (5|6|7): Q<n> = (SQRT|SIN|COS) value
 //!        | FN (9|10|11|12): IF value (EQU|NE|GT|LT) value GOTO LBL (n|"name")
+//!        | FN 18: SYSREAD Q<n> = ID n NR value [IDX value]
 //!        | FN n: text    (every other FN function, kept verbatim)
 //! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
 //! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)
@@ -12,7 +13,7 @@ use super::Cx;
 use super::words::{
     Step, at_boundary, failure, keyword, number, q_param, quoted, sp, token, uint, word_value,
 };
-use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label};
+use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, SysRead};
 use crate::diag::{DiagCode, Expected};
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
@@ -104,9 +105,37 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         0 => assign(cx, q, true),
         9..=12 => jump(cx, n, q),
         n if FnOp::of(n).is_some() => math(cx, n, q),
+        18 if let Ok((rest, r)) = sysread(q)
+            && sp(rest).is_empty() =>
+        {
+            Some(BlockBody::SysRead(Box::new(r)))
+        }
         _ if q.is_empty() => cx.invalid(q, Some(Expected::Nc("FN n: …"))),
         _ => Some(BlockBody::FnOther { number: n, text: q.to_owned() }),
     }
+}
+
+/// `SYSREAD Q… = ID… NR… [IDX…]` (after `FN 18:`); a spelling it does not know stays an
+/// `FN 18` kept as written.
+fn sysread(i: &str) -> Step<'_, SysRead> {
+    let Some(r) = keyword(i, "SYSREAD").map(sp) else { return failure(i, Expected::Nc("SYSREAD")) };
+    let (r, target) = match q_param(r) {
+        Some(q) => q?,
+        None => return failure(r, Expected::Nc("Q")),
+    };
+    let Some(r) = sp(r).strip_prefix('=').map(sp) else { return failure(r, Expected::Nc("=")) };
+    let Some(r) = r.strip_prefix("ID") else { return failure(r, Expected::Nc("ID")) };
+    let (r, id) = uint(r)?;
+    let Some(r) = sp(r).strip_prefix("NR") else { return failure(r, Expected::Nc("NR")) };
+    let (r, nr) = word_value(r)?;
+    let (r, idx) = match sp(r).strip_prefix("IDX") {
+        Some(x) => {
+            let (r, v) = word_value(x)?;
+            (r, Some(v))
+        }
+        None => (r, None),
+    };
+    Ok((r, SysRead { target, id, nr, idx }))
 }
 
 /// `Q<n> = a op b` (`FN 1..4`) or `Q<n> = SQRT a` (`FN 5`).

@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnJump, FnMath, FnOp, Func,
-    Label, Line, OldCycleData, OldCycleWord, Program, RadiusComp, ToolCall, ToolRef,
+    Label, Line, OldCycleData, OldCycleWord, Program, QName, RadiusComp, SysRead, ToolCall, ToolRef,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;
@@ -536,6 +536,7 @@ impl Interp {
                 })
             }
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
+            BlockBody::SysRead(r) => self.sysread(&mut rec, r)?,
             BlockBody::FnOther { number: 14, text } => {
                 return Err(SimErrorCode::FnError { text: text.clone() });
             }
@@ -576,6 +577,67 @@ impl Interp {
             FnOp::Len => a.hypot(b),
         };
         self.set_q(f.target, v)
+    }
+
+    /// `FN 18: SYSREAD` of the data the simulator knows (iTNC 530 technical manual, "FN18:
+    /// SYSREAD"): ID10 NR1 mm/inch; ID20 NR1 tool number, NR3 tool axis, NR4 spindle speed;
+    /// ID240 NR1 IDX1…9 nominal position of axis X, Y, Z, A, B, C, U, V, W in the REF system
+    /// (the machine axes); ID270 NR1 IDX1…9 position in the active coordinate system (the
+    /// I-CS for X, Y, Z). Anything else is said on the block and leaves the parameter as it was.
+    #[inline(never)]
+    fn sysread(&mut self, rec: &mut Option<&mut Rec>, r: &SysRead) -> R<()> {
+        let nr = self.value(&r.nr)?;
+        let idx = r.idx.map(|v| self.value(&v)).transpose()?;
+        let axis = |i: f64, linear: DVec3| -> Option<f64> {
+            let i = i as usize;
+            let rotary =
+                |a: RotaryAxis| self.axes.letters.iter().position(|&l| l == a).map(|k| self.axes.rotary[k]);
+            match i {
+                1..=3 => Some(linear[i - 1]),
+                4 => rotary(RotaryAxis::A),
+                5 => rotary(RotaryAxis::B),
+                6 => rotary(RotaryAxis::C),
+                _ => None,
+            }
+        };
+        let v = match (r.id, nr, idx) {
+            (10, 1.0, _) => self.q.get(&113).copied(),
+            (20, 1.0, _) => Some(f64::from(self.tool.number)),
+            (20, 3.0, _) => Some(match self.tool.axis {
+                'X' => 0.0,
+                'Y' => 1.0,
+                _ => 2.0,
+            }),
+            (20, 4.0, _) => Some(self.spindle.speed),
+            (240, 1.0, Some(i)) => axis(i, self.axes.linear),
+            (270, 1.0, Some(i)) => axis(i, self.programmed()),
+            _ => None,
+        };
+        let (id, target) = (r.id, QName(r.target));
+        match v {
+            Some(v) => {
+                self.set_q(r.target, v)?;
+                note(rec, || {
+                    Text::owned(
+                        format!(
+                            "FN 18: ID{id} gelesen: {target} = {}",
+                            crate::number::prose(v, Some(4), crate::Lang::De)
+                        ),
+                        format!(
+                            "FN 18: ID{id} read: {target} = {}",
+                            crate::number::prose(v, Some(4), crate::Lang::En)
+                        ),
+                    )
+                });
+            }
+            None => note(rec, || {
+                Text::owned(
+                    format!("FN 18: ID{id} wird nicht simuliert, {target} bleibt unverändert"),
+                    format!("FN 18: ID{id} is not simulated, {target} stays as it was"),
+                )
+            }),
+        }
+        Ok(())
     }
 
     #[inline(never)]
