@@ -4,9 +4,10 @@
 //!
 //! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
 //! continuation lines): the driver splits lines and block headers by hand, the block families
-//! below read their keyword ladders with the small word readers of `words.rs` ([`words::Step`],
-//! [`words::Stop`]; no parser-combinator library, see ARCHITECTURE.md "Parser"). No backtracking
-//! across lines, so time is linear in the input.
+//! below read their keyword ladders with the word readers of `words.rs`, nom parsers with the
+//! parser's own error ([`words::Step`], [`words::NcError`]: where, and the words expected
+//! there; see ARCHITECTURE.md "Parser"). No backtracking across lines, so time is linear in the
+//! input.
 
 mod approach;
 mod cycles;
@@ -91,9 +92,8 @@ impl Cx {
     /// The one conversion of a word reader's stop into the block's diagnostic: the word at
     /// the stop is labelled, what was expected there becomes the help.
     pub(crate) fn fail<T>(&mut self, stop: Stop<'_>) -> Option<T> {
-        match stop {
-            Stop::Expected { at, what } | Stop::Cut { at, what } => self.invalid(at, what),
-        }
+        let e = words::stopped_at(stop);
+        self.invalid(e.at, e.what)
     }
 
     /// Takes the collected axis words as an exactly sized slice.

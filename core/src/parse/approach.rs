@@ -8,7 +8,7 @@
 
 use super::Cx;
 use super::motion::{feed_or_comp, once};
-use super::words::{Stop, at_boundary, axis_word, keyword, m_function, sp, word_value};
+use super::words::{at_boundary, axis_word, keyword, m_function, sp, word_value};
 use crate::ast::{ApprDep, ApprKind, BlockBody, RadiusComp};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{Feed, Value};
@@ -67,7 +67,7 @@ pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockB
                 i = sp(r);
                 continue;
             }
-            Err(Stop::Expected { .. }) => {}
+            Err(nom::Err::Error(_)) => {}
             Err(e) => return cx.fail(e),
         }
         let valued = |key: &str| -> Option<&str> { i.strip_prefix(key).map(sp) };

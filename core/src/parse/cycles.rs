@@ -5,7 +5,14 @@
 //!   (CYCL CALL POS with all three axes: iTNC 530 cycle manual, DOMAIN.md §11)
 
 use super::Cx;
-use super::words::{at_boundary, axis_word, feed, keyword, m_function, sp, uint, word_value};
+use nom::branch::alt;
+use nom::bytes::complete::tag;
+use nom::combinator::{map, value};
+use nom::sequence::terminated;
+
+use super::words::{
+    Step, at_boundary, axis_word, boundary, feed, keyword, m_function, run, sp, uint, word_value,
+};
 use crate::ast::{
     Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, CycleValue, OldCycleData, OldCycleWord,
 };
@@ -48,21 +55,9 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
         let Some(r) = sp(r).strip_prefix('=') else {
             return cx.invalid(sp(r), Some(Expected::Nc("=")));
         };
-        let r = sp(r);
-        let word = [
-            ("PREDEF", CycleValue::Predef),
-            ("FMAX", CycleValue::Fmax),
-            ("FAUTO", CycleValue::Fauto),
-            ("AUTO", CycleValue::Fauto),
-        ]
-        .into_iter()
-        .find_map(|(w, v)| keyword(r, w).map(|rest| (rest, v)));
-        let (r, value) = match word {
-            Some(ok) => ok,
-            None => match word_value(r) {
-                Ok((rest, v)) => (rest, CycleValue::Value(v)),
-                Err(e) => return cx.fail(e),
-            },
+        let (r, value) = match cycle_value(sp(r)) {
+            Ok(ok) => ok,
+            Err(e) => return cx.fail(e),
         };
         if !sp(r).is_empty() {
             return cx.invalid(sp(r), None);
@@ -79,6 +74,20 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
     }
     let def = Box::new(CycleDef { number, name, params: out });
     Some(if probe { BlockBody::TouchProbe(def) } else { BlockBody::CycleDef(def) })
+}
+
+/// The value of a parameter line: a number or Q parameter, or `PREDEF`, `FMAX`, `FAUTO` (CAM
+/// systems also write `AUTO`).
+fn cycle_value(i: &str) -> Step<'_, CycleValue> {
+    let word = |w: &'static str, v: CycleValue| value(v, terminated(tag(w), boundary));
+    let words = alt((
+        word("PREDEF", CycleValue::Predef),
+        word("FMAX", CycleValue::Fmax),
+        word("FAUTO", CycleValue::Fauto),
+        word("AUTO", CycleValue::Fauto),
+        map(word_value, CycleValue::Value),
+    ));
+    run(words, i)
 }
 
 /// `CYCL CALL …` and old-style `CYCL DEF 7.1 …`.

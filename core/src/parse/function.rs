@@ -5,7 +5,7 @@
 
 use super::Cx;
 use super::transforms::end;
-use super::words::{Step, expected, failure, keyword, sp};
+use super::words::{Step, expected, failure, hard, keyword, sp};
 use crate::ast::{BlockBody, PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
 use crate::diag::Expected;
 
@@ -19,7 +19,7 @@ pub(super) fn function(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     if let Some(r) = keyword(i, "TCPM").map(sp) {
         return match tcpm(r) {
             Ok((rest, t)) => end(cx, rest, BlockBody::FunctionTcpm(t)),
-            Err(stop) => cx.fail(stop.cut()),
+            Err(stop) => cx.fail(hard(stop)),
         };
     }
     if let Some(r) = keyword(i, "RESET").map(sp).and_then(|r| keyword(r, "TCPM")) {

@@ -9,9 +9,14 @@
 //! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
 //! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)
 
+use nom::bytes::complete::tag;
+use nom::character::complete::{char, space0, space1};
+use nom::combinator::opt;
+use nom::sequence::preceded;
+
 use super::Cx;
 use super::words::{
-    Step, at_boundary, failure, keyword, number, q_param, quoted, sp, token, uint, word_value,
+    Step, at_boundary, failure, keyword, number, q_param, quoted, run, sp, token, uint, word_value,
 };
 use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, SysRead};
 use crate::diag::{DiagCode, Expected};
@@ -118,24 +123,17 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 /// `SYSREAD Q… = ID… NR… [IDX…]` (after `FN 18:`); a spelling it does not know stays an
 /// `FN 18` kept as written.
 fn sysread(i: &str) -> Step<'_, SysRead> {
-    let Some(r) = keyword(i, "SYSREAD").map(sp) else { return failure(i, Expected::Nc("SYSREAD")) };
-    let (r, target) = match q_param(r) {
-        Some(q) => q?,
-        None => return failure(r, Expected::Nc("Q")),
-    };
-    let Some(r) = sp(r).strip_prefix('=').map(sp) else { return failure(r, Expected::Nc("=")) };
-    let Some(r) = r.strip_prefix("ID") else { return failure(r, Expected::Nc("ID")) };
-    let (r, id) = uint(r)?;
-    let Some(r) = sp(r).strip_prefix("NR") else { return failure(r, Expected::Nc("NR")) };
-    let (r, nr) = word_value(r)?;
-    let (r, idx) = match sp(r).strip_prefix("IDX") {
-        Some(x) => {
-            let (r, v) = word_value(x)?;
-            (r, Some(v))
-        }
-        None => (r, None),
-    };
-    Ok((r, SysRead { target, id, nr, idx }))
+    let q = |i| q_param(i).unwrap_or_else(|| failure(i, Expected::Nc("Q|QL|QR")));
+    let words = (
+        (tag("SYSREAD"), space1),
+        q,
+        (space0, char('='), space0, tag("ID")),
+        uint,
+        preceded((space1, tag("NR")), word_value),
+        opt(preceded((space1, tag("IDX")), word_value)),
+    );
+    let (rest, (_, target, _, id, nr, idx)) = run(words, i)?;
+    Ok((rest, SysRead { target, id, nr, idx }))
 }
 
 /// `Q<n> = a op b` (`FN 1..4`) or `Q<n> = SQRT a` (`FN 5`).

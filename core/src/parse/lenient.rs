@@ -29,14 +29,10 @@ fn is_blank(b: u8) -> bool {
     b == b' ' || b == b'\t'
 }
 
-/// Where a value starts: a digit or point, or a sign directly before one (or before `Q`).
-/// `Z + Q13` (blanks around the sign) is the word reader's own case, not this one.
+/// Where an unsigned value starts: a digit or point. A sign after the blank (`Z -5`,
+/// `Z + Q13`) is the word reader's own spelling with blanks around the sign, read as before.
 fn starts_value(b: &[u8]) -> bool {
-    match b.first() {
-        Some(c) if c.is_ascii_digit() || *c == b'.' => true,
-        Some(b'+' | b'-') => b.get(1).is_some_and(|c| c.is_ascii_digit() || *c == b'.' || *c == b'Q'),
-        _ => false,
-    }
+    b.first().is_some_and(|c| c.is_ascii_digit() || *c == b'.')
 }
 
 /// Each lenient spelling in `body` (one block's text without its comment), in order: its kind,
@@ -125,7 +121,7 @@ mod tests {
             ("L Z 25.000 FMAX", "L Z25.000  FMAX"),
             ("BLK FORM 0.1 Z X-49,000 Y-30,000 Z-10,000", "BLK FORM 0.1 Z X-49.000 Y-30.000 Z-10.000"),
             ("TOOL CALL 3 Z S 5000,000", "TOOL CALL 3 Z S5000.000 "),
-            ("L X  +5 Y-2", "L X+5   Y-2"),
+            ("L X  5 Y-2", "L X5   Y-2"),
             ("Q4 = Q4 + 0,001", "Q4 = Q4 + 0.001"),
         ] {
             let got = normalize(text).unwrap_or_else(|| panic!("{text}"));

@@ -4,7 +4,9 @@
 //!   after M140: [MB (MAX|v)]      after M128: [F v]
 
 use super::Cx;
-use super::words::{Step, Stop, at_boundary, axis_word, feed, keyword, m_function, sign, sp, word_value};
+use super::words::{
+    Step, Stop, at_boundary, axis_word, feed, hard, keyword, m_function, sign, sp, word_value,
+};
 use crate::ast::{BlockBody, Line, MWords, Motion, PolarWord, RadiusComp};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{Feed, MoveBack, Sign, Value};
@@ -105,7 +107,7 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
                 i = sp(r);
                 continue;
             }
-            Err(Stop::Expected { .. }) => {}
+            Err(nom::Err::Error(_)) => {}
             Err(e) => return cx.fail(e),
         }
         let (r, ok) = if let Some(read) = feed_or_comp(cx, i, &mut w.feed, &mut w.comp) {
@@ -289,7 +291,7 @@ fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a
                 words.mb = Some(MoveBack::Max);
                 return Ok(r);
             }
-            let (r, d) = word_value(v).map_err(Stop::cut)?;
+            let (r, d) = word_value(v).map_err(hard)?;
             words.mb = Some(MoveBack::Dist(d));
             Ok(r)
         }

@@ -2,8 +2,8 @@
 //!   plane := PLANE def [MOVE [DIST v] [feed] | TURN [MB v|MB MAX] [feed] | STAY] [SEQ±|SYM±] [COORD ROT|TABLE ROT]
 //!   def   := SPATIAL SPA SPB SPC | PROJECTED PROPR PROMIN ROT | EULER EULPR EULNU EULROT | VECTOR BX…NZ | POINTS P1X…P3Z | RELATIV SPA|SPB|SPC | AXIAL {[I]A|B|C} | RESET
 
+use super::Cx;
 use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
-use super::{Cx, Stop};
 use crate::ast::{Axis, BlockBody};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{
@@ -112,7 +112,7 @@ fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
                 i = sp(rest);
                 w
             }
-            Err(Stop::Expected { .. }) => break,
+            Err(nom::Err::Error(_)) => break,
             Err(e) => return cx.fail(e),
         };
         let axis = match w.axis {
@@ -254,7 +254,7 @@ fn opt_feed<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, Option<Feed>)> {
             }
             Some((rest, Some(f)))
         }
-        Err(Stop::Expected { .. }) => Some((r, None)),
+        Err(nom::Err::Error(_)) => Some((r, None)),
         Err(e) => cx.fail(e),
     }
 }

@@ -2,59 +2,86 @@
 //!   value  := [+|-] ( (Q|QL|QR)<digits> | <digits>[.<digits>] | .<digits> )
 //!   feed   := FMAX | F MAX | F AUTO | F value
 
+use nom::bytes::complete::{tag, take_till1, take_until, take_while1};
+use nom::character::complete::{char, digit0, digit1, one_of, space0};
+use nom::combinator::opt;
+use nom::error::{ErrorKind, ParseError};
+use nom::sequence::preceded;
+use nom::{IResult, Parser};
+
 use crate::diag::Expected;
 use crate::plane::{Feed, Sign, Value};
 
-/// Why a word reader stopped: where, and what it wanted there (if it can say).
-///
-/// `Expected` is recoverable: the word is not there, the caller may try another one.
-/// `Cut` is hard: the word started but is malformed, no alternative can help.
-/// [`super::Cx::fail`] turns either into the block's one diagnostic.
+/// The parser's nom error: where a word reader stopped and what it wanted there (if it can
+/// say). As nom's `Err::Error` it is recoverable: the word is not there, the caller may try
+/// another one. As `Err::Failure` (nom's `cut`) it is hard: the word began but is malformed, no
+/// alternative can help. [`super::Cx::fail`] turns either into the block's one diagnostic.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Stop<'a> {
-    Expected { at: &'a str, what: Option<Expected> },
-    Cut { at: &'a str, what: Option<Expected> },
+pub(crate) struct NcError<'a> {
+    pub(crate) at: &'a str,
+    pub(crate) what: Option<Expected>,
 }
 
-impl<'a> Stop<'a> {
-    /// The same stop as a hard one (the word has begun, so its absence is an error).
-    pub(crate) fn cut(self) -> Self {
-        match self {
-            Stop::Expected { at, what } | Stop::Cut { at, what } => Stop::Cut { at, what },
-        }
+impl<'a> ParseError<&'a str> for NcError<'a> {
+    fn from_error_kind(input: &'a str, _: ErrorKind) -> Self {
+        NcError { at: input, what: None }
+    }
+
+    /// The innermost stop says best what was wrong.
+    fn append(_: &'a str, _: ErrorKind, other: Self) -> Self {
+        other
     }
 }
 
-/// One step of a word reader: the rest of the input and what was read, or where it stopped.
-pub(crate) type Step<'a, T> = Result<(&'a str, T), Stop<'a>>;
+/// Why a word reader stopped.
+pub(crate) type Stop<'a> = nom::Err<NcError<'a>>;
+
+/// One step of a word reader: nom's result with the parser's error.
+pub(crate) type Step<'a, T> = IResult<&'a str, T, NcError<'a>>;
 
 /// A recoverable stop at `at` naming what was expected.
 pub(crate) fn expected<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
-    Err(Stop::Expected { at, what: Some(what) })
+    Err(nom::Err::Error(NcError { at, what: Some(what) }))
 }
 
 /// A hard stop (no alternative can help) at `at`.
 pub(crate) fn failure<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
-    Err(Stop::Cut { at, what: Some(what) })
+    Err(nom::Err::Failure(NcError { at, what: Some(what) }))
 }
 
-/// The longest non-empty prefix of ASCII bytes matching `f`; a nameless recoverable stop if
-/// there is none.
-fn ascii_run(i: &str, f: impl Fn(&u8) -> bool) -> Step<'_, &str> {
-    match i.bytes().position(|b| !f(&b)).unwrap_or(i.len()) {
-        0 => Err(Stop::Expected { at: i, what: None }),
-        // Only ASCII bytes matched, so `n` is a char boundary.
-        n => Ok((&i[n..], &i[..n])),
+/// The same stop as a hard one (the word has begun, so its absence is an error): what nom's
+/// `cut` makes of a parser, for a stop already made.
+pub(crate) fn hard(e: Stop<'_>) -> Stop<'_> {
+    match e {
+        nom::Err::Error(e) => nom::Err::Failure(e),
+        e => e,
     }
 }
 
-fn is_blank(c: char) -> bool {
-    c == ' ' || c == '\t'
+/// Where a reader stopped and what it expected there. Every reader is nom's `complete` kind,
+/// so an incomplete input does not occur; were it to, it reads as a stop at the end.
+pub(crate) fn stopped_at(e: Stop<'_>) -> NcError<'_> {
+    match e {
+        nom::Err::Error(e) | nom::Err::Failure(e) => e,
+        nom::Err::Incomplete(_) => NcError { at: "", what: None },
+    }
+}
+
+/// Runs a nom parser to the end of `i` (nom's complete mode) and gives its rest as the suffix
+/// of `i` it is: every diagnostic is placed by the rest's address, and nom 8.0 hands back an
+/// empty rest at the start of the input instead of at its end (the unit test
+/// `an_empty_rest_lies_at_the_end_of_the_input` pins it).
+pub(crate) fn run<'a, O>(
+    mut p: impl Parser<&'a str, Output = O, Error = NcError<'a>>,
+    i: &'a str,
+) -> Step<'a, O> {
+    let (rest, o) = p.parse_complete(i)?;
+    Ok((&i[i.len() - rest.len()..], o))
 }
 
 /// Zero or more blanks.
 pub(crate) fn sp(i: &str) -> &str {
-    i.trim_start_matches(is_blank)
+    run(space0, i).map_or(i, |(rest, _)| rest)
 }
 
 /// `true` at the end of a word: end of input or a blank.
@@ -62,15 +89,20 @@ pub(crate) fn at_boundary(i: &str) -> bool {
     i.as_bytes().first().is_none_or(|&b| b == b' ' || b == b'\t')
 }
 
+/// The end of a word as a nom parser: consumes nothing, stops unless at a blank or the end.
+pub(crate) fn boundary(i: &str) -> Step<'_, ()> {
+    if at_boundary(i) { Ok((i, ())) } else { expected(i, Expected::Blank) }
+}
+
 /// A keyword that must stand alone (`TURN`, `FMAX`, `RESET`), followed by a blank or the end.
 pub(crate) fn keyword<'a>(i: &'a str, kw: &'static str) -> Option<&'a str> {
-    let rest = i.strip_prefix(kw)?;
+    let (rest, _) = run(tag(kw), i).ok()?;
     at_boundary(rest).then_some(rest)
 }
 
 /// Unsigned decimal integer (block numbers, M functions, cycle numbers).
 pub(crate) fn uint(i: &str) -> Step<'_, u32> {
-    let (rest, digits) = ascii_run(i, u8::is_ascii_digit)?;
+    let (rest, digits) = run(digit1, i)?;
     match digits.parse::<u32>() {
         Ok(v) => Ok((rest, v)),
         Err(_) => failure(i, Expected::NumberU32),
@@ -79,27 +111,15 @@ pub(crate) fn uint(i: &str) -> Step<'_, u32> {
 
 /// A number as the control writes it: optional sign, optional leading or trailing dot.
 pub(crate) fn number(i: &str) -> Step<'_, f64> {
-    let b = i.as_bytes();
-    let mut n = usize::from(matches!(b.first(), Some(b'+' | b'-')));
-    let start = n;
-    while b.get(n).is_some_and(u8::is_ascii_digit) {
-        n += 1;
-    }
-    let mut digits = n - start;
-    if b.get(n) == Some(&b'.') {
-        n += 1;
-        let f = n;
-        while b.get(n).is_some_and(u8::is_ascii_digit) {
-            n += 1;
-        }
-        digits += n - f;
-    }
-    if digits == 0 {
+    // What the sequence consumed, taken by hand: nom 8.0's `recognize` gave `+` for `+0` at the
+    // end of the input.
+    let (rest, _) = run((opt(one_of("+-")), digit0, opt((char('.'), digit0))), i)?;
+    let text = &i[..i.len() - rest.len()];
+    if !text.bytes().any(|b| b.is_ascii_digit()) {
         return expected(i, Expected::Number);
     }
-    // All bytes up to `n` are ASCII, so `n` is a char boundary.
-    match crate::number::parse_f64(&i[..n]) {
-        Some(v) if v.is_finite() => Ok((&i[n..], v)),
+    match crate::number::parse_f64(text) {
+        Some(v) if v.is_finite() => Ok((rest, v)),
         _ => failure(i, Expected::Number),
     }
 }
@@ -161,44 +181,43 @@ pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
     }
     match word_value(after_f) {
         Ok((rest, v)) => Ok((rest, Feed::Value(v))),
-        Err(Stop::Expected { at, .. }) => Err(Stop::Cut { at, what: Some(Expected::Nc("F…|FMAX|F AUTO")) }),
+        Err(nom::Err::Error(e)) => failure(e.at, Expected::Nc("F…|FMAX|F AUTO")),
         Err(e) => Err(e),
     }
 }
 
 /// `M` followed by digits, as one word.
 pub(crate) fn m_function(i: &str) -> Step<'_, u32> {
-    let Some(rest) = i.strip_prefix('M') else { return Err(Stop::Expected { at: i, what: None }) };
-    let (rest, m) = uint(rest)?;
+    let (rest, m) = run(preceded(char('M'), uint), i)?;
     if at_boundary(rest) { Ok((rest, m)) } else { failure(rest, Expected::Blank) }
 }
 
 /// `+` or `-` directly after a word (`DR+`, `SEQ-`).
 pub(crate) fn sign(i: &str) -> Step<'_, Sign> {
-    match i.as_bytes().first() {
-        Some(b'+') => Ok((&i[1..], Sign::Plus)),
-        Some(b'-') => Ok((&i[1..], Sign::Minus)),
-        _ => expected(i, Expected::Nc("+|-")),
+    match run(one_of("+-"), i) {
+        Ok((rest, c)) => Ok((rest, if c == '+' { Sign::Plus } else { Sign::Minus })),
+        Err(_) => expected(i, Expected::Nc("+|-")),
     }
 }
 
 /// A run of upper-case letters (the key of a word).
 pub(crate) fn letters(i: &str) -> Step<'_, &str> {
-    ascii_run(i, u8::is_ascii_uppercase)
+    run(take_while1(|c: char| c.is_ascii_uppercase()), i)
 }
 
 /// Everything up to the next blank (a name, a path).
 pub(crate) fn token(i: &str) -> Step<'_, &str> {
-    let n = i.find([' ', '\t']).unwrap_or(i.len());
-    if n == 0 { expected(i, Expected::Name) } else { Ok((&i[n..], &i[..n])) }
+    run(take_till1(|c: char| c == ' ' || c == '\t'), i).or_else(|_| expected(i, Expected::Name))
 }
 
 /// A `"quoted"` name.
 pub(crate) fn quoted(i: &str) -> Step<'_, &str> {
-    let Some(inner) = i.strip_prefix('"') else { return expected(i, Expected::QuotedName) };
-    match inner.find('"') {
-        Some(end) => Ok((&inner[end + 1..], &inner[..end])),
-        None => failure(i, Expected::Nc("\"")),
+    let Ok((inner, _)) = run(char('"'), i) else {
+        return expected(i, Expected::QuotedName);
+    };
+    match run((take_until("\""), char('"')), inner) {
+        Ok((rest, (name, _))) => Ok((rest, name)),
+        Err(_) => failure(i, Expected::Nc("\"")),
     }
 }
 
@@ -234,7 +253,7 @@ pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
     // `Z + Q13`, `X - 5` (blanks around the sign, as some CAM systems write): the same word as
     // `Z+Q13`, `X-5`.
     if let Some((sign, value)) = spaced_sign(after) {
-        let (rest, value) = word_value(value).map_err(Stop::cut)?;
+        let (rest, value) = word_value(value).map_err(hard)?;
         let value = match (sign, value) {
             (true, Value::Number(v)) => Value::Number(-v),
             (true, Value::Param { index, negate }) => Value::Param { index, negate: !negate },
@@ -242,6 +261,49 @@ pub(crate) fn axis_word(i: &str) -> Step<'_, crate::ast::AxisWord> {
         };
         return Ok((rest, crate::ast::AxisWord { axis, value, incremental }));
     }
-    let (rest, value) = word_value(after).map_err(Stop::cut)?;
+    let (rest, value) = word_value(after).map_err(hard)?;
     Ok((rest, crate::ast::AxisWord { axis, value, incremental }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every reader at the very end of a block's text: nom's combinators must run complete (a
+    /// streaming run would stop with "incomplete" there).
+    #[test]
+    fn readers_read_up_to_the_end_of_the_text() {
+        assert_eq!(number("+0"), Ok(("", 0.0)));
+        assert_eq!(number("-.5"), Ok(("", -0.5)));
+        assert_eq!(number("7."), Ok(("", 7.0)));
+        assert_eq!(value("-QR3"), Ok(("", Value::Param { index: crate::ast::QR_BASE + 3, negate: true })));
+        assert_eq!(m_function("M30"), Ok(("", 30)));
+        assert_eq!(sign("+"), Ok(("", Sign::Plus)));
+        assert_eq!(letters("FMAX"), Ok(("", "FMAX")));
+        assert_eq!(token("TNC:\\A.H"), Ok(("", "TNC:\\A.H")));
+        assert_eq!(quoted("\"name\""), Ok(("", "name")));
+        assert_eq!(keyword("STAY", "STAY"), Some(""));
+        assert_eq!(uint("4294967296").map_err(stopped_at).unwrap_err().what, Some(Expected::NumberU32));
+        assert!(matches!(quoted("\"open"), Err(nom::Err::Failure(_))), "an open quote is hard");
+        assert!(matches!(number("X"), Err(nom::Err::Error(_))), "no number: try another word");
+    }
+
+    #[test]
+    fn an_empty_rest_lies_at_the_end_of_the_input() {
+        let at = |i: &str, rest: &str| rest.as_ptr() as usize - i.as_ptr() as usize;
+        for i in ["100", "+0", "7.", "M30", "STAY", "\"n\"", "ABC", "-QR3"] {
+            let rests = [
+                number(i).map(|r| r.0),
+                m_function(i).map(|r| r.0),
+                letters(i).map(|r| r.0),
+                quoted(i).map(|r| r.0),
+                value(i).map(|r| r.0),
+                token(i).map(|r| r.0),
+            ];
+            for rest in rests.into_iter().flatten() {
+                assert_eq!(at(i, rest), i.len() - rest.len(), "{i}");
+            }
+        }
+        assert_eq!(at("  ", sp("  ")), 2);
+    }
 }
