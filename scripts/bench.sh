@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Benchmarks (release builds; they print figures, they do not pass or fail on time).
 #   Parser: MB/s, peak memory / file size, 10x scaling ratio (issue 3; budgets of issue 16:
-#   >= 300 MB/s, peak <= 2x the file). CLI (issue 16): `schwenkbar check` end to end on the 44 MB
+#   >= 300 MB/s, peak <= 2x the file); 10,000,000 mutated inputs of every family, 0 panics
+#   (issue 30). CLI (issue 16): `schwenkbar check` end to end on the 44 MB
 #   program (>= 200 MB/s) and `schwenkbar run` on 100,000 blocks (table and --json), whole process.
 #   Solver: solves/s from orientation to chosen axis positions, budget ≥ 1,000,000/s (issue 4).
 #   Simulator: blocks/s on the 1,000,000-block program (≥ 1,000,000), state_at latency (issue 5).
@@ -20,6 +21,7 @@ bash scripts/setup.sh >/dev/null
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
 cargo run --release -p schwenkbar-core --example bench_parse
+cargo run --release -p schwenkbar-core --example fuzz_parse
 cargo build --release -p schwenkbar
 cargo run --release -p schwenkbar --example bench_cli
 cargo run --release -p schwenkbar-core --example bench_solve

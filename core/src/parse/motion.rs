@@ -248,6 +248,8 @@ fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
 }
 
 /// `STOP` with optional M functions (`STOP M0`); `rest` follows the keyword.
+// Out of line in wasm, like the other rare families (see labels_q.rs).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn stop(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
     if !at_boundary(rest) {
         return super::unknown(cx, rest);
@@ -281,6 +283,7 @@ pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 
 /// The words after M function `m` that belong to it ([`MWords`]): `MB MAX`, `MB+50` or `MB 50`
 /// after `M140`; `F…` after `M128` (so `L X+1 F500 M128 F1000` has both feeds). The rest.
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a>> {
     let t = sp(i);
     match m {

@@ -58,6 +58,8 @@ pub(super) fn blk_form(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 }
 
 /// `TOOL DEF 2 L+75 R+5`, `TOOL DEF 0`, `TOOL DEF "name"`.
+// Out of line in wasm, like the other rare families (see labels_q.rs).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn tool_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(mut i) = keyword(body, "TOOL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
         return super::unknown(cx, body);

@@ -383,46 +383,10 @@ impl Interp {
                 self.q.insert(113, if *unit == crate::ast::Unit::Inch { 1.0 } else { 0.0 });
             }
             BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::Header { .. } => {}
-            BlockBody::ToolDef { tool, length, radius } => {
-                let l = length.map(|v| self.value(&v)).transpose()?;
-                let r = radius.map(|v| self.value(&v)).transpose()?;
-                self.tool_defs.retain(|(t, ..)| t != tool);
-                self.tool_defs.push((tool.clone(), l, r));
-                note(&mut rec, || {
-                    Text::new(
-                        "TOOL DEF: Werkzeug im Programm definiert",
-                        "TOOL DEF: tool defined in the program",
-                    )
-                });
-            }
-            BlockBody::Stop { m } => {
-                self.spindle_m(m);
-                note(&mut rec, || {
-                    Text::new(
-                        "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
-                        "STOP: the control stops here (continue with NC start); the trainer runs on",
-                    )
-                });
-                self.end_m(m);
-            }
-            BlockBody::QsAssign { index, .. } => {
-                let n = *index;
-                note(&mut rec, || {
-                    Text::owned(
-                        format!("QS{n}: String-Parameter werden nicht simuliert"),
-                        format!("QS{n}: string parameters are not simulated"),
-                    )
-                });
-            }
-            BlockBody::TouchProbe(d) => {
-                let n = d.number;
-                note(&mut rec, || {
-                    Text::owned(
-                        format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
-                        format!("TCH PROBE {n}: touch-probe cycle not simulated"),
-                    )
-                });
-            }
+            BlockBody::ToolDef { .. }
+            | BlockBody::Stop { .. }
+            | BlockBody::QsAssign { .. }
+            | BlockBody::TouchProbe(_) => self.program_data(&mut rec, &body)?,
             BlockBody::EndPgm { .. } => {
                 self.ended = true;
                 self.pc = cx.program.blocks.len();
@@ -537,18 +501,7 @@ impl Interp {
             }
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
             BlockBody::SysRead(r) => self.sysread(&mut rec, r)?,
-            BlockBody::FnOther { number: 14, text } => {
-                return Err(SimErrorCode::FnError { text: text.clone() });
-            }
-            BlockBody::FnOther { number, text } => {
-                let (n, t) = (*number, text.clone());
-                note(&mut rec, || {
-                    Text::owned(
-                        format!("FN {n}: {t} – wird nicht simuliert"),
-                        format!("FN {n}: {t} – not simulated"),
-                    )
-                })
-            }
+            BlockBody::FnOther { number, text } => self.fn_other(&mut rec, *number, text)?,
             BlockBody::Unknown { text } => {
                 let t = text.clone();
                 note(&mut rec, || {
@@ -577,6 +530,73 @@ impl Interp {
             FnOp::Len => a.hypot(b),
         };
         self.set_q(f.target, v)
+    }
+
+    /// `TOOL DEF`, `STOP`, `QS…`, `TCH PROBE`: blocks that store data for later blocks or say
+    /// what the control would do. Out of line, like the other rare kinds: the page split leaves
+    /// them to the wasm loaded after the first screen.
+    #[inline(never)]
+    fn program_data(&mut self, rec: &mut Option<&mut Rec>, body: &BlockBody) -> R<()> {
+        match body {
+            BlockBody::ToolDef { tool, length, radius } => {
+                let l = length.map(|v| self.value(&v)).transpose()?;
+                let r = radius.map(|v| self.value(&v)).transpose()?;
+                self.tool_defs.retain(|(t, ..)| t != tool);
+                self.tool_defs.push((tool.clone(), l, r));
+                note(rec, || {
+                    Text::new(
+                        "TOOL DEF: Werkzeug im Programm definiert",
+                        "TOOL DEF: tool defined in the program",
+                    )
+                });
+            }
+            BlockBody::Stop { m } => {
+                self.spindle_m(m);
+                note(rec, || {
+                    Text::new(
+                        "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
+                        "STOP: the control stops here (continue with NC start); the trainer runs on",
+                    )
+                });
+                self.end_m(m);
+            }
+            BlockBody::QsAssign { index, .. } => {
+                let n = *index;
+                note(rec, || {
+                    Text::owned(
+                        format!("QS{n}: String-Parameter werden nicht simuliert"),
+                        format!("QS{n}: string parameters are not simulated"),
+                    )
+                });
+            }
+            BlockBody::TouchProbe(d) => {
+                let n = d.number;
+                note(rec, || {
+                    Text::owned(
+                        format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
+                        format!("TCH PROBE {n}: touch-probe cycle not simulated"),
+                    )
+                });
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// `FN n` functions the simulator does not compute: `FN 14` stops with the program's own
+    /// error; every other one is said on its block.
+    #[inline(never)]
+    fn fn_other(&mut self, rec: &mut Option<&mut Rec>, number: u32, text: &str) -> R<()> {
+        if number == 14 {
+            return Err(SimErrorCode::FnError { text: text.to_owned() });
+        }
+        note(rec, || {
+            Text::owned(
+                format!("FN {number}: {text} – wird nicht simuliert"),
+                format!("FN {number}: {text} – not simulated"),
+            )
+        });
+        Ok(())
     }
 
     /// `FN 18: SYSREAD` of the data the simulator knows (iTNC 530 technical manual, "FN18:

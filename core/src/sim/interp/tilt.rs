@@ -248,7 +248,8 @@ impl Interp {
     }
 
     /// `M140 MB…` ("retraction in the tool axis direction", TNC 640 user's manual), at rapid,
-    /// after the block's own move.
+    /// after the block's own move. Out of line: rare, so the page split defers it.
+    #[inline(never)]
     pub(super) fn m140(
         &mut self,
         cx: &Cx<'_>,
