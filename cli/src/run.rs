@@ -10,7 +10,9 @@ use std::process::ExitCode;
 use schwenkbar_core::Lang;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{FIXED_MAX, fixed_ascii, tidy, write_fixed};
-use schwenkbar_core::sim::{ListingRow, SimOptions, Simulation, State, simulate, simulate_listed};
+use schwenkbar_core::sim::{
+    ListingRow, SimOptions, Simulation, State, pick_machine, simulate, simulate_listed,
+};
 use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
 use schwenkbar_core::{Program, parse};
 use serde::Serialize;
@@ -21,7 +23,8 @@ use crate::LangArg;
 pub(crate) struct Args {
     /// The NC program (`.h`, UTF-8 or Latin-1).
     file: PathBuf,
-    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating) or a machine
+    /// Machine id (ac-table, ba-table, bc-head-table, ca-head, b45-nutating), `auto` (the shipped
+    /// machine with the program's rotary axes on which the run gets furthest, said on stderr) or a machine
     /// description `.json` file.
     #[arg(long)]
     machine: String,
@@ -107,16 +110,30 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         Ok(s) => s,
         Err(code) => return code,
     };
-    let machine = match crate::machine_arg::load(&args.machine) {
-        Ok(m) => m,
-        Err(e) => {
-            e.lines().for_each(|line| eprintln!("error: {line}"));
-            return ExitCode::from(2);
-        }
-    };
     let (program, _) = parse(&src);
     let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
     let lang = Lang::from(args.lang);
+    let machine = if args.machine == "auto" {
+        // Every shipped machine is a candidate; which one and why goes to stderr, so the table
+        // and the JSON stay what they are for a named machine.
+        let all: Vec<Machine> =
+            Machine::builtin_ids().iter().filter_map(|id| Machine::builtin(id).ok()).collect();
+        if all.is_empty() {
+            eprintln!("error: no shipped machine");
+            return ExitCode::from(2);
+        }
+        let pick = pick_machine(&program, &all, &opts);
+        eprintln!("note: {}", pick.reason.get(lang));
+        all.into_iter().nth(pick.index).unwrap_or_else(|| pick.simulation.machine.clone())
+    } else {
+        match crate::machine_arg::load(&args.machine) {
+            Ok(m) => m,
+            Err(e) => {
+                e.lines().for_each(|line| eprintln!("error: {line}"));
+                return ExitCode::from(2);
+            }
+        }
+    };
 
     let (sim, written) = if args.json {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());

@@ -188,3 +188,28 @@ fn run_table_rows_are_the_json_states_formatted() {
         }
     }
 }
+
+/// `--machine auto` (issue 31): the shipped machine with the program's rotary axes on which the
+/// run gets furthest; which one and why on stderr, the output as for a named machine.
+#[test]
+fn machine_auto_takes_a_machine_with_the_programs_rotary_axes() {
+    let dir = std::env::temp_dir().join(format!("schwenkbar-auto-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    for (name, words, ids) in [
+        ("bc", "B+30 C+45", &["bc-head-table", "b45-nutating"][..]),
+        ("ac", "A+20 C+90", &["ac-table", "ca-head"][..]),
+    ] {
+        let path = dir.join(format!("{name}.h"));
+        let src = format!(
+            "0 BEGIN PGM AUTO MM\n1 TOOL CALL 1 Z S1000\n2 L Z+50 R0 FMAX\n3 L {words} R0 FMAX\n4 END PGM AUTO MM\n"
+        );
+        std::fs::write(&path, src).expect("write");
+        let o = run(&["run", &path.to_string_lossy(), "--machine", "auto", "--json", "--lang", "en"]);
+        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        let machine = json(&o)["machine"].as_str().unwrap_or_default().to_owned();
+        assert!(ids.contains(&machine.as_str()), "{name}: {machine}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("Machine chosen automatically") && err.contains(&machine), "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

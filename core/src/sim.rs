@@ -82,6 +82,7 @@ mod cycles;
 mod error;
 pub mod geometry;
 mod interp;
+mod pick;
 pub mod segment;
 mod state;
 pub mod tools;
@@ -99,6 +100,7 @@ use crate::machine::Machine;
 pub use collision::{Collision, SafeAlternative};
 pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
+pub use pick::{Pick, pick_machine, programmed_rotary_axes};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
 pub use state::{
     ActivePlane, Blank, Frame, Frames, ListingRow, Pivot, Spindle, SpindleDir, State, TiltSource, ToolState,

@@ -342,3 +342,33 @@ fn every_block_of_every_family_runs_or_says_why_not() {
         }
     }
 }
+
+#[test]
+fn the_machine_for_a_program_has_its_rotary_axes_and_runs_it_furthest() {
+    use schwenkbar_core::plane::RotaryAxis;
+    use schwenkbar_core::sim::{pick_machine, programmed_rotary_axes};
+    let machines: Vec<Machine> =
+        Machine::builtin_ids().iter().map(|id| Machine::builtin(id).expect("shipped")).collect();
+    let program = |words: &str| {
+        parse(&format!(
+            "0 BEGIN PGM P MM\n1 TOOL CALL 1 Z S1000\n2 L Z+50 R0 FMAX\n3 {words}\n4 END PGM P MM\n"
+        ))
+        .0
+    };
+    let p = program("PLANE AXIAL B+30 C+45 TURN FMAX");
+    assert_eq!(programmed_rotary_axes(&p), [RotaryAxis::B, RotaryAxis::C]);
+    let pick = pick_machine(&p, &machines, &SimOptions::default());
+    let chosen = &machines[pick.index];
+    assert!(chosen.joints().iter().any(|j| j.axis == RotaryAxis::B), "{}", chosen.id);
+    assert!(pick.simulation.error.is_none(), "{:?}", pick.simulation.error);
+    assert!(pick.reason.de.contains("B, C") && pick.reason.de.contains(&chosen.id), "{:?}", pick.reason);
+    // No rotary axis: the first machine on which it runs to the end.
+    let p = program("L X+10 Y+10 R0 FMAX");
+    assert!(programmed_rotary_axes(&p).is_empty());
+    assert_eq!(pick_machine(&p, &machines, &SimOptions::default()).index, 0);
+    // A stopped run loses to one that runs to the end: Z+5000 is beyond every machine's travel,
+    // so every run stops and the one furthest wins (ties: the first).
+    let p = program("L Z+5000 R0 FMAX");
+    let pick = pick_machine(&p, &machines, &SimOptions::default());
+    assert!(pick.simulation.error.is_some() && pick.reason.en.contains("gets furthest"), "{:?}", pick.reason);
+}
