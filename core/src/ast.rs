@@ -531,6 +531,26 @@ pub enum Unit {
     Inch,
 }
 
+impl Unit {
+    /// Millimetres per length unit of the program (an inch is 25.4 mm by definition).
+    #[must_use]
+    pub const fn mm(self) -> f64 {
+        match self {
+            Unit::Mm => 1.0,
+            Unit::Inch => 25.4,
+        }
+    }
+
+    /// mm/min per unit of a programmed feed F ([`crate::unconfirmed::INCH_FEED_MM_PER_MIN`]).
+    #[must_use]
+    pub const fn feed_mm_per_min(self) -> f64 {
+        match self {
+            Unit::Mm => 1.0,
+            Unit::Inch => crate::unconfirmed::INCH_FEED_MM_PER_MIN,
+        }
+    }
+}
+
 /// Linear and rotary axis letters as written in path blocks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum Axis {

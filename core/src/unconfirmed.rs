@@ -410,6 +410,20 @@ pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 /// reads them on import.
 pub const IMPORT_LENIENT_SPELLINGS: bool = true;
 
+/// A setup-sheet header's cuboid blank (`(Quader: QX100 QY90 QZ20)`, before `BEGIN PGM`, as a
+/// training simulator exports it) is used when the program has no BLK FORM: in mm, with the
+/// datum on the top face at the corner of smallest X and Y (`BLK FORM 0.1 Z X+0 Y+0 Z-20`,
+/// `0.2 X+100 Y+90 Z+0`), the placement training programs mostly use. **UNCONFIRMED**: the
+/// header does not say where its datum is.
+pub const HEADER_BLANK_AT_DATUM: bool = true;
+
+/// `BEGIN PGM … INCH`: lengths are in inches (25.4 mm) and F in 1/10 inch/min, so one unit of F
+/// is 2.54 mm/min (`F100` = 10 inch/min), as HEIDENHAIN's Klartext manuals give the feed unit
+/// of inch programs; the rotary share of a motion keeps F as written, in °/min. The simulator
+/// works in mm and converts each length and feed where a block uses it; Q parameters keep the
+/// program's numbers. **UNCONFIRMED**: no manual page in `shared/` states the feed unit.
+pub const INCH_FEED_MM_PER_MIN: f64 = 2.54;
+
 /// A cycle parameter written `FMAX` (`Q253=FMAX`, `Q208=FMAX`): the cycle's moves at this feed
 /// in mm/min, the largest the cycle dialogs take ("0…99999.999, alternatively FMAX"), so they
 /// are drawn and timed as the cycle's own feed moves. **UNCONFIRMED**: the control moves at

@@ -372,3 +372,137 @@ fn the_machine_for_a_program_has_its_rotary_axes_and_runs_it_furthest() {
     let pick = pick_machine(&p, &machines, &SimOptions::default());
     assert!(pick.simulation.error.is_some() && pick.reason.en.contains("gets furthest"), "{:?}", pick.reason);
 }
+
+/// The same part written in inches and in millimetres: every length × 25.4, every F × 2.54
+/// (1/10 inch/min). The oracle is the millimetre program, converted by hand.
+const INCH_PART: &str = "0 BEGIN PGM IN INCH
+1 BLK FORM 0.1 Z X-2 Y-2 Z-1
+2 BLK FORM 0.2 X+2 Y+2 Z+0
+3 TOOL CALL 1 Z S3000 F100 DL+0.01
+4 L Z+2 R0 FMAX M3
+5 L X+1 Y+0.5 F200
+6 FN 18: SYSREAD Q5 = ID270 NR1 IDX1
+7 CC X+0 Y+0.5
+8 C X-1 Y+0.5 DR+
+9 CR X+0 Y-0.5 R+1 DR-
+10 L Z+0.5 FMAX
+11 CYCL DEF 200 BOHREN ~
+  Q200=+0.1 ;SICHERHEITS-ABST. ~
+  Q201=-0.5 ;TIEFE ~
+  Q206=+50 ;VORSCHUB TIEFENZ. ~
+  Q202=+0.25 ;ZUSTELL-TIEFE ~
+  Q210=+0 ;VERWEILZEIT OBEN ~
+  Q203=+0 ;KOOR. OBERFLAECHE ~
+  Q204=+1 ;2. SICHERHEITS-ABST. ~
+  Q211=+0 ;VERWEILZEIT UNTEN
+12 L X+0.5 Y+0.5 FMAX M99
+13 CYCL DEF 7.0 NULLPUNKT
+14 CYCL DEF 7.1 X+0.1
+15 L IX+0.25 F300
+16 PLANE SPATIAL SPA+0 SPB+10 SPC+0 TURN MB+0.5 F200 SEQ-
+17 L Z+1 FMAX
+18 PLANE RESET TURN F500
+19 L M140 MB+1
+20 END PGM IN INCH
+";
+
+const MM_PART: &str = "0 BEGIN PGM IN MM
+1 BLK FORM 0.1 Z X-50.8 Y-50.8 Z-25.4
+2 BLK FORM 0.2 X+50.8 Y+50.8 Z+0
+3 TOOL CALL 1 Z S3000 F254 DL+0.254
+4 L Z+50.8 R0 FMAX M3
+5 L X+25.4 Y+12.7 F508
+6 FN 18: SYSREAD Q5 = ID270 NR1 IDX1
+7 CC X+0 Y+12.7
+8 C X-25.4 Y+12.7 DR+
+9 CR X+0 Y-12.7 R+25.4 DR-
+10 L Z+12.7 FMAX
+11 CYCL DEF 200 BOHREN ~
+  Q200=+2.54 ;SICHERHEITS-ABST. ~
+  Q201=-12.7 ;TIEFE ~
+  Q206=+127 ;VORSCHUB TIEFENZ. ~
+  Q202=+6.35 ;ZUSTELL-TIEFE ~
+  Q210=+0 ;VERWEILZEIT OBEN ~
+  Q203=+0 ;KOOR. OBERFLAECHE ~
+  Q204=+25.4 ;2. SICHERHEITS-ABST. ~
+  Q211=+0 ;VERWEILZEIT UNTEN
+12 L X+12.7 Y+12.7 FMAX M99
+13 CYCL DEF 7.0 NULLPUNKT
+14 CYCL DEF 7.1 X+2.54
+15 L IX+6.35 F762
+16 PLANE SPATIAL SPA+0 SPB+10 SPC+0 TURN MB+12.7 F508 SEQ-
+17 L Z+25.4 FMAX
+18 PLANE RESET TURN F1270
+19 L M140 MB+25.4
+20 END PGM IN MM
+";
+
+#[test]
+fn an_inch_program_moves_the_machine_as_its_millimetre_twin() {
+    let (pi, si) = run(INCH_PART);
+    let (pm, sm) = run(MM_PART);
+    assert_eq!(si.states(&pi).count(), sm.states(&pm).count());
+    let close = |a: f64, b: f64, what: &str| assert!((a - b).abs() < 1e-9, "{what}: {a} ≠ {b}");
+    for n in 1..=19 {
+        let (a, b) = (after(&pi, &si, n), after(&pm, &sm, n));
+        for k in 0..3 {
+            close(a.axes.linear[k], b.axes.linear[k], &format!("block {n} axis {k}"));
+            close(a.tip_ics[k], b.tip_ics[k], &format!("block {n} IST {k}"));
+        }
+        for k in 0..2 {
+            close(a.axes.rotary[k], b.axes.rotary[k], &format!("block {n} rotary {k}"));
+        }
+        close(a.tool.length, b.tool.length, "tool length");
+        close(a.feed, b.feed, &format!("block {n} feed (mm/min)"));
+        assert_eq!(a.segments.len(), b.segments.len(), "block {n}: the same moves");
+        // Linear motion takes the same time; the rotary share of a swivel keeps F as written
+        // (°/min), so the TURN blocks differ.
+        if !matches!(n, 16 | 18) {
+            close(a.duration(), b.duration(), &format!("block {n} duration"));
+        }
+        assert_eq!(a.blank, b.blank, "the blank in mm");
+    }
+    // The position display shows the program's unit: X+1 Y+0.5 after block 5.
+    let s5 = after(&pi, &si, 5);
+    assert_eq!(s5.unit, schwenkbar_core::ast::Unit::Inch);
+    close(s5.shown(s5.tip_ics.x), 1.0, "IST X in inches");
+    close(s5.shown_feed(s5.feed), 200.0, "F as written");
+    // Q parameters keep the program's numbers: SYSREAD gives inches, Q114 the length in inches.
+    close(after(&pi, &si, 6).q[&5], 1.0, "SYSREAD X in inches");
+    close(after(&pm, &sm, 6).q[&5], 25.4, "SYSREAD X in mm");
+    close(after(&pi, &si, 3).q[&114] * 25.4, after(&pm, &sm, 3).q[&114], "Q114");
+    // The drill reaches Q201 = -0.5 inch = -12.7 mm below the surface.
+    let drilled = after(&pi, &si, 12);
+    let deepest = drilled.segments.iter().map(|s| s.end.linear.z).fold(f64::INFINITY, f64::min);
+    let deepest_mm =
+        after(&pm, &sm, 12).segments.iter().map(|s| s.end.linear.z).fold(f64::INFINITY, f64::min);
+    close(deepest, deepest_mm, "the deepest point of the drill");
+    // The first block says the unit.
+    let first = after(&pi, &si, 0).message.expect("the unit is said");
+    assert!(first.de.contains("Inch") && first.en.contains("inches"), "{first:?}");
+}
+
+/// A setup-sheet header's blank is the program's when it has no BLK FORM (placed as
+/// `unconfirmed::HEADER_BLANK_AT_DATUM` says); with a BLK FORM the BLK FORM applies.
+#[test]
+fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
+    let header = "(Maschine: Fraese 5 Achsen)\n(Quader: QX100 QY90 QZ20,5)\n(T1 FRAESER D10)\n";
+    let body = "0 BEGIN PGM P MM\n1 TOOL CALL 1 Z S1000\n2 L Z+50 R0 FMAX\n3 END PGM P MM\n";
+    let (p, sim) = run(&format!("{header}{body}"));
+    let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
+    let blank = s.blank.expect("the header's blank");
+    assert_eq!((blank.min.to_array(), blank.max.to_array()), ([0.0, 0.0, -20.5], [100.0, 90.0, 0.0]));
+    let said = s.message.expect("said on the header line");
+    assert!(said.de.contains("100 × 90 × 20,5") && said.en.contains("100 × 90 × 20.5"), "{said:?}");
+    let end = after(&p, &sim, 2);
+    assert_eq!(end.blank, Some(blank), "kept to the end");
+
+    let with_blk = "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X-10 Y-10 Z-5\n2 BLK FORM 0.2 X+10 Y+10 Z+0\n\
+        3 TOOL CALL 1 Z S1000\n4 END PGM P MM\n";
+    let (p, sim) = run(&format!("{header}{with_blk}"));
+    let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
+    assert_eq!(s.blank, None, "the BLK FORM applies, not the header");
+    assert!(s.message.is_some_and(|m| m.en.contains("BLK FORM, which applies")));
+    let blank = after(&p, &sim, 3).blank.expect("BLK FORM");
+    assert_eq!(blank.max.to_array(), [10.0, 10.0, 0.0]);
+}

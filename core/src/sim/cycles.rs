@@ -67,6 +67,65 @@ fn arc(target: DVec3, centre: DVec2, sweep: f64, f: f64) -> CycleMove {
     CycleMove { target, feed: Some(f), arc: Some(ArcTo { centre, sweep }) }
 }
 
+/// What a cycle parameter measures, for the unit of an `INCH` program: lengths convert by 25.4,
+/// feeds like F ([`crate::ast::Unit`]), the rest (angles, counts, dwell times, factors, modes)
+/// stays as written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Quantity {
+    Length,
+    Feed,
+    Other,
+}
+
+/// The quantity of each parameter the simulated cycles read, as the cycle manuals describe the
+/// parameter (Q200 set-up clearance, Q206 feed rate for plunging, Q224 angle of rotation, …);
+/// `None` for a parameter no simulated cycle reads.
+pub(crate) fn quantity(q: u32) -> Option<Quantity> {
+    match q {
+        // Clearances, depths, infeeds, surface and positions, side lengths, corner radius,
+        // diameters, allowances, pitch, retraction and chip-breaking distances.
+        200..=205
+        | 212
+        | 216..=220
+        | 223
+        | 225..=227
+        | 237
+        | 238
+        | 244
+        | 256..=259
+        | 334
+        | 335
+        | 338
+        | 342
+        | 357
+        | 368
+        | 369
+        | 375
+        | 379
+        | 386 => Some(Quantity::Length),
+        // Plunging, milling, retraction, pre-positioning and finishing feed rates.
+        206..=208 | 253 | 385 => Some(Quantity::Feed),
+        // Dwell times, counts, angles, machining operation, strategies, directions, factors.
+        210
+        | 211
+        | 213
+        | 215
+        | 224
+        | 241..=243
+        | 245..=248
+        | 301
+        | 350
+        | 351
+        | 365..=367
+        | 370
+        | 374
+        | 376..=378
+        | 389
+        | 395 => Some(Quantity::Other),
+        _ => None,
+    }
+}
+
 /// The evaluated parameters of one cycle definition; the last line of a number wins, as the
 /// control reads a definition top to bottom. Cycles 220/221, `PATTERN DEF` and `CYCL CALL POS`
 /// override some of them for the cycle they call ([`Params::set`]).
@@ -184,5 +243,44 @@ pub(crate) mod test_support {
     pub fn path(moves: &[CycleMove]) -> Vec<(f64, f64, f64, Option<f64>)> {
         let r = |x: f64| (x * 1000.0).round() / 1000.0 + 0.0;
         moves.iter().map(|m| (r(m.target.x), r(m.target.y), r(m.target.z), m.feed)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every parameter a simulated cycle reads has its quantity, so an `INCH` program converts
+    /// it: a new `p.get(n)` without an entry in [`quantity`] fails here.
+    #[test]
+    fn every_parameter_read_has_a_quantity() {
+        let sources = [
+            include_str!("cycles.rs"),
+            include_str!("cycles/drill.rs"),
+            include_str!("cycles/face.rs"),
+            include_str!("cycles/pattern.rs"),
+            include_str!("cycles/pocket.rs"),
+            include_str!("interp/cycle_calls.rs"),
+        ];
+        let mut read = Vec::new();
+        for src in sources {
+            for pat in ["get(", "or(", "set("] {
+                for (at, _) in src.match_indices(pat) {
+                    let digits: String =
+                        src[at + pat.len()..].chars().take_while(char::is_ascii_digit).collect();
+                    if let Ok(q) = digits.parse::<u32>()
+                        && q >= 200
+                    {
+                        read.push(q);
+                    }
+                }
+            }
+        }
+        assert!(read.len() > 60, "the scan finds the reads: {read:?}");
+        let missing: Vec<u32> = read.into_iter().filter(|&q| quantity(q).is_none()).collect();
+        assert!(missing.is_empty(), "parameters without a quantity: {missing:?}");
+        assert_eq!(quantity(201), Some(Quantity::Length));
+        assert_eq!(quantity(206), Some(Quantity::Feed));
+        assert_eq!(quantity(224), Some(Quantity::Other));
     }
 }

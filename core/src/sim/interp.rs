@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnJump, FnMath, FnOp, Func,
-    Label, Line, OldCycleData, OldCycleWord, Program, QName, RadiusComp, SysRead, ToolCall, ToolRef,
+    Label, Line, OldCycleData, OldCycleWord, Program, QName, RadiusComp, SysRead, ToolCall, ToolRef, Unit,
 };
 use crate::axes::AxisValues;
 use crate::lang::Text;
@@ -130,6 +130,8 @@ pub(crate) struct Interp {
     bodies: Option<Arc<Bodies>>,
     /// What the check knows from the motions before ([`Clearances`]).
     clearances: Clearances,
+    /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
+    unit: Unit,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -165,6 +167,21 @@ fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
     if let Some(r) = rec.as_deref_mut() {
         r.message = Some(text());
     }
+}
+
+/// The cuboid of a setup-sheet header line: `QX…`, `QY…` and `QZ…` (each a positive number,
+/// a decimal comma read as a point), as in `(Quader: QX100 QY90 QZ20)`.
+fn header_blank(text: &str) -> Option<DVec3> {
+    let size = |key: &str| -> Option<f64> {
+        let at = text.find(key)? + key.len();
+        let digits: String = text[at..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | ','))
+            .map(|c| if c == ',' { '.' } else { c })
+            .collect();
+        digits.parse::<f64>().ok().filter(|v| *v > 0.0 && v.is_finite())
+    };
+    Some(DVec3::new(size("QX")?, size("QY")?, size("QZ")?))
 }
 
 fn rotary_of(axis: Axis) -> Option<RotaryAxis> {
@@ -244,6 +261,7 @@ impl Interp {
             spat: None,
             bodies: None,
             clearances: Clearances::default(),
+            unit: Unit::Mm,
         };
         it.rebuild_bodies(machine);
         it.refresh();
@@ -294,6 +312,22 @@ impl Interp {
                 None => Err(SimErrorCode::UndefinedQ { index }),
             },
         }
+    }
+
+    /// A programmed length in mm (`INCH` programs: × 25.4).
+    fn length(&self, v: &Value) -> R<f64> {
+        Ok(self.value(v)? * self.unit.mm())
+    }
+
+    /// A programmed feed F in mm/min ([`Unit::feed_mm_per_min`]).
+    fn feed_rate(&self, v: &Value) -> R<f64> {
+        Ok(self.value(v)? * self.unit.feed_mm_per_min())
+    }
+
+    /// A length in mm as the program writes it (what Q108, Q114 and SYSREAD give an `INCH`
+    /// program).
+    fn in_program_unit(&self, mm: f64) -> f64 {
+        mm / self.unit.mm()
     }
 
     fn eval(&self, e: &Expr) -> R<f64> {
@@ -380,9 +414,19 @@ impl Interp {
             BlockBody::BeginPgm { unit, .. } => {
                 // Q113: the unit of the program (preassigned, TNC 410 user's manual "Preassigned
                 // Q parameters": 0 mm, 1 inch).
-                self.q.insert(113, if *unit == crate::ast::Unit::Inch { 1.0 } else { 0.0 });
+                self.q.insert(113, if *unit == Unit::Inch { 1.0 } else { 0.0 });
+                self.unit = *unit;
+                if *unit == Unit::Inch {
+                    note(&mut rec, || {
+                        Text::new(
+                            "Programm in Inch: Längen in Zoll (× 25,4 mm), F in 1/10 inch/min",
+                            "Program in inches: lengths × 25.4 mm, F in 1/10 inch/min",
+                        )
+                    });
+                }
             }
-            BlockBody::Empty | BlockBody::Structure { .. } | BlockBody::Header { .. } => {}
+            BlockBody::Empty | BlockBody::Structure { .. } => {}
+            BlockBody::Header { text } => self.header(cx, &mut rec, text),
             BlockBody::ToolDef { .. }
             | BlockBody::Stop { .. }
             | BlockBody::QsAssign { .. }
@@ -539,8 +583,8 @@ impl Interp {
     fn program_data(&mut self, rec: &mut Option<&mut Rec>, body: &BlockBody) -> R<()> {
         match body {
             BlockBody::ToolDef { tool, length, radius } => {
-                let l = length.map(|v| self.value(&v)).transpose()?;
-                let r = radius.map(|v| self.value(&v)).transpose()?;
+                let l = length.map(|v| self.length(&v)).transpose()?;
+                let r = radius.map(|v| self.length(&v)).transpose()?;
                 self.tool_defs.retain(|(t, ..)| t != tool);
                 self.tool_defs.push((tool.clone(), l, r));
                 note(rec, || {
@@ -583,6 +627,38 @@ impl Interp {
         Ok(())
     }
 
+    /// A setup-sheet header line before `BEGIN PGM`, as a training simulator exports it: a
+    /// cuboid blank `Quader: QX100 QY90 QZ20` is the program's blank when the program has no
+    /// BLK FORM ([`unconfirmed::HEADER_BLANK_AT_DATUM`]); any other header line is shown as
+    /// written.
+    #[inline(never)]
+    fn header(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, text: &str) {
+        let Some(size) = header_blank(text).filter(|_| unconfirmed::HEADER_BLANK_AT_DATUM) else { return };
+        let (x, y, z) = (size.x, size.y, size.z);
+        if cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
+            note(rec, || {
+                Text::new(
+                    "Rohteil des Einrichteblatts: das Programm hat eine BLK FORM, sie gilt",
+                    "Blank of the setup sheet: the program has a BLK FORM, which applies",
+                )
+            });
+            return;
+        }
+        self.blank = Some(Blank { min: DVec3::new(0.0, 0.0, -z), max: DVec3::new(x, y, 0.0) });
+        self.rebuild_bodies(cx.machine);
+        let sizes = |l| {
+            let n = |v: f64| crate::number::prose(v, None, l);
+            (format!("{} × {} × {} mm", n(x), n(y), n(z)), format!("X0…{} Y0…{} Z−{}…0", n(x), n(y), n(z)))
+        };
+        note(rec, || {
+            let ((de, de_blk), (en, en_blk)) = (sizes(crate::Lang::De), sizes(crate::Lang::En));
+            Text::owned(
+                format!("Rohteil des Einrichteblatts {de} als BLK FORM {de_blk}"),
+                format!("Blank of the setup sheet {en} as BLK FORM {en_blk}"),
+            )
+        });
+    }
+
     /// `FN n` functions the simulator does not compute: `FN 14` stops with the program's own
     /// error; every other one is said on its block.
     #[inline(never)]
@@ -613,7 +689,7 @@ impl Interp {
             let rotary =
                 |a: RotaryAxis| self.axes.letters.iter().position(|&l| l == a).map(|k| self.axes.rotary[k]);
             match i {
-                1..=3 => Some(linear[i - 1]),
+                1..=3 => Some(self.in_program_unit(linear[i - 1])),
                 4 => rotary(RotaryAxis::A),
                 5 => rotary(RotaryAxis::B),
                 6 => rotary(RotaryAxis::C),

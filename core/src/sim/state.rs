@@ -140,6 +140,9 @@ pub struct State {
     pub ended: bool,
     /// `false` if the block was only listed (after M30/M2, or skipped with `/`).
     pub executed: bool,
+    /// The program's unit (`BEGIN PGM … MM|INCH`): every length and feed above is in mm and
+    /// mm/min; the position display shows them in this unit ([`State::shown`]).
+    pub unit: crate::ast::Unit,
 }
 
 /// One executed step as a listing shows it ([`simulate_listed`]): the same values as the
@@ -156,6 +159,18 @@ pub struct ListingRow {
 }
 
 impl State {
+    /// A length in mm as the position display shows it: in the program's unit.
+    #[must_use]
+    pub fn shown(&self, mm: f64) -> f64 {
+        mm / self.unit.mm()
+    }
+
+    /// A feed in mm/min as the program writes F ([`crate::ast::Unit::feed_mm_per_min`]).
+    #[must_use]
+    pub fn shown_feed(&self, mm_per_min: f64) -> f64 {
+        mm_per_min / self.unit.feed_mm_per_min()
+    }
+
     /// How long the block's motion takes, seconds (sum of its segments).
     #[must_use]
     pub fn duration(&self) -> f64 {

@@ -99,7 +99,9 @@ pub enum Decision {
     PatternConventions,
     /// Reading programs written elsewhere: [`IMPORT_BLOCK_NUMBERS_ARE_WARNINGS`](super::IMPORT_BLOCK_NUMBERS_ARE_WARNINGS),
     /// [`IMPORT_LENIENT_SPELLINGS`](super::IMPORT_LENIENT_SPELLINGS),
-    /// [`CYCLE_FMAX_FEED`](super::CYCLE_FMAX_FEED), [`predef`](super::predef).
+    /// [`CYCLE_FMAX_FEED`](super::CYCLE_FMAX_FEED), [`predef`](super::predef),
+    /// [`HEADER_BLANK_AT_DATUM`](super::HEADER_BLANK_AT_DATUM),
+    /// [`INCH_FEED_MM_PER_MIN`](super::INCH_FEED_MM_PER_MIN).
     ImportReadings,
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`](super::ARC_DIRECTION_WITHOUT_DR), [`CIRCLE_END_TOLERANCE`](super::CIRCLE_END_TOLERANCE),
     /// [`ARC_TOOL_AXIS_LINEAR`](super::ARC_TOOL_AXIS_LINEAR), [`CP_IPA_DIRECTION_FROM_DR`](super::CP_IPA_DIRECTION_FROM_DR).
@@ -327,8 +329,8 @@ impl Decision {
                 "Patterns and cycle calls: PATTERN DEF PAT/FRAME row by row, every other row backwards (like cycle 221); cycle 220 with Q247 = 0: a full circle in Q241 equal steps, otherwise start and stop angle both included; after the last point of 220/221 to the 2nd set-up clearance; CYCL CALL POS below the surface: first to the 2nd set-up clearance; M89 calls the cycle already in its own block; the feed of CYCL CALL PAT applies between the points.",
             ),
             Decision::ImportReadings => Text::new(
-                "Programme von anderswo: fehlende, doppelte, nicht aufsteigende oder mit N geschriebene Satznummern sind ein Hinweis je Datei, die Sätze laufen in ihrer Reihenfolge; Dezimalkomma und Leerzeichen nach dem Adressbuchstaben werden gelesen (ein Hinweis je Datei); Zyklusparameter FMAX fahren mit 99999 mm/min; PREDEF nimmt angenommene Werte der globalen Programmeinstellungen (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0,2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1).",
-                "Programs from elsewhere: missing, repeated, non-ascending or N-prefixed block numbers are one note per file, the blocks run in their order; a decimal comma and a blank after the address letter are read (one note per file); cycle parameters FMAX move at 99999 mm/min; PREDEF takes assumed values of the global program settings (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0.2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1).",
+                "Programme von anderswo: fehlende, doppelte, nicht aufsteigende oder mit N geschriebene Satznummern sind ein Hinweis je Datei, die Sätze laufen in ihrer Reihenfolge; Dezimalkomma und Leerzeichen nach dem Adressbuchstaben werden gelesen (ein Hinweis je Datei); Zyklusparameter FMAX fahren mit 99999 mm/min; PREDEF nimmt angenommene Werte der globalen Programmeinstellungen (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0,2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1); das Rohteil eines Einrichteblatts (Quader: QX QY QZ) gilt ohne BLK FORM, in mm, mit dem Nullpunkt auf der Oberseite an der Ecke kleinster X und Y; INCH-Programme: Längen in Zoll, F in 1/10 inch/min, Drehachsanteil in °/min.",
+                "Programs from elsewhere: missing, repeated, non-ascending or N-prefixed block numbers are one note per file, the blocks run in their order; a decimal comma and a blank after the address letter are read (one note per file); cycle parameters FMAX move at 99999 mm/min; PREDEF takes assumed values of the global program settings (Q200 2, Q204 50, Q253 750, Q208 FMAX, Q256 0.2, Q210/Q211 0, Q370 1, Q351 +1, Q366 1); a setup sheet's blank (cuboid: QX QY QZ) applies without a BLK FORM, in mm, with the datum on the top face at the corner of smallest X and Y; INCH programs: lengths in inches, F in 1/10 inch/min, the rotary share in °/min.",
             ),
             Decision::CompensationConventions => Text::new(
                 "Radiuskorrektur: der Übergangskreis an einer Außenecke gehört zum Satz nach der Ecke; RL/RR in einem Kreissatz fährt geradlinig senkrecht vor den Konturanfang; R0 in einem Kreissatz fährt geradlinig zum Kreisanfang; ein Satz, der das Werkzeug anders bewegt (Zyklus, M91, Drehachse, TOOL CALL, Transformation), beendet die Korrektur; RL↔RR ohne R0 ist ein Fehler. APPR/DEP: ohne RL/RR ein Fehler; R bei CT/LCT ist der Radius der Werkzeugmittelpunktsbahn; APPR fährt die Werkzeugachse auf der Geraden zum Hilfspunkt; DEP CT dreht wie APPR CT (RL mit R+ gegen den Uhrzeigersinn); alle Teilbahnen mit dem F des Satzes.",

@@ -5,6 +5,7 @@
 use std::rc::Rc;
 
 use glam::DVec3;
+use schwenkbar_core::ast::Unit;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{ActiveTransform, Level, MachineAxes, SpindleDir, State};
 use yew::prelude::*;
@@ -85,14 +86,18 @@ pub fn position_display(props: &PositionProps) -> Html {
         }
         _ => (s.axes, s.tip_ics),
     };
-    let ist = [tip.x, tip.y, tip.z];
+    // Lengths in the program's unit (an INCH program shows inches, to 4 decimals as the
+    // control writes them); rotary axes in degrees.
+    let shown = |v: f64| schwenkbar_core::number::signed_fixed(v, if s.unit == Unit::Inch { 4 } else { 3 });
+    let ist = [tip.x, tip.y, tip.z].map(|v| s.shown(v));
     let rows = axes.named().into_iter().enumerate().map(|(i, (axis, reference))| {
+        let reference = if i < 3 { s.shown(reference) } else { reference };
         let actual = ist.get(i).copied().unwrap_or(reference);
         html! {
             <tr data-axis={axis.to_string()}>
                 <th>{ axis }</th>
-                <td class="ref">{ signed(reference) }</td>
-                <td class="ist">{ signed(actual) }</td>
+                <td class="ref">{ shown(reference) }</td>
+                <td class="ist">{ shown(actual) }</td>
             </tr>
         }
     });
@@ -104,13 +109,14 @@ pub fn position_display(props: &PositionProps) -> Html {
     let tool =
         if s.tool.name.is_empty() { format!("T{}", s.tool.number) } else { format!("T \"{}\"", s.tool.name) };
     let status = status(s, l);
+    let decimals = if s.unit == Unit::Inch { 3 } else { 1 };
     html! {
         <section class="position" aria-label={l.t("Positionsanzeige", "Position display")}>
             <table>
-                <thead><tr><th></th><th>{ "REF" }</th><th>{ l.t("IST", "ACTL.") }</th></tr></thead>
+                <thead><tr><th>{ if s.unit == Unit::Inch { "INCH" } else { "" } }</th><th>{ "REF" }</th><th>{ l.t("IST", "ACTL.") }</th></tr></thead>
                 <tbody>{ for rows }</tbody>
             </table>
-            <p class="tool">{ format!("{tool} {} L{:.1} R{:.1} · F{:.0} · S{:.0} {spindle}", s.tool.axis, s.tool.length, s.tool.radius, s.feed, s.spindle.speed) }</p>
+            <p class="tool">{ format!("{tool} {axis} L{length:.prec$} R{radius:.prec$} · F{feed:.0} · S{speed:.0} {spindle}", axis = s.tool.axis, length = s.shown(s.tool.length), radius = s.shown(s.tool.radius), feed = s.shown_feed(s.feed), speed = s.spindle.speed, prec = decimals) }</p>
             <p class="status-line" data-testid="status-line">
                 if status.is_empty() { { l.t("keine Transformation aktiv", "no transformation active") } }
                 else { { status.join(" · ") } }

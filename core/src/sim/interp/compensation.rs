@@ -302,28 +302,29 @@ impl Interp {
         // PA of the tool centre: perpendicular to the first element's start.
         let pa_c = pa + s * self.tool.radius * left;
         let ps = self.pos_i;
-        let value = |v: Option<Value>| v.map(|v| self.value(&v)).transpose().map(Option::unwrap_or_default);
+        let length = |v: Option<Value>| v.map(|v| self.length(&v)).transpose().map(Option::unwrap_or_default);
+        let angle = |v: Option<Value>| v.map(|v| self.value(&v)).transpose().map(Option::unwrap_or_default);
         let pieces = match a.kind {
             // PH on the first element's tangent, LEN before PA.
             ApprKind::Lt => {
-                let ph = pa_c - value(a.len)?.abs() * t;
+                let ph = pa_c - length(a.len)?.abs() * t;
                 vec![Elem::line(ps, ph), Elem::line(ph, pa_c)]
             }
             // PH perpendicular to the contour, LEN + tool radius from PA.
             ApprKind::Ln => {
-                let ph = pa_c + value(a.len)?.abs() * s * left;
+                let ph = pa_c + length(a.len)?.abs() * s * left;
                 vec![Elem::line(ps, ph), Elem::line(ph, pa_c)]
             }
             // The arc of central angle CCA ending tangentially at PA; direction from the table
             // (RL with R+ counter-clockwise, R− clockwise; RR the other way).
             ApprKind::Ct => {
-                let r = value(a.radius)?;
+                let r = length(a.radius)?;
                 let dir = s * r.signum();
                 let rho = self.approach_radius(r, s, dir);
                 if r == 0.0 || rho <= 0.0 {
                     return Err(fail(ApprDepReason::ZeroRadius));
                 }
-                let sweep = dir * value(a.cca)?.to_radians();
+                let sweep = dir * angle(a.cca)?.to_radians();
                 let m = pa_c + dir * rho * left;
                 let ph = m + plane.rotate(plane.planar(pa_c - m), -sweep);
                 vec![
@@ -334,7 +335,7 @@ impl Interp {
             // The arc tangent to the line from PS and to the first element, on the side of the
             // compensation.
             ApprKind::Lct => {
-                let r = value(a.radius)?;
+                let r = length(a.radius)?;
                 let rho = self.approach_radius(r, s, s);
                 if r == 0.0 || rho <= 0.0 {
                     return Err(fail(ApprDepReason::ZeroRadius));
@@ -379,20 +380,21 @@ impl Interp {
         let s = c.side;
         let left = plane.normal.cross(t);
         let pe_c = self.pos_i;
-        let value = |v: Option<Value>| v.map(|v| self.value(&v)).transpose().map(Option::unwrap_or_default);
+        let length = |v: Option<Value>| v.map(|v| self.length(&v)).transpose().map(Option::unwrap_or_default);
+        let angle = |v: Option<Value>| v.map(|v| self.value(&v)).transpose().map(Option::unwrap_or_default);
         let pieces = match a.kind {
             // Straight on in the direction of the last element, LEN long.
-            ApprKind::Lt => vec![Elem::line(pe_c, pe_c + value(a.len)?.abs() * t)],
+            ApprKind::Lt => vec![Elem::line(pe_c, pe_c + length(a.len)?.abs() * t)],
             // Perpendicular away from the contour, PN LEN + tool radius from PE.
-            ApprKind::Ln => vec![Elem::line(pe_c, pe_c + value(a.len)?.abs() * s * left)],
+            ApprKind::Ln => vec![Elem::line(pe_c, pe_c + length(a.len)?.abs() * s * left)],
             ApprKind::Ct => {
-                let r = value(a.radius)?;
+                let r = length(a.radius)?;
                 let dir = s * r.signum();
                 let rho = self.approach_radius(r, s, dir);
                 if r == 0.0 || rho <= 0.0 {
                     return Err(fail(ApprDepReason::ZeroRadius));
                 }
-                let sweep = dir * value(a.cca)?.to_radians();
+                let sweep = dir * angle(a.cca)?.to_radians();
                 let m = pe_c + dir * rho * left;
                 let pn = m + plane.rotate(plane.planar(pe_c - m), sweep);
                 vec![Elem { start: pe_c, end: pn, shape: Shape::Arc { centre: m, sweep } }]
@@ -401,7 +403,7 @@ impl Interp {
             // on that line (TNC7 manual, DEP LCT).
             ApprKind::Lct => {
                 let pn = self.target(&a.axes, c.at)?;
-                let r = value(a.radius)?;
+                let r = length(a.radius)?;
                 let rho = self.approach_radius(r, s, s);
                 if r == 0.0 || rho <= 0.0 {
                     return Err(fail(ApprDepReason::ZeroRadius));

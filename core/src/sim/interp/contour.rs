@@ -63,7 +63,7 @@ impl Interp {
         let mut p = start;
         for w in axes {
             if let Some(i) = linear_index(w.axis) {
-                let v = self.value(&w.value)?;
+                let v = self.length(&w.value)?;
                 p[i] = if w.incremental { p[i] + v } else { v };
             }
         }
@@ -125,7 +125,7 @@ impl Interp {
             }
             BlockBody::Cr(m) => {
                 let Some(r) = m.radius else { return Err(SimErrorCode::ArcDegenerate { word }) };
-                let r = self.value(&r)?;
+                let r = self.length(&r)?;
                 let end = arc_end(m)?;
                 geo(arc::arc_cr(
                     &plane,
@@ -145,7 +145,7 @@ impl Interp {
                 let rel = plane.planar(start - pole);
                 let (pr0, pa0) = (rel.length(), plane.polar_angle(rel));
                 let pr = match m.polar_radius {
-                    Some(w) => self.value(&w.value)? + if w.incremental { pr0 } else { 0.0 },
+                    Some(w) => self.length(&w.value)? + if w.incremental { pr0 } else { 0.0 },
                     None => pr0,
                 };
                 let pa = match m.polar_angle {
@@ -233,8 +233,8 @@ impl Interp {
     pub(super) fn before_corner(&mut self, cx: &Cx<'_>, idx: usize, elem: Elem) -> R<Elem> {
         let blocks = &cx.program.blocks;
         let (word, kind) = match blocks.get(idx + 1).and_then(crate::Block::stored_body) {
-            Some(BlockBody::Rnd { radius, .. }) => ("RND", CornerKind::Round(self.value(radius)?)),
-            Some(BlockBody::Chf { length, .. }) => ("CHF", CornerKind::Chamfer(self.value(length)?)),
+            Some(BlockBody::Rnd { radius, .. }) => ("RND", CornerKind::Round(self.length(radius)?)),
+            Some(BlockBody::Chf { length, .. }) => ("CHF", CornerKind::Chamfer(self.length(length)?)),
             _ => return Ok(elem),
         };
         let value = match kind {
@@ -291,7 +291,7 @@ impl Interp {
             None => return Err(SimErrorCode::CornerWithoutContour { word }),
         };
         let rate = match feed {
-            Some(Feed::Value(v)) => Rate::Feed(self.value(v)?),
+            Some(Feed::Value(v)) => Rate::Feed(self.feed_rate(v)?),
             Some(Feed::Max) => Rate::Rapid,
             Some(Feed::Auto) if self.tool.feed > 0.0 => Rate::Feed(self.tool.feed),
             _ if self.feed > 0.0 => Rate::Feed(self.feed),

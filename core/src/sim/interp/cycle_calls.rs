@@ -42,7 +42,7 @@ impl Interp {
                     if let OldCycleWord::Axis(a) = w
                         && let Some(i) = linear_index(a.axis)
                     {
-                        let v = self.value(&a.value)?;
+                        let v = self.length(&a.value)?;
                         c7.written[i] = Some(if a.incremental { c7.base[i] + v } else { v });
                         c7.any_absolute |= !a.incremental;
                     }
@@ -139,7 +139,11 @@ impl Interp {
             .iter()
             .map(|p| {
                 let v = match p.value {
-                    CycleValue::Value(v) => self.value(&v)?,
+                    CycleValue::Value(v) => match cycles::quantity(p.index) {
+                        Some(cycles::Quantity::Length) => self.length(&v)?,
+                        Some(cycles::Quantity::Feed) => self.feed_rate(&v)?,
+                        _ => self.value(&v)?,
+                    },
                     CycleValue::Fmax => unconfirmed::CYCLE_FMAX_FEED,
                     CycleValue::Fauto => {
                         [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0).ok_or_else(|| word(p))?
@@ -284,7 +288,18 @@ impl Interp {
     /// The words of a `PATTERN DEF` item as numbers (a word left out, which the parser reports,
     /// counts as 0, a count as 1).
     fn pattern_values(&self, item: &PatternItem) -> R<PatternValues> {
-        let get = |k: PatternKey, default: f64| item.get(k).map_or(Ok(default), |v| self.value(&v));
+        // Positions, diameters and spacings are lengths; counts and angles stay as written.
+        let get = |k: PatternKey, default: f64| {
+            item.get(k).map_or(Ok(default), |v| match k {
+                PatternKey::X
+                | PatternKey::Y
+                | PatternKey::Z
+                | PatternKey::D
+                | PatternKey::Dx
+                | PatternKey::Dy => self.length(&v),
+                _ => self.value(&v),
+            })
+        };
         Ok(PatternValues {
             kind: item.kind,
             x: get(PatternKey::X, 0.0)?,
@@ -336,7 +351,9 @@ impl Interp {
             return Ok(());
         };
         let rate = match feed {
-            Some(Feed::Value(v)) if unconfirmed::CYCL_CALL_PAT_FEED_BETWEEN_POINTS => Some(self.value(v)?),
+            Some(Feed::Value(v)) if unconfirmed::CYCL_CALL_PAT_FEED_BETWEEN_POINTS => {
+                Some(self.feed_rate(v)?)
+            }
             _ => None,
         };
         let z_call = self.pos_i.z;
@@ -391,11 +408,11 @@ impl Interp {
             let Some(i) = linear_index(w.axis) else {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             };
-            let v = self.value(&w.value)?;
+            let v = self.length(&w.value)?;
             target[i] = if w.incremental { target[i] + v } else { v };
         }
         let rate = match l.feed.as_ref() {
-            Some(Feed::Value(v)) => Some(self.value(v)?),
+            Some(Feed::Value(v)) => Some(self.feed_rate(v)?),
             Some(Feed::Max) => None,
             Some(Feed::Auto) => (self.tool.feed > 0.0).then_some(self.tool.feed),
             None => (self.feed > 0.0).then_some(self.feed),

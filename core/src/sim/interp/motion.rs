@@ -6,11 +6,12 @@ use crate::sim::arc::Elem;
 use crate::sim::segment::TcpmPath;
 
 /// Duration (s) = distance / (feed per minute) · 60; the longer of the linear (`lin`, mm) and
-/// rotary (`rot`, °) shares wins (sim.rs doc).
-fn duration(cx: &Cx<'_>, rate: Rate, lin: f64, rot: f64) -> f64 {
+/// rotary (`rot`, °) shares wins (sim.rs doc). The rotary share takes F as written in °/min:
+/// `unit` undoes the mm/min conversion of an `INCH` program's F.
+fn duration(cx: &Cx<'_>, unit: Unit, rate: Rate, lin: f64, rot: f64) -> f64 {
     let g = &cx.machine.geometry;
     let (lin_rate, rot_rate) = match rate {
-        Rate::Feed(f) if f > 0.0 => (f, f),
+        Rate::Feed(f) if f > 0.0 => (f, f / unit.feed_mm_per_min()),
         _ => (g.rapid_linear, g.rapid_rotary),
     };
     let d = (lin / lin_rate).max(rot / rot_rate) * 60.0;
@@ -81,7 +82,7 @@ impl Interp {
         if moves && (rec.is_some() || self.bodies.is_some()) {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
-            let duration = duration(cx, rate, lin, rot);
+            let duration = duration(cx, self.unit, rate, lin, rot);
             let seg = self.segment(block, kind, target, rotary_delta, duration, path());
             self.record(rec, seg)?;
         }
@@ -133,7 +134,7 @@ impl Interp {
         path: SegmentPath,
     ) -> R<()> {
         if length > 0.0 && (rec.is_some() || self.bodies.is_some()) {
-            let duration = duration(cx, rate, length, 0.0);
+            let duration = duration(cx, self.unit, rate, length, 0.0);
             let seg = self.segment(block, kind, target, [0.0; 2], duration, path);
             self.record(rec, seg)?;
         }
@@ -151,7 +152,7 @@ impl Interp {
                 }
             }
             Some(Feed::Value(v)) => {
-                let f = self.value(v)?;
+                let f = self.feed_rate(v)?;
                 self.feed = f;
                 Rate::Feed(f)
             }
@@ -181,7 +182,7 @@ impl Interp {
         let mut spatial: [Option<(f64, bool)>; 3] = [None; 3];
         for w in line.axes.iter() {
             if let Some(i) = linear_index(w.axis) {
-                let v = self.value(&w.value)?;
+                let v = self.length(&w.value)?;
                 lin_prog = true;
                 let slot = if m91 { &mut l[i] } else { &mut p[i] };
                 *slot = if w.incremental { *slot + v } else { v };

@@ -30,7 +30,7 @@ impl Interp {
         let mut p = if b.part == 2 { base } else { DVec3::ZERO };
         for w in b.axes.iter() {
             if let Some(i) = linear_index(w.axis) {
-                let v = self.value(&w.value)?;
+                let v = self.length(&w.value)?;
                 p[i] = if w.incremental { base[i] + v } else { v };
             }
         }
@@ -46,8 +46,8 @@ impl Interp {
 
     pub(super) fn tool_call(&mut self, cx: &Cx<'_>, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
         self.tcpm_reset_before("TOOL CALL")?;
-        let dl = t.dl.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
-        let dr = t.dr.as_ref().map(|v| self.value(v)).transpose()?.unwrap_or(0.0);
+        let dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
+        let dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         if let Some(tool) = &t.tool {
             let (mut entry, mut known) = tools::lookup(tool);
             if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
@@ -87,14 +87,14 @@ impl Interp {
             self.spindle.speed = self.value(s)?;
         }
         if let Some(f) = &t.feed {
-            let f = self.value(f)?;
+            let f = self.feed_rate(f)?;
             self.tool.feed = f;
             self.feed = f;
         }
         // Q108 the active tool radius, Q114 the tool length (preassigned Q parameters, iTNC 530
-        // and TNC 410 user's manuals).
-        self.q.insert(108, self.tool.radius);
-        self.q.insert(114, self.tool.length);
+        // and TNC 410 user's manuals), in the program's unit.
+        self.q.insert(108, self.in_program_unit(self.tool.radius));
+        self.q.insert(114, self.in_program_unit(self.tool.length));
         self.kin.tool_length = self.tool.length;
         self.rebuild_bodies(cx.machine);
         self.sync_pos();
@@ -121,7 +121,7 @@ impl Interp {
         let mut any_absolute = false;
         for w in axes {
             if let Some(i) = linear_index(w.axis) {
-                let v = self.value(&w.value)?;
+                let v = self.length(&w.value)?;
                 written[i] = Some(if w.incremental { base[i] + v } else { v });
                 any_absolute |= !w.incremental;
             }

@@ -48,6 +48,7 @@ impl Interp {
             segments: rec.segments,
             ended: self.ended,
             executed,
+            unit: self.unit,
         }
     }
 

@@ -41,7 +41,7 @@ impl Interp {
         idx: usize,
         pb: &PlaneBlock,
     ) -> R<()> {
-        let pb: PlaneBlock<f64> = pb.try_map(|v| self.value(v))?;
+        let pb = self.positioning_in_mm(pb.try_map(|v| self.value(v))?);
         let machine = cx.machine;
         let start = self.axes.rotary_values();
         let opts = SolveOptions { start, ..SolveOptions::default() };
@@ -218,6 +218,34 @@ impl Interp {
         }
     }
 
+    /// The PLANE block with its positioning's distance (DIST, MB) in mm and its F in mm/min;
+    /// the angles stay as written, and so does PLANE POINTS: its plane does not depend on the
+    /// unit.
+    fn positioning_in_mm(&self, mut pb: PlaneBlock<f64>) -> PlaneBlock<f64> {
+        let (mm, f_mm) = (self.unit.mm(), self.unit.feed_mm_per_min());
+        let feed = |f: &mut Option<Feed<f64>>| {
+            if let Some(Feed::Value(v)) = f {
+                *v *= f_mm;
+            }
+        };
+        match &mut pb.positioning {
+            Some(Positioning::Move { dist, feed: f }) => {
+                if let Some(d) = dist {
+                    *d *= mm;
+                }
+                feed(f);
+            }
+            Some(Positioning::Turn { move_back, feed: f }) => {
+                if let Some(MoveBack::Dist(d)) = move_back {
+                    *d *= mm;
+                }
+                feed(f);
+            }
+            Some(Positioning::Stay) | None => {}
+        }
+        pb
+    }
+
     pub(super) fn swivel_rate(&self, feed: Option<Feed<f64>>) -> Rate {
         match feed {
             Some(Feed::Value(f)) if f > 0.0 => Rate::Feed(f),
@@ -258,7 +286,7 @@ impl Interp {
         mb: MoveBack,
     ) -> R<()> {
         let mb = match mb {
-            MoveBack::Dist(v) => MoveBack::Dist(self.value(&v)?),
+            MoveBack::Dist(v) => MoveBack::Dist(self.length(&v)?),
             MoveBack::Max => MoveBack::Max,
         };
         self.retract(cx, rec, idx, mb, Rate::Rapid)?;
