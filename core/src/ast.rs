@@ -682,6 +682,10 @@ pub struct BlkForm {
 pub enum ToolRef {
     Number(u32),
     Name(String),
+    /// `TOOL CALL Q5`: the number is the parameter's value (index as [`QName`]).
+    Param(u32),
+    /// `TOOL CALL QS5`: the name is the string parameter's text.
+    StringParam(u32),
 }
 
 /// `TOOL CALL n|"name" Z S… F… DL… DR… DR2…`.

@@ -404,6 +404,8 @@ fn tool_ref(out: &mut String, t: &ToolRef) {
     let _ = match t {
         ToolRef::Number(n) => write!(out, "{n}"),
         ToolRef::Name(s) => write!(out, "\"{s}\""),
+        ToolRef::Param(q) => write!(out, "{}", crate::ast::QName(*q)),
+        ToolRef::StringParam(n) => write!(out, "QS{n}"),
     };
 }
 

@@ -506,3 +506,35 @@ fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
     let blank = after(&p, &sim, 3).blank.expect("BLK FORM");
     assert_eq!(blank.max.to_array(), [10.0, 10.0, 0.0]);
 }
+
+/// `TOOL CALL Q5`, `TOOL CALL QL5`, `TOOL CALL QS5` and `TOOL DEF Q6`: the tool number from a
+/// numeric parameter; a string parameter's name is not simulated (an unknown tool, said).
+#[test]
+fn a_tool_called_by_a_parameter() {
+    use schwenkbar_core::ast::ToolRef;
+    same("TOOL CALL Q5 Z S1000", "TOOL CALL Q5 Z S1000");
+    same("TOOL CALL QL5 Z", "TOOL CALL QL5 Z");
+    same("TOOL CALL QS5 Z", "TOOL CALL QS5 Z");
+    same("TOOL DEF Q6 L+75 R+5", "TOOL DEF Q6 L+75 R+5");
+    match body("TOOL CALL QL5 Z") {
+        BlockBody::ToolCall(t) => assert_eq!(t.tool, Some(ToolRef::Param(QL_BASE + 5))),
+        other => panic!("{other:?}"),
+    }
+    let src = "0 BEGIN PGM T MM\n1 Q5 = 8\n2 TOOL CALL Q5 Z S1000\n3 Q6 = 40\n\
+        4 TOOL DEF Q6 L+75 R+6\n5 TOOL CALL 40 Z\n6 TOOL CALL QS1 Z\n7 END PGM T MM\n";
+    let (p, sim) = run(src);
+    let t = after(&p, &sim, 2).tool;
+    // Tool 8 of the shipped table: BOHRER_D8, L120 R4.
+    assert_eq!((t.number, t.name.as_str(), t.length, t.radius, t.known), (8, "BOHRER_D8", 120.0, 4.0, true));
+    let t = after(&p, &sim, 5).tool;
+    assert_eq!((t.number, t.length, t.radius, t.known), (40, 75.0, 6.0, true), "TOOL DEF Q6 defined tool 40");
+    let s = after(&p, &sim, 6);
+    assert!(!s.tool.known && s.tool.name == "QS1", "{:?}", s.tool);
+    assert!(s.message.is_some_and(|m| m.en.contains("Tool \"QS1\" not in the tool table")));
+
+    let (p, _) = parse("0 BEGIN PGM T MM\n1 Q5 = -2\n2 TOOL CALL Q5 Z\n3 END PGM T MM\n");
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    let e = sim.error.expect("a negative tool number stops");
+    assert_eq!(e.line, 3);
+    assert!(e.detail.de.contains("Q5 = -2 ist keine Werkzeugnummer"), "{:?}", e.detail);
+}

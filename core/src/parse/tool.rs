@@ -4,7 +4,7 @@
 //!   def  := TOOL DEF (n|"name") [L v] [R v]
 
 use super::Cx;
-use super::words::{axis_word, keyword, quoted, sp, uint, word_value};
+use super::words::{Step, axis_word, keyword, q_param, quoted, sp, uint, word_value};
 use crate::ast::{Axis, BlkForm, BlockBody, ToolCall, ToolRef};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::Value;
@@ -57,6 +57,24 @@ pub(super) fn blk_form(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     Some(BlockBody::BlkForm(Box::new(BlkForm { part, tool_axis: axis, axes: cx.take_axes() })))
 }
 
+/// The tool of `TOOL CALL`/`TOOL DEF`: a number, a `"name"`, a numeric parameter holding the
+/// number (`Q5`, `QL5`, `QR5`) or a string parameter holding the name (`QS5`), as the TNC
+/// dialog takes them; `None` if `i` starts none of them.
+fn tool_ref(i: &str) -> Option<Step<'_, ToolRef>> {
+    if i.starts_with('"') {
+        return Some(quoted(i).map(|(r, name)| (r, ToolRef::Name(name.to_owned()))));
+    }
+    if i.as_bytes().first().is_some_and(u8::is_ascii_digit) {
+        return Some(uint(i).map(|(r, n)| (r, ToolRef::Number(n))));
+    }
+    if let Some(digits) =
+        i.strip_prefix("QS").filter(|d| d.as_bytes().first().is_some_and(u8::is_ascii_digit))
+    {
+        return Some(uint(digits).map(|(r, n)| (r, ToolRef::StringParam(n))));
+    }
+    q_param(i).map(|q| q.map(|(r, index)| (r, ToolRef::Param(index))))
+}
+
 /// `TOOL DEF 2 L+75 R+5`, `TOOL DEF 0`, `TOOL DEF "name"`.
 // Out of line in wasm, like the other rare families (see labels_q.rs).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
@@ -64,22 +82,13 @@ pub(super) fn tool_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let Some(mut i) = keyword(body, "TOOL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
         return super::unknown(cx, body);
     };
-    let tool = if i.starts_with('"') {
-        match quoted(i) {
-            Ok((r, name)) => {
-                i = sp(r);
-                ToolRef::Name(name.to_owned())
-            }
-            Err(e) => return cx.fail(e),
+    let tool = match tool_ref(i) {
+        Some(Ok((r, t))) => {
+            i = sp(r);
+            t
         }
-    } else {
-        match uint(i) {
-            Ok((r, n)) => {
-                i = sp(r);
-                ToolRef::Number(n)
-            }
-            Err(_) => return cx.invalid(i, Some(Expected::LabelNumberOrName)),
-        }
+        Some(Err(e)) => return cx.fail(e),
+        None => return cx.invalid(i, Some(Expected::LabelNumberOrName)),
     };
     let (mut length, mut radius) = (None, None);
     while !i.is_empty() {
@@ -108,22 +117,13 @@ pub(super) fn tool_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         return super::unknown(cx, body);
     };
     let mut call = ToolCall::default();
-    if i.starts_with('"') {
-        match quoted(i) {
-            Ok((r, name)) => {
-                call.tool = Some(ToolRef::Name(name.to_owned()));
-                i = sp(r);
-            }
-            Err(e) => return cx.fail(e),
+    match tool_ref(i) {
+        Some(Ok((r, t))) => {
+            call.tool = Some(t);
+            i = sp(r);
         }
-    } else if i.as_bytes().first().is_some_and(u8::is_ascii_digit) {
-        match uint(i) {
-            Ok((r, n)) => {
-                call.tool = Some(ToolRef::Number(n));
-                i = sp(r);
-            }
-            Err(e) => return cx.fail(e),
-        }
+        Some(Err(e)) => return cx.fail(e),
+        None => {}
     }
     if let Some((r, a)) = tool_axis(i) {
         call.axis = Some(a);

@@ -24,6 +24,8 @@ pub enum SimErrorCode {
     UndefinedQ { index: u32 },
     /// A formula gave no number (division by zero, root of a negative number, …).
     Arithmetic { index: u32 },
+    /// `TOOL CALL Q…` with a parameter that holds no tool number (negative or too large).
+    ToolNumber { index: u32, value: f64 },
     /// `M99`/`CYCL CALL` with no cycle defined.
     NoCycle,
     /// The cycle was defined with its parameters left out (as printed in the seed).
@@ -141,6 +143,7 @@ impl SimErrorCode {
             SimErrorCode::Plane { error } => error.message(),
             SimErrorCode::UndefinedQ { .. } => t("Q-Parameter nicht definiert", "Q parameter not defined"),
             SimErrorCode::Arithmetic { .. } => t("Rechenfehler", "Arithmetical error"),
+            SimErrorCode::ToolNumber { .. } => t("Werkzeugnummer falsch", "Tool number wrong"),
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
             SimErrorCode::CycleParamsMissing { .. }
             | SimErrorCode::CycleParamMissing { .. }
@@ -218,6 +221,18 @@ impl SimErrorCode {
                 format!(
                     "{}: the result is not a number (division by 0, root of a negative number, …)",
                     QName(*index)
+                ),
+            ),
+            SimErrorCode::ToolNumber { index, value } => t(
+                format!(
+                    "{} = {} ist keine Werkzeugnummer (0 oder größer)",
+                    QName(*index),
+                    prose(*value, None, Lang::De)
+                ),
+                format!(
+                    "{} = {} is no tool number (0 or more)",
+                    QName(*index),
+                    prose(*value, None, Lang::En)
                 ),
             ),
             SimErrorCode::NoCycle => {

@@ -585,8 +585,9 @@ impl Interp {
             BlockBody::ToolDef { tool, length, radius } => {
                 let l = length.map(|v| self.length(&v)).transpose()?;
                 let r = radius.map(|v| self.length(&v)).transpose()?;
-                self.tool_defs.retain(|(t, ..)| t != tool);
-                self.tool_defs.push((tool.clone(), l, r));
+                let tool = self.tool_of(tool)?;
+                self.tool_defs.retain(|(t, ..)| *t != tool);
+                self.tool_defs.push((tool, l, r));
                 note(rec, || {
                     Text::new(
                         "TOOL DEF: Werkzeug im Programm definiert",

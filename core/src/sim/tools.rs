@@ -135,6 +135,8 @@ pub fn lookup(tool: &ToolRef) -> (ToolEntry, bool) {
     let found = tool_table().iter().find(|t| match tool {
         ToolRef::Number(n) => t.number == *n,
         ToolRef::Name(s) => t.name.eq_ignore_ascii_case(s),
+        // The simulator resolves a numeric parameter first; a string parameter's text is unknown.
+        ToolRef::Param(_) | ToolRef::StringParam(_) => false,
     });
     if let Some(t) = found {
         return (t.clone(), true);
@@ -145,6 +147,14 @@ pub fn lookup(tool: &ToolRef) -> (ToolEntry, bool) {
         ToolRef::Name(s) => {
             d.number = 0;
             d.name = s.clone();
+        }
+        ToolRef::Param(q) => {
+            d.number = 0;
+            d.name = crate::ast::QName(*q).to_string();
+        }
+        ToolRef::StringParam(n) => {
+            d.number = 0;
+            d.name = format!("QS{n}");
         }
     }
     (d, false)

@@ -49,6 +49,7 @@ impl Interp {
         let dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         if let Some(tool) = &t.tool {
+            let tool = &self.tool_of(tool)?;
             let (mut entry, mut known) = tools::lookup(tool);
             if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
                 entry.length = l.unwrap_or(entry.length);
@@ -62,7 +63,12 @@ impl Interp {
             self.tool.radius = entry.radius + dr;
             self.tool.known = known;
             if !known {
-                let (n, l, r) = (self.tool.number, self.tool.length, self.tool.radius);
+                let (l, r) = (self.tool.length, self.tool.radius);
+                // A tool called by name is named by it, not by the number 0 it gets.
+                let n = match self.tool.name.as_str() {
+                    "" => self.tool.number.to_string(),
+                    name => format!("\"{name}\""),
+                };
                 note(rec, || {
                     Text::owned(
                         format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
@@ -99,6 +105,18 @@ impl Interp {
         self.rebuild_bodies(cx.machine);
         self.sync_pos();
         Ok(())
+    }
+
+    /// The tool a `TOOL CALL`/`TOOL DEF` names: the number a numeric parameter holds (its
+    /// integer part; a tool number is ≥ 0), anything else as written. A string parameter's
+    /// text is not simulated: the tool stays unknown and the block says so.
+    pub(super) fn tool_of(&self, tool: &ToolRef) -> R<ToolRef> {
+        let ToolRef::Param(q) = *tool else { return Ok(tool.clone()) };
+        let v = self.value(&Value::Param { index: q, negate: false })?;
+        if !(0.0..=f64::from(u32::MAX)).contains(&v) {
+            return Err(SimErrorCode::ToolNumber { index: q, value: v });
+        }
+        Ok(ToolRef::Number(v.trunc() as u32))
     }
 
     /// The new datum shift from the written components ([`unconfirmed::DATUM_ABSOLUTE_REPLACES`]):
