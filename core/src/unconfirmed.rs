@@ -417,6 +417,14 @@ pub const IMPORT_LENIENT_SPELLINGS: bool = true;
 /// header does not say where its datum is.
 pub const HEADER_BLANK_AT_DATUM: bool = true;
 
+/// `CC` naming the two axes of another main plane than the working plane (`CC X… Z…` with tool
+/// axis Z, as CAM systems write ramps) puts the circles `C`, `CP` and the polar lines `LP` after
+/// it in that plane, with the reference axis and DR+ of that plane as working plane (ZX: from Z,
+/// DR+ turning Z towards X) — the three working planes of the manuals' "Circle center CC"
+/// table. Radius compensation there is refused (`CompensationOffPlane`). **UNCONFIRMED**: no
+/// manual page in `shared/` describes circles outside the working plane.
+pub const ARC_PLANE_OF_CC: bool = true;
+
 /// `BEGIN PGM … INCH`: lengths are in inches (25.4 mm) and F in 1/10 inch/min, so one unit of F
 /// is 2.54 mm/min (`F100` = 10 inch/min), as HEIDENHAIN's Klartext manuals give the feed unit
 /// of inch programs; the rotary share of a motion keeps F as written, in °/min. The simulator

@@ -102,6 +102,52 @@ fn c_arcs_in_the_three_main_planes_end_exactly_and_stay_on_their_circle() {
     }
 }
 
+/// With tool axis Z, `CC` naming the two axes of another main plane puts `C` and `CP` in that
+/// plane (`unconfirmed::ARC_PLANE_OF_CC`): the same circle as with that plane's tool axis, the
+/// ramps CAM systems write (`CC X… Z…` + `CP IPA-90 DR-`). RL/RR there is refused.
+#[test]
+fn arcs_in_the_plane_of_their_cc_with_tool_axis_z() {
+    for plane in ['Y', 'X'] {
+        let (c, r, h) = ((10.0, -5.0), 25.0, 7.0);
+        let (a0, a1) = (30.0, 150.0);
+        let start = on_circle(plane, c, r, a0, h);
+        let end = on_circle(plane, c, r, a1, h);
+        let [(l1, _), (l2, _), _] = plane_axes(plane);
+        let src = program(
+            'Z',
+            &[
+                format!("L {} R0 FMAX", words(plane, start)),
+                format!("CC {l1}{:+} {l2}{:+}", c.0, c.1),
+                format!("C {} DR+ F500", words(plane, end)),
+                "CP IPA-60 DR- F500".to_owned(),
+            ],
+        );
+        let (p, m, sim) = run(&src);
+        assert!(sim.error.is_none(), "{plane}: {:?}", sim.error);
+        let s = after(&p, &sim, 5);
+        assert_close!(s.tip_ics, end, TOL, "{plane} C end");
+        for f in [0.0, 0.5, 1.0] {
+            assert_close!(ics(&m, &s, f), on_circle(plane, c, r, a0 + f * 120.0, h), TOL, "{plane} C at {f}");
+        }
+        let s = after(&p, &sim, 6);
+        for f in [0.5, 1.0] {
+            assert_close!(ics(&m, &s, f), on_circle(plane, c, r, a1 - f * 60.0, h), TOL, "{plane} CP at {f}");
+        }
+    }
+    // A ramp as CAM writes it, worked by hand: from X+1 Y+5 Z+0 around CC X+0 Z+0 by −90° (DR−)
+    // in the ZX plane, a turn about +Y: (cos θ, 0, −sin θ) at θ = −90° is (0, 0, +1).
+    let src =
+        program('Z', &["L X+1 Y+5 Z+0 R0 FMAX".into(), "CC X+0 Z+0".into(), "CP IPA-90 DR- F300".into()]);
+    let (p, _, sim) = run(&src);
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    assert_close!(after(&p, &sim, 5).tip_ics, DVec3::new(0.0, 5.0, 1.0), TOL, "ramp end");
+    let src =
+        program('Z', &["L X+1 Y+5 Z+0 RL F300".into(), "CC X+0 Z+0".into(), "CP IPA-90 DR- F300".into()]);
+    let (_, _, sim) = run(&src);
+    let e = sim.error.expect("RL in the ZX plane is refused");
+    assert_eq!(e.code, SimErrorCode::CompensationOffPlane);
+}
+
 /// Rz(c)·Ry(b)·Rx(a) applied to p, written out (DOMAIN.md §2.1).
 fn spatial(a: f64, b: f64, c: f64, p: DVec3) -> DVec3 {
     let (sa, ca) = a.to_radians().sin_cos();

@@ -26,6 +26,8 @@ pub enum SimErrorCode {
     Arithmetic { index: u32 },
     /// `TOOL CALL Q…` with a parameter that holds no tool number (negative or too large).
     ToolNumber { index: u32, value: f64 },
+    /// RL/RR on an arc in the plane of a `CC` that is not the working plane.
+    CompensationOffPlane,
     /// `M99`/`CYCL CALL` with no cycle defined.
     NoCycle,
     /// The cycle was defined with its parameters left out (as printed in the seed).
@@ -144,6 +146,9 @@ impl SimErrorCode {
             SimErrorCode::UndefinedQ { .. } => t("Q-Parameter nicht definiert", "Q parameter not defined"),
             SimErrorCode::Arithmetic { .. } => t("Rechenfehler", "Arithmetical error"),
             SimErrorCode::ToolNumber { .. } => t("Werkzeugnummer falsch", "Tool number wrong"),
+            SimErrorCode::CompensationOffPlane => {
+                t("Radiuskorrektur nicht erlaubt", "Radius compensation not permitted")
+            }
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
             SimErrorCode::CycleParamsMissing { .. }
             | SimErrorCode::CycleParamMissing { .. }
@@ -234,6 +239,10 @@ impl SimErrorCode {
                     QName(*index),
                     prose(*value, None, Lang::En)
                 ),
+            ),
+            SimErrorCode::CompensationOffPlane => t(
+                "RL/RR wirkt nur in der Bearbeitungsebene: ein Kreis in der Ebene des CC (z. B. CC X… Z…) braucht R0",
+                "RL/RR acts in the working plane only: an arc in the plane of its CC (e.g. CC X… Z…) needs R0",
             ),
             SimErrorCode::NoCycle => {
                 t("M99/CYCL CALL ohne vorheriges CYCL DEF", "M99/CYCL CALL without a preceding CYCL DEF")

@@ -106,7 +106,7 @@ pub(crate) struct Interp {
     /// The cycle 7 definition being read: the shift before its `7.0` header, the words so far.
     c7: Option<Cycle7>,
     /// The circle centre / pole of the last `CC` (I-CS).
-    pole: Option<DVec3>,
+    pole: Option<contour::Pole>,
     /// The last programmed direction of rotation (+1 = DR+).
     last_dr: Option<f64>,
     /// Direction of travel (in the working plane, unit) at the end of the last contour element.

@@ -104,7 +104,8 @@ pub enum Decision {
     /// [`INCH_FEED_MM_PER_MIN`](super::INCH_FEED_MM_PER_MIN).
     ImportReadings,
     /// Simulator: [`ARC_DIRECTION_WITHOUT_DR`](super::ARC_DIRECTION_WITHOUT_DR), [`CIRCLE_END_TOLERANCE`](super::CIRCLE_END_TOLERANCE),
-    /// [`ARC_TOOL_AXIS_LINEAR`](super::ARC_TOOL_AXIS_LINEAR), [`CP_IPA_DIRECTION_FROM_DR`](super::CP_IPA_DIRECTION_FROM_DR).
+    /// [`ARC_TOOL_AXIS_LINEAR`](super::ARC_TOOL_AXIS_LINEAR), [`CP_IPA_DIRECTION_FROM_DR`](super::CP_IPA_DIRECTION_FROM_DR),
+    /// [`ARC_PLANE_OF_CC`](super::ARC_PLANE_OF_CC).
     ArcConventions,
     /// Simulator: [`COMP_CORNER_ARC_WITH_NEXT_BLOCK`](super::COMP_CORNER_ARC_WITH_NEXT_BLOCK), [`APPR_DEP_RADIUS_OF_CENTRE_PATH`](super::APPR_DEP_RADIUS_OF_CENTRE_PATH) and the
     /// conventions of the radius compensation and APPR/DEP the manuals do not state (its text).
@@ -317,8 +318,8 @@ impl Decision {
                 "Q120–Q122 are written by tilts with spatial angles, not by PLANE AXIAL and PLANE RESET.",
             ),
             Decision::ArcConventions => Text::new(
-                "Kreisbahnen: ohne DR gilt die zuletzt programmierte Drehrichtung (vor dem ersten DR: DR+); der Endpunkt von C darf 0,01 mm neben dem Kreis liegen; eine Werkzeugachs-Koordinate in C/CR/CT fährt linear mit (wie eine Helix); bei CP mit IPA und DR bestimmt DR die Richtung.",
-                "Arcs: without DR the last programmed direction applies (before the first DR: DR+); the end point of C may be 0.01 mm off the circle; a tool-axis coordinate in C/CR/CT moves linearly along (like a helix); CP with IPA and DR: DR gives the direction.",
+                "Kreisbahnen: ohne DR gilt die zuletzt programmierte Drehrichtung (vor dem ersten DR: DR+); der Endpunkt von C darf 0,01 mm neben dem Kreis liegen; eine Werkzeugachs-Koordinate in C/CR/CT fährt linear mit (wie eine Helix); bei CP mit IPA und DR bestimmt DR die Richtung; CC mit den zwei Achsen einer anderen Hauptebene (CC X… Z…) legt C, CP und LP in diese Ebene (Bezugsachse und DR+ wie bei dieser Werkzeugachse), dort ohne Radiuskorrektur.",
+                "Arcs: without DR the last programmed direction applies (before the first DR: DR+); the end point of C may be 0.01 mm off the circle; a tool-axis coordinate in C/CR/CT moves linearly along (like a helix); CP with IPA and DR: DR gives the direction; CC with the two axes of another main plane (CC X… Z…) puts C, CP and LP in that plane (reference axis and DR+ as for that tool axis), without radius compensation there.",
             ),
             Decision::CycleConventions => Text::new(
                 "Bearbeitungszyklen: Abnahmebetrag Q212 bis zur Mindest-Zustelltiefe Q205, danach der Rest in einem Schritt; Spanbruch-Rückzug Q256 mit dem Rückzugsvorschub Q208; Zyklus 205: Vorhalteabstand von Q258 nach Q259 linear mit der erreichten Tiefe, Q208 = 0 fährt mit Q206 zurück; Zyklus 208 mit Vorbohrung: Zustellung höchstens ein Werkzeugradius je Helix; Taschen und Nuten: konzentrische Bahnen von innen nach außen, gerade An- und Abfahrt, Helix mit Werkzeugradius und einer Umdrehung je Zustellung, pendelndes Eintauchen (Q366 = 2) senkrecht, Nuten 253/254 mit einem Werkzeugradius seitlicher Zustellung; 254 mit Q367 = 1/2/3: Werkzeug am Anfang/in der Mitte/am Ende der Mittellinie; 233 als Mäander wie 232.",

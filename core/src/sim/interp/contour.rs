@@ -8,6 +8,15 @@ use crate::ast::Motion;
 use crate::plane::Sign;
 use crate::sim::arc::{self, CornerKind, Elem, GeoError, Shape, WorkPlane};
 
+/// The circle centre / pole of the last `CC` (I-CS) and the plane of its circles: the main plane
+/// of the two axes `CC` names (`CC X… Z…`: the ZX plane), else the working plane
+/// ([`unconfirmed::ARC_PLANE_OF_CC`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Pole {
+    pub at: DVec3,
+    pub plane: WorkPlane,
+}
+
 /// A rounding or chamfer prepared by the element before it: the piece itself and the corner
 /// point (the geometric start of the element after it).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -72,8 +81,29 @@ impl Interp {
 
     /// The pole after `CC` words, relative to the last programmed position `last` (incremental
     /// words; without coordinates the pole is that position, manual "Circle center CC").
-    pub(super) fn pole_of(&self, axes: &[AxisWord], last: DVec3) -> R<DVec3> {
-        self.target(axes, last)
+    pub(super) fn pole_of(&self, axes: &[AxisWord], last: DVec3) -> R<Pole> {
+        let mut named = [false; 3];
+        for w in axes {
+            if let Some(i) = linear_index(w.axis) {
+                named[i] = true;
+            }
+        }
+        let plane = match named {
+            [true, false, true] if unconfirmed::ARC_PLANE_OF_CC => WorkPlane::of_tool_axis('Y'),
+            [false, true, true] if unconfirmed::ARC_PLANE_OF_CC => WorkPlane::of_tool_axis('X'),
+            [true, true, false] if unconfirmed::ARC_PLANE_OF_CC => WorkPlane::of_tool_axis('Z'),
+            _ => self.work_plane(),
+        };
+        Ok(Pole { at: self.target(axes, last)?, plane })
+    }
+
+    /// The plane a contour block moves in: its pole's for `C`, `LP` and `CP`, else the working
+    /// plane.
+    fn plane_of(&self, body: &BlockBody) -> WorkPlane {
+        match (body, self.pole) {
+            (BlockBody::C(_) | BlockBody::Lp(_) | BlockBody::Cp(_), Some(p)) => p.plane,
+            _ => self.work_plane(),
+        }
     }
 
     /// The direction of an arc: DR if written, else the last one ([`unconfirmed::ARC_DIRECTION_WITHOUT_DR`]).
@@ -88,7 +118,7 @@ impl Interp {
         &self,
         body: &BlockBody,
         start: DVec3,
-        pole: Option<DVec3>,
+        pole: Option<Pole>,
         tangent: Option<DVec3>,
     ) -> R<Option<Elem>> {
         let plane = self.work_plane();
@@ -112,7 +142,7 @@ impl Interp {
                 Ok(Some(Elem::line(start, self.target(&line.axes, start)?)))
             }
             BlockBody::C(m) => {
-                let cc = need_pole()?;
+                let Pole { at: cc, plane } = need_pole()?;
                 let end = arc_end(m)?;
                 geo(arc::arc_c(
                     &plane,
@@ -141,7 +171,7 @@ impl Interp {
                 geo(arc::arc_ct(&plane, start, arc_end(m)?, t))
             }
             BlockBody::Lp(m) => {
-                let pole = need_pole()?;
+                let Pole { at: pole, plane } = need_pole()?;
                 let rel = plane.planar(start - pole);
                 let (pr0, pa0) = (rel.length(), plane.polar_angle(rel));
                 let pr = match m.polar_radius {
@@ -157,7 +187,7 @@ impl Interp {
                 Ok(Some(Elem::line(start, end)))
             }
             BlockBody::Cp(m) => {
-                let pole = need_pole()?;
+                let Pole { at: pole, plane } = need_pole()?;
                 let rel = plane.planar(start - pole);
                 let dir = self.direction(m.direction);
                 let sweep = match m.polar_angle {
@@ -203,7 +233,10 @@ impl Interp {
         if let Some(d) = m.direction {
             self.last_dr = Some(sign_of(d));
         }
-        let plane = self.work_plane();
+        let plane = self.plane_of(body);
+        if plane != self.work_plane() {
+            return self.contour_off_plane(cx, rec, idx, elem, m, rate, plane);
+        }
         // After a rounding the element starts at the tangent point, not at the corner.
         let elem = if geometric == here {
             elem
@@ -220,6 +253,33 @@ impl Interp {
             });
         }
         self.run_element(cx, rec, idx, elem, m.comp, rate)?;
+        if m.m.contains(&99) {
+            self.call_cycle(cx, rec, idx)?;
+        }
+        self.end_m(&m.m);
+        Ok(())
+    }
+
+    /// An arc or polar line in the plane of a `CC` that is not the working plane (the ramps CAM
+    /// systems write, `CC X… Z…` + `CP IPA… DR…`): the tool centre on the programmed path, no
+    /// radius compensation (the control compensates in the working plane only) and no tangent
+    /// for a following `CT` or corner.
+    #[allow(clippy::too_many_arguments)]
+    fn contour_off_plane(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        elem: Elem,
+        m: &Motion,
+        rate: Rate,
+        plane: WorkPlane,
+    ) -> R<()> {
+        if self.active_comp().is_some() || matches!(m.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
+            return Err(SimErrorCode::CompensationOffPlane);
+        }
+        self.follow_in(cx, rec, idx, &elem, rate, plane)?;
+        self.tangent = None;
         if m.m.contains(&99) {
             self.call_cycle(cx, rec, idx)?;
         }
@@ -313,7 +373,19 @@ impl Interp {
         elem: &Elem,
         rate: Rate,
     ) -> R<()> {
-        let plane = self.work_plane();
+        self.follow_in(cx, rec, idx, elem, rate, self.work_plane())
+    }
+
+    /// [`Self::follow`] for an element in `plane`.
+    fn follow_in(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        elem: &Elem,
+        rate: Rate,
+        plane: WorkPlane,
+    ) -> R<()> {
         let target = self.map.apply(elem.end);
         self.check_linear(cx, target)?;
         let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
