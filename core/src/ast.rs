@@ -465,7 +465,8 @@ pub enum BlockBody {
     /// `CALL LBL n [REP m]`.
     CallLbl {
         label: Label,
-        rep: Option<u32>,
+        /// `REP n`, or `REP Q…` ([`crate::unconfirmed::REP_FROM_PARAMETER`]).
+        rep: Option<Value>,
     },
     /// `CALL PGM path`.
     CallPgm {

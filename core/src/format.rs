@@ -362,8 +362,14 @@ fn body(out: &mut String, b: &BlockBody) {
         BlockBody::CallLbl { label: l, rep } => {
             out.push_str("CALL LBL ");
             label(out, l);
-            if let Some(r) = rep {
-                let _ = write!(out, " REP {r}");
+            match rep {
+                Some(Value::Number(n)) => {
+                    let _ = write!(out, " REP {n}");
+                }
+                Some(Value::Param { index, .. }) => {
+                    let _ = write!(out, " REP {}", crate::ast::QName(*index));
+                }
+                None => {}
             }
         }
         BlockBody::CallPgm { path } => {

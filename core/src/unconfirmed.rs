@@ -417,6 +417,11 @@ pub const IMPORT_LENIENT_SPELLINGS: bool = true;
 /// header does not say where its datum is.
 pub const HEADER_BLANK_AT_DATUM: bool = true;
 
+/// `CALL LBL n REP Q…`: the number of repeats from a parameter, as some shop programs write
+/// it; read, and the parameter must hold a whole number 0…65534 when the block runs.
+/// **UNCONFIRMED** whether the control's dialog takes a parameter there.
+pub const REP_FROM_PARAMETER: bool = true;
+
 /// `CC` naming the two axes of another main plane than the working plane (`CC X… Z…` with tool
 /// axis Z, as CAM systems write ramps) puts the circles `C`, `CP` and the polar lines `LP` after
 /// it in that plane, with the reference axis and DR+ of that plane as working plane (ZX: from Z,

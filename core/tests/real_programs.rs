@@ -538,3 +538,25 @@ fn a_tool_called_by_a_parameter() {
     assert_eq!(e.line, 3);
     assert!(e.detail.de.contains("Q5 = -2 ist keine Werkzeugnummer"), "{:?}", e.detail);
 }
+
+/// `CALL LBL 1 REPQ13` (`unconfirmed::REP_FROM_PARAMETER`): the repeats from a parameter, read
+/// as `REP Q13`; a parameter that holds no whole number stops at the call.
+#[test]
+fn repeats_from_a_parameter() {
+    same("CALL LBL 1 REPQ13", "CALL LBL 1 REP Q13");
+    same("CALL LBL 1 REP 2", "CALL LBL 1 REP 2");
+    let src = |q: &str| {
+        format!(
+            "0 BEGIN PGM R MM\n1 Q13 = {q}\n2 Q1 = 0\n3 LBL 1\n4 Q1 = Q1 + 1\n5 CALL LBL 1 REPQ13\n\
+             6 END PGM R MM\n"
+        )
+    };
+    let (p, sim) = run(&src("2"));
+    // REP 2: the section runs 1 + 2 times.
+    assert_eq!(after(&p, &sim, 6).q[&1], 3.0);
+    let (p, _) = parse(&src("1.5"));
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    let e = sim.error.expect("1.5 repeats stop");
+    assert_eq!(e.line, 6);
+    assert!(e.detail.en.contains("REP Q13 = 1.5"), "{:?}", e.detail);
+}

@@ -20,6 +20,7 @@ use super::words::{
 };
 use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, SysRead};
 use crate::diag::{DiagCode, Expected};
+use crate::plane::Value;
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
 const MAX_DEPTH: u32 = 64;
@@ -75,7 +76,12 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let mut rep = None;
     let mut rest = r;
     if let Some(after) = r.strip_prefix("REP") {
-        match uint(sp(after)) {
+        let param = q_param(sp(after)).filter(|_| crate::unconfirmed::REP_FROM_PARAMETER);
+        let count = match param {
+            Some(q) => q.map(|(r, index)| (r, Value::Param { index, negate: false })),
+            None => uint(sp(after)).map(|(r, n)| (r, Value::Number(f64::from(n)))),
+        };
+        match count {
             Ok((after, n)) => {
                 rep = Some(n);
                 rest = after;

@@ -26,6 +26,8 @@ pub enum SimErrorCode {
     Arithmetic { index: u32 },
     /// `TOOL CALL Q…` with a parameter that holds no tool number (negative or too large).
     ToolNumber { index: u32, value: f64 },
+    /// `CALL LBL … REP Q…` with a parameter that holds no number of repeats.
+    RepCount { index: u32, value: f64 },
     /// RL/RR on an arc in the plane of a `CC` that is not the working plane.
     CompensationOffPlane,
     /// `M99`/`CYCL CALL` with no cycle defined.
@@ -149,6 +151,7 @@ impl SimErrorCode {
             SimErrorCode::CompensationOffPlane => {
                 t("Radiuskorrektur nicht erlaubt", "Radius compensation not permitted")
             }
+            SimErrorCode::RepCount { .. } => t("Eingabewert falsch", "Incorrect input value"),
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
             SimErrorCode::CycleParamsMissing { .. }
             | SimErrorCode::CycleParamMissing { .. }
@@ -236,6 +239,18 @@ impl SimErrorCode {
                 ),
                 format!(
                     "{} = {} is no tool number (0 or more)",
+                    QName(*index),
+                    prose(*value, None, Lang::En)
+                ),
+            ),
+            SimErrorCode::RepCount { index, value } => t(
+                format!(
+                    "REP {} = {}: die Anzahl Wiederholungen ist eine ganze Zahl von 0 bis 65534",
+                    QName(*index),
+                    prose(*value, None, Lang::De)
+                ),
+                format!(
+                    "REP {} = {}: the number of repeats is a whole number from 0 to 65534",
                     QName(*index),
                     prose(*value, None, Lang::En)
                 ),

@@ -533,7 +533,10 @@ impl Interp {
                     self.pc = ret;
                 }
             }
-            BlockBody::CallLbl { label, rep } => self.call_lbl(cx, idx, label, *rep)?,
+            BlockBody::CallLbl { label, rep } => {
+                let rep = rep.map(|v| self.repeats(&v)).transpose()?;
+                self.call_lbl(cx, idx, label, rep)?;
+            }
             BlockBody::CallPgm { path } => {
                 let p = path.clone();
                 note(&mut rec, || {
@@ -816,6 +819,18 @@ impl Interp {
     }
 
     #[inline(never)]
+    /// The number of repeats of `REP`: a whole number 0…65534 (the dialog's range, iTNC 530
+    /// user's manual "Program section repeats"), also when a parameter gives it.
+    fn repeats(&self, v: &Value) -> R<u32> {
+        let n = self.value(v)?;
+        match *v {
+            Value::Param { index, .. } if !(0.0..=65_534.0).contains(&n) || n.fract() != 0.0 => {
+                Err(SimErrorCode::RepCount { index, value: n })
+            }
+            _ => Ok(n as u32),
+        }
+    }
+
     fn call_lbl(&mut self, cx: &Cx<'_>, idx: usize, label: &Label, rep: Option<u32>) -> R<()> {
         let target = self.label_index(cx, label)?;
         match rep {
