@@ -13,8 +13,8 @@
 #   TNC_SIM_DIR names a checkout of it (scripts/bench_peer.sh; issue 16).
 #   Browser: key press → updated screen, Musterprogramm 1 and 100,000 blocks (issue 6); IMPORT of
 #   1,000,000 blocks → first screen, stepping and jumping there, a keystroke in the 100,000-block
-#   text editor (issue 16); and the
-#   bundle size.
+#   text editor (issue 16); the bundle size, and a cold load of the built trainer: first paint
+#   and program shown (<= 800 ms, issue 29).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh >/dev/null
@@ -32,3 +32,4 @@ bash scripts/bench_peer.sh
 wasm_env cargo test --release --target wasm32-unknown-unknown -p schwenkbar-tests --test browser_latency --test browser_big --test browser_render --test browser_stock -- --nocapture \
   2>&1 | grep -E 'BENCH|test result'
 bash scripts/bundle.sh 2>/dev/null | grep -E '^bundle|page:|then'
+python3 scripts/cold_load.py

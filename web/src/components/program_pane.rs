@@ -227,6 +227,18 @@ impl View {
     }
 }
 
+/// Marks the first moment the program's lines are in the page (`performance.mark`): the cold
+/// load's "program shown" that scripts/cold_load.py measures (issue 29).
+fn mark_program_shown(lines: usize) {
+    thread_local!(static MARKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) });
+    if lines > 0
+        && !MARKED.with(|m| m.replace(true))
+        && let Some(p) = web_sys::window().and_then(|w| w.performance())
+    {
+        let _ = p.mark("schwenkbar:program-shown");
+    }
+}
+
 #[function_component(ProgramList)]
 fn program_list(props: &ListProps) -> Html {
     let scroller = use_node_ref();
@@ -241,6 +253,7 @@ fn program_list(props: &ListProps) -> Html {
         let (scroller, view) = (scroller.clone(), view.clone());
         use_effect_with((props.cursor, doc.clone(), whole), move |_| {
             let Some(el) = scroller.cast::<web_sys::Element>() else { return };
+            mark_program_shown(lines);
             if whole {
                 reveal_drawn(&el, cur_first, cur_last);
                 return;
