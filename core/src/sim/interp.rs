@@ -179,7 +179,7 @@ fn header_blank(text: &str) -> Option<DVec3> {
             .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | ','))
             .map(|c| if c == ',' { '.' } else { c })
             .collect();
-        digits.parse::<f64>().ok().filter(|v| *v > 0.0 && v.is_finite())
+        crate::number::parse_f64(&digits).filter(|v| *v > 0.0 && v.is_finite())
     };
     Some(DVec3::new(size("QX")?, size("QY")?, size("QZ")?))
 }
