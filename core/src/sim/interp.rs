@@ -426,11 +426,6 @@ impl Interp {
                 }
             }
             BlockBody::Empty | BlockBody::Structure { .. } => {}
-            BlockBody::Header { text } => self.header(cx, &mut rec, text),
-            BlockBody::ToolDef { .. }
-            | BlockBody::Stop { .. }
-            | BlockBody::QsAssign { .. }
-            | BlockBody::TouchProbe(_) => self.program_data(&mut rec, &body)?,
             BlockBody::EndPgm { .. } => {
                 self.ended = true;
                 self.pc = cx.program.blocks.len();
@@ -444,41 +439,6 @@ impl Interp {
                 }
                 self.modal_call(cx, &mut rec, idx, line)?;
             }
-            BlockBody::Cc(m) => {
-                let last = self.geom_start.unwrap_or(self.programmed());
-                self.pole = Some(self.pole_of(&m.axes, last)?);
-                note(&mut rec, || {
-                    Text::new(
-                        "CC: Kreismittelpunkt/Pol (keine Bewegung)",
-                        "CC: circle centre/pole (no motion)",
-                    )
-                });
-            }
-            BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
-                self.contour(cx, &mut rec, idx, &body, m)?;
-            }
-            BlockBody::Rnd { feed, .. } => {
-                self.corner_block(cx, &mut rec, idx, "RND", feed.as_ref(), pending_corner)?;
-            }
-            BlockBody::Chf { feed, .. } => {
-                self.corner_block(cx, &mut rec, idx, "CHF", feed.as_ref(), pending_corner)?;
-            }
-            BlockBody::Appr(a) => self.approach(cx, &mut rec, idx, a)?,
-            BlockBody::Dep(a) => self.depart(cx, &mut rec, idx, a)?,
-            BlockBody::CyclCallPat { feed, m } => self.call_pattern(cx, &mut rec, idx, feed.as_ref(), m)?,
-            BlockBody::CyclCallPos(l) => self.call_pos(cx, &mut rec, idx, l)?,
-            BlockBody::PatternDef(items) => {
-                self.pattern = Some(idx);
-                let n = items.len();
-                note(&mut rec, || {
-                    Text::owned(
-                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
-                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
-                    )
-                });
-            }
-            BlockBody::FnMath(f) => self.fn_math(f)?,
-            BlockBody::FnJump(j) => self.fn_jump(cx, j)?,
             BlockBody::MFunctions(m, w) => {
                 self.spindle_m(m);
                 m_note(&mut rec, m);
@@ -497,16 +457,75 @@ impl Interp {
                 self.m89 = false;
                 self.cycle_def(cx, &mut rec, idx, d)?;
             }
-            BlockBody::CycleDefOld(d) => {
-                self.m89 &= d.sub != 0;
-                self.old_cycle(cx, &mut rec, idx, d)?;
-            }
             BlockBody::CyclCall { m } => {
                 self.spindle_m(m);
                 self.call_cycle(cx, &mut rec, idx)?;
                 self.end_m(m);
             }
             BlockBody::Plane(p) => self.plane(cx, &mut rec, idx, p)?,
+            BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
+            _ => self.other_block(cx, &mut rec, idx, &body, pending_corner)?,
+        }
+        Ok(true)
+    }
+
+    /// The blocks Musterprogramm 1 (the first screen's program) does not have: out of line, so
+    /// that `step` stays small and the page split leaves their code to the wasm loaded after
+    /// the first screen.
+    #[inline(never)]
+    fn other_block(
+        &mut self,
+        cx: &Cx<'_>,
+        rec: &mut Option<&mut Rec>,
+        idx: usize,
+        body: &BlockBody,
+        pending_corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
+    ) -> R<()> {
+        match body {
+            BlockBody::Header { text } => self.header(cx, rec, text),
+            BlockBody::ToolDef { .. }
+            | BlockBody::Stop { .. }
+            | BlockBody::QsAssign { .. }
+            | BlockBody::TouchProbe(_) => self.program_data(rec, body)?,
+            BlockBody::Cc(m) => {
+                let last = self.geom_start.unwrap_or(self.programmed());
+                self.pole = Some(self.pole_of(&m.axes, last)?);
+                note(rec, || {
+                    Text::new(
+                        "CC: Kreismittelpunkt/Pol (keine Bewegung)",
+                        "CC: circle centre/pole (no motion)",
+                    )
+                });
+            }
+            BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
+                self.contour(cx, rec, idx, body, m)?;
+            }
+            BlockBody::Rnd { feed, .. } => {
+                self.corner_block(cx, rec, idx, "RND", feed.as_ref(), pending_corner)?;
+            }
+            BlockBody::Chf { feed, .. } => {
+                self.corner_block(cx, rec, idx, "CHF", feed.as_ref(), pending_corner)?;
+            }
+            BlockBody::Appr(a) => self.approach(cx, rec, idx, a)?,
+            BlockBody::Dep(a) => self.depart(cx, rec, idx, a)?,
+            BlockBody::CyclCallPat { feed, m } => self.call_pattern(cx, rec, idx, feed.as_ref(), m)?,
+            BlockBody::CyclCallPos(l) => self.call_pos(cx, rec, idx, l)?,
+            BlockBody::PatternDef(items) => {
+                self.pattern = Some(idx);
+                let n = items.len();
+                note(rec, || {
+                    Text::owned(
+                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
+                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
+                    )
+                });
+            }
+            BlockBody::FnMath(f) => self.fn_math(f)?,
+            BlockBody::FnJump(j) => self.fn_jump(cx, j)?,
+            BlockBody::CycleDefOld(d) => {
+                self.m89 &= d.sub != 0;
+                self.old_cycle(cx, rec, idx, d)?;
+            }
             BlockBody::TransDatum { axes } => self.datum(axes)?,
             BlockBody::TransDatumReset => {
                 self.tf.datum_w = DVec3::ZERO;
@@ -524,8 +543,8 @@ impl Interp {
                 self.tf.rotation = 0.0;
                 self.sync_pos();
             }
-            BlockBody::FunctionTcpm(t) => self.function_tcpm(&mut rec, *t),
-            BlockBody::FunctionResetTcpm => self.function_reset_tcpm(&mut rec),
+            BlockBody::FunctionTcpm(t) => self.function_tcpm(rec, *t),
+            BlockBody::FunctionResetTcpm => self.function_reset_tcpm(rec),
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)
                     && let Some(ret) = self.calls.pop()
@@ -539,7 +558,7 @@ impl Interp {
             }
             BlockBody::CallPgm { path } => {
                 let p = path.clone();
-                note(&mut rec, || {
+                note(rec, || {
                     Text::owned(
                         format!("CALL PGM {p}: nicht simuliert"),
                         format!("CALL PGM {p}: not simulated"),
@@ -547,17 +566,17 @@ impl Interp {
                 })
             }
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
-            BlockBody::SysRead(r) => self.sysread(&mut rec, r)?,
-            BlockBody::FnOther { number, text } => self.fn_other(&mut rec, *number, text)?,
+            BlockBody::SysRead(r) => self.sysread(rec, r)?,
+            BlockBody::FnOther { number, text } => self.fn_other(rec, *number, text)?,
             BlockBody::Unknown { text } => {
                 let t = text.clone();
-                note(&mut rec, || {
+                note(rec, || {
                     Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
                 })
             }
-            BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
+            _ => {}
         }
-        Ok(true)
+        Ok(())
     }
 
     // Out of line, like the other block kinds below: the page split (scripts/split_pages.py)
