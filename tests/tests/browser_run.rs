@@ -83,3 +83,28 @@ async fn a_colliding_swivel_stops_the_run_and_the_why_panel_names_the_free_solut
     let a: f64 = a.parse().unwrap_or_else(|_| panic!("REF A {a:?}"));
     assert!(a < 0.0 && a > -30.0, "REF A{a}");
 }
+
+/// An INCH program (issue 30): the position display shows the program's inches, to 4 decimals,
+/// with `INCH` over the axes; the tool line gives L and R in inches and F as written.
+#[wasm_bindgen_test]
+async fn an_inch_program_shows_inches_in_the_position_display() {
+    clear_storage();
+    let root = mount().await;
+    let program = "0 BEGIN PGM IN INCH\n1 TOOL CALL 1 Z S3000 F100\n2 L X+1 Y+0.5 Z+2 R0 F200\n\
+                   3 M30\n4 END PGM IN INCH\n";
+    paste_program(&root, program).await;
+    click(&root, "[data-key=run]").await;
+    for _ in 0..10 {
+        if cursor_text(&root).starts_with("2 L") {
+            break;
+        }
+        click(&root, "[data-key=run-next]").await;
+    }
+    assert!(cursor_text(&root).starts_with("2 L X+1"), "{}", cursor_text(&root));
+    assert_eq!(text(&root, ".position thead th"), "INCH");
+    assert_eq!(text(&root, ".position tr[data-axis='X'] .ist"), "+1.0000");
+    assert_eq!(text(&root, ".position tr[data-axis='Y'] .ist"), "+0.5000");
+    // Tool 1 of the shipped table: L80 R5 mm = L3.150 R0.197 inch; F200 as written.
+    let tool = text(&root, ".position .tool");
+    assert!(tool.contains("L3.150 R0.197") && tool.contains("F200"), "{tool}");
+}

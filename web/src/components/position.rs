@@ -48,13 +48,14 @@ pub fn status(state: &State, l: Lang) -> Vec<String> {
         .transforms
         .iter()
         .map(|t| match t {
+            // The shift in the program's unit, as the program wrote it.
             ActiveTransform::Datum { level: lv, offset } => format!(
                 "{} ({}) X{} Y{} Z{}",
                 l.t("Nullpunkt", "Datum"),
                 level(*lv),
-                signed(offset[0]),
-                signed(offset[1]),
-                signed(offset[2])
+                signed(state.shown(offset[0])),
+                signed(state.shown(offset[1])),
+                signed(state.shown(offset[2]))
             ),
             ActiveTransform::Mirror { level: lv, axes: m } => {
                 format!("{} ({}) {}", l.t("Spiegeln", "Mirror"), level(*lv), axes(*m))
