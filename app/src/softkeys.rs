@@ -106,6 +106,9 @@ pub fn row(state: &AppState) -> Row {
     if state.replace.is_some() {
         return replace_row(state.lang);
     }
+    if state.machine_offer.is_some() {
+        return offer_row(state.lang);
+    }
     match state.level {
         SoftkeyLevel::Main => main_row(state),
         SoftkeyLevel::SpecFct => spec_fct_row(state.lang),
@@ -140,6 +143,9 @@ pub fn row_name(state: &AppState) -> Text {
     }
     if state.replace.is_some() {
         return Text::new("Softkeys: Programm ersetzen?", "Softkeys: replace the program?");
+    }
+    if state.machine_offer.is_some() {
+        return Text::new("Softkeys: Maschine für das Programm?", "Softkeys: a machine for the program?");
     }
     match state.level {
         SoftkeyLevel::Main => {
@@ -296,6 +302,26 @@ fn own_machines_row(state: &AppState) -> Row {
     }
     row[7] = back(state.lang);
     row
+}
+
+/// "Take the machine that has the program's rotary axes?" — take first, keep second and at END.
+#[inline(never)]
+fn offer_row(l: Lang) -> Row {
+    [
+        text_key(
+            "take-machine",
+            Text::new("MASCHINE\nÜBERNEHMEN", "TAKE\nMACHINE"),
+            l,
+            Action::TakeMachineOffer,
+        ),
+        text_key("keep-machine", Text::new("MASCHINE\nBEHALTEN", "KEEP\nMACHINE"), l, Action::KeepMachine),
+        None,
+        None,
+        None,
+        None,
+        None,
+        back(l),
+    ]
 }
 
 /// "Replace the own, unexported program?" — the answer "replace" first, "keep" second and at

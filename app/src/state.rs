@@ -107,6 +107,17 @@ pub struct AppState {
     pub unexported: bool,
     /// A sample or an imported file waiting for "replace the own program?".
     pub replace: Option<Replacement>,
+    /// An imported program moves rotary axes the machine does not have: the shipped machine
+    /// that has them, offered (F1 takes it, F2 or END keeps the machine).
+    pub machine_offer: Option<MachineOffer>,
+}
+
+/// The machine offered for an imported program ([`AppState::machine_offer`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MachineOffer {
+    pub id: &'static str,
+    /// The rotary axes the program moves, as letters (`B, C`).
+    pub axes: String,
 }
 
 /// What an action does to the program, for the history and the "unexported" mark.
@@ -157,6 +168,7 @@ impl Default for AppState {
             history: History::default(),
             unexported: false,
             replace: None,
+            machine_offer: None,
         }
         .simulated(None)
     }
@@ -218,6 +230,9 @@ pub enum Action {
     KeepOwn,
     /// The answer "replace" to a sample or an import over unexported edits.
     ConfirmReplace,
+    /// The machine offered for an imported program: take it, or keep the machine.
+    TakeMachineOffer,
+    KeepMachine,
     /// RÜCKGÄNGIG (Ctrl+Z) and WIEDERHERSTELLEN (Ctrl+Y): the program one step back or forward.
     Undo,
     Redo,
@@ -305,6 +320,16 @@ impl AppState {
             Action::Abort => {
                 next.dialog = None;
                 next.message = Some(Text::new("Dialog abgebrochen", "Dialog aborted"));
+            }
+            Action::Back | Action::KeepMachine if self.machine_offer.is_some() => {
+                next.machine_offer = None;
+                next.message = Some(Text::new("Maschine behalten", "Machine kept"));
+            }
+            Action::KeepMachine => {}
+            Action::TakeMachineOffer => {
+                if let Some(offer) = next.machine_offer.take() {
+                    next.select_machine(offer.id);
+                }
             }
             Action::Back if self.replace.is_some() => {
                 next.replace = None;
@@ -548,6 +573,7 @@ impl AppState {
         self.history.record(before, Change::Whole);
         self.unexported = false;
         self.cursor = 0;
+        self.machine_offer = None;
         if let Some(m) = r.machine {
             self.select_machine(m);
         }
@@ -555,6 +581,37 @@ impl AppState {
             format!("{} geöffnet – Ihr bisheriges Programm: RÜCKGÄNGIG (Strg+Z)", r.what.get(Lang::De)),
             format!("{} opened – your previous program: UNDO (Ctrl+Z)", r.what.get(Lang::En)),
         ));
+        if r.machine.is_none() {
+            self.offer_machine();
+        }
+    }
+
+    /// After an import: when the program moves a rotary axis the machine does not have, the
+    /// first shipped machine that has every one it moves is offered (issue 31: one key to
+    /// accept, the choice stays with the trainee).
+    fn offer_machine(&mut self) {
+        let axes = schwenkbar_core::sim::programmed_rotary_axes(&self.doc.program);
+        let has_all = |m: &Machine| axes.iter().all(|a| m.joints().iter().any(|j| j.axis == *a));
+        if axes.is_empty() || self.machine.as_deref().is_some_and(has_all) {
+            return;
+        }
+        let Some(id) =
+            Machine::builtin_ids().into_iter().find(|id| Machine::builtin(id).is_ok_and(|m| has_all(&m)))
+        else {
+            return;
+        };
+        let letters = axes.iter().map(|a| a.letter().to_string()).collect::<Vec<_>>().join(", ");
+        let name = Machine::builtin(id).map(|m| m.name).ok();
+        let (de, en) = name.map_or((id.to_owned(), id.to_owned()), |n| (n.de.to_string(), n.en.to_string()));
+        self.message = Some(Text::owned(
+            format!(
+                "Das Programm bewegt die Drehachsen {letters}, die Maschine hat sie nicht: „{de}“ übernehmen? F1 = ÜBERNEHMEN, F2/END = BEHALTEN"
+            ),
+            format!(
+                "The program moves the rotary axes {letters}, which the machine lacks: take “{en}”? F1 = TAKE, F2/END = KEEP"
+            ),
+        ));
+        self.machine_offer = Some(MachineOffer { id, axes: letters });
     }
 
     /// Keeps a replaced program in the browser beside the shown one (not a lesson's trainer).
@@ -612,6 +669,7 @@ impl AppState {
     }
 
     fn select_machine(&mut self, id: &str) {
+        self.machine_offer = None;
         let own = || self.own_machines.iter().find(|m| m.id == id).cloned().ok_or(());
         match Machine::builtin(id).or_else(|_| own()) {
             Ok(m) => {

@@ -469,3 +469,38 @@ fn the_stocks_first_pass_goes_on_in_bounded_shares_and_its_note_follows() {
     assert!(stock.notes_at(rapid).is_some_and(|n| n.de == "Eilgang ins Material"));
     assert!(state.apply(Action::PassStock).1.is_empty(), "done: no more shares asked for");
 }
+
+/// An imported program that moves B and C on the A/C table: the machine with B and C is offered;
+/// F1 takes it, F2 or END keeps the machine. A program the machine can run gets no offer.
+#[test]
+fn an_import_offers_the_machine_with_the_programs_rotary_axes() {
+    let bc = b"0 BEGIN PGM BC MM\n1 TOOL CALL 1 Z S1000\n2 L B+30 C+90 R0 FMAX\n3 END PGM BC MM\n".to_vec();
+    let s = AppState::default().then(Action::ShowFiles).then(Action::Import(bc));
+    assert_eq!(s.machine.as_ref().map(|m| m.id.as_str()), Some(DEFAULT_MACHINE));
+    let offer = s.machine_offer.clone().expect("a machine is offered");
+    assert_eq!(offer.axes, "B, C");
+    let offered = Machine::builtin(offer.id).expect("shipped");
+    for axis in [schwenkbar_core::plane::RotaryAxis::B, schwenkbar_core::plane::RotaryAxis::C] {
+        assert!(offered.joints().iter().any(|j| j.axis == axis), "{} has {axis:?}", offer.id);
+    }
+    assert!(s.message.as_ref().is_some_and(|m| m.de.contains("Drehachsen B, C") && m.de.contains("F1")));
+    assert_eq!(
+        crate::softkeys::row(&s)[0].as_ref().map(|k| k.action.clone()),
+        Some(Action::TakeMachineOffer)
+    );
+
+    let taken = press(&s, "F1", false);
+    assert_eq!(taken.machine.as_ref().map(|m| m.id.as_str()), Some(offer.id));
+    assert!(taken.machine_offer.is_none());
+    assert!(taken.sim.as_ref().is_some_and(|sim| sim.0.error.is_none()), "it runs on the offered machine");
+
+    for key in ["F2", "End"] {
+        let kept = press(&s, key, false);
+        assert_eq!(kept.machine.as_ref().map(|m| m.id.as_str()), Some(DEFAULT_MACHINE), "{key}");
+        assert!(kept.machine_offer.is_none(), "{key}");
+    }
+
+    let ac = b"0 BEGIN PGM AC MM\n1 L A+10 C+90 R0 FMAX\n2 END PGM AC MM\n".to_vec();
+    let s = AppState::default().then(Action::ShowFiles).then(Action::Import(ac));
+    assert!(s.machine_offer.is_none(), "the A/C table has A and C");
+}
