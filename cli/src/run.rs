@@ -113,6 +113,8 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     let (program, _) = parse(&src);
     let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
     let lang = Lang::from(args.lang);
+    // `auto` has run the program on its machine already: the JSON output takes that run.
+    let mut picked: Option<Simulation> = None;
     let machine = if args.machine == "auto" {
         // Every shipped machine is a candidate; which one and why goes to stderr, so the table
         // and the JSON stay what they are for a named machine.
@@ -124,7 +126,9 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         }
         let pick = pick_machine(&program, &all, &opts);
         eprintln!("note: {}", pick.reason.get(lang));
-        all.into_iter().nth(pick.index).unwrap_or_else(|| pick.simulation.machine.clone())
+        let machine = all.into_iter().nth(pick.index).unwrap_or_else(|| pick.simulation.machine.clone());
+        picked = Some(pick.simulation);
+        machine
     } else {
         match crate::machine_arg::load(&args.machine) {
             Ok(m) => m,
@@ -137,7 +141,7 @@ pub(crate) fn run(args: &Args) -> ExitCode {
 
     let (sim, written) = if args.json {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-        let sim = simulate(&program, &machine, &opts);
+        let sim = picked.unwrap_or_else(|| simulate(&program, &machine, &opts));
         let written = write_json(&mut out, &src, &program, &machine, &sim, lang).and_then(|()| out.flush());
         (sim, written)
     } else {
