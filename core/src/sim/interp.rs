@@ -656,7 +656,13 @@ impl Interp {
     /// written.
     #[inline(never)]
     fn header(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, text: &str) {
-        let Some(size) = header_blank(text).filter(|_| unconfirmed::HEADER_BLANK_AT_DATUM) else { return };
+        // The first cuboid of the header applies (and a later line does not scan the program
+        // for a BLK FORM again).
+        let Some(size) =
+            header_blank(text).filter(|_| unconfirmed::HEADER_BLANK_AT_DATUM && self.blank.is_none())
+        else {
+            return;
+        };
         let (x, y, z) = (size.x, size.y, size.z);
         if cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
             note(rec, || {
