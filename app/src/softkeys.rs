@@ -304,10 +304,17 @@ fn own_machines_row(state: &AppState) -> Row {
     row
 }
 
+/// A question with two answers: yes on F1, no on F2 and at END (F8), so a key pressed again by
+/// a slip chooses nothing new.
+fn question_row(l: Lang, yes: Option<Softkey>, no: Option<Softkey>) -> Row {
+    [yes, no, None, None, None, None, None, back(l)]
+}
+
 /// "Take the machine that has the program's rotary axes?" — take first, keep second and at END.
 #[inline(never)]
 fn offer_row(l: Lang) -> Row {
-    [
+    question_row(
+        l,
         text_key(
             "take-machine",
             Text::new("MASCHINE\nÜBERNEHMEN", "TAKE\nMACHINE"),
@@ -315,20 +322,15 @@ fn offer_row(l: Lang) -> Row {
             Action::TakeMachineOffer,
         ),
         text_key("keep-machine", Text::new("MASCHINE\nBEHALTEN", "KEEP\nMACHINE"), l, Action::KeepMachine),
-        None,
-        None,
-        None,
-        None,
-        None,
-        back(l),
-    ]
+    )
 }
 
 /// "Replace the own, unexported program?" — the answer "replace" first, "keep" second and at
 /// END, so the key that chose the sample, pressed again by a slip, replaces nothing.
 #[inline(never)]
 fn replace_row(l: Lang) -> Row {
-    [
+    question_row(
+        l,
         text_key(
             "confirm-replace",
             Text::new("PROGRAMM\nERSETZEN", "REPLACE\nPROGRAM"),
@@ -336,13 +338,7 @@ fn replace_row(l: Lang) -> Row {
             Action::ConfirmReplace,
         ),
         text_key("keep-own", Text::new("EIGENES\nBEHALTEN", "KEEP\nMINE"), l, Action::KeepOwn),
-        None,
-        None,
-        None,
-        None,
-        None,
-        back(l),
-    ]
+    )
 }
 
 #[inline(never)]
