@@ -524,3 +524,23 @@ fn rnd_between_two_arcs_touches_both_circles() {
     }
     assert_close!(after(&p, &sim, 8).tip_ics, DVec3::new(100.0, 50.0, 0.0), TOL, "second arc ends");
 }
+
+/// A RND before an arc in the plane of its CC: the rounding has no working-plane element to
+/// meet, so the RND block stops with the control's message instead of a made-up corner.
+#[test]
+fn a_rounding_before_an_arc_in_another_plane_is_refused() {
+    let src = program(
+        'Z',
+        &[
+            "L X+0 Y+5 Z+0 R0 FMAX".into(),
+            "L X+1 F300".into(),
+            "RND R0.5".into(),
+            "CC X+2 Z+0".into(),
+            "CP IPA-90 DR- F300".into(),
+        ],
+    );
+    let (_, _, sim) = run(&src);
+    let e = sim.error.expect("the RND is refused");
+    assert!(matches!(e.code, SimErrorCode::CornerWithoutContour { .. }), "{:?}", e.code);
+    assert_eq!(e.line, 6, "at the RND block");
+}

@@ -574,7 +574,19 @@ impl Interp {
                     Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
                 })
             }
-            _ => {}
+            // Run by `step` itself; listed so that a new block kind needs a decision here.
+            BlockBody::BeginPgm { .. }
+            | BlockBody::Empty
+            | BlockBody::Structure { .. }
+            | BlockBody::EndPgm { .. }
+            | BlockBody::BlkForm(_)
+            | BlockBody::ToolCall(_)
+            | BlockBody::L(_)
+            | BlockBody::MFunctions(..)
+            | BlockBody::CycleDef(_)
+            | BlockBody::CyclCall { .. }
+            | BlockBody::Plane(_)
+            | BlockBody::Invalid { .. } => {}
         }
         Ok(())
     }
@@ -843,7 +855,6 @@ impl Interp {
         })
     }
 
-    #[inline(never)]
     /// The number of repeats of `REP`: a whole number 0…65534 (the dialog's range, iTNC 530
     /// user's manual "Program section repeats"), also when a parameter gives it.
     fn repeats(&self, v: &Value) -> R<u32> {
@@ -856,6 +867,7 @@ impl Interp {
         }
     }
 
+    #[inline(never)]
     fn call_lbl(&mut self, cx: &Cx<'_>, idx: usize, label: &Label, rep: Option<u32>) -> R<()> {
         let target = self.label_index(cx, label)?;
         match rep {

@@ -308,6 +308,13 @@ impl Interp {
             match &*b.body() {
                 BlockBody::Empty | BlockBody::Structure { .. } => {}
                 BlockBody::Cc(m) => pole = Some(self.pole_of(&m.axes, corner)?),
+                // An arc in the plane of its CC is no element of the working plane's contour: the
+                // rounding has nothing to meet there.
+                BlockBody::C(_) | BlockBody::Lp(_) | BlockBody::Cp(_)
+                    if pole.is_some_and(|p| p.plane != plane) =>
+                {
+                    break;
+                }
                 body => {
                     // Errors of the next element are its own block's, when it runs.
                     next = self.element(body, corner, pole, elem.tangent(&plane, true)).ok().flatten();
