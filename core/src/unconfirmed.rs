@@ -217,6 +217,27 @@ pub fn holder(tool_length: f64, tool_radius: f64) -> Holder {
     Holder { length: (0.35 * tool_length).min(50.0), radius: tool_radius.max(12.0) + 14.0 }
 }
 
+/// A tool length `L` (table or `TOOL DEF`, before DL) below this many mm is read as the
+/// difference to a zero tool, the older of the two ways the manuals give to determine L ("the
+/// difference in length between the tool and a zero tool, or with a tool presetter", TNC 370 /
+/// TNC 426 user's manuals, ch. 4.2; its sign negative for a tool shorter than the zero tool): a
+/// length measured from the spindle's gauge point is never this short, and CAM posts write such
+/// tools as `TOOL DEF 101 L+1.000 R+0.000` or `L-55.606`. **UNCONFIRMED** threshold; the control
+/// itself cannot tell the two apart.
+pub const ZERO_TOOL_DIFFERENCE_BELOW: f64 = 30.0;
+
+/// The zero tool's own length for [`ZERO_TOOL_DIFFERENCE_BELOW`], mm: the simulated tool is
+/// `ZERO_TOOL_LENGTH + L` long (at least 1 mm). **UNCONFIRMED**: a shop's zero tool is not in the
+/// program.
+pub const ZERO_TOOL_LENGTH: f64 = 100.0;
+
+/// The simulated length of a tool whose table or `TOOL DEF` length is `l` (mm): `l` itself, or
+/// the zero tool's length plus `l` when `l` reads as a difference ([`ZERO_TOOL_DIFFERENCE_BELOW`]).
+#[must_use]
+pub fn physical_tool_length(l: f64) -> f64 {
+    if l < ZERO_TOOL_DIFFERENCE_BELOW { (ZERO_TOOL_LENGTH + l).max(1.0) } else { l }
+}
+
 /// The tool holder's size ([`holder`]), mm.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Holder {

@@ -253,6 +253,37 @@ fn tool_def_gives_the_called_tool_its_length_and_radius() {
     assert_eq!((s.q[&108], s.q[&114]), (5.0, 75.0), "Q108/Q114 preassigned");
 }
 
+/// A tool length under 30 mm is the difference to a zero tool (TNC 370/426 manuals, ch. 4.2):
+/// the simulated tool is 100 mm + L long (`unconfirmed::physical_tool_length`), Q114 keeps the
+/// program's L, and the TOOL CALL says so. Oracle: 100 − 55.606 = 44.394; with L+1 taken as
+/// 1 mm the holder (Ø52) would sit 1 mm above the tip and hit the blank at the first plunge.
+#[test]
+fn a_tool_length_under_30_mm_is_a_difference_to_a_zero_tool() {
+    let (p, sim) = run("0 BEGIN PGM T MM\n\
+         1 BLK FORM 0.1 Z X+0 Y+0 Z-35\n\
+         2 BLK FORM 0.2 X+30 Y+30 Z+0\n\
+         3 TOOL DEF 5 L-55.606 R+3\n\
+         4 TOOL DEF 6 L+1 R+7\n\
+         5 TOOL CALL 5 Z S1000\n\
+         6 TOOL CALL 6 Z S1000 DL+0.5\n\
+         7 L X+15 Y+15 Z+25 R0 FMAX M3\n\
+         8 L Z-20 F200\n\
+         9 L Z+25 FMAX\n\
+         10 END PGM T MM\n");
+    let s = after(&p, &sim, 5);
+    assert!((s.tool.length - 44.394).abs() < 1e-9, "{}", s.tool.length);
+    assert!((s.q[&114] + 55.606).abs() < 1e-9, "Q114 is the control's L");
+    let said = s.message.expect("said on the TOOL CALL");
+    assert!(
+        said.de.contains("L=-55.606 gilt als Differenz zum Nullwerkzeug: simuliert mit L=+44.394"),
+        "{said:?}"
+    );
+    let s = after(&p, &sim, 6);
+    assert!((s.tool.length - 101.5).abs() < 1e-9, "100 + 1 + DL 0.5: {}", s.tool.length);
+    assert!((s.q[&114] - 1.5).abs() < 1e-9);
+    assert!(after(&p, &sim, 8).tool.length > 100.0, "the plunge runs without a holder collision");
+}
+
 #[test]
 fn lenient_spellings_are_said_once_per_kind_and_file() {
     let comma = DiagCode::Lenient { kind: Lenient::DecimalComma, text: "+27,975".into() };

@@ -66,6 +66,7 @@ pub enum Decision {
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`](super::ROTARY_FEED_DEG_PER_MIN).
     RotaryFeed,
     /// Collision check: [`holder`](super::holder), the tool holder's size.
+    /// Also [`ZERO_TOOL_DIFFERENCE_BELOW`](super::ZERO_TOOL_DIFFERENCE_BELOW), [`ZERO_TOOL_LENGTH`](super::ZERO_TOOL_LENGTH).
     ToolHolder,
     /// Simulator: [`CYCLE19_INPUT_SPATIAL`](super::CYCLE19_INPUT_SPATIAL).
     Cycle19Spatial,
@@ -270,8 +271,8 @@ impl Decision {
                 "MB/MB MAX: retract at rapid traverse before the swivel; MB MAX ends 1 mm before each linear axis's software limit switch.",
             ),
             Decision::ToolHolder => Text::new(
-                "Kollisionsprüfung: Werkzeughalter als Zylinder unter der Spindelnase, 35 % der Werkzeuglänge lang (höchstens 50 mm), Radius = Werkzeugradius (mindestens 12 mm) + 14 mm; darunter das Werkzeug mit seinem Radius.",
-                "Collision check: tool holder as a cylinder below the spindle nose, 35 % of the tool length long (at most 50 mm), radius = tool radius (at least 12 mm) + 14 mm; below it the tool with its radius.",
+                "Kollisionsprüfung: Werkzeughalter als Zylinder unter der Spindelnase, 35 % der Werkzeuglänge lang (höchstens 50 mm), Radius = Werkzeugradius (mindestens 12 mm) + 14 mm; darunter das Werkzeug mit seinem Radius. Eine Werkzeuglänge L unter 30 mm gilt als Differenz zum Nullwerkzeug, simuliert mit 100 mm + L.",
+                "Collision check: tool holder as a cylinder below the spindle nose, 35 % of the tool length long (at most 50 mm), radius = tool radius (at least 12 mm) + 14 mm; below it the tool with its radius. A tool length L under 30 mm counts as the difference to a zero tool, simulated as 100 mm + L.",
             ),
             Decision::RotaryFeed => Text::new(
                 "Vorschub F beim Schwenken und bei Drehachsbewegungen als °/min; F AUTO = Vorschub aus dem TOOL CALL (nur für die Animationsdauer).",

@@ -48,6 +48,7 @@ impl Interp {
         self.tcpm_reset_before("TOOL CALL")?;
         let dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
+        let mut written_length = None;
         if let Some(tool) = &t.tool {
             let tool = &self.tool_of(tool)?;
             let (mut entry, mut known) = tools::lookup(tool);
@@ -59,9 +60,26 @@ impl Interp {
             self.tool.shape = entry.shape(entry.radius + dr);
             self.tool.number = entry.number;
             self.tool.name = entry.name;
-            self.tool.length = entry.length + dl;
+            // The control's L (Q114); the simulated tool may be longer (a zero-tool difference).
+            written_length = Some(entry.length + dl);
+            self.tool.length = unconfirmed::physical_tool_length(entry.length) + dl;
             self.tool.radius = entry.radius + dr;
             self.tool.known = known;
+            if self.tool.length != entry.length + dl {
+                let num = |v: f64| crate::number::signed(v, 3);
+                let (l, sim, l0) =
+                    (num(entry.length), num(self.tool.length), num(unconfirmed::ZERO_TOOL_LENGTH));
+                note(rec, || {
+                    Text::owned(
+                        format!(
+                            "L={l} gilt als Differenz zum Nullwerkzeug: simuliert mit L={sim} (Nullwerkzeug L={l0} angenommen)"
+                        ),
+                        format!(
+                            "L={l} counts as the difference to a zero tool: simulated with L={sim} (zero tool L={l0} assumed)"
+                        ),
+                    )
+                });
+            }
             if !known {
                 let (l, r) = (self.tool.length, self.tool.radius);
                 // A tool called by name is named by it, not by the number 0 it gets.
@@ -100,7 +118,8 @@ impl Interp {
         // Q108 the active tool radius, Q114 the tool length (preassigned Q parameters, iTNC 530
         // and TNC 410 user's manuals), in the program's unit.
         self.q.insert(108, self.in_program_unit(self.tool.radius));
-        self.q.insert(114, self.in_program_unit(self.tool.length));
+        let written_length = written_length.unwrap_or(self.tool.length);
+        self.q.insert(114, self.in_program_unit(written_length));
         self.kin.tool_length = self.tool.length;
         self.rebuild_bodies(cx.machine);
         self.sync_pos();
