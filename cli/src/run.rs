@@ -1,4 +1,4 @@
-//! `schwenkbar run FILE.h --machine ID|FILE.json [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
+//! `schwenkbar run FILE.h --machine ID|FILE.json [--tools TOOL.T] [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
 //! per executed block; with `--stock-stl` also the stock after the run as binary STL, and the
 //! stock's notes (a rapid into the material, …) on stderr.
 
@@ -12,6 +12,7 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{FIXED_MAX, fixed_ascii, tidy, write_fixed};
 use schwenkbar_core::sim::{
     ListingRow, SimOptions, Simulation, State, pick_machine, simulate, simulate_listed,
+    tools::read_tool_table,
 };
 use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
 use schwenkbar_core::{Program, parse};
@@ -41,6 +42,10 @@ pub(crate) struct Args {
     /// W-CS, mm).
     #[arg(long, value_name = "OUT.stl")]
     stock_stl: Option<PathBuf>,
+    /// The shop's tool table, the control's `TOOL.T` file: it replaces the shipped table (a tool
+    /// it lacks runs with the default tool, said on its TOOL CALL).
+    #[arg(long, value_name = "TOOL.T")]
+    tools: Option<PathBuf>,
     /// Ray spacing of the stock, mm.
     #[arg(long, default_value_t = StockOptions::default().resolution, value_name = "MM")]
     stock_resolution: f64,
@@ -111,8 +116,20 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         Err(code) => return code,
     };
     let (program, _) = parse(&src);
-    let opts = SimOptions { max_steps: args.max_blocks, ..SimOptions::default() };
     let lang = Lang::from(args.lang);
+    let tools = match &args.tools {
+        None => None,
+        Some(path) => match crate::input::read(path).and_then(|t| {
+            read_tool_table(&t).map_err(|e| format!("{}: {}", path.display(), e.text().get(lang)))
+        }) {
+            Ok(t) => Some(t.into()),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        },
+    };
+    let opts = SimOptions { max_steps: args.max_blocks, tools, ..SimOptions::default() };
     // `auto` has run the program on its machine already: the JSON output takes that run.
     let mut picked: Option<Simulation> = None;
     let machine = if args.machine == "auto" {

@@ -213,3 +213,37 @@ fn machine_auto_takes_a_machine_with_the_programs_rotary_axes() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--tools TOOL.T`: the shop's table gives the called tools (L incl. the table's DL, R incl.
+/// DR, a length under 30 mm as the difference to a zero tool); a broken table stops before the
+/// run with its line.
+#[test]
+fn run_with_the_shops_tool_table() {
+    let dir = std::env::temp_dir().join(format!("schwenkbar-tools-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let program = dir.join("t.h");
+    std::fs::write(
+        &program,
+        "0 BEGIN PGM T MM\n1 TOOL CALL 3 Z S1000\n2 TOOL CALL \"ZENTRIERBOHRER_D6\" Z\n3 END PGM T MM\n",
+    )
+    .expect("write");
+    let table = repo("tests/fixtures/tools/werkstatt.T");
+    let p = program.to_string_lossy().into_owned();
+    let o = run(&["run", &p, "--machine", "ac-table", "--tools", &table, "--json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = json(&o);
+    let s1 =
+        v["states"].as_array().expect("states").iter().find(|s| s["number"] == 1).expect("block 1").clone();
+    assert_close!(nums([&s1["q"]["114"], &s1["q"]["108"]]), [95.6, 9.95], TOL, "{s1}");
+    let s2 =
+        v["states"].as_array().expect("states").iter().find(|s| s["number"] == 2).expect("block 2").clone();
+    assert!(s2["message"].as_str().is_some_and(|m| m.contains("Differenz zum Nullwerkzeug")), "{s2}");
+
+    let broken = dir.join("broken.T");
+    std::fs::write(&broken, "BEGIN TOOL .T MM\nT L  R\n1 +1 x\n").expect("write");
+    let o = run(&["run", &p, "--machine", "ac-table", "--tools", &broken.to_string_lossy()]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("Zeile 3: R: „x“ ist keine Zahl"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

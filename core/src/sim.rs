@@ -119,11 +119,21 @@ pub struct SimOptions {
     pub block_skip: bool,
     /// A full checkpoint every this many executed blocks (at least 1).
     pub checkpoint_interval: usize,
+    /// The shop's tool table (read from `TOOL.T`); `None`: the shipped one ([`tools::tool_table`]).
+    pub tools: Option<Arc<[tools::ToolEntry]>>,
 }
 
 impl Default for SimOptions {
     fn default() -> Self {
-        SimOptions { max_steps: None, block_skip: false, checkpoint_interval: 1024 }
+        SimOptions { max_steps: None, block_skip: false, checkpoint_interval: 1024, tools: None }
+    }
+}
+
+impl SimOptions {
+    /// The tool table of the run.
+    #[must_use]
+    pub fn tool_table(&self) -> &[tools::ToolEntry] {
+        self.tools.as_deref().unwrap_or_else(|| tools::tool_table())
     }
 }
 

@@ -284,6 +284,35 @@ fn a_tool_length_under_30_mm_is_a_difference_to_a_zero_tool() {
     assert!(after(&p, &sim, 8).tool.length > 100.0, "the plunge runs without a holder collision");
 }
 
+/// The shop's tool table replaces the shipped one: its L, R, R2 and deltas (added to the TOOL
+/// CALL's, as the manuals' "delta values" say) reach the run; a tool it lacks runs with the
+/// stated default and a note naming it.
+#[test]
+fn a_shop_tool_table_gives_the_called_tools() {
+    use schwenkbar_core::sim::tools::{ToolShape, read_tool_table};
+    let table = read_tool_table(
+        "BEGIN TOOL.T MM\n\
+         T  NAME        L     R    R2   DL    DR\n\
+         5  TORUS_D20   +90   +10  +2   +0,5  -0,1\n\
+         [END]\n",
+    )
+    .expect("table");
+    let (program, _) = parse(
+        "0 BEGIN PGM T MM\n1 TOOL CALL 5 Z S1000 DL+0.25\n2 TOOL CALL \"TORUS_D20\" Z\n3 TOOL CALL 1 Z\n4 END PGM T MM\n",
+    );
+    let m = Machine::builtin("ac-table").expect("machine");
+    let sim = simulate(&program, &m, &SimOptions { tools: Some(table.into()), ..SimOptions::default() });
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let s = after(&program, &sim, 1);
+    assert_eq!((s.tool.length, s.tool.radius), (90.75, 9.9), "90 + 0.5 + 0.25, 10 − 0.1");
+    assert_eq!(s.tool.shape, ToolShape::Bull { corner_radius: 2.0 });
+    assert_eq!(after(&program, &sim, 2).tool.number, 5, "called by its name");
+    let s = after(&program, &sim, 3);
+    assert!(!s.tool.known, "tool 1 is in the shipped table, not in the shop's");
+    let said = s.message.expect("said");
+    assert_eq!(said.de, "Werkzeug 1 nicht in der Werkzeugtabelle: L=100 R=5 angenommen");
+}
+
 #[test]
 fn lenient_spellings_are_said_once_per_kind_and_file() {
     let comma = DiagCode::Lenient { kind: Lenient::DecimalComma, text: "+27,975".into() };

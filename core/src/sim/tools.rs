@@ -12,6 +12,12 @@ use serde::{Deserialize, Serialize};
 
 use crate::ast::ToolRef;
 
+mod table_file;
+
+pub use table_file::{
+    MAX_TOOL_NUMBER, ToolTableError, ToolTableErrorCode, read_tool_table, write_tool_table,
+};
+
 /// One row of the tool table.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ToolEntry {
@@ -30,6 +36,18 @@ pub struct ToolEntry {
     /// Drill: the point angle, degrees.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub point_angle: Option<f64>,
+    /// The table's delta length DL, mm, added to the TOOL CALL's (TNC user's manuals,
+    /// "Delta values").
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub dl: f64,
+    /// The table's delta radius DR, mm.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub dr: f64,
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
 }
 
 /// The point angle of a twist drill when the table gives none, degrees: the usual 118° of
@@ -110,6 +128,9 @@ impl RawTool {
             shape: self.shape,
             corner_radius: self.corner_radius,
             point_angle: self.point_angle,
+            // The shipped table has no deltas.
+            dl: 0.0,
+            dr: 0.0,
         }
     }
 }
@@ -128,11 +149,17 @@ pub fn tool_table() -> &'static [ToolEntry] {
     table()
 }
 
-/// The entry for a tool reference, `(entry, known)`; unknown tools get the default length and
-/// radius with the number or name as written.
+/// The entry for a tool reference in the shipped table, `(entry, known)`; unknown tools get
+/// the default length and radius with the number or name as written.
 #[must_use]
 pub fn lookup(tool: &ToolRef) -> (ToolEntry, bool) {
-    let found = tool_table().iter().find(|t| match tool {
+    lookup_in(tool_table(), tool)
+}
+
+/// [`lookup`] in `table` (the shop's, imported from `TOOL.T`, or the shipped one).
+#[must_use]
+pub fn lookup_in(table: &[ToolEntry], tool: &ToolRef) -> (ToolEntry, bool) {
+    let found = table.iter().find(|t| match tool {
         ToolRef::Number(n) => t.number == *n,
         ToolRef::Name(s) => t.name.eq_ignore_ascii_case(s),
         // The simulator resolves a numeric parameter first; a string parameter's text is unknown.

@@ -46,17 +46,20 @@ impl Interp {
 
     pub(super) fn tool_call(&mut self, cx: &Cx<'_>, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
         self.tcpm_reset_before("TOOL CALL")?;
-        let dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
-        let dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
+        let mut dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
+        let mut dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let mut written_length = None;
         if let Some(tool) = &t.tool {
             let tool = &self.tool_of(tool)?;
-            let (mut entry, mut known) = tools::lookup(tool);
+            let (mut entry, mut known) = tools::lookup_in(cx.options.tool_table(), tool);
             if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
                 entry.length = l.unwrap_or(entry.length);
                 entry.radius = r.unwrap_or(entry.radius);
                 known = true;
             }
+            // The control adds the table's deltas to those of the TOOL CALL.
+            dl += entry.dl;
+            dr += entry.dr;
             self.tool.shape = entry.shape(entry.radius + dr);
             self.tool.number = entry.number;
             self.tool.name = entry.name;
