@@ -18,6 +18,7 @@ use crate::effect::{Effect, Reducer};
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Prefs};
 use crate::saved_machines::{self, MACHINES_KEY, MAX_SAVED};
+use crate::tool_table::{ToolAction, ToolTableState};
 
 /// The shipped machine the editor opens when nothing else is asked for.
 pub const DEFAULT_START: &str = "ac-table";
@@ -664,6 +665,8 @@ pub struct EditorState {
     pub import_issues: Vec<Text>,
     /// The line under the title: what the last action did.
     pub message: Option<Text>,
+    /// The shop's tool table, beside the machine.
+    pub tools: ToolTableState,
 }
 
 /// What the page can be asked to do.
@@ -689,9 +692,18 @@ pub enum EditorAction {
     ToggleLang,
     /// An effect's outcome (a refused save).
     Notice(Text),
+    /// The tool table's action.
+    Tools(ToolAction),
 }
 
 impl EditorState {
+    /// The page with the tool table kept under [`crate::tool_table::TOOLS_KEY`].
+    #[must_use]
+    pub fn with_tools(mut self, saved: Option<&str>) -> EditorState {
+        self.tools = ToolTableState::start(saved);
+        self
+    }
+
     /// The page at load: the saved machines and preferences as stored, and the URL fragment
     /// (`#id`, from the trainer's EDITIEREN) naming the machine to start from.
     #[must_use]
@@ -715,6 +727,7 @@ impl EditorState {
             saved,
             import_issues: Vec::new(),
             message: None,
+            tools: ToolTableState::start(None),
         };
         let wanted = fragment
             .map(|f| f.trim_start_matches('#'))
@@ -918,6 +931,11 @@ impl Reducer for EditorState {
                 fx.push(Effect::Save { key: persist::PREFS_KEY, value: next.prefs.to_record() });
             }
             EditorAction::Notice(text) => next.message = Some(text),
+            EditorAction::Tools(a) => {
+                let (tools, more) = next.tools.apply(a);
+                next.tools = tools;
+                fx.extend(more);
+            }
         }
         (next, fx)
     }

@@ -22,4 +22,5 @@ pub mod softkeys;
 pub mod state;
 pub mod stock;
 pub mod syntax;
+pub mod tool_table;
 pub mod why;

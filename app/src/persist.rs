@@ -32,6 +32,8 @@ pub struct Stored {
     pub machines: Option<String>,
     /// The program last replaced ([`REPLACED_KEY`]).
     pub replaced: Option<String>,
+    /// The shop's tool table, a `TOOL.T` text ([`crate::tool_table::TOOLS_KEY`]).
+    pub tools: Option<String>,
 }
 
 /// Why a saved record could not be used.
@@ -264,6 +266,8 @@ pub struct Shared {
     pub own_machine: Option<String>,
     /// Open in program run at `block` (the instructor's "look at this moment").
     pub run: bool,
+    /// The sender's own tool table (a `TOOL.T` text): the receiver's run uses it.
+    pub tools: Option<String>,
 }
 
 /// The URL fragment (without `#`) of a share link.
@@ -281,14 +285,24 @@ pub fn share_fragment(shared: &Shared) -> String {
     if shared.run {
         out.push_str("&run=1");
     }
+    if let Some(t) = &shared.tools {
+        out.push_str("&tools=");
+        out.push_str(&percent_encode(t));
+    }
     out
 }
 
 /// Reads a share link's fragment (with or without `#`); `None` if it carries no program.
 #[must_use]
 pub fn parse_fragment(fragment: &str) -> Option<Shared> {
-    let mut shared =
-        Shared { program: String::new(), block: 0, machine: None, own_machine: None, run: false };
+    let mut shared = Shared {
+        program: String::new(),
+        block: 0,
+        machine: None,
+        own_machine: None,
+        run: false,
+        tools: None,
+    };
     let mut has_program = false;
     for pair in fragment.trim_start_matches('#').split('&') {
         let (key, value) = pair.split_once('=')?;
@@ -301,6 +315,7 @@ pub fn parse_fragment(fragment: &str) -> Option<Shared> {
             "machine" => shared.machine = Some(percent_decode(value)?),
             "mdef" => shared.own_machine = Some(percent_decode(value)?),
             "run" => shared.run = value == "1",
+            "tools" => shared.tools = Some(percent_decode(value)?),
             _ => {}
         }
     }
@@ -429,9 +444,10 @@ mod tests {
             machine: Some("ac-table".into()),
             own_machine: None,
             run: true,
+            tools: Some("BEGIN TOOL .T MM\nT L R\n1 +1 +1\n".into()),
         };
         let f = share_fragment(&s);
-        assert!(!f.contains('\n') && !f.contains(' ') && f.matches('&').count() == 3, "{f}");
+        assert!(!f.contains('\n') && !f.contains(' ') && f.matches('&').count() == 4, "{f}");
         assert_eq!(parse_fragment(&format!("#{f}")), Some(s));
     }
 

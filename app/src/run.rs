@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use schwenkbar_core::Program;
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::tools::ToolEntry;
 use schwenkbar_core::sim::{SimOptions, Simulation, State, simulate};
 
 /// The simulation of the current program on the current machine, compared by identity (it is
@@ -19,7 +20,13 @@ impl SimRef {
     /// The program simulated on the machine with the control's defaults.
     #[must_use]
     pub fn of(program: &Program, machine: &Machine) -> SimRef {
-        SimRef(Arc::new(simulate(program, machine, &SimOptions::default())))
+        SimRef::with_tools(program, machine, None)
+    }
+
+    /// [`SimRef::of`] with the shop's tool table (`None`: the shipped one).
+    #[must_use]
+    pub fn with_tools(program: &Program, machine: &Machine, tools: Option<Arc<[ToolEntry]>>) -> SimRef {
+        SimRef(Arc::new(simulate(program, machine, &SimOptions { tools, ..SimOptions::default() })))
     }
 
     /// The simulation of `program`, an edit of the simulated program that kept its blocks

@@ -5,8 +5,10 @@
 //! dialog ([`crate::dialog`]), whose finished block is inserted after the cursor.
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use schwenkbar_core::machine::Machine;
+use schwenkbar_core::sim::tools::ToolEntry;
 use schwenkbar_core::{BlockBody, edit};
 
 use schwenkbar_core::plane::PlaneKind;
@@ -110,6 +112,9 @@ pub struct AppState {
     /// An imported program moves rotary axes the machine does not have: the shipped machine
     /// that has them, offered (F1 takes it, F2 or END keeps the machine).
     pub machine_offer: Option<MachineOffer>,
+    /// The shop's tool table (from the machine editor page, or a share link for this visit);
+    /// `None`: the shipped one.
+    pub tools: Option<Arc<[ToolEntry]>>,
 }
 
 /// The machine offered for an imported program ([`AppState::machine_offer`]).
@@ -169,6 +174,7 @@ impl Default for AppState {
             unexported: false,
             replace: None,
             machine_offer: None,
+            tools: None,
         }
         .simulated(None)
     }
@@ -523,7 +529,9 @@ impl AppState {
     #[must_use]
     fn simulated(mut self, changed: Option<std::ops::Range<usize>>) -> AppState {
         let resumed = changed.zip(self.sim.as_ref()).map(|(c, sim)| sim.resumed(&self.doc.program, c));
-        self.sim = resumed.or_else(|| self.machine.as_ref().map(|m| SimRef::of(&self.doc.program, m)));
+        self.sim = resumed.or_else(|| {
+            self.machine.as_ref().map(|m| SimRef::with_tools(&self.doc.program, m, self.tools.clone()))
+        });
         self.stock = None;
         match (&self.sim, self.run.as_mut()) {
             (Some(sim), Some(run)) => run.go_to(&sim.0, &self.doc.program, run.step),

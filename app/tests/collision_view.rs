@@ -118,6 +118,7 @@ fn a_link_to_a_run_that_stops_on_the_way_opens_at_the_stop() {
             machine: Some("ac-table".into()),
             own_machine: None,
             run: true,
+            tools: None,
         };
         AppState::start(Stored::default(), Some(&format!("#{}", share_fragment(&shared)))).0
     };

@@ -86,3 +86,37 @@ async fn a_collision_body_is_checked_at_its_field_added_and_removed() {
     editor.remove();
     web_sys::window().expect("window").location().set_hash("").expect("clear hash");
 }
+
+/// The shop's tool table beside the machine: the shipped table shown, a wrong cell said at its
+/// row and not kept, fixed and kept as a `TOOL.T` text (which the trainer reads), a new row,
+/// and back to the shipped table.
+#[wasm_bindgen_test]
+async fn the_tool_table_is_checked_at_its_cell_and_kept_as_tool_t() {
+    use schwenkbar_app::tool_table::TOOLS_KEY;
+    clear_storage();
+    let editor = mount_editor("#ac-table").await;
+    let own = || query(&editor, ".tools .status").and_then(|s| s.get_attribute("data-own"));
+    assert_eq!(own().as_deref(), Some("false"), "the shipped table until one is kept");
+    // Row 1 (tool 1, SCHAFTFRAESER_D10), column R.
+    let radius = r#"input[data-cell="0:3"]"#;
+    type_into(&editor, radius, "5x").await;
+    let said = ".tools tr.issues .ed-issue";
+    assert!(wait_for(&editor, said, 3_000).await.is_some(), "said under the row");
+    assert_eq!(text(&editor, said), "R: „5x“ ist keine Zahl");
+    assert_eq!(stored(TOOLS_KEY), None, "not kept while wrong");
+    type_into(&editor, radius, "6").await;
+    assert!(eventually(|| query(&editor, said).is_none()).await, "the message went");
+    let kept = stored(TOOLS_KEY).expect("kept");
+    assert!(kept.starts_with("BEGIN TOOL") && kept.contains("SCHAFTFRAESER_D10"), "{kept}");
+    assert_eq!(own().as_deref(), Some("true"));
+    click(&editor, "[data-action=add-tool]").await;
+    assert!(
+        eventually(|| stored(TOOLS_KEY).is_some_and(|t| t.contains("WERKZEUG_0"))).await,
+        "the new row kept"
+    );
+    click(&editor, "[data-action=shipped-tools]").await;
+    assert!(eventually(|| stored(TOOLS_KEY).as_deref() == Some("")).await, "the own table dropped");
+    assert_eq!(own().as_deref(), Some("false"));
+    editor.remove();
+    web_sys::window().expect("window").location().set_hash("").expect("clear hash");
+}

@@ -10,6 +10,7 @@ use web_sys::{Blob, BlobPropertyBag, Element, File, HtmlAnchorElement, HtmlEleme
 use schwenkbar_app::i18n::Text;
 use schwenkbar_app::persist::{COURSE_KEY, PREFS_KEY, PROGRAM_KEY, Prefs, REPLACED_KEY, STATE_KEY, Stored};
 use schwenkbar_app::saved_machines::MACHINES_KEY;
+use schwenkbar_app::tool_table::TOOLS_KEY;
 
 fn storage() -> Option<web_sys::Storage> {
     web_sys::window()?.local_storage().ok()?
@@ -29,13 +30,14 @@ pub fn load_stored() -> Stored {
         program: load(PROGRAM_KEY),
         machines: load(MACHINES_KEY),
         replaced: load(REPLACED_KEY),
+        tools: load(TOOLS_KEY),
     }
 }
 
-/// The machine editor's own machines and the shared preferences.
+/// The machine editor's own machines, the shared preferences and the shop's tool table.
 #[must_use]
-pub fn load_editor() -> (Option<String>, Option<String>) {
-    (load(MACHINES_KEY), load_prefs())
+pub fn load_editor() -> (Option<String>, Option<String>, Option<String>) {
+    (load(MACHINES_KEY), load_prefs(), load(TOOLS_KEY))
 }
 
 /// Goes to another page of the app (relative `url`); without a window nothing happens.

@@ -13,6 +13,7 @@ pub mod right_hand_demo;
 pub mod scene_pane;
 pub mod softkey_row;
 pub mod solve_lab;
+pub mod tool_table;
 pub mod view3d;
 pub mod viewer;
 pub mod why_panel;

@@ -11,6 +11,8 @@ use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Prefs, Saved, Shared, Stored};
 use crate::saved_machines;
+use crate::tool_table;
+use schwenkbar_core::sim::tools::write_tool_table;
 
 /// A share link opened over the trainee's own program: the link's program is shown (and can be
 /// run), the own one is kept aside and nothing is saved until the trainee decides.
@@ -132,7 +134,7 @@ impl AppState {
     /// and replaced by the default.
     #[must_use]
     pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
-        let Stored { state: saved, prefs, program, machines, replaced } = stored;
+        let Stored { state: saved, prefs, program, machines, replaced, tools } = stored;
         let mut state = AppState::default();
         let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
         state.lang = prefs.lang;
@@ -161,6 +163,11 @@ impl AppState {
             }
             state.own_machines = own.into();
         }
+        match tool_table::read_saved(tools.as_deref()) {
+            Ok(t) => state.tools = t,
+            // The text stays stored: the editor page shows the shipped table until one is kept.
+            Err(why) => state.message = Some(why),
+        }
         match saved.as_deref().map(Saved::from_record) {
             None => {}
             Some(Ok(s)) => {
@@ -187,6 +194,18 @@ impl AppState {
             }
             state.doc = Rc::new(Document::new(shared.program));
             state.cursor = shared.block.min(state.doc.last_index());
+            // The sender's tool table, for this visit only (the own one stays stored).
+            if let Some(text) = shared.tools.as_deref() {
+                match tool_table::read_saved(Some(text)) {
+                    Ok(t) => state.tools = t,
+                    Err(_) => {
+                        state.message = Some(Text::new(
+                            "Werkzeugtabelle im Link beschädigt: die eigene gilt",
+                            "The link's tool table is corrupt: the own one applies",
+                        ));
+                    }
+                }
+            }
             // An own machine travels whole; the receiver keeps it for this visit only.
             match shared.own_machine.as_deref().map(saved_machines::from_record) {
                 Some(Ok(m)) => {
@@ -271,6 +290,7 @@ impl AppState {
             machine: self.machine.as_ref().map(|m| m.id.clone()),
             own_machine: own.map(saved_machines::to_record),
             run: self.run.is_some(),
+            tools: self.tools.as_deref().map(write_tool_table),
         })
     }
 

@@ -70,6 +70,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         program: Some(s.doc.text.clone()),
         machines: None,
         replaced: None,
+        tools: None,
     };
     let (back, _) = AppState::start(stored, None);
     assert_eq!((back.doc.text.as_str(), back.cursor, back.lang), (s.doc.text.as_str(), 7, Lang::En));
@@ -100,6 +101,7 @@ fn state_survives_a_reload_and_a_corrupt_one_falls_back_with_a_message() {
         program: None,
         machines: None,
         replaced: None,
+        tools: None,
     };
     let (old, _) = AppState::start(stored, None);
     assert_eq!(
@@ -503,4 +505,26 @@ fn an_import_offers_the_machine_with_the_programs_rotary_axes() {
     let ac = b"0 BEGIN PGM AC MM\n1 L A+10 C+90 R0 FMAX\n2 END PGM AC MM\n".to_vec();
     let s = AppState::default().then(Action::ShowFiles).then(Action::Import(ac));
     assert!(s.machine_offer.is_none(), "the A/C table has A and C");
+}
+
+/// The tool table kept by the machine editor page runs in the trainer, and a share link
+/// carries it to a receiver who has none (for that visit).
+#[test]
+fn the_shops_tool_table_runs_in_the_trainer_and_travels_in_a_share_link() {
+    let table = "BEGIN TOOL .T MM\nT L    R\n1 +42  +3\n[END]\n";
+    let program = "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z S1000\n2 END PGM T MM\n";
+    let length_after_call = |s: &AppState| {
+        let sim = &s.sim.as_ref().expect("simulated").0;
+        let step = sim.first_step[1].expect("executed") as usize;
+        sim.state_at(&s.doc.program, step).expect("state").tool.length
+    };
+    let stored = Stored { program: Some(program.into()), tools: Some(table.into()), ..Stored::default() };
+    let (s, _) = AppState::start(stored, None);
+    assert_eq!(length_after_call(&s), 42.0, "the shop's tool 1, not the shipped one (L=80)");
+    let (received, _) = AppState::start(Stored::default(), Some(&format!("#{}", s.share_fragment())));
+    assert_eq!(length_after_call(&received), 42.0);
+    let (plain, _) = AppState::start(Stored { program: Some(program.into()), ..Stored::default() }, None);
+    assert_eq!(length_after_call(&plain), 80.0, "the shipped table");
+    let (broken, _) = AppState::start(Stored { tools: Some("kaputt".into()), ..Stored::default() }, None);
+    assert!(broken.message.is_some_and(|m| m.de.starts_with("Gespeicherte Werkzeugtabelle unlesbar")));
 }

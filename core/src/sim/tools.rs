@@ -15,7 +15,7 @@ use crate::ast::ToolRef;
 mod table_file;
 
 pub use table_file::{
-    MAX_TOOL_NUMBER, ToolTableError, ToolTableErrorCode, read_tool_table, write_tool_table,
+    Columns, MAX_TOOL_NUMBER, ToolTableError, ToolTableErrorCode, read_tool_table, write_tool_table,
 };
 
 /// One row of the tool table.

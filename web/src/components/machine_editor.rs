@@ -1,13 +1,15 @@
 //! The machine editor page (`maschine.html`, its own bundle): the form of
 //! [`schwenkbar_app::editor`] row by row with each row's messages under it, the 3D preview of the
 //! last valid machine, and the page's commands (start from, save, delete, export, import,
-//! language). State and checks in [`EditorState`]; this only renders and dispatches.
+//! language), and the shop's tool table below ([`super::tool_table`]). State and checks in
+//! [`EditorState`]; this only renders and dispatches.
 
 use std::rc::Rc;
 
 use web_sys::{HtmlInputElement, HtmlSelectElement};
 use yew::prelude::*;
 
+use super::tool_table::ToolTable;
 use super::view3d::View3d;
 use crate::browser;
 use crate::effects::{Shell, Shelled, use_effects};
@@ -92,8 +94,10 @@ fn input(state: &UseReducerHandle<Editor>, field: Field, l: Lang) -> Html {
 #[function_component(EditorRoot)]
 pub fn editor_root() -> Html {
     let state = use_reducer(|| {
-        let (machines, prefs) = browser::load_editor();
-        Editor::new(EditorState::start(machines.as_deref(), prefs.as_deref(), browser::fragment().as_deref()))
+        let (machines, prefs, tools) = browser::load_editor();
+        let (editor, fx) =
+            EditorState::start(machines.as_deref(), prefs.as_deref(), browser::fragment().as_deref());
+        Editor::new((editor.with_tools(tools.as_deref()), fx))
     });
     let root = use_node_ref();
     {
@@ -214,6 +218,7 @@ pub fn editor_root() -> Html {
                 <h2>{ l.t("Vorschau", "Preview") }</h2>
                 <View3d lang={l} machine={state.preview.clone()} state={(*preview).clone()} />
             </section>
+            <ToolTable state={state.clone()} lang={l} />
         </div>
     }
 }

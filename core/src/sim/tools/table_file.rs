@@ -120,6 +120,67 @@ fn field(line: &[char], cols: &[Column<'_>], i: usize) -> String {
     line[from..to.max(from)].iter().collect::<String>().trim().to_owned()
 }
 
+/// A tool as the table's columns give it (mm, degrees).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Columns<'a> {
+    pub number: u32,
+    pub name: String,
+    pub length: f64,
+    pub radius: f64,
+    /// `R2`: 0 end mill, `R` ball, between: toroid (TNC 640 user's manual, "Permitted tool
+    /// shapes").
+    pub r2: f64,
+    pub dl: f64,
+    pub dr: f64,
+    /// `TYP`: `DRILL`, `CENT` and `CSINK` have a point (`T-ANGLE`); any other is a mill.
+    pub kind: &'a str,
+    /// `T-ANGLE`, 0 for none.
+    pub point_angle: f64,
+}
+
+/// The tool types with a point angle (`T-ANGLE` "for DRILL and CSINK", FN 18 ID50; a centring
+/// drill `CENT` too).
+const POINTED: [&str; 3] = ["DRILL", "CENT", "CSINK"];
+
+impl ToolEntry {
+    /// The tool the table's columns describe.
+    #[must_use]
+    pub fn from_columns(c: Columns<'_>) -> ToolEntry {
+        let drill = POINTED.iter().any(|d| c.kind.eq_ignore_ascii_case(d));
+        let (shape, corner_radius, point_angle) = if drill {
+            (ShapeKind::Drill, None, (c.point_angle > 0.0).then_some(c.point_angle))
+        } else if c.r2 > 0.0 && c.r2 >= c.radius {
+            (ShapeKind::Ball, None, None)
+        } else if c.r2 > 0.0 {
+            (ShapeKind::Bull, Some(c.r2), None)
+        } else {
+            (ShapeKind::Flat, None, None)
+        };
+        ToolEntry {
+            number: c.number,
+            name: c.name,
+            length: c.length,
+            radius: c.radius,
+            shape,
+            corner_radius,
+            point_angle,
+            dl: c.dl,
+            dr: c.dr,
+        }
+    }
+
+    /// `R2`, `TYP` and `T-ANGLE` (none: the drill's default) of the tool, as the table writes them.
+    #[must_use]
+    pub fn columns(&self) -> (f64, &'static str, Option<f64>) {
+        match self.shape {
+            ShapeKind::Flat => (0.0, "MILL", None),
+            ShapeKind::Ball => (self.radius, "MILL", None),
+            ShapeKind::Bull => (self.corner_radius.unwrap_or(0.0), "MILL", None),
+            ShapeKind::Drill => (0.0, "DRILL", self.point_angle),
+        }
+    }
+}
+
 /// Reads a `TOOL.T` file. Lengths of an `INCH` table are converted to mm. Rows keep the file's
 /// order.
 ///
@@ -175,31 +236,18 @@ pub fn read_tool_table(text: &str) -> Result<Vec<ToolEntry>, ToolTableError> {
                 .filter(|x| x.is_finite())
                 .ok_or_else(|| err(n, ToolTableErrorCode::NotANumber(cols[c].name.to_owned(), v.clone())))
         };
-        let (radius, corner) = (value(Some(r))? * scale, value(r2)? * scale);
-        let drill = kind.is_some_and(|k| {
-            ["DRILL", "CENT", "CSINK"].iter().any(|d| field(&line, &cols, k).eq_ignore_ascii_case(d))
-        });
-        let point = value(angle)?;
-        let (shape, corner_radius, point_angle) = if drill {
-            (ShapeKind::Drill, None, (point > 0.0).then_some(point))
-        } else if corner > 0.0 && corner >= radius {
-            (ShapeKind::Ball, None, None)
-        } else if corner > 0.0 {
-            (ShapeKind::Bull, Some(corner), None)
-        } else {
-            (ShapeKind::Flat, None, None)
-        };
-        out.push(ToolEntry {
+        let kind_text = kind.map(|k| field(&line, &cols, k)).unwrap_or_default();
+        out.push(ToolEntry::from_columns(Columns {
             number,
             name: name.map_or_else(String::new, |c| field(&line, &cols, c)),
             length: value(Some(l))? * scale,
-            radius,
-            shape,
-            corner_radius,
-            point_angle,
+            radius: value(Some(r))? * scale,
+            r2: value(r2)? * scale,
             dl: value(dl)? * scale,
             dr: value(dr)? * scale,
-        });
+            kind: &kind_text,
+            point_angle: value(angle)?,
+        }));
     }
     Ok(out)
 }
@@ -226,15 +274,8 @@ pub fn write_tool_table(tools: &[ToolEntry]) -> String {
     out.push('\n');
     let num = |v: f64| signed(v, 4);
     for t in tools {
-        let r2 = match t.shape {
-            ShapeKind::Ball => t.radius,
-            ShapeKind::Bull => t.corner_radius.unwrap_or(0.0),
-            ShapeKind::Flat | ShapeKind::Drill => 0.0,
-        };
-        let (kind, angle) = match t.shape {
-            ShapeKind::Drill => ("DRILL", num(t.point_angle.unwrap_or(super::DRILL_POINT_ANGLE))),
-            _ => ("MILL", String::new()),
-        };
+        let (r2, kind, angle) = t.columns();
+        let angle = angle.map(num).unwrap_or_default();
         // Names are cut to the column (32 characters): the control's limit.
         let name: String = t.name.chars().filter(|c| !c.is_whitespace()).take(32).collect();
         let cells = [
