@@ -86,7 +86,11 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
     }
     s.push_str("        ]),\n");
     let geometry = option(m.get("geometry"), |g| {
-        let g = object(ctx, g, &["preset", "linear_limits", "rapid_linear", "rapid_rotary", "start"]);
+        let g = object(
+            ctx,
+            g,
+            &["preset", "linear_limits", "rapid_linear", "rapid_rotary", "start", "table_top"],
+        );
         let linear = option(g.get("linear_limits"), |l| {
             let l = object(ctx, l, &["X", "Y", "Z"]);
             format!(
@@ -97,11 +101,12 @@ fn machine(ctx: &str, id: &str, v: &Value) -> String {
             )
         });
         format!(
-            "GeometryDef {{ preset: {}, linear_limits: {linear}, rapid_linear: {}, rapid_rotary: {}, start: {} }}",
+            "GeometryDef {{ preset: {}, linear_limits: {linear}, rapid_linear: {}, rapid_rotary: {}, start: {}, table_top: {} }}",
             option(g.get("preset"), |p| vec3(ctx, p)),
             option(g.get("rapid_linear"), |x| float(ctx, x)),
             option(g.get("rapid_rotary"), |x| float(ctx, x)),
             option(g.get("start"), |p| vec3(ctx, p)),
+            option(g.get("table_top"), |p| vec3(ctx, p)),
         )
     });
     let _ = writeln!(s, "        geometry: {geometry},");

@@ -150,6 +150,8 @@ pub struct Form {
     pub rapid_linear: String,
     pub rapid_rotary: String,
     pub start: [String; 3],
+    /// The table's clamping surface centre; all three empty: none (the preset stays fixed).
+    pub table_top: [String; 3],
     /// The collision bodies.
     pub collision: Vec<BodyForm>,
 }
@@ -176,6 +178,7 @@ pub enum Field {
     RapidLinear,
     RapidRotary,
     Start(usize),
+    TableTop(usize),
     /// Collision body, then as for the machine (language, component).
     BodyName(usize, usize),
     BodyCarrier(usize),
@@ -211,6 +214,7 @@ impl Field {
             Field::RapidLinear => "geometry.rapid_linear".into(),
             Field::RapidRotary => "geometry.rapid_rotary".into(),
             Field::Start(_) => "geometry.start".into(),
+            Field::TableTop(_) => "geometry.table_top".into(),
             Field::BodyName(i, l) => body(i, ["name.de", "name.en"][l.min(1)]),
             Field::BodyCarrier(i) => body(i, "carrier"),
             Field::BodyShape(i) => format!("collision[{i}]"),
@@ -310,6 +314,14 @@ pub fn rows(form: &Form) -> Vec<Row> {
         Text::new("Bezugspunkt (Preset) x y z (mm)", "Preset x y z (mm)"),
         (0..3).map(Field::Preset).collect(),
     ));
+    out.push(row(
+        3,
+        Text::new(
+            "Tischmitte x y z (mm; leer: Preset fest, sonst Rohteil auf dem Tisch)",
+            "Table centre x y z (mm; empty: fixed preset, else the blank on the table)",
+        ),
+        (0..3).map(Field::TableTop).collect(),
+    ));
     for (a, letter) in XYZ.iter().enumerate() {
         out.push(row(
             3,
@@ -403,6 +415,7 @@ impl Form {
             rapid_linear: None,
             rapid_rotary: None,
             start: None,
+            table_top: None,
         });
         let lin = g.linear_limits.unwrap_or(LinearLimitsDef { x: None, y: None, z: None });
         let linear = [lin.x, lin.y, lin.z]
@@ -425,6 +438,7 @@ impl Form {
             rapid_linear: text(g.rapid_linear.unwrap_or(d.rapid_linear)),
             rapid_rotary: text(g.rapid_rotary.unwrap_or(d.rapid_rotary)),
             start: texts(g.start.unwrap_or(d.start.to_array())),
+            table_top: g.table_top.map(texts).unwrap_or_default(),
             collision: def.collision.iter().map(BodyForm::of).collect(),
         })
     }
@@ -481,6 +495,7 @@ impl Form {
             Field::RapidLinear => &self.rapid_linear,
             Field::RapidRotary => &self.rapid_rotary,
             Field::Start(c) => self.start.get(c)?,
+            Field::TableTop(c) => self.table_top.get(c)?,
             Field::BodyName(i, l) => self.collision.get(i)?.name.get(l)?,
             Field::BodyCarrier(i) => &self.collision.get(i)?.carrier,
             Field::BodyShape(_) => return None,
@@ -510,6 +525,7 @@ impl Form {
             Field::RapidLinear => &mut self.rapid_linear,
             Field::RapidRotary => &mut self.rapid_rotary,
             Field::Start(c) => self.start.get_mut(c)?,
+            Field::TableTop(c) => self.table_top.get_mut(c)?,
             Field::BodyName(i, l) => self.collision.get_mut(i)?.name.get_mut(l)?,
             Field::BodyCarrier(i) => &mut self.collision.get_mut(i)?.carrier,
             Field::BodyShape(_) => return None,
@@ -543,6 +559,8 @@ impl Form {
         };
         let preset = v3(Field::Preset, &self.preset);
         let start = v3(Field::Start, &self.start);
+        let table_top = (!self.table_top.iter().all(|t| t.trim().is_empty()))
+            .then(|| v3(Field::TableTop, &self.table_top));
         let mut chain = Vec::with_capacity(2);
         for (i, j) in self.joints.iter().enumerate() {
             let direction = [0, 1, 2].map(|c| num(Field::Direction(i, c), &j.direction[c]));
@@ -604,6 +622,7 @@ impl Form {
                 rapid_linear: Some(rapid_linear),
                 rapid_rotary: Some(rapid_rotary),
                 start: Some(start),
+                table_top,
             }),
             collision: Cow::Owned(collision),
         };

@@ -25,8 +25,11 @@ pub const MACHINES_KEY: &str = "schwenkbar.machines";
 pub const MAX_SAVED: usize = 7;
 
 const KIND: char = 'm';
-const VERSION: u32 = 1;
-const KEYS: [&str; 20] = [
+/// Version 2 added `table_top`; a version 1 record (its first 20 keys) still reads.
+const VERSION: u32 = 2;
+/// The collision bodies' records are still version 1.
+const BODY_VERSION: u32 = 1;
+const KEYS: [&str; 21] = [
     "id",
     "name.de",
     "name.en",
@@ -47,6 +50,7 @@ const KEYS: [&str; 20] = [
     "rapid",
     "start",
     "collision",
+    "table_top",
 ];
 /// The collision bodies: one record of these keys each ([`body_record`]), a line each.
 const BODY_KIND: char = 'b';
@@ -87,7 +91,7 @@ pub fn to_record(machine: &Machine) -> String {
     let joint = |i: usize| def.chain.get(i).cloned();
     let (c0, c1) = (joint(0), joint(1));
     let field = |j: &Option<JointDef>, f: fn(&JointDef) -> String| j.as_ref().map(f).unwrap_or_default();
-    let values: [String; 20] = [
+    let values: [String; 21] = [
         def.id.to_string(),
         def.name.de.to_string(),
         def.name.en.to_string(),
@@ -108,6 +112,7 @@ pub fn to_record(machine: &Machine) -> String {
         format!("{} {}", geo.rapid_linear, geo.rapid_rotary),
         vec3(geo.start.to_array()),
         def.collision.iter().map(body_record).collect::<Vec<_>>().join("\n"),
+        geo.table_top.map(|t| vec3(t.to_array())).unwrap_or_default(),
     ];
     let fields: Vec<(&str, &str)> = KEYS.iter().copied().zip(values.iter().map(String::as_str)).collect();
     write_record(KIND, VERSION, &fields)
@@ -131,11 +136,11 @@ fn body_record(b: &BodyDef) -> String {
         ("shape", shape),
         ("numbers", numbers.as_str()),
     ];
-    write_record(BODY_KIND, VERSION, &fields)
+    write_record(BODY_KIND, BODY_VERSION, &fields)
 }
 
 fn body(text: &str) -> Result<BodyDef, RestoreError> {
-    let [de, en, carrier, shape, numbers_text] = read_record(text, BODY_KIND, VERSION, BODY_KEYS)?;
+    let [de, en, carrier, shape, numbers_text] = read_record(text, BODY_KIND, BODY_VERSION, BODY_KEYS)?;
     let (cuboid, cylinder) = match shape.as_str() {
         "box" => {
             let [x, y, z, a, b, c] = numbers(&numbers_text)?;
@@ -199,7 +204,18 @@ pub fn from_record(text: &str) -> Result<Machine, RestoreError> {
         rapid,
         start,
         collision,
-    ] = read_record(text, KIND, VERSION, KEYS)?;
+        table_top,
+    ] = match read_record(text, KIND, VERSION, KEYS) {
+        Err(RestoreError::OldVersion) => {
+            let v1: [String; 20] = read_record(text, KIND, 1, std::array::from_fn(|i| KEYS[i]))?;
+            let mut all: [String; 21] = Default::default();
+            for (slot, v) in all.iter_mut().zip(v1) {
+                *slot = v;
+            }
+            all
+        }
+        read => read?,
+    };
     let [xn, xx, yn, yx, zn, zx] = numbers(&lin)?;
     let [rapid_linear, rapid_rotary] = numbers(&rapid)?;
     let def = MachineDef {
@@ -217,6 +233,7 @@ pub fn from_record(text: &str) -> Result<Machine, RestoreError> {
             rapid_linear: Some(rapid_linear),
             rapid_rotary: Some(rapid_rotary),
             start: Some(numbers(&start)?),
+            table_top: if table_top.is_empty() { None } else { Some(numbers(&table_top)?) },
         }),
         collision: Cow::Owned(collision.lines().map(body).collect::<Result<_, _>>()?),
     };

@@ -114,6 +114,9 @@ fn every_field_edits_its_part_of_the_description() {
                 Field::RapidLinear => def.geometry.and_then(|g| g.rapid_linear).expect("rate").to_string(),
                 Field::RapidRotary => def.geometry.and_then(|g| g.rapid_rotary).expect("rate").to_string(),
                 Field::Start(c) => def.geometry.and_then(|g| g.start).expect("start")[c].to_string(),
+                Field::TableTop(c) => {
+                    def.geometry.and_then(|g| g.table_top).expect("table top")[c].to_string()
+                }
                 Field::BodyName(i, 0) => def.collision[i].name.de.to_string(),
                 Field::BodyName(i, _) => def.collision[i].name.en.to_string(),
                 Field::BodyCarrier(i) => def.collision[i].carrier.to_string(),
@@ -421,9 +424,28 @@ fn an_own_machine_travels_in_the_share_link() {
     // A shipped machine travels by id only.
     assert!(!AppState::default().share_fragment().contains("mdef="));
     // A corrupt machine in a link is said, not a panic.
-    let broken = fragment.replace("mdef=m1", "mdef=m1x");
+    let broken = fragment.replace("mdef=m2", "mdef=m2x");
     let (opened, _) = AppState::start(Stored::default(), Some(&broken));
     assert_eq!(opened.machine.as_ref().map(|m| m.id.as_str()), Some("ac-table"));
+}
+
+/// Records of the builds before the table top (version 1, without `table_top`) still read, as
+/// the same machine without a table top; the table top typed in the editor is kept.
+#[test]
+fn a_machine_record_of_version_1_still_reads_and_the_table_top_is_kept() {
+    let record = saved_value(&editor().apply(EditorAction::Save).1);
+    let record = record.lines().next().expect("one machine").to_owned();
+    let v1 = record.replacen("m2;", "m1;", 1);
+    let v1 = v1.strip_suffix(";table_top=").expect("no table top written");
+    let old = saved_machines::from_record(v1).expect("version 1 reads");
+    assert_eq!(old, saved_machines::from_record(&record).expect("version 2 reads"));
+    assert_eq!(old.geometry.table_top, None);
+    let s = [(0, "0"), (1, "0"), (2, "-450")]
+        .into_iter()
+        .fold(editor(), |s, (c, v)| set(&s, Field::TableTop(c), v));
+    let record = saved_value(&s.apply(EditorAction::Save).1);
+    let m = saved_machines::from_record(record.lines().next().expect("one")).expect("reads");
+    assert_eq!(m.geometry.table_top, Some(glam::DVec3::new(0.0, 0.0, -450.0)));
 }
 
 fn plane_block(src: &str) -> PlaneBlock<f64> {

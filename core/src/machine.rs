@@ -10,14 +10,16 @@
 //!              {"axis": "A", "carrier": "table", "direction": [1,0,0], "pivot": [0,0,0],
 //!               "limits": {"min": -100, "max": 180}} ],
 //!   "geometry": { "preset": [-50,-50,-160], "linear_limits": {"X": {"min": -700, "max": 700}, …},
-//!                 "rapid_linear": 12000, "rapid_rotary": 5400, "start": [0,0,0] } }
+//!                 "rapid_linear": 12000, "rapid_rotary": 5400, "start": [0,0,0],
+//!                 "table_top": [0,0,-210] } }
 //! ```
 //! `direction` is the axis direction at home (all axes at 0°) in machine coordinates, a unit
 //! vector, so tilted axes such as a 45° nutating head are plain data. `pivot` (mm) is a point on
 //! the axis, for MOVE and the 3D view: for a **table** axis in M-CS with every axis at home, for a
 //! **head** axis relative to the spindle gauge point (one tool length above the tool tip) with
 //! the head at home. `geometry` (optional, every field defaulted, [`MachineGeometry`]) places the
-//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]); `collision`
+//! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]), and with
+//! `table_top` puts each program's blank on the table ([`crate::sim::placed`]); `collision`
 //! (optional) lists the collision bodies ([`body`]).
 
 use std::borrow::Cow;
@@ -125,6 +127,10 @@ pub struct MachineGeometry {
     pub rapid_rotary: f64,
     /// Linear axis position at program start, M-CS, mm.
     pub start: DVec3,
+    /// The centre of the table's clamping surface, M-CS with every rotary axis at 0°, mm. With
+    /// it a program's blank is placed on the table and the preset follows it
+    /// ([`crate::sim::placed`]); without it the preset stays where `preset` says.
+    pub table_top: Option<DVec3>,
 }
 
 impl MachineGeometry {
@@ -149,6 +155,7 @@ impl Default for MachineGeometry {
             rapid_linear: Self::DEFAULT_RAPID_LINEAR,
             rapid_rotary: Self::DEFAULT_RAPID_ROTARY,
             start: DVec3::ZERO,
+            table_top: None,
         }
     }
 }
@@ -220,6 +227,8 @@ pub struct GeometryDef {
     pub rapid_rotary: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub start: Option<[f64; 3]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub table_top: Option<[f64; 3]>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -330,6 +339,7 @@ impl Machine {
                 rapid_linear: Some(g.rapid_linear),
                 rapid_rotary: Some(g.rapid_rotary),
                 start: Some(g.start.to_array()),
+                table_top: g.table_top.map(|t| t.to_array()),
             }),
             collision: self
                 .bodies

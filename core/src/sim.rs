@@ -83,11 +83,13 @@ mod error;
 pub mod geometry;
 mod interp;
 mod pick;
+mod placed;
 pub mod segment;
 mod state;
 pub mod tools;
 pub mod transform;
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::sync::Arc;
@@ -101,6 +103,7 @@ pub use collision::{Collision, SafeAlternative};
 pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
 pub use pick::{Pick, pick_machine, programmed_rotary_axes};
+pub use placed::{placed, written_blank};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
 pub use state::{
     ActivePlane, Blank, Frame, Frames, ListingRow, Pivot, Spindle, SpindleDir, State, TiltSource, ToolState,
@@ -226,8 +229,11 @@ pub fn simulate_listed(
 ) -> Simulation {
     let mut options = options.clone();
     options.checkpoint_interval = options.checkpoint_interval.max(1);
+    // The blank on the table: the run's machine has the preset the program's blank gives.
+    let machine = placed(machine, program).into_owned();
+    let interp = Interp::new(&machine);
     Simulation {
-        machine: machine.clone(),
+        machine,
         options,
         records: Vec::with_capacity(program.blocks.len()),
         error: None,
@@ -237,7 +243,7 @@ pub fn simulate_listed(
         blocks: program.blocks.len(),
         spare: None,
     }
-    .run_on(program, Interp::new(machine), row, &[])
+    .run_on(program, interp, row, &[])
 }
 
 /// Blocks a contour element looks ahead over to the next element (`next_element`,
@@ -367,6 +373,10 @@ impl Simulation {
     /// run's, as a run from there would make it again.
     #[must_use]
     pub fn resumed(self: &Arc<Simulation>, program: &Program, changed: Range<usize>) -> Simulation {
+        // An edit that moved the blank moves the preset: a run from the start.
+        if let Cow::Owned(moved) = placed(&self.machine, program) {
+            return simulate(program, &moved, &self.options);
+        }
         let blocks = &program.blocks;
         let mut from = changed.start.min(blocks.len()).min(self.blocks);
         while from > 0 && looked_over(&blocks[from - 1].body()) {

@@ -238,6 +238,12 @@ pub fn physical_tool_length(l: f64) -> f64 {
     if l < ZERO_TOOL_DIFFERENCE_BELOW { (ZERO_TOOL_LENGTH + l).max(1.0) } else { l }
 }
 
+/// On a machine with a table top, a program without a blank written in numbers (no BLK FORM, or
+/// one from parameters) has its datum this many mm above the table's centre, as if a 50 mm
+/// blank were clamped there ([`crate::sim::placed`]). **UNCONFIRMED**: nothing in such a
+/// program says where its datum is.
+pub const DATUM_ABOVE_TABLE: f64 = 50.0;
+
 /// The tool holder's size ([`holder`]), mm.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Holder {

@@ -620,3 +620,35 @@ fn repeats_from_a_parameter() {
     assert_eq!(e.line, 6);
     assert!(e.detail.en.contains("REP Q13 = 1.5"), "{:?}", e.detail);
 }
+
+/// On a machine that knows its table top the blank sits centred on the table and the preset
+/// follows it; an edit of the BLK FORM moves it in a resumed run as in a fresh one; a machine
+/// without a table top keeps its preset (the five teaching machines).
+#[test]
+fn the_blank_sits_on_the_table_of_a_machine_that_knows_it() {
+    use glam::DVec3;
+    use std::sync::Arc;
+    let teaching = Machine::builtin("ac-table").expect("machine");
+    let mut real = teaching.clone();
+    real.geometry.table_top = Some(DVec3::new(0.0, 0.0, -210.0));
+    let src = |z: &str| {
+        format!(
+            "0 BEGIN PGM T MM\n1 BLK FORM 0.1 Z X-50 Y-40 Z{z}\n2 BLK FORM 0.2 X+50 Y+40 Z+0\n\
+             3 TOOL CALL 1 Z S1000\n4 L X+0 Y+0 Z+10 R0 FMAX\n5 END PGM T MM\n"
+        )
+    };
+    let (p, _) = parse(&src("-30"));
+    let sim = Arc::new(simulate(&p, &real, &SimOptions::default()));
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    // Blank centre (0, 0), bottom Z−30 on the C table's top at Z−210: the datum (top face) at Z−180.
+    assert_eq!(sim.machine.geometry.preset, DVec3::new(0.0, 0.0, -180.0));
+    assert_eq!(
+        simulate(&p, &teaching, &SimOptions::default()).machine.geometry.preset,
+        teaching.geometry.preset
+    );
+    let (q, _) = parse(&src("-60"));
+    let resumed = sim.resumed(&q, 1..2);
+    let fresh = simulate(&q, &real, &SimOptions::default());
+    assert_eq!(resumed.machine.geometry.preset, DVec3::new(0.0, 0.0, -150.0));
+    assert_eq!(resumed.records, fresh.records, "the resumed run is the fresh one");
+}

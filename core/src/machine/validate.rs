@@ -378,6 +378,11 @@ fn geometry(def: Option<&super::GeometryDef>, issues: &mut Vec<MachineIssue>) ->
     };
     vec3("geometry.preset", def.preset, &mut g.preset);
     vec3("geometry.start", def.start, &mut g.start);
+    if let Some(top) = def.table_top {
+        let mut at = DVec3::ZERO;
+        vec3("geometry.table_top", Some(top), &mut at);
+        g.table_top = not_finite(&top).is_none().then_some(at);
+    }
     let start_sound = def.start.is_none_or(|v| not_finite(&v).is_none());
     let mut limits_sound = [true; 3];
     if let Some(l) = def.linear_limits {

@@ -171,7 +171,7 @@ fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
 
 /// The cuboid of a setup-sheet header line: `QX…`, `QY…` and `QZ…` (each a positive number,
 /// a decimal comma read as a point), as in `(Quader: QX100 QY90 QZ20)`.
-fn header_blank(text: &str) -> Option<DVec3> {
+pub(super) fn header_blank(text: &str) -> Option<DVec3> {
     let size = |key: &str| -> Option<f64> {
         let at = text.find(key)? + key.len();
         let digits: String = text[at..]
