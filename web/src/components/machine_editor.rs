@@ -91,6 +91,25 @@ fn input(state: &UseReducerHandle<Editor>, field: Field, l: Lang) -> Html {
     }
 }
 
+/// A file input's change: the chosen file's bytes as `action`, or why it could not be read.
+pub(super) fn on_file(
+    state: &UseReducerHandle<Editor>,
+    action: fn(Vec<u8>) -> EditorAction,
+) -> Callback<Event> {
+    let state = state.clone();
+    Callback::from(move |e: Event| {
+        let file = e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
+        let Some(file) = file else { return };
+        let state = state.clone();
+        yew::platform::spawn_local(async move {
+            match browser::read_file(file).await {
+                Ok(bytes) => state.dispatch(action(bytes)),
+                Err(message) => state.dispatch(EditorAction::Notice(message)),
+            }
+        });
+    })
+}
+
 #[function_component(EditorRoot)]
 pub fn editor_root() -> Html {
     let state = use_reducer(|| {
@@ -122,20 +141,7 @@ pub fn editor_root() -> Html {
             }
         })
     };
-    let on_import = {
-        let state = state.clone();
-        Callback::from(move |e: Event| {
-            let file = e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
-            let Some(file) = file else { return };
-            let state = state.clone();
-            yew::platform::spawn_local(async move {
-                match browser::read_file(file).await {
-                    Ok(bytes) => state.dispatch(EditorAction::Import(bytes)),
-                    Err(message) => state.dispatch(EditorAction::Notice(message)),
-                }
-            });
-        })
-    };
+    let on_import = on_file(&state, EditorAction::Import);
     let shipped = Machine::builtin_ids().into_iter().filter_map(|id| Machine::builtin(id).ok());
     let starts: Vec<(String, String)> = shipped
         .map(|m| (m.id.clone(), format!("{} ({})", l.t(&m.name.de, &m.name.en), m.id)))

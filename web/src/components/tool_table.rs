@@ -6,8 +6,7 @@
 use web_sys::HtmlInputElement;
 use yew::prelude::*;
 
-use super::machine_editor::Editor;
-use crate::browser;
+use super::machine_editor::{Editor, on_file};
 use schwenkbar_app::editor::EditorAction;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::tool_table::{COLUMNS, ToolAction, heading};
@@ -26,20 +25,7 @@ pub fn tool_table(props: &Props) -> Html {
         let state = state.clone();
         Callback::from(move |_: MouseEvent| state.dispatch(EditorAction::Tools(a.clone())))
     };
-    let on_import = {
-        let state = state.clone();
-        Callback::from(move |e: Event| {
-            let file = e.target_dyn_into::<HtmlInputElement>().and_then(|i| i.files()).and_then(|f| f.get(0));
-            let Some(file) = file else { return };
-            let state = state.clone();
-            yew::platform::spawn_local(async move {
-                match browser::read_file(file).await {
-                    Ok(bytes) => state.dispatch(EditorAction::Tools(ToolAction::Import(bytes))),
-                    Err(message) => state.dispatch(EditorAction::Notice(message)),
-                }
-            });
-        })
-    };
+    let on_import = on_file(state, |bytes| EditorAction::Tools(ToolAction::Import(bytes)));
     let cell = |row: usize, column: usize, value: &str| {
         let oninput = {
             let state = state.clone();
