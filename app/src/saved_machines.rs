@@ -1,5 +1,5 @@
 //! The instructor's own machines, made in the machine editor (`maschine.html`) and run in the
-//! trainer: one short versioned text record per machine ([`to_record`], `m1;id=…;…`), the list of
+//! trainer: one short versioned text record per machine ([`to_record`], `m2;id=…;…`; version 1 records still read), the list of
 //! them one record a line under [`MACHINES_KEY`], and the same record in the trainer's share
 //! link. The trainer reads it without a JSON parser (its bundle has none); both pages read and
 //! write it through this one module, and every machine read goes through

@@ -42,7 +42,7 @@ async fn a_zero_direction_is_said_at_its_field_then_fixed_saved_and_offered_by_t
     assert!(eventually(|| query(&editor, at_field).is_none()).await, "the message went");
     click(&editor, "[data-action=save]").await;
     assert!(text(&editor, ".message").starts_with("Gespeichert"), "{}", text(&editor, ".message"));
-    assert!(stored(MACHINES_KEY).is_some_and(|r| r.starts_with("m1;id=ac-table-eigen;")));
+    assert!(stored(MACHINES_KEY).is_some_and(|r| r.starts_with("m2;id=ac-table-eigen;")));
     editor.remove();
     web_sys::window().expect("window").location().set_hash("").expect("clear hash");
 
