@@ -18,6 +18,9 @@ use crate::unconfirmed;
 /// setup-sheet header's cuboid when it has no BLK FORM; `None` when neither, or when the BLK
 /// FORM takes its values from parameters (known only while running).
 #[must_use]
+// Out of line: the page split (scripts/split_pages.py) can leave it to the wasm loaded after the
+// first screen (only a machine with a table top reads it).
+#[inline(never)]
 pub fn written_blank(program: &Program) -> Option<(DVec3, DVec3)> {
     let mut unit = Unit::Mm;
     let mut min = None;

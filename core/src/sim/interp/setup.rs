@@ -69,19 +69,8 @@ impl Interp {
             self.tool.radius = entry.radius + dr;
             self.tool.known = known;
             if self.tool.length != entry.length + dl {
-                let num = |v: f64| crate::number::signed(v, 3);
-                let (l, sim, l0) =
-                    (num(entry.length), num(self.tool.length), num(unconfirmed::ZERO_TOOL_LENGTH));
-                note(rec, || {
-                    Text::owned(
-                        format!(
-                            "L={l} gilt als Differenz zum Nullwerkzeug: simuliert mit L={sim} (Nullwerkzeug L={l0} angenommen)"
-                        ),
-                        format!(
-                            "L={l} counts as the difference to a zero tool: simulated with L={sim} (zero tool L={l0} assumed)"
-                        ),
-                    )
-                });
+                let (l, sim) = (entry.length, self.tool.length);
+                note(rec, || zero_tool_note(l, sim));
             }
             if !known {
                 let (l, r) = (self.tool.length, self.tool.radius);
@@ -182,4 +171,22 @@ impl Interp {
         }
         self.sync_pos();
     }
+}
+
+/// The TOOL CALL's note for a length read as the difference to a zero tool
+/// ([`unconfirmed::physical_tool_length`]).
+// Out of line: the page split (scripts/split_pages.py) can leave it, and the exact float
+// formatting it needs, to the wasm loaded after the first screen.
+#[inline(never)]
+fn zero_tool_note(l: f64, sim: f64) -> Text {
+    let num = |v: f64| crate::number::signed(v, 3);
+    let (l, sim, l0) = (num(l), num(sim), num(unconfirmed::ZERO_TOOL_LENGTH));
+    Text::owned(
+        format!(
+            "L={l} gilt als Differenz zum Nullwerkzeug: simuliert mit L={sim} (Nullwerkzeug L={l0} angenommen)"
+        ),
+        format!(
+            "L={l} counts as the difference to a zero tool: simulated with L={sim} (zero tool L={l0} assumed)"
+        ),
+    )
 }

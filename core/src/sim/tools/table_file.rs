@@ -186,6 +186,9 @@ impl ToolEntry {
 ///
 /// # Errors
 /// The first line that cannot be read, with what is wrong in it.
+// Out of line: the page split (scripts/split_pages.py) can leave it to the wasm loaded after the
+// first screen, which only asks whether a table is kept.
+#[inline(never)]
 pub fn read_tool_table(text: &str) -> Result<Vec<ToolEntry>, ToolTableError> {
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let err = |line: usize, code| ToolTableError { line, code };
