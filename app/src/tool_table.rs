@@ -154,6 +154,8 @@ fn cell_number(row: &Row, column: usize) -> Result<f64, Text> {
 pub fn check(rows: &[Row]) -> Result<Vec<ToolEntry>, Vec<CellIssue>> {
     let mut issues = Vec::new();
     let mut out = Vec::new();
+    // The numbers seen so far: a table of 32,768 tools is checked at every key press.
+    let mut seen = std::collections::BTreeSet::new();
     for (i, row) in rows.iter().enumerate() {
         let mut bad = |column: usize, message: Text| issues.push(CellIssue { row: i, column, message });
         let t = row[T].trim();
@@ -166,7 +168,7 @@ pub fn check(rows: &[Row]) -> Result<Vec<ToolEntry>, Vec<CellIssue>> {
                     format!("tool number \"{t}\" is wrong (0 … {MAX_TOOL_NUMBER})"),
                 ),
             ),
-            Some(n) if rows[..i].iter().any(|r| r[T].trim() == t) => bad(
+            Some(n) if !seen.insert(n) => bad(
                 T,
                 Text::owned(
                     format!("Werkzeug {n} steht zweimal in der Tabelle"),
@@ -297,9 +299,9 @@ impl ToolTableState {
                 }
             }
             ToolAction::AddRow => {
-                let free = (0..=MAX_TOOL_NUMBER)
-                    .find(|n| !next.rows.iter().any(|r| r[T].trim() == n.to_string()))
-                    .unwrap_or(0);
+                let used: std::collections::BTreeSet<u32> =
+                    next.rows.iter().filter_map(|r| r[T].trim().parse().ok()).collect();
+                let free = (0..=MAX_TOOL_NUMBER).find(|n| !used.contains(n)).unwrap_or(0);
                 let mut row = row_of(&ToolEntry::from_columns(Columns {
                     number: free,
                     name: String::new(),

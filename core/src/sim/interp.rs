@@ -193,7 +193,7 @@ fn rotary_of(axis: Axis) -> Option<RotaryAxis> {
     }
 }
 
-fn linear_index(axis: Axis) -> Option<usize> {
+pub(super) fn linear_index(axis: Axis) -> Option<usize> {
     match axis {
         Axis::X => Some(0),
         Axis::Y => Some(1),

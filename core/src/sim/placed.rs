@@ -36,12 +36,7 @@ pub fn written_blank(program: &Program) -> Option<(DVec3, DVec3)> {
                 let base = if f.part == 2 { min? } else { DVec3::ZERO };
                 let mut p = base;
                 for w in f.axes.iter() {
-                    let i = match w.axis {
-                        crate::ast::Axis::X => 0,
-                        crate::ast::Axis::Y => 1,
-                        crate::ast::Axis::Z => 2,
-                        _ => continue,
-                    };
+                    let Some(i) = super::interp::linear_index(w.axis) else { continue };
                     let Value::Number(v) = w.value else { return None };
                     p[i] = if w.incremental { base[i] + v * unit.mm() } else { v * unit.mm() };
                 }
