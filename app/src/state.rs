@@ -99,8 +99,9 @@ pub struct AppState {
     pub embedded: bool,
     /// The ROHTEIL switch: the 3D view draws the stock (the blank as the run has cut it).
     pub stock_shown: bool,
-    /// The cut stock of `sim`: made after a program run starts with the switch on
-    /// ([`Effect::BuildStock`]), never while typing; dropped when the simulation changes.
+    /// The cut stock of `sim`: made after a program run starts ([`Effect::BuildStock`]), shown
+    /// or not (its collisions with the material are said either way), never while typing;
+    /// dropped when the simulation changes.
     pub stock: Option<StockRef>,
     /// The programs before the shown one (RÜCKGÄNGIG, Ctrl+Z) and after it (Ctrl+Y).
     pub history: History,
@@ -166,9 +167,9 @@ impl Default for AppState {
             right_hand: false,
             link: None,
             embedded: false,
-            // Off until asked for: cutting Musterprogramm 1 takes about a second in the browser
-            // and re-meshing more than a frame (issue 14's budgets not reached yet).
-            stock_shown: false,
+            // On: a trainee sees the part being made without asking (issue 32); the first pass
+            // and the view's cuts go on in bounded shares, so no frame waits for them.
+            stock_shown: true,
             stock: None,
             history: History::default(),
             unexported: false,
@@ -715,19 +716,33 @@ impl AppState {
         }
     }
 
-    /// Whether the stock is to be cut: shown, in a program run, not yet made for this simulation.
+    /// Whether the stock is to be cut: in a program run, not yet made for this simulation. It is
+    /// cut with the ROHTEIL switch off too: a rapid or a swivel into the material is a collision
+    /// to be said whether or not the part is drawn.
     #[must_use]
     pub fn wants_stock(&self) -> bool {
-        self.stock_shown
-            && self.run.is_some()
+        self.run.is_some()
             && self.sim.as_ref().is_some_and(|sim| !self.stock.as_ref().is_some_and(|s| s.is_for(sim)))
+    }
+
+    /// The stock made for the current simulation, shown or not.
+    fn run_stock(&self) -> Option<&StockRef> {
+        let sim = self.sim.as_ref()?;
+        self.stock.as_ref().filter(|s| s.is_for(sim))
+    }
+
+    /// The collision of the shown run step with the material (a rapid into it, a swivel with the
+    /// tool in it), for the why panel; the dialog line says it too.
+    #[must_use]
+    pub fn material_note(&self) -> Option<Text> {
+        let run = self.run.as_ref()?;
+        self.run_stock()?.notes_at(run.step)
     }
 
     /// The stock to draw (switch on, made for the current simulation).
     #[must_use]
     pub fn shown_stock(&self) -> Option<StockRef> {
-        let sim = self.sim.as_ref()?;
-        self.stock.clone().filter(|s| self.stock_shown && s.is_for(sim))
+        self.run_stock().filter(|_| self.stock_shown).cloned()
     }
 
     /// The dialog line in the UI language: the control's error message when a run stopped, else
@@ -757,8 +772,8 @@ impl AppState {
             return m.clone();
         }
         if let Some(run) = &self.run {
-            // The stock's note on the shown block (a rapid into the material).
-            if let Some(note) = self.shown_stock().and_then(|s| s.notes_at(run.step)) {
+            // The stock's note on the shown block (a collision with the material), drawn or not.
+            if let Some(note) = self.material_note() {
                 return note;
             }
             return if run.playing {

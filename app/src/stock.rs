@@ -236,7 +236,8 @@ mod tests {
             assert!(shares < 10_000);
         }
         let note = stock.notes_at(step).expect("rapid into the material");
-        assert_eq!(note.de, "Eilgang ins Material");
+        assert_eq!(note.de, "Eilgang ins Material: Kollision Werkzeug – Rohteil");
+        assert!(note.en.starts_with("Rapid traverse into the material"));
         assert!(stock.notes_at(step - 1).is_none());
     }
 }

@@ -1,6 +1,7 @@
 //! `schwenkbar run FILE.h --machine ID|FILE.json [--tools TOOL.T] [--json] [--lang de|en] [--stock-stl OUT.stl]`: one row
-//! per executed block; with `--stock-stl` also the stock after the run as binary STL, and the
-//! stock's notes (a rapid into the material, …) on stderr.
+//! per executed block; with `--stock-stl` also the stock after the run as binary STL. A rapid or
+//! a swivel that runs the tool into the blank's material is a collision, said on stderr as
+//! `FILE:LINE: message` (and in the JSON on its state) whether or not the stock is written.
 
 use std::collections::BTreeMap;
 use std::io::Write;
@@ -14,8 +15,8 @@ use schwenkbar_core::sim::{
     ListingRow, SimOptions, Simulation, State, pick_machine, simulate, simulate_listed,
     tools::read_tool_table,
 };
-use schwenkbar_core::stock::{Cutting, StockMesh, StockOptions};
-use schwenkbar_core::{Program, parse};
+use schwenkbar_core::stock::{Collisions, Cutting, StockMesh, StockNote, StockOptions};
+use schwenkbar_core::{Program, Text, parse};
 use serde::Serialize;
 
 use crate::LangArg;
@@ -83,6 +84,9 @@ struct JsonState<'a> {
     plane: Option<JsonPlane>,
     q: BTreeMap<String, f64>,
     message: Option<&'a str>,
+    /// The tool ran into the material (a rapid or a swivel): the collision's message.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    collision: Option<&'a str>,
 }
 
 #[derive(Serialize)]
@@ -156,17 +160,38 @@ pub(crate) fn run(args: &Args) -> ExitCode {
         }
     };
 
-    let (sim, written) = if args.json {
+    let stock_options = StockOptions {
+        resolution: args.stock_resolution.max(COLLISION_RESOLUTION),
+        ..StockOptions::default()
+    };
+    let (sim, written, collisions) = if args.json {
         let mut out = std::io::BufWriter::new(std::io::stdout().lock());
         let sim = picked.unwrap_or_else(|| simulate(&program, &machine, &opts));
-        let written = write_json(&mut out, &src, &program, &machine, &sim, lang).and_then(|()| out.flush());
-        (sim, written)
+        let collisions = Cutting::collisions(&program, &sim, stock_options, COLLISION_WORK);
+        let written = write_json(&mut out, &src, &program, &machine, &sim, &collisions.notes, lang)
+            .and_then(|()| out.flush());
+        (sim, written, collisions)
     } else {
-        write_table(std::io::stdout(), &src, &program, &machine, &opts, lang, &args.file)
+        let (sim, written) =
+            write_table(std::io::stdout(), &src, &program, &machine, &opts, lang, &args.file);
+        // `--stock-stl` cuts the whole run and says its notes, these among them.
+        let collisions = if args.stock_stl.is_none() {
+            Cutting::collisions(&program, &sim, stock_options, COLLISION_WORK)
+        } else {
+            Collisions::default()
+        };
+        (sim, written, collisions)
     };
     if let Err(e) = written {
         eprintln!("error: {e}");
         return ExitCode::from(2);
+    }
+    if args.stock_stl.is_none() {
+        say_notes(&args.file, &program, &collisions.notes, lang);
+        if let (Some((_, block)), Some(text)) = (collisions.unchecked, collisions.unchecked_message()) {
+            let line = program.blocks.get(block).map_or(0, |b| b.line());
+            eprintln!("{}:{line}: {} (--stock-stl)", args.file.display(), text.get(lang));
+        }
     }
     if let Some(path) = &args.stock_stl
         && let Err(e) = write_stock(path, args, &program, &sim)
@@ -176,6 +201,17 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     }
     if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
+
+/// Rays the material check may cut when the stock is not written (about a second): a run that
+/// rapids into its blank early is checked in full, a long CAM program as far as this reaches,
+/// and where it stopped is said. `--stock-stl` cuts everything.
+const COLLISION_WORK: usize = 3_000_000;
+
+/// The material check's ray spacing when the stock is not written (mm), unless
+/// `--stock-resolution` asks for a coarser one: a tool that runs into the material meets rays
+/// 1 mm apart as surely as 0.25 mm apart, at a sixteenth of the rays and a quarter of the
+/// swivel's sub-moves; only a graze of less than a millimetre between two rays goes unseen.
+const COLLISION_RESOLUTION: f64 = 1.0;
 
 /// Rows in one message from the simulation to the table writer: few enough to start writing
 /// at once, enough that the channel costs nothing per row.
@@ -244,10 +280,7 @@ fn write_stock(
 ) -> std::io::Result<()> {
     let options = StockOptions { resolution: args.stock_resolution, ..StockOptions::default() };
     let cutting = Cutting::new(program, sim, options);
-    for note in &cutting.notes {
-        let line = program.blocks.get(note.block).map_or(0, |b| b.line());
-        eprintln!("{}:{line}: {}", args.file.display(), note.message().get(Lang::from(args.lang)));
-    }
+    say_notes(&args.file, program, &cutting.notes, Lang::from(args.lang));
     let Some(stock) = cutting.final_stock() else {
         return Err(std::io::Error::other("no BLK FORM blank with a volume: no stock to write"));
     };
@@ -265,7 +298,21 @@ fn write_stock(
     Ok(())
 }
 
-fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: Lang) -> JsonState<'a> {
+/// The stock's notes on stderr, `FILE:LINE: message`, as a compiler says its warnings.
+fn say_notes(file: &std::path::Path, program: &Program, notes: &[StockNote], lang: Lang) {
+    for note in notes {
+        let line = program.blocks.get(note.block).map_or(0, |b| b.line());
+        eprintln!("{}:{line}: {}", file.display(), note.message().get(lang));
+    }
+}
+
+fn json_state<'a>(
+    src: &'a str,
+    program: &Program,
+    s: &'a State,
+    collision: Option<&'a str>,
+    lang: Lang,
+) -> JsonState<'a> {
     JsonState {
         line: s.line,
         number: program.blocks.get(s.block).and_then(|b| b.number()),
@@ -278,6 +325,7 @@ fn json_state<'a>(src: &'a str, program: &Program, s: &'a State, lang: Lang) -> 
             .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
         q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
         message: s.message.as_ref().map(|m| m.get(lang)),
+        collision,
     }
 }
 
@@ -288,14 +336,17 @@ fn write_json(
     program: &Program,
     machine: &Machine,
     sim: &Simulation,
+    collisions: &[StockNote],
     lang: Lang,
 ) -> std::io::Result<()> {
     write!(out, "{{\"machine\":{},\"states\":[", serde_json::to_string(&machine.id)?)?;
+    let texts: Vec<(usize, Text)> = collisions.iter().map(|n| (n.step, n.message())).collect();
     for (i, s) in sim.states(program).enumerate() {
         if i > 0 {
             out.write_all(b",")?;
         }
-        serde_json::to_writer(&mut *out, &json_state(src, program, &s, lang))?;
+        let collision = texts.iter().find(|(step, _)| *step == s.step).map(|(_, t)| t.get(lang));
+        serde_json::to_writer(&mut *out, &json_state(src, program, &s, collision, lang))?;
     }
     let error = sim.error.as_ref().map(|e| JsonError {
         line: e.line,

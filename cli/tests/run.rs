@@ -247,3 +247,35 @@ fn run_with_the_shops_tool_table() {
     assert!(err.contains("Zeile 3: R: „x“ ist keine Zahl"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Issue 32: the drill 5 mm deep, then `PLANE SPATIAL … TURN` without `MB MAX`: the swivel turns
+/// the tool in the material. `run` says so on the PLANE block's line (stderr and the JSON state),
+/// without being asked to cut the stock; with `MB MAX` it is free.
+#[test]
+fn run_says_a_swivel_with_the_tool_in_the_material_on_its_plane_block() {
+    let program = |mb: &str| {
+        format!(
+            "0 BEGIN PGM SW MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
+             3 TOOL CALL 1 Z S1000\n4 L X+50 Y+50 Z+10 R0 FMAX\n5 L Z-5 F100\n\
+             6 PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN{mb} FMAX\n7 END PGM SW MM\n"
+        )
+    };
+    let path = std::env::temp_dir().join(format!("schwenkbar-swivel-{}.h", std::process::id()));
+    std::fs::write(&path, program("")).expect("temp file");
+    let file = path.to_string_lossy().into_owned();
+    let o = run(&["run", &file, "--machine", "ac-table", "--lang", "en"]);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr),
+        format!("{file}:7: Swivelling with the tool in the material: collision – retract first (MB MAX)\n")
+    );
+    let o = run(&["run", &file, "--machine", "ac-table", "--json"]);
+    let states = json(&o)["states"].as_array().expect("states").clone();
+    let said: Vec<_> =
+        states.iter().filter(|s| s.get("collision").is_some()).map(|s| s["line"].clone()).collect();
+    assert_eq!(said, [serde_json::json!(7)]);
+    std::fs::write(&path, program(" MB MAX")).expect("temp file");
+    let o = run(&["run", &file, "--machine", "ac-table"]);
+    assert!(o.stderr.is_empty(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success());
+    let _ = std::fs::remove_file(&path);
+}

@@ -27,9 +27,11 @@ pub fn cam_program(blocks: usize) -> String {
     while k < body {
         if k % 5000 == 0 && k + 3 <= body {
             let spa = (k / 5000 % 7) as f64 * 7.5 - 22.5;
+            // Out of the material before the table turns, as a CAM post writes it (turning
+            // with the tool in the part is the collision the material check reports).
+            push(&mut out, format_args!("L Z+50 R0 FMAX M3"));
             push(&mut out, format_args!("PLANE SPATIAL SPA{spa:+} SPB+0 SPC+90 STAY SEQ- TABLE ROT"));
             push(&mut out, format_args!("L A+Q120 C+Q122 R0 FMAX M126"));
-            push(&mut out, format_args!("L Z+50 R0 FMAX M3"));
             k += 3;
             continue;
         }

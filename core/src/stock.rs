@@ -34,7 +34,7 @@ use glam::DVec3;
 use crate::sim::Blank;
 
 pub use mesh::{StockMesh, TiledMesh};
-pub use plan::{Cutting, StockCursor, StockNote, StockNoteKind, StockOptions};
+pub use plan::{Collisions, Cutting, StockCursor, StockNote, StockNoteKind, StockOptions};
 pub(crate) use sweep::Cutter;
 
 /// Spans shorter than this (mm) are dropped after a cut: what a neighbouring cut leaves over from

@@ -158,7 +158,8 @@ pub fn app(props: &AppProps) -> Html {
                             <PositionDisplay state={shown} stopped={state.stop_position()} lang={l} machine={state.machine.clone()} fraction={*fraction} />
                         }
                         <WhyPanel doc={DocRef(state.doc.clone())} cursor={state.cursor} machine={state.machine.clone()}
-                            sim={state.sim.clone()} shown={shown} lang={l} {on_hover} />
+                            sim={state.sim.clone()} shown={shown} lang={l} {on_hover}
+                            collision={state.material_note().map(|t| t.get(l).to_owned())} />
                     </div>
                 </main>
                 <DialogArea {dialog} text={state.dialog_line()} lang={l} on_action={on_action.clone()} />

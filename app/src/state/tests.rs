@@ -306,10 +306,7 @@ fn satzfolge_asks_for_a_tick_per_step_and_none_when_paused() {
 #[test]
 fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_it() {
     let s = AppState::default().then(Action::SetText(crate::samples::MUSTERPROGRAMM_1.text.to_owned()));
-    assert!(!s.stock_shown, "off by default");
-    let (_, fx) = s.then(Action::StartRun).apply(Action::ToggleStock);
-    assert!(fx.contains(&Effect::BuildStock), "switched on in a run: cut");
-    let s = s.then(Action::ToggleStock);
+    assert!(s.stock_shown, "on by default (issue 32)");
     let (typed, fx) = s.apply(Action::SetText(format!("{}\n", s.doc.text)));
     assert!(!fx.contains(&Effect::BuildStock) && typed.stock.is_none(), "typing cuts nothing");
     let (run, fx) = typed.apply(Action::StartRun);
@@ -321,6 +318,8 @@ fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_i
     assert!(run.stock.is_none());
     let (_, fx) = run.apply(Action::RunNext);
     assert!(!fx.contains(&Effect::BuildStock), "asked for already");
+    let (_, fx) = run.apply(Action::ToggleStock);
+    assert!(!fx.contains(&Effect::BuildStock), "hiding it asks for nothing new");
     let (cut, fx) = run.apply(Action::BuildStock);
     assert!(!fx.contains(&Effect::BuildStock));
     assert_eq!(fx, [Effect::PassStock], "the first pass goes on after the next paint");
@@ -338,6 +337,38 @@ fn the_stock_is_cut_after_a_run_starts_never_while_typing_and_the_switch_hides_i
     );
     let other = cut.then(Action::SelectMachine("ba-table".into()));
     assert!(other.stock.is_none(), "a new simulation drops the old stock");
+    // With the switch off a run still cuts: its collisions with the material are said.
+    let (_, fx) = typed.then(Action::ToggleStock).apply(Action::StartRun);
+    assert!(fx.contains(&Effect::BuildStock), "cut with the stock hidden too");
+}
+
+/// The crash the trainer exists to prevent: the drill in its hole, then `PLANE … TURN` without
+/// `MB MAX`. The run says so on the PLANE block, in the dialog line and the why panel, with the
+/// stock shown or hidden.
+#[test]
+fn a_swivel_with_the_tool_in_the_material_is_said_on_its_plane_block_stock_shown_or_not() {
+    let text = "0 BEGIN PGM S MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 1 Z S1000\n4 L X+50 Y+50 Z+10 R0 FMAX\n5 L Z-5 F100\n6 PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX\n7 END PGM S MM\n";
+    for shown in [true, false] {
+        let s = AppState::default().then(Action::SetText(text.into()));
+        let s = if shown { s } else { s.then(Action::ToggleStock) };
+        assert_eq!(s.stock_shown, shown);
+        let mut state = s.then(Action::StartRun).then(Action::BuildStock);
+        while state.apply(Action::PassStock).1.contains(&Effect::PassStock) {
+            state = state.then(Action::PassStock);
+        }
+        let state = state.then(Action::PassStock);
+        let block = state.doc.program.blocks.iter().position(|b| b.number() == Some(6)).expect("block 6");
+        let step = state.sim.as_ref().expect("sim").0.step_of_block(block).expect("executed");
+        let mut at = state.clone();
+        while at.run.as_ref().is_some_and(|r| r.step < step) {
+            at = at.then(Action::RunNext);
+        }
+        let note = at.material_note().expect("the collision on the PLANE block");
+        assert!(note.de.contains("Schwenken mit dem Werkzeug im Material") && note.de.contains("MB MAX"));
+        assert_eq!(at.dialog_text(), note);
+        let before = state.run.as_ref().map(|r| r.step);
+        assert!(before < Some(step) && state.material_note().is_none(), "said on its block only");
+    }
 }
 
 /// Presses a key as the keyboard would (`F3`, `Enter`, `z` with Ctrl …).
@@ -452,7 +483,7 @@ fn typing_is_undone_a_line_at_a_time_and_the_replaced_program_survives_a_reload(
 fn the_stocks_first_pass_goes_on_in_bounded_shares_and_its_note_follows() {
     let text = "0 BEGIN PGM R MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-20\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 1 Z S1000\n4 L X+50 Y+50 Z+50 R0 FMAX\n5 L Z-5 R0 FMAX\n6 L X+90 F200\n7 END PGM R MM\n";
     let s = AppState::default().then(Action::SetText(text.into())).then(Action::StartRun);
-    let s = s.then(Action::ToggleStock).then(Action::BuildStock);
+    let s = s.then(Action::BuildStock);
     let block = s.doc.program.blocks.iter().position(|b| b.number() == Some(5)).expect("block 5");
     let rapid = s.sim.as_ref().expect("sim").0.step_of_block(block).expect("executed");
     let stock = s.stock.clone().expect("planned");
@@ -468,7 +499,7 @@ fn the_stocks_first_pass_goes_on_in_bounded_shares_and_its_note_follows() {
         }
         assert!(shares < 1_000, "the pass ends");
     }
-    assert!(stock.notes_at(rapid).is_some_and(|n| n.de == "Eilgang ins Material"));
+    assert!(stock.notes_at(rapid).is_some_and(|n| n.de.starts_with("Eilgang ins Material")));
     assert!(state.apply(Action::PassStock).1.is_empty(), "done: no more shares asked for");
 }
 

@@ -10,8 +10,8 @@ use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, Stat
 
 use super::{Cutter, Removal, RowAt, Stamp, Stock, StockError};
 
-/// A rapid that removes more than this from one ray (mm) has entered the material; less is
-/// grazing or roundoff (1 µm, the control's display resolution).
+/// A positioning motion that removes more than this from one ray (mm) has entered the material;
+/// less is grazing or roundoff (1 µm, the control's display resolution).
 const ENTERS_MATERIAL: f64 = 1e-3;
 
 /// Rays between two checkpoints at first (about 20 ms of cutting in a release build).
@@ -46,12 +46,37 @@ impl Default for StockOptions {
 /// What the stock reports about a step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum StockNoteKind {
-    /// A rapid (FMAX) removed material.
+    /// A rapid (FMAX, or an MB retract) removed material: the tool ran into the blank at rapid
+    /// traverse, a collision.
     RapidIntoMaterial,
+    /// The swivel of a PLANE … MOVE/TURN removed material: the tool was turned while in the
+    /// material, a collision that retracting first (`MB MAX`) avoids.
+    SwivelInMaterial,
     /// The blank needs more rays than [`super::MAX_RAYS`] at the resolution asked for.
     ResolutionCapped { asked: f64, used: f64 },
     /// The blank has no volume or is not finite: no stock.
     InvalidBlank,
+}
+
+/// What [`Cutting::collisions`] found.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Collisions {
+    pub notes: Vec<StockNote>,
+    /// `(step, block)` from which the work allowed did not reach: not checked from there on.
+    pub unchecked: Option<(usize, usize)>,
+}
+
+impl Collisions {
+    /// What to say on the block where the check stopped, if it did.
+    #[must_use]
+    pub fn unchecked_message(&self) -> Option<Text> {
+        self.unchecked.map(|_| {
+            Text::new(
+                "Materialprüfung hier abgebrochen (Rechenaufwand): Kollisionen mit dem Material danach nicht geprüft",
+                "Material check stopped here (work limit): collisions with the material after this are not checked",
+            )
+        })
+    }
 }
 
 /// A note on one executed step.
@@ -64,13 +89,24 @@ pub struct StockNote {
 }
 
 impl StockNote {
+    /// Whether the note is a collision of the tool with the material.
+    #[must_use]
+    pub fn is_collision(&self) -> bool {
+        matches!(self.kind, StockNoteKind::RapidIntoMaterial | StockNoteKind::SwivelInMaterial)
+    }
+
     /// The message, German and English.
     #[must_use]
     pub fn message(&self) -> Text {
         match self.kind {
-            StockNoteKind::RapidIntoMaterial => {
-                Text::new("Eilgang ins Material", "Rapid traverse into the material")
-            }
+            StockNoteKind::RapidIntoMaterial => Text::new(
+                "Eilgang ins Material: Kollision Werkzeug – Rohteil",
+                "Rapid traverse into the material: collision of the tool with the blank",
+            ),
+            StockNoteKind::SwivelInMaterial => Text::new(
+                "Schwenken mit dem Werkzeug im Material: Kollision – vorher freifahren (MB MAX)",
+                "Swivelling with the tool in the material: collision – retract first (MB MAX)",
+            ),
             StockNoteKind::ResolutionCapped { asked, used } => Text::owned(
                 format!("Rohteil zu groß für {asked:.2} mm Auflösung: {used:.2} mm verwendet"),
                 format!("Blank too large for a resolution of {asked:.2} mm: using {used:.2} mm"),
@@ -88,8 +124,37 @@ impl StockNote {
 enum Action {
     /// A BLK FORM took effect: the stock starts over from this blank.
     Blank(Blank),
-    /// A straight sweep (W-CS) with a fixed tool axis.
-    Cut { cutter: usize, axis: DVec3, from: DVec3, to: DVec3, rapid: bool },
+    /// A straight sweep (W-CS) with a fixed tool axis; `motion` says whether the tool may cut.
+    Cut { cutter: usize, axis: DVec3, from: DVec3, to: DVec3, motion: Motion },
+}
+
+/// What a sweep is for: a cut, or a positioning that must not touch the material.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Motion {
+    Cut,
+    /// FMAX, or the MB retract before a swivel (the control moves it at rapid).
+    Rapid,
+    /// The turn of PLANE … MOVE/TURN: a positioning of the rotary axes, never a cut.
+    Swivel,
+}
+
+impl Motion {
+    fn of(kind: SegmentKind) -> Motion {
+        match kind {
+            SegmentKind::Rapid | SegmentKind::Retract => Motion::Rapid,
+            SegmentKind::SwivelMove | SegmentKind::SwivelTurn => Motion::Swivel,
+            SegmentKind::Feed | SegmentKind::SwivelStay | SegmentKind::CycleFeed => Motion::Cut,
+        }
+    }
+
+    /// The note of a positioning motion that removed material.
+    fn note(self) -> Option<StockNoteKind> {
+        match self {
+            Motion::Cut => None,
+            Motion::Rapid => Some(StockNoteKind::RapidIntoMaterial),
+            Motion::Swivel => Some(StockNoteKind::SwivelInMaterial),
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -217,6 +282,60 @@ impl Cutting {
         c
     }
 
+    /// The collisions of positioning motions with the material (a rapid into it, a swivel with
+    /// the tool in it), whether or not the stock is shown, cutting about `work` rays at most
+    /// ([`Removal::work`]). Only the cuts up to the last positioning sweep that reaches into a
+    /// blank are made, and none when no such sweep exists, as in a run that rapids above its
+    /// blank: most runs cost only the plan.
+    #[must_use]
+    pub fn collisions(program: &Program, sim: &Simulation, options: StockOptions, work: usize) -> Collisions {
+        let mut c = Cutting::planned(program, sim, StockOptions { checkpoints: 0, ..options });
+        let Some(last) = c.last_positioning_in_a_blank() else { return Collisions::default() };
+        // This cutting is never sought: the events after the last one that can collide go.
+        c.events.truncate(last + 1);
+        let done = c.pass_on(work);
+        let unchecked = match &c.pass {
+            Some(pass) if !done => c.events.get(pass.cursor.applied).map(|e| (e.step, e.block)),
+            _ => None,
+        };
+        c.notes.retain(StockNote::is_collision);
+        Collisions { notes: c.notes, unchecked }
+    }
+
+    /// The last positioning sweep whose tool (tip to shank end, in a box widened by the radius)
+    /// overlaps the blank in effect.
+    fn last_positioning_in_a_blank(&self) -> Option<usize> {
+        let mut blank: Option<&Blank> = None;
+        let mut last = None;
+        for (k, e) in self.events.iter().enumerate() {
+            match &e.action {
+                Action::Blank(b) => blank = Some(b),
+                Action::Cut { motion: Motion::Cut, .. } => {}
+                Action::Cut { cutter, axis, from, to, .. } => {
+                    let Some(b) = blank else { continue };
+                    let Cutter { radius, length, .. } = self.cutters[*cutter];
+                    let (shank_from, shank_to) = (*from + *axis * length, *to + *axis * length);
+                    // Straight up its own axis (a retract) the tool only sweeps what is new
+                    // above its shank's end: where it stands is free, it has just cut there.
+                    let d = *to - *from;
+                    let (lo, hi) = if d.dot(*axis) >= d.length() * (1.0 - 1e-9) {
+                        (shank_from.min(shank_to), shank_from.max(shank_to))
+                    } else {
+                        (
+                            from.min(*to).min(shank_from).min(shank_to),
+                            from.max(*to).max(shank_from).max(shank_to),
+                        )
+                    };
+                    let (lo, hi) = (lo - DVec3::splat(radius), hi + DVec3::splat(radius));
+                    if lo.cmplt(b.max).all() && hi.cmpgt(b.min).all() {
+                        last = Some(k);
+                    }
+                }
+            }
+        }
+        last
+    }
+
     /// The sweeps of one step's segments (see the module doc of [`super`]).
     fn plan_step(&mut self, sim: &Simulation, state: &State, cutter: usize) {
         let kin = Kin::new(&sim.machine, state.tool.length);
@@ -232,13 +351,13 @@ impl Cutting {
                     (k + 1) as f64 / state.segments.len() as f64
                 }
             };
-            let rapid = seg.kind == SegmentKind::Rapid;
+            let motion = Motion::of(seg.kind);
             let push = |events: &mut Vec<Event>, f: f64, axis: DVec3, from: DVec3, to: DVec3| {
                 events.push(Event {
                     step,
                     block,
                     end: frac(f),
-                    action: Action::Cut { cutter, axis, from, to, rapid },
+                    action: Action::Cut { cutter, axis, from, to, motion },
                 });
             };
             match &seg.path {
@@ -314,7 +433,10 @@ impl Cutting {
             }
             let event = &self.events[k];
             let (step, block) = (event.step, event.block);
-            let rapid = matches!(event.action, Action::Cut { rapid: true, .. });
+            let positioning = match event.action {
+                Action::Cut { motion, .. } => motion.note(),
+                Action::Blank(_) => None,
+            };
             let applied = match (&event.action, pass.cursor.stock.as_mut()) {
                 (Action::Cut { cutter, axis, from, to, .. }, Some(stock)) => {
                     // The whole cut's stamp on every part: no one sees the stock before it is
@@ -355,9 +477,12 @@ impl Cutting {
                 Applied::Removed(r) => {
                     pass.since += r.rays;
                     work = r.work();
-                    if rapid && r.depth > ENTERS_MATERIAL && pass.last_rapid_note != Some(step) {
+                    if let Some(kind) = positioning
+                        && r.depth > ENTERS_MATERIAL
+                        && pass.last_rapid_note != Some(step)
+                    {
                         pass.last_rapid_note = Some(step);
-                        self.notes.push(StockNote { step, block, kind: StockNoteKind::RapidIntoMaterial });
+                        self.notes.push(StockNote { step, block, kind });
                     }
                 }
                 Applied::NewStock { asked, used } => {

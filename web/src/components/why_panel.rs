@@ -24,6 +24,9 @@ pub struct WhyPanelProps {
     /// A candidate hovered (its axes, shown as the ghost in the 3D view) or left (`None`).
     #[prop_or_default]
     pub on_hover: Callback<Option<AxisValues>>,
+    /// The shown run step's collision with the material, in the UI language.
+    #[prop_or_default]
+    pub collision: Option<String>,
 }
 
 #[function_component(WhyPanel)]
@@ -67,6 +70,9 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
         <aside class="why-panel" aria-label={l.t("Warum?", "Why?")}>
             <h2>{ l.t("Warum?", "Why?") }</h2>
             <p class="why-block">{ describe(&block.body(), l) }</p>
+            if let Some(c) = &props.collision {
+                <p class="why-collision" role="alert">{ c }</p>
+            }
             if let Some(w) = plane {
                 { plane_why(&w, &props.on_hover, l) }
             }
