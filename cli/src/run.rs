@@ -270,7 +270,8 @@ fn write_table<W: Write + Send>(
     })
 }
 
-/// Cuts the run's blank and writes the final stock as STL; the stock's notes go to stderr as
+/// Cuts the run's blank and writes the final stock as a closed STL mesh (every edge in two
+/// triangles: [`StockMesh::closed`]); the stock's notes go to stderr as
 /// `FILE:LINE: message`, then one summary line.
 fn write_stock(
     path: &std::path::Path,
@@ -284,7 +285,7 @@ fn write_stock(
     let Some(stock) = cutting.final_stock() else {
         return Err(std::io::Error::other("no BLK FORM blank with a volume: no stock to write"));
     };
-    let mesh = StockMesh::of(&stock);
+    let mesh = StockMesh::closed(&stock);
     std::fs::write(path, mesh.to_stl())?;
     let (min, max) = stock.bounds();
     let blank = (max - min).element_product();

@@ -22,6 +22,7 @@
 //! its true path ([`plan`]). The result after a step is the same however one got there:
 //! [`Cutting`] applies the same cuts in the same order from the blank or from a checkpoint.
 
+mod closed;
 mod mesh;
 mod plan;
 mod sweep;

@@ -484,3 +484,47 @@ fn rapids_above_the_blank_and_retracts_need_no_cutting() {
     assert!(c.notes.iter().any(|n| n.kind == StockNoteKind::RapidIntoMaterial), "{:?}", c.notes);
     assert!(Cutting::collisions(&program, &sim, StockOptions::default(), 0).unchecked.is_some());
 }
+
+/// Issue 32: the exported STL is a closed mesh. Read back from its bytes, every edge (its two
+/// corners' positions) belongs to exactly two triangles, once in each direction (the triangles
+/// face consistently outwards); and the volume the mesh encloses (divergence theorem:
+/// Σ p0 · (p1 × p2) / 6, a second method) is the stock's within 1 %.
+#[test]
+fn the_exported_stl_is_closed_every_edge_in_exactly_two_triangles() {
+    use std::collections::HashMap;
+    let swivel = format!(
+        "{BLANK}TOOL CALL 1 Z S1000\nL X+50 Y+50 Z+10 R0 FMAX\nL Z-5 F100\n\
+         PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN FMAX\nM30\n"
+    );
+    for (what, src) in [("Musterprogramm 1", musterprogramm()), ("swivel in the material", swivel)] {
+        let (_, _, c) = run(&src, StockOptions { resolution: 0.5, checkpoints: 0 });
+        let stock = c.final_stock().expect("stock");
+        let stl = StockMesh::closed(&stock).to_stl();
+        let n = u32::from_le_bytes(stl[80..84].try_into().expect("count")) as usize;
+        assert_eq!(stl.len(), 84 + 50 * n, "{what}");
+        let corner = |t: &[u8], k: usize| -> [u32; 3] {
+            std::array::from_fn(|i| {
+                u32::from_le_bytes(t[12 + 12 * k + 4 * i..][..4].try_into().expect("f32"))
+            })
+        };
+        let mut edges: HashMap<([u32; 3], [u32; 3]), usize> = HashMap::new();
+        let mut volume = 0.0;
+        for t in stl[84..].chunks_exact(50) {
+            let p = [corner(t, 0), corner(t, 1), corner(t, 2)];
+            for k in 0..3 {
+                *edges.entry((p[k], p[(k + 1) % 3])).or_default() += 1;
+            }
+            let v = p.map(|c| DVec3::from_array(c.map(|b| f64::from(f32::from_bits(b)))));
+            volume += v[0].dot(v[1].cross(v[2])) / 6.0;
+        }
+        assert!(n > 12, "{what}: {n} triangles");
+        for (&(a, b), &count) in &edges {
+            assert_eq!((count, edges.get(&(b, a))), (1, Some(&1)), "{what}: edge {a:?}–{b:?}");
+        }
+        let exact = stock.volume();
+        assert!(
+            (volume - exact).abs() <= 0.01 * exact,
+            "{what}: {volume:.0} mm³ enclosed, stock {exact:.0} mm³"
+        );
+    }
+}

@@ -185,10 +185,14 @@ impl StockMesh {
             p[b] = v as f32;
             p
         };
-        // Counter-clockwise seen from outside: e_a × e_b = e_d, so (a, b) order faces +d.
-        let (p00, p10, p11, p01) = (at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1));
-        let tris =
-            if rect.negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
+        self.push_quad([at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1)], rect.negative, flags);
+    }
+
+    /// The two triangles of the quad `p00 p10 p11 p01` of a face normal to axis `d`, its corners
+    /// stepping along `(a, b) = others(d)`: counter-clockwise seen from outside, since
+    /// e_a × e_b = e_d makes that order face +d; reversed when the face looks to −d.
+    pub(super) fn push_quad(&mut self, [p00, p10, p11, p01]: [[f32; 3]; 4], negative: bool, flags: u8) {
+        let tris = if negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
         self.positions.extend_from_slice(&tris);
         self.flags.extend_from_slice(&[flags; 6]);
     }
@@ -214,7 +218,7 @@ impl StockMesh {
         let n = self.triangles();
         let mut out = Vec::with_capacity(84 + 50 * n);
         let mut header = [b' '; 80];
-        let title = b"schwenkbar stock (tri-dexel ends, W-CS, mm)";
+        let title = b"schwenkbar stock (W-CS, mm)";
         header[..title.len()].copy_from_slice(title);
         out.extend_from_slice(&header);
         out.extend_from_slice(&u32::try_from(n).unwrap_or(u32::MAX).to_le_bytes());
