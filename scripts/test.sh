@@ -21,6 +21,8 @@ cargo fmt --all -- --check
 
 echo; echo "==> crate boundaries (scripts/boundary.sh)"
 bash scripts/boundary.sh
+echo; echo "==> every path the docs name exists (scripts/doc_paths.py)"
+python3 scripts/doc_paths.py
 
 echo; echo "==> clippy (warnings are errors)"
 cargo clippy --workspace --all-targets --quiet -- -D warnings
@@ -45,7 +47,7 @@ offline_rc=0
 python3 scripts/offline_test.py --log "$log" || offline_rc=$?
 
 echo; echo "==> screenshot: Musterprogramm 1 after block 10 on ac-table, 1920x1080"
-# The app's share link opens the program run at a block (web/src/persist.rs).
+# The app's share link opens the program run at a block (`app/src/persist.rs`, `share_fragment`).
 fragment=$(python3 -c 'import sys, urllib.parse
 text = open(sys.argv[1], encoding="utf-8").read()
 print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-table&run=1")' static/programs/musterprogramm1.h)

@@ -6,8 +6,21 @@
 //! continuation lines): the driver splits lines and block headers by hand, the block families
 //! below read their keyword ladders with the word readers of `words.rs`, nom parsers with the
 //! parser's own error ([`words::Step`], [`words::NcError`]: where, and the words expected
-//! there; see ARCHITECTURE.md "Parser"). No backtracking across lines, so time is linear in the
-//! input.
+//! there). No backtracking across lines, so time is linear in the input.
+//!
+//! nom's `Err::Error` means "the word is not there, try another", `Err::Failure` (nom's `cut`,
+//! `words::hard`) "it began but is malformed". Every nom parser runs through `words::run`:
+//! complete mode, and the rest given back as the suffix of the input (nom 8.0 hands back an
+//! empty rest at the wrong address; diagnostics are placed by address). `Cx::fail` is the one
+//! conversion of a stop into the block's [`Diagnostic`] (the word labelled, what was expected
+//! as help). Spellings the control's editor never writes (a decimal comma, a blank after an
+//! address letter: `lenient.rs`) are rewritten in place with the same length before the block
+//! is read. The checks across blocks (BEGIN/END PGM names, block numbers, each lenient
+//! spelling: a warning once per file) are [`AcrossBlocks`], made block by block here and again
+//! by an edit's splice. The common straight line is read in one pass over its bytes by
+//! `fast.rs` before the general parser is asked, into a compact [`Block`] (40 bytes, numbers
+//! packed); anything it does not know goes the general way, which gives the same block
+//! (`core/tests/fast_path.rs`).
 
 mod approach;
 mod cycles;

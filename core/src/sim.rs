@@ -57,14 +57,15 @@
 //! element before a `RND`/`CHF` looks ahead to the element after it, ends at the first tangent
 //! point and leaves the rounding to the `RND`/`CHF` block; the element after starts at the
 //! second. Geometry errors (no CC, CR radius too small, CT without a preceding element, a
-//! rounding that does not fit) stop the run at their block. `APPR`/`DEP` move straight to their
-//! point for now (radius compensation is not simulated), with a note.
+//! rounding that does not fit) stop the run at their block. The radius compensation RL/RR and the
+//! `APPR`/`DEP` approach and departure paths run in `interp/compensation.rs`.
 //!
 //! # Programs
 //! Labels, `CALL LBL n [REP m]`, `FN 0`, formulas, `FN 1–5` and `FN 9–12` jumps run; `M30`/`M2` end the
 //! run and the rest of the program is listed as not executed
 //! ([`crate::unconfirmed::LIST_BLOCKS_AFTER_END`]); a `CYCL DEF` acts at `M99`/`CYCL CALL`
-//! (cycles 200 and 232 move, every other cycle is reported as not simulated).
+//! (the cycles `sim/cycles.rs` models move — drilling, face milling, pockets, patterns; any other
+//! runs with a note on its call that it is not simulated).
 //!
 //! # Durations
 //! Linear share = distance / F (mm/min); `FMAX` = `geometry.rapid_linear`; rotary share =
