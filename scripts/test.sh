@@ -23,6 +23,8 @@ echo; echo "==> crate boundaries (scripts/boundary.sh)"
 bash scripts/boundary.sh
 echo; echo "==> every path the docs name exists (scripts/doc_paths.py)"
 python3 scripts/doc_paths.py
+echo; echo "==> core has no import circle (scripts/core_layers.py)"
+python3 scripts/core_layers.py
 
 echo; echo "==> clippy (warnings are errors)"
 cargo clippy --workspace --all-targets --quiet -- -D warnings

@@ -3,6 +3,10 @@
 //! The control works in degrees throughout (DOMAIN.md §2: "all right-handed, degrees"); glam
 //! works in radians, so every conversion goes through here.
 
+/// Below this (relative) length a vector counts as zero, and below this sine two directions
+/// count as parallel. Numerical choice (derived): NC input has at most 7 decimals.
+pub const PARALLEL_EPS: f64 = 1e-9;
+
 /// Wraps an angle in degrees into (−180, +180], the way the seed writes axis positions
 /// (`C-90`, never `C+270`; DOMAIN.md §10 oracles 13–27).
 #[must_use]

@@ -20,19 +20,7 @@ pub use cycles::{
 pub use path::{ApprDep, ApprKind, Line, MWords, Motion, PolarWord, RadiusComp};
 pub use q::{BinOp, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, QL_BASE, QName, QR_BASE, SysRead};
 
-/// A byte range `start..end` into the source text.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize)]
-pub struct Span {
-    pub start: usize,
-    pub end: usize,
-}
-
-impl Span {
-    #[must_use]
-    pub fn new(start: usize, end: usize) -> Self {
-        Span { start, end }
-    }
-}
+pub use crate::span::Span;
 
 /// A whole NC program (or a single block typed without frame).
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]

@@ -5,9 +5,9 @@
 
 use serde::Serialize;
 
-use crate::ast::Span;
 pub use crate::lang::Lang;
 use crate::lang::Text;
+use crate::span::Span;
 
 /// Error: the control would refuse the block. Warning: it would run, but look again.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
@@ -78,9 +78,9 @@ pub enum DiagCode {
         number: u32,
     },
     /// Said once per kind and file, at its first occurrence: a spelling read as its canonical
-    /// form ([`crate::parse::Lenient`]); `text` as written there.
+    /// form ([`Lenient`]); `text` as written there.
     Lenient {
-        kind: crate::parse::Lenient,
+        kind: Lenient,
         text: String,
     },
     PgmNameMismatch {
@@ -261,11 +261,11 @@ impl DiagCode {
                 format!("N-Satznummern gelesen (zuerst N{number}): Klartext schreibt die Nummer ohne N"),
                 format!("N block numbers read (first N{number}): Klartext writes the number without N"),
             ),
-            DiagCode::Lenient { kind: crate::parse::Lenient::DecimalComma, text } => t(
+            DiagCode::Lenient { kind: Lenient::DecimalComma, text } => t(
                 format!("Dezimalkomma gelesen (zuerst „{text}“): Klartext schreibt einen Dezimalpunkt"),
                 format!("Decimal comma read (first \"{text}\"): Klartext writes a decimal point"),
             ),
-            DiagCode::Lenient { kind: crate::parse::Lenient::BlankAfterAddress, text } => t(
+            DiagCode::Lenient { kind: Lenient::BlankAfterAddress, text } => t(
                 format!(
                     "Leerzeichen nach dem Adressbuchstaben gelesen (zuerst „{text}“): Klartext schreibt den Wert direkt dahinter"
                 ),
@@ -292,6 +292,19 @@ impl DiagCode {
             ),
         }
     }
+}
+
+/// A spelling read leniently (the parser's `lenient.rs` reads it; its warning is said here).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum Lenient {
+    /// `49,000` for `49.000`.
+    DecimalComma,
+    /// `Z 25.000` for `Z25.000`.
+    BlankAfterAddress,
+}
+
+impl Lenient {
+    pub const ALL: [Lenient; 2] = [Lenient::DecimalComma, Lenient::BlankAfterAddress];
 }
 
 #[cfg(test)]

@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::angle::{atan2d, wrap180};
 use crate::machine::Machine;
-use crate::unconfirmed;
+pub use crate::machine::symmetry_positions_of;
 
 /// Below this sine the tool axis counts as parallel to the slave axis: the slave is free
 /// (DOMAIN.md §3.4). Numerical choice (derived).
@@ -113,7 +113,7 @@ pub fn solve_tool_axis(machine: &Machine, t: DVec3) -> ToolAxisSolution {
 }
 
 /// The two symmetry positions of the master axis, 180° apart (DOMAIN.md §3.3, [S2]), with "the"
-/// symmetry point first ([`unconfirmed::SYMMETRY_POINT_CODIRECTIONAL`]). Computed once per
+/// symmetry point first ([`crate::unconfirmed::SYMMETRY_POINT_CODIRECTIONAL`]). Computed once per
 /// machine by [`Machine::from_json`]; see [`symmetry_positions_of`].
 #[must_use]
 pub fn symmetry_positions(machine: &Machine) -> [f64; 2] {
@@ -124,28 +124,6 @@ pub fn symmetry_positions(machine: &Machine) -> [f64; 2] {
 #[must_use]
 pub fn symmetry_point(machine: &Machine) -> f64 {
     machine.symmetry_positions()[0]
-}
-
-/// The symmetry positions for slave direction `us` and master direction `um` (unit vectors).
-///
-/// Derived: the two solutions differ only in the sign of the component of c along n = u_s × u_m,
-/// so they mirror about the master positions where c(θ) = Rot(u_m, θ)·ez lies in the plane of
-/// u_s and u_m: n·c(θ) = cos θ (n·ez) + sin θ (n·(u_m × ez)) = 0. Where the slave axis can be
-/// parallel to the tool axis (every common machine), that position is one of these two.
-#[must_use]
-pub fn symmetry_positions_of(us: DVec3, um: DVec3) -> [f64; 2] {
-    let n = us.cross(um);
-    let a = n.dot(DVec3::Z);
-    let b = n.dot(um.cross(DVec3::Z));
-    let p = wrap180(atan2d(-a, b));
-    let q = wrap180(p + 180.0);
-    let along_slave = |deg: f64| (DMat3::from_axis_angle(um, deg.to_radians()) * DVec3::Z).dot(us);
-    let p_first = if unconfirmed::SYMMETRY_POINT_CODIRECTIONAL {
-        along_slave(p) >= along_slave(q)
-    } else {
-        p.abs() <= q.abs()
-    };
-    if p_first { [p, q] } else { [q, p] }
 }
 
 /// Residual rotation γ (degrees) about the tool axis: Rz(γ) = R_machineᵀ·R (DOMAIN.md §3.2),

@@ -21,6 +21,7 @@ pub mod plane;
 pub mod sample;
 pub mod sim;
 pub mod solve;
+pub mod span;
 pub mod stock;
 pub mod text;
 pub mod unconfirmed;

@@ -103,7 +103,7 @@ pub struct Machine {
     /// rotary axis seen from the tool, i.e. the last seen from the workpiece).
     chain: [RotaryJoint; 2],
     /// The master's two symmetry positions, "the" symmetry point first (derived once from the
-    /// axis directions, [`crate::kinematics::symmetry_positions_of`]).
+    /// axis directions, [`symmetry_positions_of`]).
     symmetry: [f64; 2],
     /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
     /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
@@ -415,6 +415,28 @@ impl Machine {
     pub fn limits_of(&self, axis: RotaryAxis, overrides: &[(RotaryAxis, Limits)]) -> Option<Limits> {
         overrides.iter().rev().find(|(a, _)| *a == axis).map(|(_, l)| *l).or_else(|| self.joint(axis)?.limits)
     }
+}
+
+/// The symmetry positions for slave direction `us` and master direction `um` (unit vectors).
+///
+/// Derived: the two solutions differ only in the sign of the component of c along n = u_s × u_m,
+/// so they mirror about the master positions where c(θ) = Rot(u_m, θ)·ez lies in the plane of
+/// u_s and u_m: n·c(θ) = cos θ (n·ez) + sin θ (n·(u_m × ez)) = 0. Where the slave axis can be
+/// parallel to the tool axis (every common machine), that position is one of these two.
+#[must_use]
+pub fn symmetry_positions_of(us: DVec3, um: DVec3) -> [f64; 2] {
+    let n = us.cross(um);
+    let a = n.dot(DVec3::Z);
+    let b = n.dot(um.cross(DVec3::Z));
+    let p = crate::angle::wrap180(crate::angle::atan2d(-a, b));
+    let q = crate::angle::wrap180(p + 180.0);
+    let along_slave = |deg: f64| (DMat3::from_axis_angle(um, deg.to_radians()) * DVec3::Z).dot(us);
+    let p_first = if crate::unconfirmed::SYMMETRY_POINT_CODIRECTIONAL {
+        along_slave(p) >= along_slave(q)
+    } else {
+        p.abs() <= q.abs()
+    };
+    if p_first { [p, q] } else { [q, p] }
 }
 
 #[cfg(test)]

@@ -14,9 +14,7 @@ use crate::machine::Machine;
 use crate::plane::{PROJECTED_LIMIT, PlaneDef, RelAxis, RotaryAxis};
 use crate::unconfirmed;
 
-/// Below this (relative) length a vector counts as zero, and below this sine two directions
-/// count as parallel. Numerical choice (derived): NC input has at most 7 decimals.
-pub const PARALLEL_EPS: f64 = 1e-9;
+pub use crate::angle::PARALLEL_EPS;
 
 /// Which vector of a PLANE block is meant in an error.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

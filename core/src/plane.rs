@@ -120,6 +120,14 @@ pub enum TransformMode {
     TableRot,
 }
 
+impl TransformMode {
+    /// The mode when the block programs neither ([`crate::unconfirmed::DEFAULT_TABLE_ROT`]).
+    #[must_use]
+    pub const fn unprogrammed() -> TransformMode {
+        if crate::unconfirmed::DEFAULT_TABLE_ROT { TransformMode::TableRot } else { TransformMode::CoordRot }
+    }
+}
+
 /// A whole `PLANE …` block body.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PlaneBlock<V = Value> {

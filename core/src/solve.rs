@@ -148,7 +148,7 @@ fn header(machine: &Machine, r: &DMat3, opts: &SolveOptions, case: KinematicCase
         symmetry_point: kinematics::symmetry_point(machine),
         case,
         selection: opts.selection,
-        transform: opts.transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM),
+        transform: opts.transform.unwrap_or(TransformMode::unprogrammed()),
         start: opts.start,
         candidates: Vec::new(),
         chosen: None,
@@ -245,7 +245,7 @@ fn solve_inner(
     };
     let mut e = header(machine, r, opts, case);
     e.selection = selection;
-    e.transform = transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM);
+    e.transform = transform.unwrap_or(TransformMode::unprogrammed());
     e.decisions = decisions;
     if let Some(err) = bad {
         return finish(e, Rule::Unreachable, None, Some(err));
@@ -303,7 +303,7 @@ fn free_slave(
         decisions.push(Decision::DefaultTransform);
     }
     let master = m.represent(master_deg);
-    let turn_table = match transform.unwrap_or(unconfirmed::DEFAULT_TRANSFORM) {
+    let turn_table = match transform.unwrap_or(TransformMode::unprogrammed()) {
         TransformMode::CoordRot => false,
         TransformMode::TableRot => {
             if !s.table {

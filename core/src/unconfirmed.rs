@@ -5,10 +5,11 @@
 //! correction after checking a real control (or the HEIDENHAIN programming station) is a one-line
 //! change in this file. The UI cites a decision through [`Decision`] (stable id, German and English
 //! text); the solver lists the decisions that influenced a result in its explanation.
+//!
+//! A leaf of data: it imports nothing of the crate above the angle helpers and the bilingual
+//! text (`scripts/core_layers.py` checks that core has no import circle).
 
 use glam::DVec3;
-
-use crate::plane::TransformMode;
 
 mod decision;
 pub use decision::Decision;
@@ -35,7 +36,7 @@ pub fn projected_traces(propr_deg: f64, promin_deg: f64) -> (DVec3, DVec3) {
 pub fn vector_frame(b: DVec3, z: DVec3) -> Option<DVec3> {
     let x = b - b.dot(z) * z;
     let len = x.length();
-    (len > crate::orientation::PARALLEL_EPS * b.length()).then(|| x / len)
+    (len > crate::angle::PARALLEL_EPS * b.length()).then(|| x / len)
 }
 
 /// PLANE RELATIV with nothing tilted refers to the untilted W-CS (identity).
@@ -83,8 +84,9 @@ pub const TABLE_ROT_SIGN: f64 = 1.0;
 /// axis is not turned; the rotation is done mathematically as with COORD ROT.
 pub const TABLE_ROT_ON_HEAD_AXIS: bool = false;
 
-/// Neither COORD ROT nor TABLE ROT programmed. **UNCONFIRMED**: COORD ROT (table not moved).
-pub const DEFAULT_TRANSFORM: TransformMode = TransformMode::CoordRot;
+/// Neither COORD ROT nor TABLE ROT programmed. **UNCONFIRMED**: COORD ROT (`false`: the table
+/// is not moved); `plane::TransformMode::unprogrammed` reads it.
+pub const DEFAULT_TABLE_ROT: bool = false;
 
 /// SEQ± / SYM±: a master value exactly on the reference (0° for SEQ, the symmetry point for
 /// SYM) counts as the `+` side. **UNCONFIRMED** (DOMAIN.md §3.3 only says "positive range").

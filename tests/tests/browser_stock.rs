@@ -7,10 +7,10 @@
 
 use schwenkbar_app::document::Document;
 use schwenkbar_app::run::SimRef;
+use schwenkbar_app::scene::pose::work_points;
 use schwenkbar_app::scene::{Scene, StockShape, Triads};
 use schwenkbar_app::stock::StockRef;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_web::components::view3d::work_points;
 use schwenkbar_web::render::camera::Camera;
 use schwenkbar_web::render::from_sim::scene_state;
 use schwenkbar_web::render::renderer::Renderer;

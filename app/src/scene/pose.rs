@@ -71,6 +71,43 @@ pub fn relative_orientation(p: &Poses) -> DMat3 {
     p.workpiece.matrix3.transpose() * p.tool.matrix3
 }
 
+/// What the "Werkstück" camera keeps in view, in M-CS, as the machine stands: the blank's eight
+/// corners and, while the tool works near the part, its cutting end: the tip and the point up its
+/// axis as far as the blank's half diagonal (at most the tool's length). A tip farther from the
+/// blank than its half diagonal (retracted, at the tool change) is left out: framing the whole
+/// tool up there made the part small (issue 32).
+#[must_use]
+pub fn work_points(machine: &Machine, s: &super::SceneState) -> Vec<glam::Vec3> {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let on_table = p.workpiece * DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
+    let (lo, hi) = (s.blank.min, s.blank.max);
+    let mut points: Vec<DVec3> = (0..8)
+        .map(|i| {
+            let pick = |bit: u32, a: f64, b: f64| if i & (1 << bit) == 0 { a } else { b };
+            on_table.transform_point3(DVec3::new(
+                pick(0, lo.x, hi.x),
+                pick(1, lo.y, hi.y),
+                pick(2, lo.z, hi.z),
+            ))
+        })
+        .collect();
+    let reach = (hi - lo).length() / 2.0;
+    let tip = on_table.inverse().transform_point3(p.tool.transform_point3(DVec3::ZERO));
+    if tip.distance(tip.clamp(lo, hi)) <= reach {
+        let up = reach.min(s.tool.length.max(0.0));
+        points.extend([DVec3::ZERO, DVec3::new(0.0, 0.0, up)].map(|q| p.tool.transform_point3(q)));
+    }
+    points.into_iter().map(|q| q.as_vec3()).collect()
+}
+
+/// The blank's centre in M-CS as the machine stands.
+#[must_use]
+pub fn blank_centre(machine: &Machine, s: &super::SceneState) -> DVec3 {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let wcs = DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
+    (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -140,5 +177,30 @@ mod tests {
         let p = poses(&m, &AxisValues::default(), DVec3::new(1.0, 2.0, 3.0), 100.0);
         assert_eq!(p.tool.translation, DVec3::new(1.0, 2.0, 3.0));
         assert_eq!(p.workpiece, DAffine3::IDENTITY);
+    }
+
+    /// The camera frames the blank's corners; the tool's cutting end only while its tip is
+    /// within the blank's half diagonal of the blank (worked by hand on the A/C table at home:
+    /// no rotary turn, so the tip is the linear axes' point).
+    #[test]
+    fn the_workpiece_camera_frames_the_blank_and_the_tool_only_near_it() {
+        let machine = Machine::builtin("ac-table").expect("shipped machine");
+        let mut s = crate::scene::SceneState::for_machine(&machine);
+        let centre = blank_centre(&machine, &s);
+        let half_diagonal = (s.blank.max - s.blank.min).length() / 2.0;
+        let corners_ok = |points: &[glam::Vec3]| {
+            points[..8].iter().all(|c| (f64::from(c.distance(centre.as_vec3())) - half_diagonal).abs() < 1e-3)
+        };
+        s.axes.linear = centre;
+        let near = work_points(&machine, &s);
+        assert_eq!(near.len(), 10, "eight corners, the tip and the cutting end");
+        assert!(corners_ok(&near));
+        assert!(near[8].distance(centre.as_vec3()) < 1e-3, "the tip at the blank's centre");
+        let up = f64::from(near[9].distance(near[8]));
+        assert!((up - half_diagonal.min(s.tool.length)).abs() < 1e-3, "{up}");
+        s.axes.linear = centre + DVec3::new(0.0, 0.0, 3.0 * half_diagonal);
+        let far = work_points(&machine, &s);
+        assert_eq!(far.len(), 8, "a retracted tool is not framed");
+        assert!(corners_ok(&far));
     }
 }

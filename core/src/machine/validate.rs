@@ -249,7 +249,7 @@ pub(super) fn validate(def: &MachineDef) -> Result<Machine, Vec<MachineIssue>> {
     match chain {
         Some(chain) if issues.is_empty() => {
             let [slave, master] = &chain;
-            let symmetry = crate::kinematics::symmetry_positions_of(slave.direction, master.direction);
+            let symmetry = super::symmetry_positions_of(slave.direction, master.direction);
             Ok(Machine {
                 id: def.id.to_string(),
                 name: def.name.clone(),

@@ -5,20 +5,7 @@
 //! [`super::AcrossBlocks`] says each kind once per file, at its first block
 //! (`unconfirmed::IMPORT_LENIENT_SPELLINGS`).
 
-use serde::Serialize;
-
-/// A spelling read leniently.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
-pub enum Lenient {
-    /// `49,000` for `49.000`.
-    DecimalComma,
-    /// `Z 25.000` for `Z25.000`.
-    BlankAfterAddress,
-}
-
-impl Lenient {
-    pub const ALL: [Lenient; 2] = [Lenient::DecimalComma, Lenient::BlankAfterAddress];
-}
+pub use crate::diag::Lenient;
 
 /// The address letters whose value may follow after blanks.
 fn is_address(b: u8) -> bool {

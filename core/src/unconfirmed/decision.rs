@@ -25,7 +25,7 @@ pub enum Decision {
     TableRotSign,
     /// [`TABLE_ROT_ON_HEAD_AXIS`](super::TABLE_ROT_ON_HEAD_AXIS): TABLE ROT with a free head axis acts like COORD ROT.
     TableRotHeadAxis,
-    /// [`DEFAULT_TRANSFORM`](super::DEFAULT_TRANSFORM): neither COORD ROT nor TABLE ROT programmed.
+    /// [`DEFAULT_TABLE_ROT`](super::DEFAULT_TABLE_ROT): neither COORD ROT nor TABLE ROT programmed.
     DefaultTransform,
     /// [`ZERO_COUNTS_AS_PLUS`](super::ZERO_COUNTS_AS_PLUS): SEQ/SYM with the master exactly on the reference.
     ZeroIsPlus,

@@ -15,7 +15,7 @@ use super::viewer::{Content, Viewer};
 use crate::render::camera::{Camera, Preset};
 use crate::render::toolpath::PathPoint;
 use schwenkbar_app::i18n::Lang;
-use schwenkbar_app::scene::pose::poses;
+use schwenkbar_app::scene::pose::{blank_centre, work_points};
 use schwenkbar_app::scene::{SceneState, Triads};
 
 /// The toolpath, shared and compared by identity (a run's path has up to 100,000 segments;
@@ -53,34 +53,6 @@ pub struct View3dProps {
 
 /// Frames without a new scene that count as a pause in typing (about 150 ms).
 const TYPING_PAUSE_FRAMES: u32 = 9;
-
-/// What the "Werkstück" camera keeps in view, in M-CS: the blank's eight corners, the tool tip
-/// and the tool's top (tool length along the tool axis), as the machine stands.
-#[must_use]
-pub fn work_points(machine: &Machine, s: &SceneState) -> Vec<glam::Vec3> {
-    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
-    let on_table = p.workpiece * glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
-    let (lo, hi) = (s.blank.min, s.blank.max);
-    let corners = (0..8).map(|i| {
-        let pick = |bit: u32, a: f64, b: f64| if i & (1 << bit) == 0 { a } else { b };
-        on_table.transform_point3(glam::DVec3::new(
-            pick(0, lo.x, hi.x),
-            pick(1, lo.y, hi.y),
-            pick(2, lo.z, hi.z),
-        ))
-    });
-    let tool = [glam::DVec3::ZERO, glam::DVec3::new(0.0, 0.0, s.tool.length.max(0.0))]
-        .map(|q| p.tool.transform_point3(q));
-    corners.chain(tool).map(|q| q.as_vec3()).collect()
-}
-
-/// The blank's centre in M-CS as the machine stands.
-#[must_use]
-pub fn blank_centre(machine: &Machine, s: &SceneState) -> glam::DVec3 {
-    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
-    let wcs = glam::DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
-    (p.workpiece * wcs).transform_point3((s.blank.min + s.blank.max) / 2.0)
-}
 
 /// Whether two contents draw the same scene (the machine compared by identity).
 fn same_content(a: Option<&Content>, b: Option<&Content>) -> bool {
@@ -229,24 +201,5 @@ pub fn view3d(props: &View3dProps) -> Html {
                 </div>
             </div>
         </section>
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_workpiece_camera_frames_the_blank_and_the_whole_tool() {
-        let machine = Machine::builtin("ac-table").expect("shipped machine");
-        let s = SceneState::for_machine(&machine);
-        let points = work_points(&machine, &s);
-        assert_eq!(points.len(), 10, "eight corners, tool tip, tool top");
-        let centre = blank_centre(&machine, &s).as_vec3();
-        let half_diagonal = ((s.blank.max - s.blank.min).length() / 2.0) as f32;
-        for corner in &points[..8] {
-            assert!((corner.distance(centre) - half_diagonal).abs() < 1e-3, "{corner} is a blank corner");
-        }
-        assert!((points[9].distance(points[8]) - s.tool.length as f32).abs() < 1e-3, "the tool's length");
     }
 }
