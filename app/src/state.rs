@@ -488,7 +488,7 @@ impl AppState {
             Action::ToggleStock => next.stock_shown = !self.stock_shown,
             Action::BuildStock => {
                 if let Some(sim) = self.sim.as_ref().filter(|_| self.wants_stock()) {
-                    next.stock = Some(StockRef::of(sim, &self.doc.program));
+                    next.stock = Some(StockRef::of(sim, &self.doc));
                     fx.push(Effect::PassStock);
                 }
             }

@@ -9,9 +9,9 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use schwenkbar_core::Program;
 use schwenkbar_core::stock::{Cutting, StockCursor, StockOptions, TiledMesh};
 
+use crate::document::Document;
 use crate::i18n::Text;
 use crate::run::SimRef;
 
@@ -23,6 +23,11 @@ pub const FRAME_RAYS: usize = 4_000;
 /// The first pass's share of one [`crate::state::Action::PassStock`] (it cuts the whole run
 /// once for the notes): about 10 ms in a release wasm build, a paint between two of them.
 pub const PASS_RAYS: usize = 3 * FRAME_RAYS;
+
+/// Steps planned per share of the first pass or per frame that needs them: half a checkpoint
+/// interval of the simulation, about 1 ms natively (planning a 100,000-block run at once took
+/// 0.2 s natively, a long task in the browser).
+pub const PLAN_STEPS: usize = 512;
 
 /// What the view shows and where it is going.
 #[derive(Default)]
@@ -38,6 +43,8 @@ struct Shown {
 /// The cuts of one simulation and where the view stands in them.
 pub struct StockView {
     sim: SimRef,
+    /// The program `sim` ran, for planning its steps.
+    doc: Rc<Document>,
     /// Its first pass (the notes) goes on in shares, [`StockRef::pass_on`].
     cutting: RefCell<Cutting>,
     at: RefCell<Shown>,
@@ -60,19 +67,32 @@ impl std::fmt::Debug for StockRef {
 }
 
 impl StockRef {
-    /// The cuts of `sim` planned, none made yet: the first pass, which cuts the whole run once
-    /// for the notes and the checkpoints, goes on in shares ([`StockRef::pass_on`]), so that
-    /// switching the stock on is no long task (classroom trial II: 0.85 s in one). The view
-    /// cuts what it shows on its own meanwhile.
+    /// The cuts of `sim` (the run of `doc`'s program), none planned or made yet: planning and
+    /// the first pass, which cuts the whole run once for the notes and the checkpoints, go on
+    /// in shares ([`StockRef::pass_on`]), so that starting a run with the stock is no long task
+    /// (classroom trial II: 0.85 s in one). The view plans and cuts what it shows on its own
+    /// meanwhile.
     #[must_use]
-    pub fn of(sim: &SimRef, program: &Program) -> StockRef {
-        let cutting = RefCell::new(Cutting::planned(program, &sim.0, StockOptions::default()));
-        StockRef(Rc::new(StockView { sim: sim.clone(), cutting, at: RefCell::new(Shown::default()) }))
+    pub fn of(sim: &SimRef, doc: &Rc<Document>) -> StockRef {
+        let cutting = RefCell::new(Cutting::unplanned(StockOptions::default()));
+        StockRef(Rc::new(StockView {
+            sim: sim.clone(),
+            doc: doc.clone(),
+            cutting,
+            at: RefCell::new(Shown::default()),
+        }))
     }
 
-    /// Goes on with the first pass by about `rays`; whether it is done (every note known).
+    /// Plans up to `steps` more steps; whether all are planned.
+    fn plan_on(&self, steps: usize) -> bool {
+        self.0.cutting.borrow_mut().plan_on(&self.0.doc.program, &self.0.sim.0, steps)
+    }
+
+    /// Plans [`PLAN_STEPS`] more steps, then goes on with the first pass by about `rays`;
+    /// whether it is done (every step planned, every note known).
     pub fn pass_on(&self, rays: usize) -> bool {
-        self.0.cutting.borrow_mut().pass_on(rays)
+        let planned = self.plan_on(PLAN_STEPS);
+        self.0.cutting.borrow_mut().pass_on(rays) && planned
     }
 
     /// Whether this is the stock of `sim`.
@@ -87,6 +107,9 @@ impl StockRef {
     /// whether the mesh shows that stock (`false`: call again next frame). `None` before a
     /// `BLK FORM`.
     pub fn mesh_toward(&self, step: usize, fraction: f64, budget: usize) -> (Option<Rc<TiledMesh>>, bool) {
+        // The steps up to the shown one planned first: all at once without a budget, else a
+        // share per frame.
+        self.plan_on(if budget == usize::MAX { step.saturating_add(1) } else { PLAN_STEPS });
         let mut guard = self.0.at.borrow_mut();
         let at = &mut *guard;
         let cutting = &*self.0.cutting.borrow();
@@ -133,8 +156,8 @@ mod tests {
     use crate::document::Document;
     use schwenkbar_core::machine::Machine;
 
-    fn musterprogramm1() -> (Document, SimRef) {
-        let doc = Document::new(crate::samples::MUSTERPROGRAMM_1.text.to_owned());
+    fn musterprogramm1() -> (Rc<Document>, SimRef) {
+        let doc = Rc::new(Document::new(crate::samples::MUSTERPROGRAMM_1.text.to_owned()));
         let machine = Machine::builtin("ac-table").expect("machine");
         let sim = SimRef::of(&doc.program, &machine);
         (doc, sim)
@@ -160,7 +183,7 @@ mod tests {
     #[test]
     fn block_13_mills_the_face_and_the_mesh_is_made_again_only_when_the_stock_changed() {
         let (doc, sim) = musterprogramm1();
-        let stock = StockRef::of(&sim, &doc.program);
+        let stock = StockRef::of(&sim, &doc);
         assert!(stock.is_for(&sim));
         let (before, after) = (step_of(&doc, &sim, 13) - 1, step_of(&doc, &sim, 13));
         let m0 = mesh_at(&stock, before, 1.0).expect("a blank");
@@ -182,7 +205,7 @@ mod tests {
     #[test]
     fn frames_cut_a_bounded_share_and_a_step_back_shows_the_old_stock_until_the_new_is_ready() {
         let (doc, sim) = musterprogramm1();
-        let stock = StockRef::of(&sim, &doc.program);
+        let stock = StockRef::of(&sim, &doc);
         let step13 = step_of(&doc, &sim, 13);
         let mut frames = 0;
         let mut last = None;
@@ -220,14 +243,15 @@ mod tests {
     #[test]
     fn the_stock_before_the_blk_form_is_none_and_notes_are_worded_in_both_languages() {
         let (doc, sim) = musterprogramm1();
-        let stock = StockRef::of(&sim, &doc.program);
+        let stock = StockRef::of(&sim, &doc);
         assert!(mesh_at(&stock, 0, 1.0).is_none(), "BEGIN PGM: no blank yet");
-        let (p, _) = schwenkbar_core::parse(
-            "0 BEGIN PGM R MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 16 Z S5000\n4 L X+50 Y+50 Z+50 R0 FMAX\n5 L Z-5 R0 FMAX\n6 END PGM R MM\n",
-        );
+        let doc = Rc::new(Document::new(
+            "0 BEGIN PGM R MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n3 TOOL CALL 16 Z S5000\n4 L X+50 Y+50 Z+50 R0 FMAX\n5 L Z-5 R0 FMAX\n6 END PGM R MM\n"
+                .to_owned(),
+        ));
         let machine = Machine::builtin("ac-table").expect("machine");
-        let sim = SimRef::of(&p, &machine);
-        let stock = StockRef::of(&sim, &p);
+        let sim = SimRef::of(&doc.program, &machine);
+        let stock = StockRef::of(&sim, &doc);
         let step = sim.0.step_of_block(5).expect("executed");
         assert!(stock.notes_at(step).is_none(), "nothing cut yet when the stock is switched on");
         let mut shares = 0;
@@ -239,5 +263,33 @@ mod tests {
         assert_eq!(note.de, "Eilgang ins Material: Kollision Werkzeug – Rohteil");
         assert!(note.en.starts_with("Rapid traverse into the material"));
         assert!(stock.notes_at(step - 1).is_none());
+    }
+
+    /// A long run is planned a share at a time: making the stock plans nothing, each share of
+    /// the first pass plans at most [`PLAN_STEPS`] steps, and a frame that shows a step far
+    /// ahead gets there over several frames.
+    #[test]
+    fn a_long_run_is_planned_a_share_at_a_time() {
+        let mut text =
+            String::from("BEGIN PGM P MM\nBLK FORM 0.1 Z X+0 Y+0 Z-40\nBLK FORM 0.2 X+100 Y+100 Z+0\n");
+        text.extend((0..2_000).map(|k| format!("Q1 = Q1 + {k}\n")));
+        text.push_str("END PGM P MM\n");
+        let doc = Rc::new(Document::new(text));
+        let machine = Machine::builtin("ac-table").expect("machine");
+        let sim = SimRef::of(&doc.program, &machine);
+        let last = sim.0.len() - 1;
+        let stock = StockRef::of(&sim, &doc);
+        let mut frames = 1;
+        while !stock.mesh_toward(last, 1.0, FRAME_RAYS).1 {
+            frames += 1;
+            assert!(frames < 1_000);
+        }
+        assert!(frames >= last.div_ceil(PLAN_STEPS), "{frames} frames to plan {last} steps");
+        let mut shares = 1;
+        while !stock.pass_on(PASS_RAYS) {
+            shares += 1;
+            assert!(shares < 1_000);
+        }
+        assert!(mesh_at(&stock, last, 1.0).is_some(), "the blank");
     }
 }

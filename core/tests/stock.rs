@@ -528,3 +528,31 @@ fn the_exported_stl_is_closed_every_edge_in_exactly_two_triangles() {
         );
     }
 }
+
+/// Planning in shares (the browser plans a share per frame, so starting a run of a long program
+/// is no long task) gives the cuts of planning at once: the same notes and the same stock; a
+/// step not planned yet is not reached by seeking it.
+#[test]
+fn planning_in_shares_gives_the_cuts_of_planning_at_once() {
+    let options = StockOptions { resolution: 0.5, checkpoints: 2 };
+    let (program, sim, whole) = run(&musterprogramm(), options);
+    let mut parts = Cutting::unplanned(options);
+    let mut cursor = StockCursor::default();
+    assert!(!parts.advance(&mut cursor, 13, 1.0, usize::MAX), "step 13 is not planned yet");
+    let mut shares = 0;
+    loop {
+        let planned = parts.plan_on(&program, &sim, 3);
+        let passed = parts.pass_on(5_000);
+        shares += 1;
+        assert_eq!(planned && passed, passed, "the pass is never done before the planning");
+        if passed {
+            break;
+        }
+        assert!(shares < 100_000, "the pass ends");
+    }
+    assert!(shares >= sim.len() / 3, "{shares} shares for {} steps", sim.len());
+    assert_eq!(parts.notes, whole.notes);
+    assert_eq!(parts.final_stock().map(|s| s.digest()), whole.final_stock().map(|s| s.digest()));
+    assert!(parts.advance(&mut cursor, 13, 1.0, usize::MAX));
+    assert_eq!(cursor.stock.map(|s| s.digest()), whole.stock_at(13).map(|s| s.digest()));
+}

@@ -58,12 +58,12 @@ async fn yield_to_browser() {
 
 #[wasm_bindgen_test]
 async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour() {
-    let doc = Document::new(schwenkbar_app::samples::MUSTERPROGRAMM_1.text.to_owned());
+    let doc = std::rc::Rc::new(Document::new(schwenkbar_app::samples::MUSTERPROGRAMM_1.text.to_owned()));
     let machine = Machine::builtin("ac-table").expect("machine");
     let sim = SimRef::of(&doc.program, &machine);
     let perf = web_sys::window().and_then(|w| w.performance()).expect("performance");
     let t0 = perf.now();
-    let stock = StockRef::of(&sim, &doc.program);
+    let stock = StockRef::of(&sim, &doc);
     // The first pass at once (the trainer spreads it over frames): the checkpoints the shots
     // below start from, and the figure of the whole cut.
     stock.pass_on(usize::MAX);

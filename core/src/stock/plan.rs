@@ -202,6 +202,16 @@ pub struct Cutting {
     run: u64,
     /// The first pass under way (`None` once every event was cut once).
     pass: Option<FirstPass>,
+    /// Where planning stands (`None` once every step is planned).
+    planning: Option<Planning>,
+}
+
+/// The next step to plan and what the steps before it left in effect.
+#[derive(Debug, Clone, Default)]
+struct Planning {
+    next: usize,
+    blank: Option<Blank>,
+    tool: Option<(ToolState, usize)>,
 }
 
 /// Where the first pass stands: it cuts every event once, in parts, for the notes and the
@@ -234,25 +244,47 @@ impl Cutting {
     /// only has fewer checkpoints to start from until the pass is done.
     #[must_use]
     pub fn planned(program: &Program, sim: &Simulation, options: StockOptions) -> Cutting {
-        let mut c = Cutting {
+        let mut c = Cutting::unplanned(options);
+        c.plan_on(program, sim, usize::MAX);
+        c
+    }
+
+    /// The cuts of a run, none planned yet: [`Cutting::plan_on`] plans its steps a share at a
+    /// time (planning a 100,000-block run at once took 0.2 s natively, a long task in the
+    /// browser). Until a step is planned, seeking it does not get there
+    /// ([`Cutting::advance`] says so) and the first pass is not done.
+    #[must_use]
+    pub fn unplanned(options: StockOptions) -> Cutting {
+        Cutting {
             options,
             events: Vec::new(),
-            step_events: Vec::with_capacity(sim.len() + 1),
+            step_events: vec![0],
             cutters: Vec::new(),
-            checkpoints: Vec::new(),
-            work: Vec::new(),
+            checkpoints: vec![(0, None)],
+            work: vec![0],
             notes: Vec::new(),
             run: Stamp::run(),
             pass: Some(FirstPass { budget: FIRST_CHECKPOINT_RAYS, ..FirstPass::default() }),
-        };
-        let mut blank = None;
-        let mut tool: Option<(ToolState, usize)> = None;
-        for state in sim.states(program) {
-            c.step_events.push(c.events.len());
-            if state.blank != blank {
-                blank = state.blank;
-                if let Some(b) = blank {
-                    c.events.push(Event {
+            planning: Some(Planning::default()),
+        }
+    }
+
+    /// Plans up to `steps` more steps of `sim` (the run of `program`); returns whether every
+    /// step is planned. A share that starts on a multiple of the simulation's checkpoint
+    /// interval re-simulates nothing twice ([`Simulation::states_from`]).
+    pub fn plan_on(&mut self, program: &Program, sim: &Simulation, steps: usize) -> bool {
+        let Some(mut p) = self.planning.take() else { return true };
+        // The entry after the last planned step goes and comes back at the end.
+        self.step_events.pop();
+        let wanted = steps.min(sim.len().saturating_sub(p.next));
+        let mut got = 0;
+        for state in sim.states_from(program, p.next).take(wanted) {
+            got += 1;
+            self.step_events.push(self.events.len());
+            if state.blank != p.blank {
+                p.blank = state.blank;
+                if let Some(b) = p.blank {
+                    self.events.push(Event {
                         step: state.step,
                         block: state.block,
                         end: 0.0,
@@ -263,23 +295,32 @@ impl Cutting {
             if state.segments.is_empty() {
                 continue;
             }
-            let cutter = match &tool {
+            let cutter = match &p.tool {
                 Some((t, k)) if *t == state.tool => *k,
                 _ => {
                     let t = &state.tool;
                     // The bull nose's profile error: a quarter of the resolution (sweep.rs).
-                    c.cutters.push(Cutter::new(t.shape, t.radius, t.length, options.resolution / 4.0));
-                    tool = Some((state.tool.clone(), c.cutters.len() - 1));
-                    c.cutters.len() - 1
+                    let tolerance = self.options.resolution / 4.0;
+                    self.cutters.push(Cutter::new(t.shape, t.radius, t.length, tolerance));
+                    p.tool = Some((state.tool.clone(), self.cutters.len() - 1));
+                    self.cutters.len() - 1
                 }
             };
-            c.plan_step(sim, &state, cutter);
+            self.plan_step(sim, &state, cutter);
         }
-        c.step_events.push(c.events.len());
-        c.checkpoints.push((0, None));
-        c.work = Vec::with_capacity(c.events.len() + 1);
-        c.work.push(0);
-        c
+        self.step_events.push(self.events.len());
+        p.next += got;
+        // A run whose states end early (it cannot be re-simulated) is planned as far as it goes.
+        let done = got < wanted || p.next >= sim.len();
+        if !done {
+            self.planning = Some(p);
+        }
+        done
+    }
+
+    /// Whether step `step` is planned.
+    fn is_planned(&self, step: usize) -> bool {
+        self.planning.is_none() || step + 1 < self.step_events.len()
     }
 
     /// The collisions of positioning motions with the material (a rapid into it, a swivel with
@@ -407,7 +448,8 @@ impl Cutting {
     }
 
     /// Goes on with the first pass by about `rays` rays (a cut may stop between two rows and go
-    /// on in the next call); returns whether it is done. It cuts every event once: the notes,
+    /// on in the next call); returns whether it is done (never before every step is planned).
+    /// It cuts every event once: the notes,
     /// the work up to each event, and the checkpoints evenly over the work. The total is known
     /// only at the end, so a checkpoint is taken after every `budget` rays; when there are too
     /// many, every other one goes and the budget doubles (so they stay within a factor of two of
@@ -501,7 +543,7 @@ impl Cutting {
             let before = self.work.last().copied().unwrap_or(0);
             self.work.push(before + work);
         }
-        let done = pass.cursor.applied >= self.events.len();
+        let done = pass.cursor.applied >= self.events.len() && self.planning.is_none();
         if !done {
             self.pass = Some(pass);
         }
@@ -576,7 +618,7 @@ impl Cutting {
 
     /// [`Cutting::seek`] that computes about `budget` rays at most (an animation frame's share;
     /// a cut may stop between two rows and go on in the next call): returns whether `cursor`
-    /// reached the stock asked for. A cursor past the target starts over from the nearest
+    /// reached the stock asked for (never for a step not planned yet). A cursor past the target starts over from the nearest
     /// checkpoint before it; so does a cursor so far behind a checkpoint that copying it is
     /// cheaper than cutting up to it, unless a budget is given (copying would blow the frame)
     /// and the cursor already holds a stock.
@@ -632,7 +674,7 @@ impl Cutting {
                 }
             }
         }
-        cursor.applied >= target
+        cursor.applied >= target && self.is_planned(step)
     }
 
     /// Whether `cursor` has cut more than the stock after `fraction` of step `step` holds (it
