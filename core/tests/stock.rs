@@ -312,6 +312,7 @@ fn the_tiled_mesh_always_equals_the_mesh_made_from_scratch() {
         for (_, tile) in t.tiles() {
             m.positions.extend_from_slice(&tile.positions);
             m.flags.extend_from_slice(&tile.flags);
+            m.normals.extend_from_slice(&tile.normals);
         }
         m
     };
@@ -555,4 +556,35 @@ fn planning_in_shares_gives_the_cuts_of_planning_at_once() {
     assert_eq!(parts.final_stock().map(|s| s.digest()), whole.final_stock().map(|s| s.digest()));
     assert!(parts.advance(&mut cursor, 13, 1.0, usize::MAX));
     assert_eq!(cursor.stock.map(|s| s.digest()), whole.stock_at(13).map(|s| s.digest()));
+}
+
+/// Issue 32's machined look: the face milled at SPB+15 is the plane x·sin15 + z·cos15 = −2
+/// (the face mill's path, worked by hand as in `face_mill_pass_over_the_tilted_plane_is_a_prism`).
+/// Every grid samples it with stepped ends; lit with their axes' normals they showed terraces
+/// and moiré. Each end on the face away from its edges now carries the plane's normal
+/// (sin15, 0, cos15), within 3°.
+#[test]
+fn the_ends_on_a_tilted_face_carry_the_faces_normal() {
+    let src = format!(
+        "{BLANK}TOOL CALL 16 Z S5000 F500\nL Z+0 R0 FMAX M91\nPLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX\n\
+         L X-40 Y+50 Z+50 R0 FMAX\nL Z-2 F500\nL X+140\nL Z+50 FMAX\nM30\n"
+    );
+    let (_, _, c) = run(&src, StockOptions::default());
+    let mesh = StockMesh::of(&c.final_stock().expect("stock"));
+    let plane = tilt();
+    let (mut on_face, mut along) = (0, 0);
+    for (tri, normals) in mesh.positions.chunks_exact(3).zip(mesh.normals.chunks_exact(3)) {
+        let centre = tri.iter().fold(DVec3::ZERO, |s, p| s + DVec3::from_array(p.map(f64::from))) / 3.0;
+        let on_plane = (centre.dot(plane) + 2.0).abs() < 0.3;
+        if !on_plane || (centre.y - 50.0).abs() > 20.0 || !(5.0..95.0).contains(&centre.x) {
+            continue;
+        }
+        on_face += 1;
+        let n = DVec3::from_array(normals[0].map(f64::from));
+        if n.angle_between(plane).to_degrees() < 3.0 {
+            along += 1;
+        }
+    }
+    assert!(on_face > 100, "{on_face} triangles on the face");
+    assert!(along * 100 >= on_face * 95, "{along} of {on_face} along the face's normal");
 }

@@ -139,7 +139,12 @@ impl StockMesh {
                                 p[b] = corner(b, i[b] + db);
                                 p
                             };
-                            mesh.push_quad([at(0, 0), at(1, 0), at(1, 1), at(0, 1)], negative, flags);
+                            mesh.push_quad(
+                                [at(0, 0), at(1, 0), at(1, 1), at(0, 1)],
+                                negative,
+                                flags,
+                                StockMesh::normal(flags),
+                            );
                         }
                     }
                 }

@@ -29,12 +29,15 @@ pub mod flag {
 /// screen show. A merged face keeps its first end, so it strays from any end by at most this.
 const MERGE: f64 = 1e-4;
 
-/// Triangles of the stock, W-CS: `positions` three per triangle, `flags` one per vertex (the
-/// same for the three vertices of a triangle, so the view can pass it as a vertex attribute).
+/// Triangles of the stock, W-CS: `positions` three per triangle, `flags` and `normals` one per
+/// vertex (the same for the three vertices of a triangle, so the view can pass them as vertex
+/// attributes). A normal is the surface's the ends sample ([`surface_normal`]), not only its
+/// face's axis.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StockMesh {
     pub positions: Vec<[f32; 3]>,
     pub flags: Vec<u8>,
+    pub normals: Vec<[f32; 3]>,
 }
 
 /// A rectangle of equal dexel ends in one grid: cells `start..end` along the row axis, rows
@@ -94,6 +97,7 @@ impl StockMesh {
         let (a, b) = others(d);
         let (i0, i1) = (ti * TILE, ((ti + 1) * TILE).min(stock.n[a]));
         let (j0, j1) = (tj * TILE, ((tj + 1) * TILE).min(stock.n[b]));
+        let bounds = [i0, i1, j0, j1];
         s.open.clear();
         for j in j0..j1 {
             s.row.clear();
@@ -135,11 +139,11 @@ impl StockMesh {
                         q += 1;
                     }
                     (Some(o), Some(r)) if o.order(r).is_lt() => {
-                        self.quad(stock, d, o, j);
+                        self.quad(stock, d, o, j, Some(bounds));
                         p += 1;
                     }
                     (Some(o), None) => {
-                        self.quad(stock, d, o, j);
+                        self.quad(stock, d, o, j, Some(bounds));
                         p += 1;
                     }
                     (_, Some(r)) => {
@@ -152,7 +156,7 @@ impl StockMesh {
             std::mem::swap(&mut s.open, &mut s.next);
         }
         for r in &s.open {
-            self.quad(stock, d, r, j1);
+            self.quad(stock, d, r, j1, Some(bounds));
         }
     }
 
@@ -164,12 +168,14 @@ impl StockMesh {
         let (j0, j1) = (tj * TILE, ((tj + 1) * TILE).min(stock.n[b]));
         // In add_tile's order (the +d face sorts first).
         for (value, negative) in [(stock.max[d], false), (stock.min[d], true)] {
-            self.quad(stock, d, &Rect { value, negative, start: i0, end: i1, row: j0 }, j1);
+            self.quad(stock, d, &Rect { value, negative, start: i0, end: i1, row: j0 }, j1, None);
         }
     }
 
-    /// Emits `rect` of grid `d`, closed before row `end_row`.
-    fn quad(&mut self, stock: &Stock, d: usize, rect: &Rect, end_row: usize) {
+    /// Emits `rect` of grid `d`, closed before row `end_row`; lit with the surface's normal
+    /// from the rays of its tile (`tile`: cells `i0..i1` × rows `j0..j1`), or with its axis'
+    /// for the uncut blank.
+    fn quad(&mut self, stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: Option<[usize; 4]>) {
         let (a, b) = others(d);
         let raw = if rect.negative { stock.min[d] } else { stock.max[d] };
         let cut = (rect.value - raw).abs() > MERGE;
@@ -185,16 +191,27 @@ impl StockMesh {
             p[b] = v as f32;
             p
         };
-        self.push_quad([at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1)], rect.negative, flags);
+        let normal = match tile {
+            Some(tile) => surface_normal(stock, d, rect, end_row, tile),
+            None => Self::normal(flags),
+        };
+        self.push_quad([at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1)], rect.negative, flags, normal);
     }
 
     /// The two triangles of the quad `p00 p10 p11 p01` of a face normal to axis `d`, its corners
     /// stepping along `(a, b) = others(d)`: counter-clockwise seen from outside, since
     /// e_a × e_b = e_d makes that order face +d; reversed when the face looks to −d.
-    pub(super) fn push_quad(&mut self, [p00, p10, p11, p01]: [[f32; 3]; 4], negative: bool, flags: u8) {
+    pub(super) fn push_quad(
+        &mut self,
+        [p00, p10, p11, p01]: [[f32; 3]; 4],
+        negative: bool,
+        flags: u8,
+        normal: [f32; 3],
+    ) {
         let tris = if negative { [p00, p11, p10, p00, p01, p11] } else { [p00, p10, p11, p00, p11, p01] };
         self.positions.extend_from_slice(&tris);
         self.flags.extend_from_slice(&[flags; 6]);
+        self.normals.extend_from_slice(&[normal; 6]);
     }
 
     /// Number of triangles.
@@ -203,7 +220,7 @@ impl StockMesh {
         self.positions.len() / 3
     }
 
-    /// The outward unit normal of a vertex's face.
+    /// The outward unit normal of a vertex's face's axis.
     #[must_use]
     pub fn normal(flags: u8) -> [f32; 3] {
         let mut n = [0.0; 3];
@@ -229,6 +246,61 @@ impl StockMesh {
             out.extend_from_slice(&[0, 0]);
         }
         out
+    }
+}
+
+/// The outward normal of the surface the ends of `rect` (grid `d`, rows `rect.row..end_row`)
+/// sample, from the ends of the neighbouring rays at its middle cell, within its tile (so that
+/// a tile's mesh depends on its own rays only, [`TiledMesh`]). The ends of grid `d` lie on a
+/// surface x_d = f(x_a, x_b) whose outward normal is ±(e_d − ∂f/∂x_a·e_a − ∂f/∂x_b·e_b), + at a
+/// ray's upper end: lit with it, a face tilted against the grid shades evenly instead of in the
+/// terraces of its stepped ends (issue 32's moiré). Where the two one-sided slopes disagree (an
+/// edge of the surface), the flatter is taken: the end belongs to the face it continues.
+fn surface_normal(stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: [usize; 4]) -> [f32; 3] {
+    let (a, b) = others(d);
+    let [i0, i1, j0, j1] = tile;
+    let (i, j) =
+        ((rect.start + rect.end.max(rect.start + 1) - 1) / 2, (rect.row + end_row.max(rect.row + 1) - 1) / 2);
+    // The neighbour's end of the same kind nearest to this one.
+    let end_at = |i: usize, j: usize| -> Option<f64> {
+        stock
+            .spans(d, i, j)
+            .iter()
+            .map(|s| if rect.negative { s.lo } else { s.hi })
+            .min_by(|x, y| (x - rect.value).abs().total_cmp(&(y - rect.value).abs()))
+    };
+    let slope = |back: Option<f64>, ahead: Option<f64>, h: f64| {
+        let (p, q) = (back.map(|v| (rect.value - v) / h), ahead.map(|v| (v - rect.value) / h));
+        match (p, q) {
+            (Some(p), Some(q)) if (p - q).abs() <= 0.5 * p.abs().max(q.abs()).max(1.0) => 0.5 * (p + q),
+            (Some(p), Some(q)) => {
+                if p.abs() <= q.abs() {
+                    p
+                } else {
+                    q
+                }
+            }
+            (Some(p), None) | (None, Some(p)) => p,
+            (None, None) => 0.0,
+        }
+    };
+    let ga = slope(
+        (i > i0).then(|| end_at(i - 1, j)).flatten(),
+        (i + 1 < i1).then(|| end_at(i + 1, j)).flatten(),
+        stock.h[a],
+    );
+    let gb = slope(
+        (j > j0).then(|| end_at(i, j - 1)).flatten(),
+        (j + 1 < j1).then(|| end_at(i, j + 1)).flatten(),
+        stock.h[b],
+    );
+    let mut n = glam::DVec3::ZERO;
+    (n[d], n[a], n[b]) = (1.0, -ga, -gb);
+    let n = if rect.negative { -n.normalize() } else { n.normalize() };
+    if n.is_finite() {
+        n.as_vec3().to_array()
+    } else {
+        StockMesh::normal(d as u8 | if rect.negative { flag::NEGATIVE } else { 0 })
     }
 }
 

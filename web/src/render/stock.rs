@@ -19,9 +19,8 @@ pub fn vertices(mesh: &StockMesh) -> (Vec<f32>, usize) {
     let raw = mesh.flags.len() - cut;
     let mut out = vec![0.0_f32; mesh.flags.len() * 6];
     let (mut r, mut c) = (0, raw);
-    for (p, &f) in mesh.positions.iter().zip(&mesh.flags) {
+    for ((p, &f), n) in mesh.positions.iter().zip(&mesh.flags).zip(&mesh.normals) {
         let slot = if f & CUT_BIT != 0 { &mut c } else { &mut r };
-        let n = StockMesh::normal(f);
         out[*slot * 6..*slot * 6 + 6].copy_from_slice(&[p[0], p[1], p[2], n[0], n[1], n[2]]);
         *slot += 1;
     }
@@ -37,6 +36,7 @@ mod tests {
         let mesh = StockMesh {
             positions: vec![[1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 0.0], [4.0, 0.0, 0.0]],
             flags: vec![CUT_BIT | 2, 0b100 | 1, CUT_BIT, 2],
+            normals: [2, 0b100 | 1, 0, 2].map(StockMesh::normal).to_vec(),
         };
         let (v, raw) = vertices(&mesh);
         assert_eq!(raw, 2);
