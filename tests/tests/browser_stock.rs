@@ -105,7 +105,6 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
         .zip(after_13.chunks_exact(4))
         .filter(|(b, a)| is_amber(b) && is_cut(a))
         .count();
-    let cut_before = before.chunks_exact(4).filter(|p| is_cut(p)).count();
     let (amber_before, amber_after) = (amber(&before), amber(&after_13));
     console_log!("amber {amber_before} → {amber_after}, amber turned cut colour {turned}, {frames} frames");
     assert!(amber_before > 1000, "the raw blank is drawn in amber before block 13: {amber_before}");
@@ -114,10 +113,11 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
         turned > 500 && 5 * turned > 2 * (amber_before - amber_after),
         "the milled face is drawn in the cut colour where the blank was amber: {turned} of {amber_before} → {amber_after}"
     );
-    assert!(
-        cut_before < before.len() / 4 / 2,
-        "before block 13 the cut colour is not the whole view: {cut_before}"
-    );
+    // The Werkstück camera frames the blank (not the tool far above it, issue 32): the part
+    // fills a good share of the view. (The machine's blue parts around it look like the cut
+    // colour, so that colour's share says nothing here.)
+    let pixels = before.len() / 4;
+    assert!(10 * amber_before > pixels, "the blank fills the view: {amber_before} of {pixels} pixels");
     c.remove();
     if cfg!(debug_assertions) {
         // The frame figures mean something only in a release build (scripts/bench.sh).
