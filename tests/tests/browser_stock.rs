@@ -116,8 +116,28 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
     // The Werkstück camera frames the blank (not the tool far above it, issue 32): the part
     // fills a good share of the view. (The machine's blue parts around it look like the cut
     // colour, so that colour's share says nothing here.)
-    let pixels = before.len() / 4;
-    assert!(10 * amber_before > pixels, "the blank fills the view: {amber_before} of {pixels} pixels");
+    let count = before.len() / 4;
+    assert!(10 * amber_before > count, "the blank fills the view: {amber_before} of {count} pixels");
+
+    // The section ("Schnitt", issue 32): the same view with the stock cut open through the
+    // tool looks into the part: the half towards the viewer is gone.
+    let st = sim.0.state_at(&doc.program, after).expect("state");
+    let mut s = scene_state(&machine, &st);
+    s.ghost = None;
+    s.stock = Some(StockShape { stock: stock.clone(), step: after, fraction: 1.0 });
+    let mut shot_with = |section: bool| {
+        r.section = section;
+        paint(&mut r, &s, &camera);
+        while r.wants_frame() {
+            paint(&mut r, &s, &camera);
+        }
+        pixels(r.gl())
+    };
+    let (whole, open) = (shot_with(false), shot_with(true));
+    let changed = whole.chunks_exact(4).zip(open.chunks_exact(4)).filter(|(a, b)| a != b).count();
+    console_log!("section: {changed} of {count} pixels changed");
+    assert!(100 * changed > count, "the section changes the view: {changed} of {count} pixels");
+    assert_eq!(shot_with(false), whole, "switched off again: the whole stock");
     c.remove();
     if cfg!(debug_assertions) {
         // The frame figures mean something only in a release build (scripts/bench.sh).

@@ -100,6 +100,29 @@ pub fn work_points(machine: &Machine, s: &super::SceneState) -> Vec<glam::Vec3> 
     points.into_iter().map(|q| q.as_vec3()).collect()
 }
 
+/// The section through the part (issue 32: a hole or a pocket seen without orbiting): the
+/// plane normal to the W-CS's X or Y axis, whichever faces the viewer at `eye` (M-CS) more,
+/// through the tool tip held inside the blank (a tool above the part cuts through what it has
+/// just made), or through the blank's middle when the tool is beside it along that axis.
+/// Returns a point of it and its normal towards the viewer, W-CS: the half on the viewer's
+/// side is not drawn.
+#[must_use]
+pub fn section_plane(machine: &Machine, s: &super::SceneState, eye: DVec3) -> (DVec3, DVec3) {
+    let p = poses(machine, &s.axes.rotary, s.axes.linear, s.tool.length);
+    let to_wcs = (p.workpiece * DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin)).inverse();
+    let tip = to_wcs.transform_point3(p.tool.transform_point3(DVec3::ZERO));
+    let (lo, hi) = (s.blank.min, s.blank.max.max(s.blank.min));
+    let mut point = tip.clamp(lo, hi);
+    let look = to_wcs.transform_point3(eye) - point;
+    let k = usize::from(look.x.abs() < look.y.abs());
+    if !(lo[k] < tip[k] && tip[k] < hi[k]) {
+        point[k] = 0.5 * (lo[k] + hi[k]);
+    }
+    let mut normal = DVec3::ZERO;
+    normal[k] = look[k].signum();
+    (point, normal)
+}
+
 /// The blank's centre in M-CS as the machine stands.
 #[must_use]
 pub fn blank_centre(machine: &Machine, s: &super::SceneState) -> DVec3 {
@@ -202,5 +225,34 @@ mod tests {
         let far = work_points(&machine, &s);
         assert_eq!(far.len(), 8, "a retracted tool is not framed");
         assert!(corners_ok(&far));
+    }
+
+    /// Worked by hand on the A/C table at rotary zero (W-CS axes along M-CS): a viewer in front
+    /// (−Y, a little to the side) cuts the plane y = tip's y, facing −Y; one to the right (+X)
+    /// the plane x = tip's x; a tip above the blank is brought down into it.
+    #[test]
+    fn the_section_goes_through_the_tool_and_faces_the_viewer() {
+        let machine = Machine::builtin("ac-table").expect("shipped machine");
+        let mut s = crate::scene::SceneState::for_machine(&machine);
+        let centre = blank_centre(&machine, &s);
+        s.axes.linear = centre + DVec3::new(10.0, 5.0, 500.0);
+        let front = centre + DVec3::new(30.0, -900.0, 400.0);
+        let (point, normal) = section_plane(&machine, &s, front);
+        assert_eq!(normal, -DVec3::Y);
+        let wcs_centre = (s.blank.min + s.blank.max) / 2.0;
+        assert!(
+            (point - DVec3::new(wcs_centre.x + 10.0, wcs_centre.y + 5.0, s.blank.max.z)).length() < 1e-9,
+            "{point}"
+        );
+        let (_, normal) = section_plane(&machine, &s, centre + DVec3::new(900.0, 100.0, 400.0));
+        assert_eq!(normal, DVec3::X);
+        // A tool beside the blank along the normal: the plane goes through the blank's middle.
+        s.axes.linear = centre + DVec3::new(10.0, -400.0, 500.0);
+        let (point, normal) = section_plane(&machine, &s, front);
+        assert_eq!(normal, -DVec3::Y);
+        assert!(
+            (point.y - wcs_centre.y).abs() < 1e-9 && (point.x - wcs_centre.x - 10.0).abs() < 1e-9,
+            "{point}"
+        );
     }
 }

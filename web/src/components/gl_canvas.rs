@@ -236,6 +236,12 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
                 let mut v = viewer.borrow_mut();
                 v.camera.set_preset(p);
                 v.dirty = true;
+            } else if e.key().eq_ignore_ascii_case("s") {
+                // "Schnitt"/"section": the stock cut open through the tool.
+                e.prevent_default();
+                let mut v = viewer.borrow_mut();
+                v.section = !v.section;
+                v.dirty = true;
             }
         })
     };

@@ -168,6 +168,19 @@ pub fn view3d(props: &View3dProps) -> Html {
             redraw.set(!*redraw);
         })
     };
+    // The "Schnitt" switch: the stock cut open through the tool, the half towards the viewer
+    // left out (also the `s` key on the view).
+    let section = viewer.borrow().section;
+    let toggle_section = {
+        let viewer = viewer.clone();
+        let redraw = redraw.clone();
+        Callback::from(move |_: MouseEvent| {
+            let mut v = viewer.borrow_mut();
+            v.section = !v.section;
+            v.dirty = true;
+            redraw.set(!*redraw);
+        })
+    };
     let toggle = |i: usize| {
         let triads = triads.clone();
         Callback::from(move |_: Event| {
@@ -183,7 +196,7 @@ pub fn view3d(props: &View3dProps) -> Html {
         <section class="view-pane" aria-label={l.t("3D-Ansicht", "3D view")} data-ghost={ghost}>
             <style>{ STYLE }</style>
             <GlCanvas lang={l} viewer={SharedViewer(viewer.clone())} class="view3d"
-                label={l.t("Maschine in 3D (ziehen, Umschalt, Rad, 1–4)", "Machine in 3D (drag, shift, wheel, 1–4)")} />
+                label={l.t("Maschine in 3D (ziehen, Umschalt, Rad, 1–4, S Schnitt)", "Machine in 3D (drag, shift, wheel, 1–4, S section)")} />
             <div class="view-tools">
                 <div class="view-presets" role="group" aria-label={l.t("Ansichten", "Views")}>
                     { for VIEWS.iter().map(|&(p, key, de, en)| html! {
@@ -192,6 +205,9 @@ pub fn view3d(props: &View3dProps) -> Html {
                     <button type="button" data-view="work" aria-pressed={if follow { "true" } else { "false" }}
                         title={l.t("Rohteil und Werkzeug im Bild halten", "Keep the blank and the tool in view")}
                         onclick={toggle_follow}>{ l.t("Werkstück", "Workpiece") }</button>
+                    <button type="button" data-view="section" aria-pressed={if section { "true" } else { "false" }}
+                        title={l.t("Rohteil aufgeschnitten durch das Werkzeug (Taste S)", "The stock cut open through the tool (key S)")}
+                        onclick={toggle_section}>{ l.t("Schnitt", "Section") }</button>
                 </div>
                 <div class="view-triads" role="group" aria-label={l.t("Koordinatensysteme", "Coordinate systems")}>
                     { for TRIAD_SWITCHES.iter().enumerate().map(|(i, &(key, de, en))| html! {

@@ -63,6 +63,8 @@ pub struct Viewer {
     pub in_run: bool,
     /// What the "Werkstück" camera frames: the blank's corners and the tool, M-CS.
     pub work_points: Vec<glam::Vec3>,
+    /// The "Schnitt" switch: the stock is drawn cut open through the tool.
+    pub section: bool,
     fallback: Option<Rc<Machine>>,
 }
 
@@ -88,6 +90,7 @@ impl Viewer {
             follow: false,
             in_run: false,
             work_points: Vec::new(),
+            section: false,
             fallback: None,
         }
     }
@@ -131,6 +134,7 @@ impl Viewer {
             self.camera.frame(&self.work_points, self.size.0 / self.size.1, WORK_MARGIN);
         }
         let Some(content) = &self.content else { return FrameOutcome::Idle };
+        renderer.section = self.section;
         let result = match content {
             Content::Machine { machine, state, triads } => {
                 renderer.paint(&Scene { machine, state, triads: *triads }, &self.camera)

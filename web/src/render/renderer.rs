@@ -35,6 +35,9 @@ struct LitUniforms {
     model_view: Option<WebGlUniformLocation>,
     projection: Option<WebGlUniformLocation>,
     colour: Option<WebGlUniformLocation>,
+    /// The section plane in view space, `(n, d)`: a fragment with n·p + d > 0 is not drawn
+    /// (zero, the default, draws everything).
+    clip: Option<WebGlUniformLocation>,
 }
 
 /// Everything that lives in one GL context (rebuilt after a context loss).
@@ -72,6 +75,7 @@ impl Gpu {
             model_view: lit.uniform("u_model_view"),
             projection: lit.uniform("u_projection"),
             colour: lit.uniform("u_colour"),
+            clip: lit.uniform("u_clip"),
         };
         let line = Program::new(gl, include_str!("shaders/line.vert"), include_str!("shaders/line.frag"))?;
         let line_mvp = line.uniform("u_mvp");
@@ -107,6 +111,10 @@ pub struct Renderer {
     stock_model: Option<DAffine3>,
     /// The stock drawn is still behind the one asked for: paint another frame.
     stock_behind: bool,
+    /// Draw the stock cut open ([`schwenkbar_app::scene::pose::section_plane`]).
+    pub section: bool,
+    /// This frame's section plane (point, normal towards the viewer; W-CS), if any.
+    stock_clip: Option<(glam::DVec3, glam::DVec3)>,
 }
 
 /// The WebGL2 context of a canvas. Multisampling is asked for (the browser may ignore it)
@@ -182,6 +190,8 @@ impl Renderer {
             path,
             stock_model: None,
             stock_behind: false,
+            section: false,
+            stock_clip: None,
         })
     }
 
@@ -251,6 +261,9 @@ impl Renderer {
         let path = (p.workpiece * wcs, scene.state.toolpath_drawn.unwrap_or(usize::MAX));
         self.stock_model = None;
         self.stock_behind = false;
+        self.stock_clip = self
+            .section
+            .then(|| schwenkbar_app::scene::pose::section_plane(scene.machine, s, camera.eye().as_dvec3()));
         if let (Some(shape), Some(gpu)) = (&s.stock, &mut self.gpu) {
             // This frame's share of cutting towards the stock asked for; only changed tiles are
             // meshed and uploaded again.
@@ -290,6 +303,7 @@ impl Renderer {
         toolpath: Option<(DAffine3, usize)>,
     ) -> Result<Vec<ScreenLabel>, RenderError> {
         let stock_model = self.stock_model.take();
+        let stock_clip = self.stock_clip.take();
         let gl = &self.gl;
         if gl.is_context_lost() {
             return Err(RenderError::ContextLost);
@@ -315,6 +329,12 @@ impl Renderer {
         if let Some(model) = stock_model {
             let mv = view * mat4(&model);
             gl.uniform_matrix4fv_with_f32_array(gpu.lit_u.model_view.as_ref(), false, &mv.to_cols_array());
+            if let Some((point, normal)) = stock_clip {
+                // The plane carried into view space (a rigid motion: normals turn with it).
+                let p = mv.transform_point3(point.as_vec3());
+                let n = mv.transform_vector3(normal.as_vec3()).normalize_or_zero();
+                gl.uniform4f(gpu.lit_u.clip.as_ref(), n.x, n.y, n.z, -n.dot(p));
+            }
             gl.uniform4f(gpu.lit_u.colour.as_ref(), BLANK[0], BLANK[1], BLANK[2], 1.0);
             for t in &gpu.stock {
                 t.tris.draw(0, t.raw);
@@ -323,6 +343,7 @@ impl Renderer {
             for t in &gpu.stock {
                 t.tris.draw(t.raw, t.all - t.raw);
             }
+            gl.uniform4f(gpu.lit_u.clip.as_ref(), 0.0, 0.0, 0.0, 0.0);
         }
 
         if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {

@@ -5,6 +5,7 @@ in vec3 v_normal;
 in vec3 v_view_pos;
 
 uniform vec4 u_colour;
+uniform vec4 u_clip;
 
 out vec4 out_colour;
 
@@ -12,6 +13,7 @@ const vec3 KEY = normalize(vec3(-0.45, 0.65, 0.62));
 const vec3 FILL = normalize(vec3(0.7, -0.2, 0.5));
 
 void main() {
+  if (dot(u_clip.xyz, v_view_pos) + u_clip.w > 0.0) discard;
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
   vec3 v = normalize(-v_view_pos);
