@@ -4,7 +4,7 @@
 Reads README.md, ARCHITECTURE.md and USAGE.md; every `code span` that is a path with a slash
 (`core/src/sim.rs`, `tests/tests/browser_*.rs`, `sim/cycles/{drill,face}.rs`) must name at least
 one file or folder of the repository, relative to its root. Built output (`dist/`, `target/`) and
-URLs are not the repository's and are skipped. Exits 1 and lists what is missing.
+URLs are not the repository's and are skipped (`dist-single/` too: `scripts/single-file.sh` makes it). Exits 1 and lists what is missing.
 """
 
 import glob
@@ -14,7 +14,7 @@ import sys
 
 DOCS = ["README.md", "ARCHITECTURE.md", "USAGE.md"]
 PATH = re.compile(r"^\.{0,2}/?[\w.*{},-]+(/[\w.*{},-]*)+$")
-SKIP = ("dist/", "target/", "http:", "https:", "/tmp/", "/usr/", "~/")
+SKIP = ("dist/", "dist-single/", "target/", "http:", "https:", "/tmp/", "/usr/", "~/")
 
 
 def expand(path):
