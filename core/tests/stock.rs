@@ -100,12 +100,18 @@ fn drill_square_to_a_plane_tilted_spb15() {
     assert!(c.notes.is_empty(), "{:?}", c.notes);
 }
 
-#[test]
-fn face_mill_pass_over_the_tilted_plane_is_a_prism() {
-    let src = format!(
+/// One pass of the face mill (tool 16) 2 mm below the plane tilted SPB+15 through the blank's
+/// top edge, across the whole blank.
+fn face_mill_15() -> String {
+    format!(
         "{BLANK}TOOL CALL 16 Z S5000 F500\nL Z+0 R0 FMAX M91\nPLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX\n\
          L X-40 Y+50 Z+50 R0 FMAX\nL Z-2 F500\nL X+140\nL Z+50 FMAX\nM30\n"
-    );
+    )
+}
+
+#[test]
+fn face_mill_pass_over_the_tilted_plane_is_a_prism() {
+    let src = face_mill_15();
     let (_, _, c) = run(&src, StockOptions::default());
     // Removed: the blank above z' = −2 (x·sin15 + z·cos15 ≥ −2) within |y − 50| ≤ 25; for each
     // x the depth below z = 0 is (2 + x·sin15)/cos15 (< 40 on the blank), so the volume is
@@ -565,10 +571,7 @@ fn planning_in_shares_gives_the_cuts_of_planning_at_once() {
 /// (sin15, 0, cos15), within 3°.
 #[test]
 fn the_ends_on_a_tilted_face_carry_the_faces_normal() {
-    let src = format!(
-        "{BLANK}TOOL CALL 16 Z S5000 F500\nL Z+0 R0 FMAX M91\nPLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX\n\
-         L X-40 Y+50 Z+50 R0 FMAX\nL Z-2 F500\nL X+140\nL Z+50 FMAX\nM30\n"
-    );
+    let src = face_mill_15();
     let (_, _, c) = run(&src, StockOptions::default());
     let mesh = StockMesh::of(&c.final_stock().expect("stock"));
     let plane = tilt();

@@ -158,29 +158,23 @@ pub fn view3d(props: &View3dProps) -> Html {
     };
     // The "Werkstück" camera: frames the blank and the tool, and keeps them framed.
     let follow = viewer.borrow().follow;
-    let toggle_follow = {
+    // A switch of the viewer's: flips it, paints again and renders the toolbar again.
+    let switch = |flag: fn(&mut Viewer) -> &mut bool| {
         let viewer = viewer.clone();
         let redraw = redraw.clone();
         Callback::from(move |_: MouseEvent| {
             let mut v = viewer.borrow_mut();
-            v.follow = !v.follow;
+            let on = flag(&mut v);
+            *on = !*on;
             v.dirty = true;
             redraw.set(!*redraw);
         })
     };
+    let toggle_follow = switch(|v| &mut v.follow);
     // The "Schnitt" switch: the stock cut open through the tool, the half towards the viewer
     // left out (also the `s` key on the view).
     let section = viewer.borrow().section;
-    let toggle_section = {
-        let viewer = viewer.clone();
-        let redraw = redraw.clone();
-        Callback::from(move |_: MouseEvent| {
-            let mut v = viewer.borrow_mut();
-            v.section = !v.section;
-            v.dirty = true;
-            redraw.set(!*redraw);
-        })
-    };
+    let toggle_section = switch(|v| &mut v.section);
     let toggle = |i: usize| {
         let triads = triads.clone();
         Callback::from(move |_: Event| {
