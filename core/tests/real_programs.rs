@@ -150,6 +150,36 @@ fn jumps_and_calls_to_a_label_written_without_a_blank() {
 }
 
 #[test]
+fn an_old_controls_empty_words_are_words_not_programmed() {
+    // TNC 155/355 listings print `R F M` where nothing was entered: the same block without them.
+    same("L X+32.000 Y+0.000 R F5000 M13", "L X+32 Y+0 F5000 M13");
+    same("L Y+6.500 R F M", "L Y+6.5");
+    same("CYCL CALL M", "CYCL CALL");
+    same("CALL LBL 1 REP", "CALL LBL 1");
+    // … but a value after a blank and F's own MAX and AUTO stay the words they are.
+    same("L X+1 F MAX", "L X+1 FMAX");
+    same("L X+1 RL F AUTO", "L X+1 RL F AUTO");
+    let (_, d) = parse("1 L X+1 F M3\n");
+    assert!(d.is_empty(), "{d:?}");
+    let (_, d) = parse("1 L X+1 R\n");
+    assert!(d.is_empty(), "{d:?}");
+    // The feed and the radius compensation stay as they were: 5000 mm/min after `F`, RL after `R`.
+    let src = "0 BEGIN PGM OLD MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+2 R0 F5000\n\
+               3 L X+10 R F M\n4 L Y+10 RL F200\n5 L X+20 R F M\n6 L Z+50 R0 F M\n7 END PGM OLD MM\n";
+    let (program, sim) = run(src);
+    assert_eq!(after(&program, &sim, 3).feed, 5000.0);
+    let s5 = after(&program, &sim, 5);
+    assert_eq!(s5.feed, 200.0);
+    // With RL kept the tool centre stands the radius left of X+20 Y+10; with R0 it would not.
+    let tip = |src: &str| {
+        let (p, s) = run(src);
+        after(&p, &s, 5).tip_wcs
+    };
+    assert_eq!(s5.tip_wcs, tip(&src.replace("5 L X+20 R F M", "5 L X+20 RL")));
+    assert_ne!(s5.tip_wcs, tip(&src.replace("5 L X+20 R F M", "5 L X+20 R0")));
+}
+
+#[test]
 fn m140_mb_and_the_feed_of_m128_belong_to_their_m_function() {
     same("L M140 MB MAX", "L M140 MB MAX");
     same("M140 MB MAX", "M140 MB MAX");

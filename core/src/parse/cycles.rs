@@ -11,7 +11,7 @@ use nom::combinator::{map, value};
 use nom::sequence::terminated;
 
 use super::words::{
-    Step, at_boundary, axis_word, boundary, feed, keyword, m_function, run, sp, uint, word_value,
+    Step, at_boundary, axis_word, boundary, empty_word, feed, keyword, m_function, run, sp, uint, word_value,
 };
 use crate::ast::{
     Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, CycleValue, OldCycleData, OldCycleWord,
@@ -133,6 +133,10 @@ pub(super) fn cycle_other(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         }
         cx.m.clear();
         while !i.is_empty() {
+            if let Some(r) = empty_word(i, b"M") {
+                i = sp(r);
+                continue;
+            }
             match m_function(i) {
                 Ok((r, m)) => {
                     cx.m.push(m);

@@ -75,7 +75,10 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let r = sp(r);
     let mut rep = None;
     let mut rest = r;
-    if let Some(after) = r.strip_prefix("REP") {
+    // `REP` with no count: an old control's empty word (`words::empty_word`), no repetition.
+    if let Some(after) = keyword(r, "REP").filter(|a| sp(a).is_empty()) {
+        rest = sp(after);
+    } else if let Some(after) = r.strip_prefix("REP") {
         let param = q_param(sp(after)).filter(|_| crate::unconfirmed::REP_FROM_PARAMETER);
         let count = match param {
             Some(q) => q.map(|(r, index)| (r, Value::Param { index, negate: false })),

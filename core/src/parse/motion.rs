@@ -1,11 +1,12 @@
 //! Path blocks: straight lines, arcs, polar moves, rounding and chamfer, lone M functions.
-//!   path := (L|CC|C|CR|CT|LP|CP) { [I]axis±v | [I]PR v | [I]PA v | R v | DR± | R0|RL|RR | feed | Mn }
+//!   path := (L|CC|C|CR|CT|LP|CP) { [I]axis±v | [I]PR v | [I]PA v | R v | DR± | R0|RL|RR | feed | Mn | R|F|M }
+//!   (a lone R, F or M is an old control's empty word: see `words::empty_word`)
 //!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
 //!   after M140: [MB (MAX|v)]      after M128: [F v]
 
 use super::Cx;
 use super::words::{
-    Step, Stop, at_boundary, axis_word, feed, hard, keyword, m_function, sign, sp, word_value,
+    Step, Stop, at_boundary, axis_word, empty_word, feed, hard, keyword, m_function, sign, sp, word_value,
 };
 use crate::ast::{BlockBody, Line, MWords, Motion, PolarWord, RadiusComp};
 use crate::diag::{DiagCode, Expected};
@@ -87,6 +88,10 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
     let mut i = sp(rest);
     while !i.is_empty() {
         let at = i;
+        if let Some(r) = empty_word(i, b"RFM") {
+            i = sp(r);
+            continue;
+        }
         if let Ok((r, m)) = m_function(i) {
             w.first_m.get_or_insert(at);
             cx.m.push(m);

@@ -192,6 +192,28 @@ pub(crate) fn m_function(i: &str) -> Step<'_, u32> {
     if at_boundary(rest) { Ok((rest, m)) } else { failure(rest, Expected::Blank) }
 }
 
+/// An old control's empty word: TNC 155/355 listings print the dialog's words with no value where
+/// the programmer entered nothing (`L X+32,000 R F5000 M`, `L Y+6,500 R F M`, `CYCL CALL M`).
+/// Nothing was programmed, so the word is read as absent (the radius compensation and the feed
+/// stay as they were, no M function). The rest after the letter if `i` is one of `letters`
+/// standing alone: followed by the end or by another word, not by a value written after a
+/// blank (`F 500`, `R 5`) nor by `F`'s own `MAX` or `AUTO` (`F MAX`).
+pub(crate) fn empty_word<'a>(i: &'a str, letters: &[u8]) -> Option<&'a str> {
+    // The first byte is one of the ASCII `letters`, so slicing after it is on a char boundary.
+    if !letters.contains(i.as_bytes().first()?) {
+        return None;
+    }
+    let rest = &i[1..];
+    if !at_boundary(rest) {
+        return None;
+    }
+    let next = space0::<_, ()>(rest).map_or(rest, |(r, _)| r);
+    let another_word = next.starts_with(|c: char| c.is_ascii_alphabetic() && c != 'Q')
+        && keyword(next, "MAX").is_none()
+        && keyword(next, "AUTO").is_none();
+    (next.is_empty() || another_word).then_some(rest)
+}
+
 /// `+` or `-` directly after a word (`DR+`, `SEQ-`).
 pub(crate) fn sign(i: &str) -> Step<'_, Sign> {
     match run(one_of("+-"), i) {
