@@ -1,6 +1,7 @@
 //! Whole-process figures of the release `schwenkbar` (issue 16 budgets): `check` on the
 //! 1,000,000-block program (≥ 200 MB/s: read, parse, report) and `run` on the 100,000-block
-//! program (table and `--json`, output to /dev/null). Writes the generated programs next to the
+//! program (table and `--json`, output to /dev/null), and `run` on 100,000 moves inside a blank
+//! (issue 32, [`sample::moves_in_blank`]). Writes the generated programs next to the
 //! binary (`target/release/`) and prints figures, best of 3; it does not pass or fail.
 //! Run: `scripts/bench.sh`, or `cargo build --release -p schwenkbar` and then
 //! `cargo run --release -p schwenkbar --example bench_cli`.
@@ -26,8 +27,11 @@ fn best_of_3(exe: &Path, args: &[&str]) -> (f64, bool) {
 }
 
 fn write_program(dir: &Path, blocks: usize) -> PathBuf {
-    let path = dir.join(format!("bench_cam_{blocks}.h"));
-    if let Err(e) = std::fs::write(&path, sample::cam_program(blocks)) {
+    write(dir.join(format!("bench_cam_{blocks}.h")), &sample::cam_program(blocks))
+}
+
+fn write(path: PathBuf, text: &str) -> PathBuf {
+    if let Err(e) = std::fs::write(&path, text) {
         eprintln!("cannot write {}: {e}", path.display());
         std::process::exit(2);
     }
@@ -65,4 +69,14 @@ fn main() {
         let (secs, ok) = best_of_3(&exe, &args);
         println!("run 100,000 blocks ({what}): {:.1} ms{}", secs * 1e3, if ok { "" } else { " FAILED" });
     }
+
+    // Issue 32: every move inside the blank, near the table (the collision check's worst case).
+    let blank = write(dir.join("bench_blank_100000.h"), &sample::moves_in_blank(100_000));
+    let file = blank.to_string_lossy();
+    let (secs, ok) = best_of_3(&exe, &["run", &file, "--machine", "bc-head-table"]);
+    println!(
+        "run 100,000 moves inside a 200x200x50 blank (bc-head-table): {:.1} ms{}",
+        secs * 1e3,
+        if ok { "" } else { " FAILED" }
+    );
 }

@@ -47,3 +47,30 @@ pub fn cam_program(blocks: usize) -> String {
     }
     out
 }
+
+/// `moves` straight moves `L X… Y… Z… F1000` to pseudo-random points inside a 200×200×50 blank
+/// (tool tip 5 mm above its floor at the lowest), the collision check's worst case: every move
+/// crosses the part near the table (issue 32's comparison with the peer). Deterministic
+/// (xorshift64*, a fixed seed), so every machine runs the same program.
+#[must_use]
+pub fn moves_in_blank(moves: usize) -> String {
+    let mut out = String::with_capacity(moves.saturating_mul(44) + 256);
+    out.push_str(
+        "0 BEGIN PGM BLANK100K MM\n1 BLK FORM 0.1 Z X-100 Y-100 Z-50\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
+         3 TOOL CALL 1 Z S5000\n4 L Z+10 R0 FMAX M3\n",
+    );
+    let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+    let mut next = |lo: f64, hi: f64| {
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        let r = state.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11;
+        lo + (hi - lo) * (r as f64 / (1u64 << 53) as f64)
+    };
+    for k in 0..moves {
+        let (x, y, z) = (next(-100.0, 100.0), next(-100.0, 100.0), next(-45.0, 0.0));
+        let _ = writeln!(out, "{} L X{x:+.3} Y{y:+.3} Z{z:+.3} F1000", k + 5);
+    }
+    let _ = writeln!(out, "{} L Z+50 R0 FMAX M30\n{} END PGM BLANK100K MM", moves + 5, moves + 6);
+    out
+}

@@ -478,7 +478,7 @@ impl Simulation {
             return None;
         }
         let n = self.options.checkpoint_interval;
-        let mut it = self.checkpoints.get(step / n)?.clone();
+        let mut it = self.checkpoints.get(step / n)?.clone().replaying();
         let cx = interp::Cx { program, machine: &self.machine, options: &self.options, labels: &self.labels };
         while it.step_count < step {
             it.step(&cx, None).ok()?;
@@ -497,7 +497,8 @@ impl Simulation {
     /// it (a long listing in parts).
     pub fn states_from<'a>(&'a self, program: &'a Program, first: usize) -> impl Iterator<Item = State> + 'a {
         let cx_ok = program.blocks.len() == self.blocks;
-        let mut it = self.checkpoints.get(first / self.options.checkpoint_interval).cloned();
+        let mut it =
+            self.checkpoints.get(first / self.options.checkpoint_interval).cloned().map(Interp::replaying);
         let mut step = first;
         std::iter::from_fn(move || {
             if !cx_ok || step >= self.records.len() {

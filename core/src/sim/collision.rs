@@ -83,6 +83,14 @@ pub enum Placed {
 }
 
 impl Placed {
+    /// The box that holds it: itself, or a cylinder's bounding box.
+    #[must_use]
+    pub fn bound(&self) -> Obb {
+        match *self {
+            Placed::Box(o) | Placed::Cylinder { bound: o, .. } => o,
+        }
+    }
+
     /// A cylinder from the centre of one end face, the unit direction to the other, radius and
     /// height.
     #[must_use]
@@ -154,18 +162,60 @@ fn obb_gap(a: &Obb, b: &Obb) -> f64 {
     widest
 }
 
+/// The widest separating-axis gap between box `a` swept by the translation `d` (every point of
+/// `a + f·d`, 0 ≤ f ≤ 1) and box `b`; a lower bound on their distance all along the sweep.
+/// The swept box is the zonotope of `a`'s three edges and `d`, so the candidate axes are the
+/// face normals of both (`a`'s axes, `a`'s axes × `d`, `b`'s axes) and the cross products of
+/// their edge directions (`a`'s axes × `b`'s axes, `d` × `b`'s axes): the separating-axis theorem
+/// for convex polyhedra (Ericson §4.4.1, §5.5.7 on moving boxes) makes the test exact. `d` adds
+/// `|d·l|/2` to the projected radius of `a`, whose centre moves to the middle of the sweep.
+/// Stops at the face axes when they already part the two by more than [`RESOLUTION`].
+#[must_use]
+pub fn swept_obb_gap(a: &Obb, d: DVec3, b: &Obb) -> f64 {
+    let half_d = 0.5 * d;
+    let t = b.center - (a.center + half_d);
+    let ax = [a.axes.x_axis, a.axes.y_axis, a.axes.z_axis];
+    let bx = [b.axes.x_axis, b.axes.y_axis, b.axes.z_axis];
+    let gap = |l: DVec3| {
+        let ra = a.half.x * ax[0].dot(l).abs()
+            + a.half.y * ax[1].dot(l).abs()
+            + a.half.z * ax[2].dot(l).abs()
+            + half_d.dot(l).abs();
+        let rb =
+            b.half.x * bx[0].dot(l).abs() + b.half.y * bx[1].dot(l).abs() + b.half.z * bx[2].dot(l).abs();
+        t.dot(l).abs() - ra - rb
+    };
+    let mut widest = f64::NEG_INFINITY;
+    for k in 0..3 {
+        widest = widest.max(gap(ax[k])).max(gap(bx[k]));
+    }
+    // Machine parts mostly stand apart along a face axis: then the other axes are not needed
+    // (any separating axis gives a lower bound).
+    if widest > RESOLUTION {
+        return widest;
+    }
+    for v in bx {
+        for u in ax.into_iter().chain([d]) {
+            if let Some(l) = u.cross(v).try_normalize() {
+                widest = widest.max(gap(l));
+            }
+        }
+    }
+    for u in ax {
+        if let Some(l) = u.cross(d).try_normalize() {
+            widest = widest.max(gap(l));
+        }
+    }
+    widest
+}
+
 /// A lower bound on the distance of two placed bodies (0 or less when they may touch): the
 /// widest separating-axis gap of their boxes (a cylinder's bounding box), and for two cylinders
 /// also their capsules' distance. Each shape lies inside what is measured, so no bound exceeds
 /// the true distance.
 #[must_use]
 pub fn separation(a: &Placed, b: &Placed) -> f64 {
-    let boxed = |p: &Placed| match *p {
-        Placed::Box(o) => o,
-        Placed::Cylinder { bound, .. } => bound,
-    };
-    let (oa, ob) = (boxed(a), boxed(b));
-    let sat = obb_gap(&oa, &ob);
+    let sat = obb_gap(&a.bound(), &b.bound());
     match (a, b) {
         (Placed::Cylinder { capsule: c, .. }, Placed::Cylinder { capsule: d, .. }) => {
             sat.max(segment_segment_distance(c.a, c.b, d.a, d.b) - c.radius - d.radius)
@@ -204,6 +254,14 @@ pub fn segment_segment_distance(p1: DVec3, q1: DVec3, p2: DVec3, q2: DVec3) -> f
         }
     };
     ((p1 + d1 * s) - (p2 + d2 * t)).length()
+}
+
+/// Distance of point `p` from the segment `a`–`b`.
+fn point_segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let t =
+        if ab.length_squared() > 0.0 { ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+    (a + ab * t - p).length()
 }
 
 /// Distance of a point from a box.
@@ -547,13 +605,41 @@ impl Bodies {
         clear.spent = 0.0;
         clear.at = None;
         let mut at_end: Option<Vec<(Affine, Placed)>> = None;
+        // With the rotary axes standing still the table frames stand still and the head-side
+        // frame (L + H) only moves straight by the linear axes' travel: every pair's motion is
+        // a translation, tested whole by the swept boxes (`swept_obb_gap`) before any halving.
+        let straight = rot == [0.0, 0.0]
+            && matches!(seg.path, SegmentPath::Linear | SegmentPath::Stay { .. } | SegmentPath::Tcpm(_));
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
             let rate = rate_of(a) + rate_of(b);
             if known && rate < clear.gaps[k] - RESOLUTION {
                 clear.gaps[k] -= rate;
                 continue;
             }
-            let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
+            let end = at_end.get_or_insert_with(|| {
+                // The frames turn only with the rotary axes: their poses are kept while those
+                // stand still (a straight move, the next one).
+                let axes = seg.axes_at(1.0);
+                let poses = match clear.poses {
+                    Some((rotary, poses)) if rotary == axes.rotary => poses,
+                    _ => {
+                        let poses = frame_poses(&self.kin, &MachineAxes { linear: DVec3::ZERO, ..axes });
+                        clear.poses = Some((axes.rotary, poses));
+                        poses
+                    }
+                };
+                let [t0, t1, t2, h] = poses;
+                self.place_with([t0, t1, t2, Affine { m: h.m, v: h.v + axes.linear }])
+            });
+            if straight {
+                // Pairs are (head side, table side): `a` came to its place at the end along
+                // the linear axes' travel, `b` stood still.
+                let swept = self.swept_gap(a, &end[a], b, &end[b], seg.start.linear - seg.end.linear);
+                if swept > RESOLUTION {
+                    clear.gaps[k] = swept;
+                    continue;
+                }
+            }
             let gap = self.gap(a, &end[a], b, &end[b]).max(separation(&end[a].1, &end[b].1));
             clear.gaps[k] = gap.max(0.0);
             // Clear along the whole motion when it moves them less than their gap at its end.
@@ -600,7 +686,11 @@ impl Bodies {
 
     /// Every body placed for `axes`, with its frame's pose.
     fn place_all(&self, axes: &MachineAxes) -> Vec<(Affine, Placed)> {
-        let poses = frame_poses(&self.kin, axes);
+        self.place_with(frame_poses(&self.kin, axes))
+    }
+
+    /// Every body placed by the poses of its frame ([`frame_poses`]).
+    fn place_with(&self, poses: [Affine; 4]) -> Vec<(Affine, Placed)> {
         self.solids
             .iter()
             .map(|s| {
@@ -621,6 +711,19 @@ impl Bodies {
         }
     }
 
+    /// A lower bound on the distance of body `a`, swept from where it is placed by the
+    /// translation `d`, from body `b` placed so: the bounding spheres first (the distance of
+    /// `b`'s centre from the segment `a`'s centre runs along), then the swept boxes.
+    fn swept_gap(&self, a: usize, pa: &(Affine, Placed), b: usize, pb: &(Affine, Placed), d: DVec3) -> f64 {
+        let (ka, kb) = (&self.solids[a], &self.solids[b]);
+        let (ca, cb) = (pa.0.apply(ka.centre), pb.0.apply(kb.centre));
+        let spheres = point_segment_distance(cb, ca, ca + d) - ka.radius - kb.radius;
+        if spheres > RESOLUTION {
+            return spheres;
+        }
+        spheres.max(swept_obb_gap(&pa.1.bound(), d, &pb.1.bound()))
+    }
+
     /// Whether bodies `a` and `b` placed so come within `margin`: [`Bodies::gap`] first, then the
     /// shapes.
     fn near(&self, a: usize, pa: &(Affine, Placed), b: usize, pb: &(Affine, Placed), margin: f64) -> bool {
@@ -638,12 +741,15 @@ pub struct Clearances {
     slack: f64,
     /// …and how far any pair may have moved since (`gaps` are that much too large).
     spent: f64,
+    /// The frames' poses ([`frame_poses`] with the linear axes at zero) for these rotary axes.
+    poses: Option<([f64; 2], [Affine; 4])>,
 }
 
 impl Clearances {
     /// Nothing known (the bodies changed).
     pub fn forget(&mut self) {
         self.at = None;
+        self.poses = None;
     }
 }
 

@@ -130,6 +130,8 @@ pub(crate) struct Interp {
     bodies: Option<Arc<Bodies>>,
     /// What the check knows from the motions before ([`Clearances`]).
     clearances: Clearances,
+    /// Re-running steps that ran once without a collision ([`Interp::replaying`]): no bodies.
+    replay: bool,
     /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
     unit: Unit,
 }
@@ -261,6 +263,7 @@ impl Interp {
             spat: None,
             bodies: None,
             clearances: Clearances::default(),
+            replay: false,
             unit: Unit::Mm,
         };
         it.rebuild_bodies(machine);

@@ -6,8 +6,20 @@ use super::*;
 impl Interp {
     /// The collision bodies for the machine, the active tool and the blank.
     pub(super) fn rebuild_bodies(&mut self, machine: &Machine) {
+        if self.replay {
+            return;
+        }
         self.bodies = Bodies::new(machine, &self.kin, self.tool.radius, self.blank.as_ref()).map(Arc::new);
         self.clearances.forget();
+    }
+
+    /// This interpreter for re-running steps of a run that executed them (a state, a listing,
+    /// the stock's plan): they ran once without a collision and run the same again (the
+    /// interpreter is deterministic), so their motions are not checked a second time.
+    pub(crate) fn replaying(mut self) -> Interp {
+        self.replay = true;
+        self.bodies = None;
+        self
     }
 
     /// The collision error of `seg` if two bodies touch along it (`clear`: what is known from
