@@ -107,7 +107,8 @@ pub use pick::{Pick, pick_machine, programmed_rotary_axes};
 pub use placed::{placed, written_blank};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
 pub use state::{
-    ActivePlane, Blank, Frame, Frames, ListingRow, Pivot, Spindle, SpindleDir, State, TiltSource, ToolState,
+    ActivePlane, Blank, Frame, Frames, ListingRow, Pivot, Spindle, SpindleDir, State, StepMotion, TiltSource,
+    ToolState,
 };
 pub use transform::{ActiveTransform, Level, Transforms};
 
@@ -496,6 +497,30 @@ impl Simulation {
     /// The states from step `first` on, in order, re-simulated once from the checkpoint before
     /// it (a long listing in parts).
     pub fn states_from<'a>(&'a self, program: &'a Program, first: usize) -> impl Iterator<Item = State> + 'a {
+        self.replay_from(program, first, move |it, step, executed, rec| {
+            it.state(program, &self.machine, step, executed, rec)
+        })
+    }
+
+    /// What the stock needs of each step from `first` on ([`StepMotion`]), re-simulated as
+    /// [`Simulation::states_from`] does without building the whole [`State`].
+    pub fn motions_from<'a>(
+        &'a self,
+        program: &'a Program,
+        first: usize,
+    ) -> impl Iterator<Item = StepMotion> + 'a {
+        self.replay_from(program, first, |it, step, _, rec| it.motion(step, rec))
+    }
+
+    /// The steps from `first` on, re-simulated once from the checkpoint before it, each made
+    /// into a `T` by `make` from the interpreter after the step, the step, whether it executed
+    /// its block and what it recorded.
+    fn replay_from<'a, T: 'a>(
+        &'a self,
+        program: &'a Program,
+        first: usize,
+        make: impl Fn(&Interp, usize, bool, Rec) -> T + 'a,
+    ) -> impl Iterator<Item = T> + 'a {
         let cx_ok = program.blocks.len() == self.blocks;
         let mut it =
             self.checkpoints.get(first / self.options.checkpoint_interval).cloned().map(Interp::replaying);
@@ -512,9 +537,9 @@ impl Simulation {
             }
             let mut rec = Rec::default();
             let executed = interp.step(&cx, Some(&mut rec)).ok()?;
-            let s = interp.state(program, &self.machine, step, executed, rec);
+            let made = make(interp, step, executed, rec);
             step += 1;
-            Some(s)
+            Some(made)
         })
     }
 

@@ -172,37 +172,42 @@ fn obb_gap(a: &Obb, b: &Obb) -> f64 {
 /// Stops at the face axes when they already part the two by more than [`RESOLUTION`].
 #[must_use]
 pub fn swept_obb_gap(a: &Obb, d: DVec3, b: &Obb) -> f64 {
-    let half_d = 0.5 * d;
-    let t = b.center - (a.center + half_d);
-    let ax = [a.axes.x_axis, a.axes.y_axis, a.axes.z_axis];
-    let bx = [b.axes.x_axis, b.axes.y_axis, b.axes.z_axis];
+    // In `b`'s frame (its axes the unit vectors): `a`'s axes are the columns of r, its centre
+    // at the middle of the sweep t, half the sweep h.
+    let bt = b.axes.transpose();
+    let r = bt * a.axes;
+    let t = bt * (a.center + 0.5 * d - b.center);
+    let h = bt * (0.5 * d);
+    let ax = [r.x_axis, r.y_axis, r.z_axis];
     let gap = |l: DVec3| {
         let ra = a.half.x * ax[0].dot(l).abs()
             + a.half.y * ax[1].dot(l).abs()
             + a.half.z * ax[2].dot(l).abs()
-            + half_d.dot(l).abs();
-        let rb =
-            b.half.x * bx[0].dot(l).abs() + b.half.y * bx[1].dot(l).abs() + b.half.z * bx[2].dot(l).abs();
-        t.dot(l).abs() - ra - rb
+            + h.dot(l).abs();
+        t.dot(l).abs() - ra - b.half.dot(l.abs())
     };
-    let mut widest = f64::NEG_INFINITY;
-    for k in 0..3 {
-        widest = widest.max(gap(ax[k])).max(gap(bx[k]));
+    // `b`'s face axes: the unit vectors, each projection one component.
+    let abs_r = [ax[0].abs(), ax[1].abs(), ax[2].abs()];
+    let reach = abs_r[0] * a.half.x + abs_r[1] * a.half.y + abs_r[2] * a.half.z + h.abs();
+    let mut widest = (t.abs() - reach - b.half).max_element();
+    for u in ax {
+        widest = widest.max(gap(u));
     }
     // Machine parts mostly stand apart along a face axis: then the other axes are not needed
     // (any separating axis gives a lower bound).
     if widest > RESOLUTION {
         return widest;
     }
-    for v in bx {
-        for u in ax.into_iter().chain([d]) {
+    let dl = bt * d;
+    for v in [DVec3::X, DVec3::Y, DVec3::Z] {
+        for u in ax.into_iter().chain([dl]) {
             if let Some(l) = u.cross(v).try_normalize() {
                 widest = widest.max(gap(l));
             }
         }
     }
     for u in ax {
-        if let Some(l) = u.cross(d).try_normalize() {
+        if let Some(l) = u.cross(dl).try_normalize() {
             widest = widest.max(gap(l));
         }
     }

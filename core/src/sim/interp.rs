@@ -35,8 +35,8 @@ mod tcpm;
 mod tilt;
 
 use super::{
-    ActivePlane, Blank, Frame, Frames, LabelKey, Pivot, SimOptions, Spindle, SpindleDir, State, TiltSource,
-    ToolState,
+    ActivePlane, Blank, Frame, Frames, LabelKey, Pivot, SimOptions, Spindle, SpindleDir, State, StepMotion,
+    TiltSource, ToolState,
 };
 
 /// What the run needs besides the interpreter state.

@@ -145,6 +145,30 @@ pub struct State {
     pub unit: crate::ast::Unit,
 }
 
+/// One replayed step as the stock plans it ([`super::Simulation::motions_from`]): the blank,
+/// the tool and the motions, without the rest of a [`State`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepMotion {
+    pub step: usize,
+    pub block: usize,
+    pub blank: Option<Blank>,
+    pub tool: ToolState,
+    pub segments: Vec<Segment>,
+}
+
+impl StepMotion {
+    /// How long the step's motion takes, seconds (sum of its segments).
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        duration(&self.segments)
+    }
+}
+
+/// How long `segments` take one after the other, seconds.
+fn duration(segments: &[Segment]) -> f64 {
+    segments.iter().map(|s| s.duration).sum()
+}
+
 /// One executed step as a listing shows it ([`simulate_listed`]): the same values as the
 /// step's [`State`].
 #[derive(Debug, Clone, PartialEq)]
@@ -174,7 +198,7 @@ impl State {
     /// How long the block's motion takes, seconds (sum of its segments).
     #[must_use]
     pub fn duration(&self) -> f64 {
-        self.segments.iter().map(|s| s.duration).sum()
+        duration(&self.segments)
     }
 
     /// The segment moving at `fraction` (0…1) of the block's motion time and how far into it;

@@ -6,7 +6,7 @@ use glam::DVec3;
 
 use crate::Text;
 use crate::ast::Program;
-use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, State, ToolState};
+use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, StepMotion, ToolState};
 
 use super::{Cutter, Removal, RowAt, Stamp, Stock, StockError};
 
@@ -278,7 +278,7 @@ impl Cutting {
         self.step_events.pop();
         let wanted = steps.min(sim.len().saturating_sub(p.next));
         let mut got = 0;
-        for state in sim.states_from(program, p.next).take(wanted) {
+        for state in sim.motions_from(program, p.next).take(wanted) {
             got += 1;
             self.step_events.push(self.events.len());
             if state.blank != p.blank {
@@ -378,7 +378,7 @@ impl Cutting {
     }
 
     /// The sweeps of one step's segments (see the module doc of [`super`]).
-    fn plan_step(&mut self, sim: &Simulation, state: &State, cutter: usize) {
+    fn plan_step(&mut self, sim: &Simulation, state: &StepMotion, cutter: usize) {
         let kin = Kin::new(&sim.machine, state.tool.length);
         let total = state.duration();
         let (step, block) = (state.step, state.block);

@@ -52,6 +52,17 @@ impl Interp {
         }
     }
 
+    /// What the stock needs of the step just run ([`StepMotion`]).
+    pub(crate) fn motion(&self, step: usize, rec: Rec) -> StepMotion {
+        StepMotion {
+            step,
+            block: self.last,
+            blank: self.blank,
+            tool: self.tool.clone(),
+            segments: rec.segments,
+        }
+    }
+
     /// Where the rotary axes stand (3D view): table axes moved by the table axes that carry
     /// them, head axes by the head axes nearer the bed, plus the linear axes.
     pub(super) fn pivots(&self, machine: &Machine) -> [Pivot; 2] {
