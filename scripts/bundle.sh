@@ -14,8 +14,10 @@ BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, with
 # the read-only data only the deferred code reads, 197, 309 (its lessons' first screens run most
 # of the trainer too) and 123 KB. The ceilings stop a
-# blow-up (or a page left whole by the split).
-COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-330}"
+# blow-up (or a page left whole by the split). The course's rose to 334 with the collision
+# check's swept test and the stock's light replay (issue 32) and the old controls' empty words
+# (issue 30): core code every page carries (330.7 KB measured with them).
+COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-334}"
 EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-160}"
 build_pages
 # The files a page loads: the page itself and what it references (trunk's hashed names).

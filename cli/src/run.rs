@@ -202,6 +202,11 @@ pub(crate) fn run(args: &Args) -> ExitCode {
     if sim.error.is_some() { ExitCode::from(1) } else { ExitCode::SUCCESS }
 }
 
+/// A length with its sign, at most 3 decimals (`+0`, `-40`, `+12.5`).
+fn signed(v: f64) -> String {
+    format!("{:+}", tidy(v, 3))
+}
+
 /// Rays the material check may cut when the stock is not written (about a second): a run that
 /// rapids into its blank early is checked in full, a long CAM program as far as this reaches,
 /// and where it stopped is said. `--stock-stl` cuts everything.
@@ -289,8 +294,16 @@ fn write_stock(
     std::fs::write(path, mesh.to_stl())?;
     let (min, max) = stock.bounds();
     let blank = (max - min).element_product();
+    // The box around what is left (W-CS, mm): how deep the part was cut, where it was cut away.
+    let left = stock.material_bounds().map_or_else(
+        || "nothing left".to_owned(),
+        |(lo, hi)| {
+            let range = |k: usize| format!("{}…{}", signed(lo[k]), signed(hi[k]));
+            format!("material left X{} Y{} Z{}", range(0), range(1), range(2))
+        },
+    );
     eprintln!(
-        "stock: {:.0} mm³ of {:.0} mm³ removed, {} mm rays, {} triangles",
+        "stock: {:.0} mm³ of {:.0} mm³ removed, {left}, {} mm rays, {} triangles",
         blank - stock.volume(),
         blank,
         tidy(stock.resolution(), 4),

@@ -279,3 +279,33 @@ fn run_says_a_swivel_with_the_tool_in_the_material_on_its_plane_block() {
     assert!(o.status.success());
     let _ = std::fs::remove_file(&path);
 }
+
+/// `--stock-stl`: the stock after the run as a binary STL (80-byte header, the triangle count,
+/// 50 bytes a triangle), and on stderr what was removed and the box around what is left. Two
+/// passes of the face mill (R 25) 2 mm deep over the whole 100 × 100 × 40 blank: 20,000 mm³
+/// (closed form), the material left from Z−40 to Z−2.
+#[test]
+fn run_writes_the_stock_and_says_what_is_left() {
+    let dir = std::env::temp_dir().join(format!("schwenkbar-stock-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let program = dir.join("face.h");
+    std::fs::write(
+        &program,
+        "0 BEGIN PGM FACE MM\n1 BLK FORM 0.1 Z X+0 Y+0 Z-40\n2 BLK FORM 0.2 X+100 Y+100 Z+0\n\
+         3 TOOL CALL 16 Z S5000 F500\n4 L X-40 Y+25 Z+50 R0 FMAX\n5 L Z-2 F500\n6 L X+140\n7 L Y+75\n\
+         8 L X-40\n9 L Z+50 FMAX\n10 END PGM FACE MM\n",
+    )
+    .expect("write");
+    let stl = dir.join("face.stl");
+    let (p, out) = (program.to_string_lossy().into_owned(), stl.to_string_lossy().into_owned());
+    let o = run(&["run", &p, "--machine", "ac-table", "--stock-stl", &out, "--stock-resolution", "1"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("stock: 20000 mm³ of 400000 mm³ removed"), "{err}");
+    assert!(err.contains("material left X+0…+100 Y+0…+100 Z-40…-2,"), "{err}");
+    let bytes = std::fs::read(&stl).expect("stl written");
+    let n = u32::from_le_bytes(bytes[80..84].try_into().expect("count")) as usize;
+    assert!(n > 0 && bytes.len() == 84 + 50 * n, "{} bytes for {n} triangles", bytes.len());
+    assert!(err.contains(&format!("{n} triangles")), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -262,6 +262,20 @@ impl Stock {
         (self.min, self.max)
     }
 
+    /// The box around the material left, W-CS (`None` when nothing is left): along each axis
+    /// the lowest and highest span end of the rays along that axis, exact to the cut there.
+    #[must_use]
+    pub fn material_bounds(&self) -> Option<(DVec3, DVec3)> {
+        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+        for (d, grid) in self.grids.iter().enumerate() {
+            for s in grid.iter().flat_map(Dexel::spans) {
+                lo[d] = lo[d].min(s.lo);
+                hi[d] = hi[d].max(s.hi);
+            }
+        }
+        lo.cmple(hi).all().then_some((lo, hi))
+    }
+
     /// The coarsest ray spacing, mm (the resolution asked for unless the blank was too big).
     #[must_use]
     pub fn resolution(&self) -> f64 {

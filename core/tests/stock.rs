@@ -4,7 +4,7 @@
 use glam::DVec3;
 use proptest::prelude::*;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
+use schwenkbar_core::sim::{Blank, SimOptions, Simulation, simulate};
 use schwenkbar_core::stock::{
     Cutting, Stock, StockCursor, StockMesh, StockNoteKind, StockOptions, TiledMesh,
 };
@@ -119,6 +119,29 @@ fn face_mill_pass_over_the_tilted_plane_is_a_prism() {
     let (s, co) = (15f64.to_radians().sin(), 15f64.to_radians().cos());
     let exact = 50.0 * (200.0 + 5000.0 * s) / co;
     within_one_percent(removed(&c), exact);
+}
+
+/// Two passes of the face mill (tool 16, R 25) 2 mm deep over the whole 100 × 100 blank, then
+/// an Ø10 hole 10 deep in the middle: the material left is the box from Z−40 to Z−2 (exact along Z: the
+/// Z rays end where the face mill left them), 20,000 mm³ removed by the face mill plus the hole.
+#[test]
+fn the_box_around_the_material_left_and_the_volume_removed() {
+    let blank = Blank { min: DVec3::new(0.0, 0.0, -40.0), max: DVec3::new(100.0, 100.0, 0.0) };
+    let untouched = Stock::new(&blank, 0.25).expect("stock");
+    assert_eq!(untouched.material_bounds(), Some(untouched.bounds()));
+    let src = format!(
+        "{BLANK}TOOL CALL 16 Z S5000 F500\nL X-40 Y+25 Z+50 R0 FMAX\nL Z-2 F500\nL X+140\nL Y+75\nL X-40\n\
+         L Z+50 FMAX\nTOOL CALL 1 Z S3000\nL X+50 Y+50 Z+10 R0 FMAX\nL Z-12 F200\nL Z+10 FMAX\nM30\n"
+    );
+    let (_, _, c) = run(&src, StockOptions::default());
+    let stock = c.final_stock().expect("stock");
+    let (lo, hi) = stock.material_bounds().expect("material left");
+    let close = |a: DVec3, b: DVec3| (a - b).abs().max_element() < 1e-9;
+    assert!(close(lo, DVec3::new(0.0, 0.0, -40.0)), "{lo}");
+    assert!(close(hi, DVec3::new(100.0, 100.0, -2.0)), "{hi}");
+    // Tool 1 (flat, R 5): a hole 10 deep below the milled face.
+    let hole = std::f64::consts::PI * 25.0 * 10.0;
+    within_one_percent(removed(&c), 20_000.0 + hole);
 }
 
 #[test]

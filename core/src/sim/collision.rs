@@ -621,21 +621,7 @@ impl Bodies {
                 clear.gaps[k] -= rate;
                 continue;
             }
-            let end = at_end.get_or_insert_with(|| {
-                // The frames turn only with the rotary axes: their poses are kept while those
-                // stand still (a straight move, the next one).
-                let axes = seg.axes_at(1.0);
-                let poses = match clear.poses {
-                    Some((rotary, poses)) if rotary == axes.rotary => poses,
-                    _ => {
-                        let poses = frame_poses(&self.kin, &MachineAxes { linear: DVec3::ZERO, ..axes });
-                        clear.poses = Some((axes.rotary, poses));
-                        poses
-                    }
-                };
-                let [t0, t1, t2, h] = poses;
-                self.place_with([t0, t1, t2, Affine { m: h.m, v: h.v + axes.linear }])
-            });
+            let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
             if straight {
                 // Pairs are (head side, table side): `a` came to its place at the end along
                 // the linear axes' travel, `b` stood still.
@@ -691,11 +677,7 @@ impl Bodies {
 
     /// Every body placed for `axes`, with its frame's pose.
     fn place_all(&self, axes: &MachineAxes) -> Vec<(Affine, Placed)> {
-        self.place_with(frame_poses(&self.kin, axes))
-    }
-
-    /// Every body placed by the poses of its frame ([`frame_poses`]).
-    fn place_with(&self, poses: [Affine; 4]) -> Vec<(Affine, Placed)> {
+        let poses = frame_poses(&self.kin, axes);
         self.solids
             .iter()
             .map(|s| {
@@ -746,15 +728,12 @@ pub struct Clearances {
     slack: f64,
     /// …and how far any pair may have moved since (`gaps` are that much too large).
     spent: f64,
-    /// The frames' poses ([`frame_poses`] with the linear axes at zero) for these rotary axes.
-    poses: Option<([f64; 2], [Affine; 4])>,
 }
 
 impl Clearances {
     /// Nothing known (the bodies changed).
     pub fn forget(&mut self) {
         self.at = None;
-        self.poses = None;
     }
 }
 
