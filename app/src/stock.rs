@@ -9,10 +9,12 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
+use glam::DVec3;
+use schwenkbar_core::number::localise;
 use schwenkbar_core::stock::{Cutting, StockCursor, StockOptions, TiledMesh};
 
 use crate::document::Document;
-use crate::i18n::Text;
+use crate::i18n::{Lang, Text};
 use crate::run::SimRef;
 
 /// The cutting work of one animation frame, in rays ([`schwenkbar_core::stock::Removal::work`],
@@ -38,6 +40,36 @@ struct Shown {
     pending: Option<StockCursor>,
     tiles: TiledMesh,
     mesh: Option<Rc<TiledMesh>>,
+    /// The figures of `cursor`'s stock and the version they were worked out for.
+    figures: Option<(u64, StockFigures)>,
+}
+
+/// What the stock shown has lost (issue 32: "how deep is this hole?"): the volume removed from
+/// the blank, mm³, and the box around the material left (W-CS, mm; `None`: nothing left).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StockFigures {
+    pub removed: f64,
+    pub left: Option<(DVec3, DVec3)>,
+}
+
+impl StockFigures {
+    /// The line under the 3D view: `Abgetragen 785,4 mm³ · Rest X+0…+100 Y+0…+100 Z−40…−2 mm`.
+    #[must_use]
+    pub fn line(&self, lang: Lang) -> String {
+        let mm = |v: f64| localise(format!("{:+}", (v * 10.0).round() / 10.0 + 0.0), lang).replace('-', "−");
+        let removed = localise(format!("{:.1}", self.removed.max(0.0)), lang);
+        let left = match self.left {
+            Some((lo, hi)) => {
+                let axes = ["X", "Y", "Z"]
+                    .iter()
+                    .enumerate()
+                    .map(|(k, a)| format!("{a}{}…{}", mm(lo[k]), mm(hi[k])));
+                format!("{} {} mm", lang.t("Rest", "left"), axes.collect::<Vec<_>>().join(" "))
+            }
+            None => lang.t("nichts übrig", "nothing left").to_owned(),
+        };
+        format!("{} {removed} mm³ · {left}", lang.t("Abgetragen", "Removed"))
+    }
 }
 
 /// The cuts of one simulation and where the view stands in them.
@@ -119,6 +151,7 @@ impl StockRef {
             let done = cutting.advance(pending, step, fraction, budget);
             if done {
                 at.cursor = at.pending.take().unwrap_or_default();
+                at.figures = None;
             }
             done
         } else {
@@ -134,6 +167,27 @@ impl StockRef {
             at.mesh = Some(Rc::new(at.tiles.clone()));
         }
         (at.mesh.clone(), done)
+    }
+
+    /// The figures of the stock the view shows now (`None` before a `BLK FORM`), worked out
+    /// again only when that stock changed.
+    #[must_use]
+    pub fn figures(&self) -> Option<StockFigures> {
+        let mut at = self.0.at.borrow_mut();
+        let version = at.cursor.version;
+        if let Some((v, f)) = at.figures
+            && v == version
+        {
+            return Some(f);
+        }
+        let stock = at.cursor.stock.as_ref()?;
+        let (min, max) = stock.bounds();
+        let f = StockFigures {
+            removed: (max - min).element_product() - stock.volume(),
+            left: stock.material_bounds(),
+        };
+        at.figures = Some((version, f));
+        Some(f)
     }
 
     /// What the stock says about step `step` (a rapid into the material), German and English.
@@ -178,6 +232,41 @@ mod tests {
         let (mesh, done) = stock.mesh_toward(step, fraction, usize::MAX);
         assert!(done, "without a budget the stock gets there at once");
         mesh
+    }
+
+    #[test]
+    fn the_figures_line_says_the_volume_and_the_box_left_in_the_language() {
+        let f = StockFigures {
+            removed: 785.398,
+            left: Some((DVec3::new(0.0, 0.0, -40.0), DVec3::new(100.0, 100.0, -2.04))),
+        };
+        assert_eq!(f.line(Lang::De), "Abgetragen 785,4 mm³ · Rest X+0…+100 Y+0…+100 Z−40…−2 mm");
+        assert_eq!(f.line(Lang::En), "Removed 785.4 mm³ · left X+0…+100 Y+0…+100 Z−40…−2 mm");
+        let gone = StockFigures { removed: 8000.0, left: None };
+        assert_eq!(gone.line(Lang::De), "Abgetragen 8000,0 mm³ · nichts übrig");
+    }
+
+    /// At the end of Musterprogramm 1 the view's figures are those of the whole run cut at once
+    /// by core (`Cutting::new`, a second way to the same stock), and before any cut nothing is
+    /// removed and the box is the blank.
+    #[test]
+    fn the_figures_are_the_shown_stocks() {
+        let (doc, sim) = musterprogramm1();
+        let stock = StockRef::of(&sim, &doc);
+        let before = step_of(&doc, &sim, 13) - 1;
+        mesh_at(&stock, before, 1.0);
+        let f0 = stock.figures().expect("a blank");
+        let blank = sim.0.state_at(&doc.program, before).and_then(|s| s.blank).expect("blank");
+        assert!(f0.removed.abs() < 1e-9 * (blank.max - blank.min).element_product(), "{f0:?}");
+        assert_eq!(f0.left, Some((blank.min, blank.max)));
+        let last = sim.0.len() - 1;
+        mesh_at(&stock, last, 1.0);
+        let f1 = stock.figures().expect("stock");
+        let whole = Cutting::new(&doc.program, &sim.0, StockOptions::default()).final_stock().expect("stock");
+        let (min, max) = whole.bounds();
+        assert!((f1.removed - ((max - min).element_product() - whole.volume())).abs() < 1e-6, "{f1:?}");
+        assert!(f1.removed > 1000.0, "{f1:?}");
+        assert_eq!(f1.left, whole.material_bounds());
     }
 
     #[test]

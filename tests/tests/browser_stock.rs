@@ -194,3 +194,41 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
     );
     c.remove();
 }
+
+/// Issue 32 item 6: in a program run the line under the 3D view says what the stock shown has
+/// lost and the box left, once the view has cut its way to the shown block; by block 13
+/// (cycle 232 mills the face) material is removed. The trainee reads it without a click.
+#[wasm_bindgen_test]
+async fn the_view_says_the_volume_removed_and_the_box_left() {
+    use schwenkbar_tests::browser::{clear_storage, inject_app_css, key_on, mount, next_frame, query};
+    clear_storage();
+    inject_app_css();
+    let root = mount().await;
+    key_on(&root, ".tnc", "F6").await;
+    let figures =
+        || query(&root, "[data-testid=stock-figures]").and_then(|e| e.text_content()).unwrap_or_default();
+    // Step on block by block (the view cutting a share per frame) until the line says material
+    // was removed: by block 13 at the latest; then the view may still be cutting its way there.
+    let removed = |t: &str| t.starts_with("Abgetragen ") && !t.starts_with("Abgetragen 0,0 ");
+    let mut text = String::new();
+    for _ in 0..30 {
+        for _ in 0..20 {
+            next_frame().await;
+        }
+        text = figures();
+        if removed(&text) {
+            break;
+        }
+        key_on(&root, ".tnc", "F2").await;
+    }
+    for _ in 0..1500 {
+        if removed(&text) {
+            break;
+        }
+        next_frame().await;
+        text = figures();
+    }
+    assert!(text.starts_with("Abgetragen ") && text.contains(" mm³ · Rest X"), "{text:?}");
+    assert!(!text.starts_with("Abgetragen 0,0 "), "block 13 milled the face: {text:?}");
+    clear_storage();
+}

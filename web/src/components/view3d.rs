@@ -96,6 +96,8 @@ pub fn view3d(props: &View3dProps) -> Html {
     let triads = if collision { contact_triads } else { normal_triads };
     // Renders the toolbar again when a button changed the viewer (the "Werkstück" switch).
     let redraw = use_state(|| false);
+    // The stock's figures under the picture, written by the viewer's frames (`Viewer::figures`).
+    let figures_ref = use_node_ref();
     {
         // One effect after every render (View3d renders only when its props or switches change)
         // instead of one per dependency: each `use_effect_with` costs bundle size, and the
@@ -104,8 +106,14 @@ pub fn view3d(props: &View3dProps) -> Html {
         let (machine, state, path, triads) =
             (props.machine.clone(), props.state.clone(), props.toolpath.0.clone(), *triads);
         let (in_run, typing) = (props.in_run, props.typing);
+        let (figures_ref, lang) = (figures_ref.clone(), props.lang);
         use_effect(move || {
             let mut v = viewer.borrow_mut();
+            if v.figures.as_ref().map(|f| f.1) != Some(lang) {
+                // A new language writes the line again at the next paint.
+                v.dirty = true;
+            }
+            v.figures = figures_ref.cast::<web_sys::HtmlElement>().map(|el| (el, lang));
             let run_changed = in_run != v.in_run;
             if run_changed {
                 v.in_run = in_run;
@@ -210,6 +218,7 @@ pub fn view3d(props: &View3dProps) -> Html {
                     }) }
                 </div>
             </div>
+            <output ref={figures_ref} class="stock-figures" data-testid="stock-figures" aria-live="polite"></output>
         </section>
     }
 }

@@ -13,6 +13,7 @@ use crate::render::draw_list::DrawList;
 use crate::render::gpu::RenderError;
 use crate::render::renderer::{Renderer, ScreenLabel};
 use crate::render::toolpath::PathPoint;
+use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::scene::{Scene, SceneState, Triads};
 
 /// What the viewer draws each frame it is dirty.
@@ -65,6 +66,12 @@ pub struct Viewer {
     pub work_points: Vec<glam::Vec3>,
     /// The "Schnitt" switch: the stock is drawn cut open through the tool.
     pub section: bool,
+    /// Where the stock's figures are written (the 3D view's line under the picture), in the
+    /// UI's language: filled here once the stock shown is cut, not by the component, whose
+    /// renders stop while the frames go on cutting.
+    pub figures: Option<(HtmlElement, Lang)>,
+    /// The figures' text written last.
+    figures_shown: String,
     fallback: Option<Rc<Machine>>,
 }
 
@@ -91,6 +98,8 @@ impl Viewer {
             in_run: false,
             work_points: Vec::new(),
             section: false,
+            figures: None,
+            figures_shown: String::new(),
             fallback: None,
         }
     }
@@ -148,6 +157,9 @@ impl Viewer {
                 self.paints += 1;
                 spread_labels(&mut labels);
                 self.place_labels(&labels);
+                if !self.dirty {
+                    self.show_figures();
+                }
                 FrameOutcome::Painted
             }
             Err(RenderError::ContextLost) => {
@@ -155,6 +167,21 @@ impl Viewer {
                 FrameOutcome::Failed(RenderError::ContextLost)
             }
             Err(e) => FrameOutcome::Failed(e),
+        }
+    }
+
+    /// Writes the figures of the stock shown (removed volume, the box left), or nothing when
+    /// no stock is drawn.
+    fn show_figures(&mut self) {
+        let Some((el, lang)) = &self.figures else { return };
+        let stock = match &self.content {
+            Some(Content::Machine { state, .. }) => state.stock.as_ref(),
+            _ => None,
+        };
+        let text = stock.and_then(|s| s.stock.figures()).map(|f| f.line(*lang)).unwrap_or_default();
+        if text != self.figures_shown {
+            el.set_text_content(Some(&text));
+            self.figures_shown = text;
         }
     }
 
