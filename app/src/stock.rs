@@ -10,7 +10,7 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use glam::DVec3;
-use schwenkbar_core::number::localise;
+use schwenkbar_core::number::{localise, tidy};
 use schwenkbar_core::stock::{Cutting, StockCursor, StockOptions, TiledMesh};
 
 use crate::document::Document;
@@ -56,7 +56,7 @@ impl StockFigures {
     /// The line under the 3D view: `Abgetragen 785,4 mm³ · Rest X+0…+100 Y+0…+100 Z−40…−2 mm`.
     #[must_use]
     pub fn line(&self, lang: Lang) -> String {
-        let mm = |v: f64| localise(format!("{:+}", (v * 10.0).round() / 10.0 + 0.0), lang).replace('-', "−");
+        let mm = |v: f64| localise(format!("{:+}", tidy(v, 1)), lang).replace('-', "−");
         let removed = localise(format!("{:.1}", self.removed.max(0.0)), lang);
         let left = match self.left {
             Some((lo, hi)) => {

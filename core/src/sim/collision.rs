@@ -261,14 +261,6 @@ pub fn segment_segment_distance(p1: DVec3, q1: DVec3, p2: DVec3, q2: DVec3) -> f
     ((p1 + d1 * s) - (p2 + d2 * t)).length()
 }
 
-/// Distance of point `p` from the segment `a`–`b`.
-fn point_segment_distance(p: DVec3, a: DVec3, b: DVec3) -> f64 {
-    let ab = b - a;
-    let t =
-        if ab.length_squared() > 0.0 { ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
-    (a + ab * t - p).length()
-}
-
 /// Distance of a point from a box.
 #[must_use]
 pub fn point_obb_distance(p: DVec3, o: &Obb) -> f64 {
@@ -704,7 +696,7 @@ impl Bodies {
     fn swept_gap(&self, a: usize, pa: &(Affine, Placed), b: usize, pb: &(Affine, Placed), d: DVec3) -> f64 {
         let (ka, kb) = (&self.solids[a], &self.solids[b]);
         let (ca, cb) = (pa.0.apply(ka.centre), pb.0.apply(kb.centre));
-        let spheres = point_segment_distance(cb, ca, ca + d) - ka.radius - kb.radius;
+        let spheres = segment_segment_distance(ca, ca + d, cb, cb) - ka.radius - kb.radius;
         if spheres > RESOLUTION {
             return spheres;
         }
