@@ -88,6 +88,10 @@ pub enum DiagCode {
         end: String,
     },
     MissingEndPgm,
+    /// `BEGIN PGM  MM`: no program name.
+    PgmNameMissing,
+    /// `END PGM name` without MM or INCH.
+    EndPgmUnitMissing,
     /// A well-formed block of a kind the trainer does not model.
     UnknownBlock,
     /// `CYCL DEF … ~` not followed by its parameter lines (the manual prints it that way).
@@ -278,6 +282,14 @@ impl DiagCode {
                 format!("Wrong program name: END PGM {end} for BEGIN PGM {begin}"),
             ),
             DiagCode::MissingEndPgm => Text::new("END PGM fehlt", "END PGM missing"),
+            DiagCode::PgmNameMissing => Text::new(
+                "Programmname fehlt: gelesen als Programm ohne Namen (die Steuerung schreibt den Dateinamen)",
+                "Program name missing: read as a program without a name (the control writes the file name)",
+            ),
+            DiagCode::EndPgmUnitMissing => Text::new(
+                "Maßeinheit fehlt: END PGM gelesen mit der Einheit von BEGIN PGM",
+                "Unit missing: END PGM read with the unit of BEGIN PGM",
+            ),
             DiagCode::UnknownBlock => Text::new("Unbekannter NC-Satz", "Unknown NC block"),
             DiagCode::CycleParamsElided { cycle } => t(
                 format!("Zyklusparameter ausgelassen: CYCL DEF {cycle}"),

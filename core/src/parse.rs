@@ -42,6 +42,7 @@ use crate::ast::{AxisWord, AxisWords, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
 use crate::plane::Value;
 
+pub(crate) use labels_q::tabread_targets;
 pub use lenient::Lenient;
 pub(crate) use words::Stop;
 
@@ -605,7 +606,7 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         "BEGIN" | "END" => frame::pgm(cx, body),
         "BLK" => tool::blk_form(cx, body),
         "TOOL" if words::keyword(words::sp(rest), "CALL").is_some() => tool::tool_call(cx, body),
-        "TOOL" if words::keyword(words::sp(rest), "DEF").is_some() => tool::tool_def(cx, body),
+        "TOOL" if words::def_keyword(words::sp(rest)).is_some() => tool::tool_def(cx, body),
         "STOP" if !digit_follows => motion::stop(cx, rest),
         "QS" if digit_follows => labels_q::qs_assign(cx, body),
         "L" | "CC" | "C" | "CR" | "CT" | "LP" | "CP" | "RND" | "CHF" if !digit_follows => {

@@ -451,6 +451,12 @@ pub const HEADER_BLANK_AT_DATUM: bool = true;
 /// **UNCONFIRMED** whether the control's dialog takes a parameter there.
 pub const REP_FROM_PARAMETER: bool = true;
 
+/// `FN 28: TABREAD Q… = row / "columns"` of a table the simulator does not have: each parameter
+/// it fills that has no value yet gets 0, one with a value keeps it, and the block says so (as a
+/// tool nobody defined runs with a stated default tool). **UNCONFIRMED**: the control reads the
+/// table, which a simulated run does not have.
+pub const TABREAD_ASSUMES_ZERO: bool = true;
+
 /// `CC` naming the two axes of another main plane than the working plane (`CC X… Z…` with tool
 /// axis Z, as CAM systems write ramps) puts the circles `C`, `CP` and the polar lines `LP` after
 /// it in that plane, with the reference axis and DR+ of that plane as working plane (ZX: from Z,

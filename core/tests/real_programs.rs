@@ -97,7 +97,7 @@ fn fn_functions_the_trainer_does_not_compute_are_kept_and_said() {
     same("FN15: PRINT Q1/Q2", "FN 15: PRINT Q1/Q2");
     same("FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:", "FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:");
     same("FN 28: TABREAD Q80 =0 /\"Stueck\"", "FN 28: TABREAD Q80 =0 /\"Stueck\"");
-    let (p, sim) = run("0 BEGIN PGM F MM\n1 FN 18: SYSREAD Q32 = ID50 NR1 IDX3\n2 END PGM F MM\n");
+    let (p, sim) = run("0 BEGIN PGM F MM\n1 FN 18: SYSREAD Q32 = ID990 NR2\n2 END PGM F MM\n");
     let m = after(&p, &sim, 1).message.expect("said on its block");
     assert!(m.de.contains("nicht simuliert") && m.en.contains("not simulated"), "{m:?}");
     // FN 14 stops the run with the program's own error.
@@ -125,6 +125,81 @@ fn sysread_gives_the_positions_the_simulator_knows() {
     assert_eq!((s.q[&1], s.q[&3]), (10.0, 20.0));
     assert!((s.q[&4] - s.axes.linear.z).abs() < 1e-12, "{} vs {:?}", s.q[&4], s.axes.linear);
     assert_eq!((s.q[&5], s.q[&6]), (2000.0, 0.0));
+}
+
+/// `FN 18: SYSREAD … ID50` reads the tool table (iTNC 530 technical manual, "FN18: SYSREAD",
+/// group 50: NR1 L, NR2 R, NR4 DL, IDX the tool number): of a tool the program defines, of the
+/// active tool without IDX, and of a tool nobody defined the stated default tool, said.
+#[test]
+fn sysread_id50_gives_the_tool_data() {
+    let (p, sim) = run("0 BEGIN PGM S MM\n\
+         1 TOOL DEF 7 L+80 R+6\n\
+         2 FN 0: Q11 = 7\n\
+         3 FN 18: SYSREAD Q1 = ID50 NR1 IDXQ11\n\
+         4 FN 18: SYSREAD Q2 = ID50 NR2 IDX7\n\
+         5 TOOL CALL 7 Z S1000\n\
+         6 FN 18: SYSREAD Q3 = ID50 NR2\n\
+         7 FN 18: SYSREAD Q4 = ID50 NR4\n\
+         8 FN 18: SYSREAD Q5 = ID50 NR1 IDX4711\n\
+         9 END PGM S MM\n");
+    let s = after(&p, &sim, 8);
+    assert_eq!((s.q[&1], s.q[&2], s.q[&3], s.q[&4]), (80.0, 6.0, 6.0, 0.0));
+    assert!(s.q[&5] > 0.0, "the default tool has a length");
+    let m = s.message.expect("said on its block");
+    assert!(m.de.contains("Werkzeug 4711 nicht in der Werkzeugtabelle"), "{m:?}");
+    assert!(m.en.contains("tool 4711 not in the tool table"), "{m:?}");
+}
+
+/// `FN 28: TABREAD` of a table the simulation does not have (`unconfirmed::TABREAD_ASSUMES_ZERO`):
+/// the parameters it fills, one per column, get 0 when they have no value and keep one they
+/// have; the block says which.
+#[test]
+fn tabread_without_the_table_assumes_zero_and_says_so() {
+    let (p, sim) = run("0 BEGIN PGM T MM\n\
+         1 Q12 = 5\n\
+         2 FN 28: TABREAD Q10 = 0 / \"X,Y,Z\"\n\
+         3 FN 1: Q10 = +Q10 + +1\n\
+         4 END PGM T MM\n");
+    let s = after(&p, &sim, 3);
+    assert_eq!((s.q[&10], s.q[&11], s.q[&12]), (1.0, 0.0, 5.0));
+    let m = after(&p, &sim, 2).message.expect("said on its block");
+    assert!(m.de.contains("Q10 = 0 angenommen") && m.de.contains("Q12 bleibt 5"), "{m:?}");
+    assert!(m.en.contains("Q11 = 0 assumed") && m.en.contains("Q12 stays 5"), "{m:?}");
+}
+
+/// A training simulator's export, written here in its dialect: a message header, `BEGIN PGM  MM`
+/// without a name, `TOOL DEF1`, `CYCL END` and `END PGM` without name and unit. It opens with a
+/// warning for each and runs to its end; `CYCL END` is said on its block. A named program still
+/// needs its name at the end, and BEGIN PGM its unit.
+#[test]
+fn a_training_simulators_export_opens_and_runs() {
+    same("TOOL DEF1 L+30 R+4", "TOOL DEF 1 L+30 R+4");
+    let src = "($Message(\"Load the machine settings first\") )\n\
+        BEGIN PGM  MM\n\
+        TOOL DEF1 L+30,000 R+4,000\n\
+        TOOL CALL 1 Z S1500\n\
+        L Z+5.000 R0 F9999 M13\n\
+        L X+10 Y+10\n\
+        CYCL END\n\
+        END PGM\n";
+    let (p, diags) = parse(src);
+    let codes: Vec<_> = diags.iter().map(|d| d.code.clone()).collect();
+    for code in [DiagCode::PgmNameMissing, DiagCode::EndPgmUnitMissing, DiagCode::UnknownBlock] {
+        assert!(codes.contains(&code), "{code:?} in {codes:?}");
+    }
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let cycl_end =
+        p.blocks.iter().position(|b| matches!(&*b.body(), BlockBody::Unknown { .. })).expect("kept");
+    let state = sim.state_at(&p, sim.first_step[cycl_end].expect("executed") as usize).expect("state");
+    let m = state.message.expect("said on its block");
+    assert!(m.de.contains("nicht simuliert: CYCL END"), "{m:?}");
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+    let (_, d) = parse("0 BEGIN PGM X MM\n1 L X+0 R0 FMAX\n2 END PGM\n");
+    assert!(d.iter().any(|d| d.is_error() && matches!(d.code, DiagCode::PgmNameMismatch { .. })), "{d:?}");
+    let (_, d) = parse("0 BEGIN PGM X\n1 END PGM X MM\n");
+    assert!(d.iter().any(|d| d.is_error()), "BEGIN PGM needs its unit: {d:?}");
 }
 
 #[test]

@@ -1,11 +1,11 @@
 //! Program frame (empty, comment and structure blocks are read by the driver in `parse.rs`).
-//!   begin := BEGIN PGM name MM|INCH
-//!   end   := END PGM name MM|INCH
+//!   begin := BEGIN PGM [name] MM|INCH         (a missing name: a warning)
+//!   end   := END PGM [name] [MM|INCH]         (a missing name or unit: a warning)
 
 use super::Cx;
 use super::words::{keyword, sp, token};
 use crate::ast::{BlockBody, Unit};
-use crate::diag::Expected;
+use crate::diag::{DiagCode, Expected};
 
 /// `BEGIN PGM …` or `END PGM …`.
 pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
@@ -17,15 +17,26 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     let rest = sp(rest);
     let Some(rest) = keyword(rest, "PGM") else { return cx.invalid(rest, Some(Expected::Nc("PGM"))) };
     let rest = sp(rest);
+    // An exporting simulator writes `BEGIN PGM  MM` and `END PGM` without the name (the control
+    // writes the file's name there): read as a program without a name, said once at BEGIN PGM.
     let (rest, name) = match token(rest) {
+        Ok((r, unit)) if matches!(unit, "MM" | "INCH") && sp(r).is_empty() => (rest, ""),
         Ok(ok) => ok,
+        Err(_) if rest.is_empty() => (rest, ""),
         Err(e) => return cx.fail(e),
     };
+    if name.is_empty() && begin {
+        cx.warn(body, body.len() - rest.len(), DiagCode::PgmNameMissing);
+    }
     let rest = sp(rest);
     let (rest, unit) = if let Some(r) = keyword(rest, "MM") {
         (r, Unit::Mm)
     } else if let Some(r) = keyword(rest, "INCH") {
         (r, Unit::Inch)
+    } else if rest.is_empty() && !begin {
+        // The unit of END PGM changes nothing: BEGIN PGM's applies.
+        cx.warn(body, body.len(), DiagCode::EndPgmUnitMissing);
+        (rest, Unit::Mm)
     } else {
         return cx.invalid(rest, Some(Expected::Nc("MM|INCH")));
     };

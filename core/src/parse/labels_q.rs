@@ -129,6 +129,14 @@ pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     }
 }
 
+/// The parameters `FN 28: TABREAD Q10 = 5 / "X,Y,Z"` (its text after the colon) fills: the
+/// first, and how many (one per column named, in consecutive parameters).
+pub(crate) fn tabread_targets(text: &str) -> Option<(u32, u32)> {
+    let (rest, first) = q_param(sp(text.strip_prefix("TABREAD")?))?.ok()?;
+    let columns = rest.split('"').nth(1)?;
+    Some((first, columns.split(',').count() as u32))
+}
+
 /// `SYSREAD Q… = ID… NR… [IDX…]` (after `FN 18:`); a spelling it does not know stays an
 /// `FN 18` kept as written.
 fn sysread(i: &str) -> Step<'_, SysRead> {

@@ -1,10 +1,10 @@
 //! Blank form and tool call.
 //!   blk  := BLK FORM 0.1 (X|Y|Z) axis… | BLK FORM 0.2 [I]axis…
 //!   tool := TOOL CALL [n|"name"] [X|Y|Z] { S v | F v | DL v | DR v | DR2 v }
-//!   def  := TOOL DEF (n|"name") [L v] [R v]
+//!   def  := TOOL DEF (n|"name") [L v] [R v]     (`TOOL DEF1` read as `TOOL DEF 1`)
 
 use super::Cx;
-use super::words::{Step, axis_word, keyword, q_param, quoted, sp, uint, word_value};
+use super::words::{Step, axis_word, def_keyword, keyword, q_param, quoted, sp, uint, word_value};
 use crate::ast::{Axis, BlkForm, BlockBody, ToolCall, ToolRef};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::Value;
@@ -79,7 +79,7 @@ fn tool_ref(i: &str) -> Option<Step<'_, ToolRef>> {
 // Out of line in wasm, like the other rare families (see labels_q.rs).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn tool_def(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let Some(mut i) = keyword(body, "TOOL").map(sp).and_then(|r| keyword(r, "DEF")).map(sp) else {
+    let Some(mut i) = keyword(body, "TOOL").map(sp).and_then(def_keyword).map(sp) else {
         return super::unknown(cx, body);
     };
     let tool = match tool_ref(i) {

@@ -100,6 +100,12 @@ pub(crate) fn keyword<'a>(i: &'a str, kw: &'static str) -> Option<&'a str> {
     at_boundary(rest).then_some(rest)
 }
 
+/// `DEF` as a keyword, also run together with the number after it: `CYCL DEF 9.0` and
+/// `TOOL DEF 1` as the control writes them, `CYCL DEF9.0` and `TOOL DEF1` as some programs do.
+pub(crate) fn def_keyword(i: &str) -> Option<&str> {
+    i.strip_prefix("DEF").filter(|r| at_boundary(r) || r.starts_with(|c: char| c.is_ascii_digit()))
+}
+
 /// Unsigned decimal integer (block numbers, M functions, cycle numbers).
 pub(crate) fn uint(i: &str) -> Step<'_, u32> {
     let (rest, digits) = run(digit1, i)?;

@@ -62,13 +62,7 @@ impl Interp {
         let mut dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let mut written_length = None;
         if let Some(tool) = &t.tool {
-            let tool = &self.tool_of(tool)?;
-            let (mut entry, mut known) = tools::lookup_in(cx.options.tool_table(), tool);
-            if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
-                entry.length = l.unwrap_or(entry.length);
-                entry.radius = r.unwrap_or(entry.radius);
-                known = true;
-            }
+            let (entry, known) = self.tool_entry(cx, &self.tool_of(tool)?);
             // The control adds the table's deltas to those of the TOOL CALL.
             dl += entry.dl;
             dr += entry.dr;
@@ -133,6 +127,19 @@ impl Interp {
     /// The tool a `TOOL CALL`/`TOOL DEF` names: the number a numeric parameter holds (its
     /// integer part; a tool number is ≥ 0), anything else as written. A string parameter's
     /// text is not simulated: the tool stays unknown and the block says so.
+    /// The data of `tool` as a TOOL CALL loads it: the tool table's entry with the length and
+    /// radius of a `TOOL DEF` in the program over it; `false` when neither knows the tool (the
+    /// entry is then the stated default tool).
+    pub(super) fn tool_entry(&self, cx: &Cx<'_>, tool: &ToolRef) -> (tools::ToolEntry, bool) {
+        let (mut entry, mut known) = tools::lookup_in(cx.options.tool_table(), tool);
+        if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
+            entry.length = l.unwrap_or(entry.length);
+            entry.radius = r.unwrap_or(entry.radius);
+            known = true;
+        }
+        (entry, known)
+    }
+
     pub(super) fn tool_of(&self, tool: &ToolRef) -> R<ToolRef> {
         let ToolRef::Param(q) = *tool else { return Ok(tool.clone()) };
         let v = self.value(&Value::Param { index: q, negate: false })?;
