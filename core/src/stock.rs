@@ -465,7 +465,24 @@ impl Stock {
         let grow = DVec3::ONE - t * t;
         let grow = cutter.radius
             * DVec3::new(grow.x.max(0.0).sqrt(), grow.y.max(0.0).sqrt(), grow.z.max(0.0).sqrt());
-        let top = t * cutter.length;
+        // Only the tool up to `reach` along t can meet the stock: beyond it each disc of the tool
+        // lies outside the stock's box grown by the disc's extent. Per axis that height is linear
+        // in the tip, so the larger of the two ends bounds it for every position between; the
+        // smallest over the axes bounds the tool. A tilted tool dipping into a face no longer
+        // visits the rays under its whole length.
+        let reach = (0..3)
+            .filter(|&k| t[k].abs() > 1e-12)
+            .map(|k| {
+                let far = |p: DVec3| {
+                    let (a, b) =
+                        ((self.min[k] - grow[k] - p[k]) / t[k], (self.max[k] + grow[k] - p[k]) / t[k]);
+                    a.max(b)
+                };
+                far(p0).max(far(p1))
+            })
+            .fold(cutter.length, f64::min)
+            .max(0.0);
+        let top = t * reach;
         let lo = p0.min(p0 + top).min(p1).min(p1 + top) - grow;
         let hi = p0.max(p0 + top).max(p1).max(p1 + top) + grow;
         let (lo, hi) = (lo.max(self.min), hi.min(self.max));
@@ -475,7 +492,7 @@ impl Stock {
         // Every tool point lies between the tip's and the top's heights along t, so the sweep lies
         // in the slab s_lo ≤ p·t ≤ s_hi: a cheap test that skips rays whose material is outside
         // it (a tool passing just above a tilted face touches many rays' boxes but no material).
-        let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + cutter.length + 1e-9);
+        let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + reach + 1e-9);
         let mut scratch = Vec::new();
         for d in start.d..3 {
             let (a, b) = others(d);

@@ -469,25 +469,27 @@ fn a_swivel_with_the_tool_in_the_material_is_a_collision_on_the_plane_block() {
              PLANE SPATIAL SPA+30 SPB+0 SPC+0 TURN{mb} FMAX\nM30\n"
         )
     };
-    let (program, sim, c) = run(&plane(""), StockOptions::default());
+    // 0.5 mm rays: the drill's sweep through the material is caught as at the default 0.25.
+    let coarse = StockOptions { resolution: 0.5, checkpoints: 3 };
+    let (program, sim, c) = run(&plane(""), coarse);
     let block = program.blocks.iter().position(|b| b.line() == 6).expect("the PLANE block");
     let notes: Vec<_> = c.notes.iter().map(|n| (n.block, n.kind)).collect();
     assert_eq!(notes, vec![(block, StockNoteKind::SwivelInMaterial)]);
     assert!(c.notes[0].message().de.contains("MB MAX"), "{}", c.notes[0].message().de);
     // The same without a stock to show: the check the CLI and a hidden stock make.
-    let collisions = Cutting::collisions(&program, &sim, StockOptions::default(), usize::MAX);
+    let collisions = Cutting::collisions(&program, &sim, coarse, usize::MAX);
     assert_eq!(collisions.notes, c.notes);
     assert_eq!(collisions.unchecked, None);
     // A check with too little work allowed says where it stopped instead of passing silently.
-    let short = Cutting::collisions(&program, &sim, StockOptions::default(), 10);
+    let short = Cutting::collisions(&program, &sim, coarse, 10);
     assert!(short.notes.is_empty());
     let (step, at) = short.unchecked.expect("stopped");
     assert!(at < block && step < sim.step_of_block(block).expect("ran"), "{at} before {block}");
     assert!(short.unchecked_message().is_some());
 
-    let (program, sim, c) = run(&plane(" MB MAX"), StockOptions::default());
+    let (program, sim, c) = run(&plane(" MB MAX"), coarse);
     assert!(c.notes.is_empty(), "{:?}", c.notes);
-    assert_eq!(Cutting::collisions(&program, &sim, StockOptions::default(), usize::MAX), Default::default());
+    assert_eq!(Cutting::collisions(&program, &sim, coarse, usize::MAX), Default::default());
 }
 
 #[test]

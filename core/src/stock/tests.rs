@@ -98,3 +98,62 @@ fn a_tool_standing_in_the_block_removes_its_own_volume_in_any_orientation() {
         }
     }
 }
+
+/// A long tool whose shank leaves the block (the cut visits only the rays of the part of the tool
+/// that can reach the stock's box): along each axis, in both directions, the volume removed is
+/// the cylinder's part inside, π r² × the distance from the tip to the face. Tilted and moving,
+/// every ray of the small block holds what the same ray of a block three times as large (which
+/// the tool never leaves) holds inside the small one.
+#[test]
+fn a_tool_leaving_the_block_cuts_only_its_part_inside() {
+    use std::f64::consts::PI;
+    let r = 3.0;
+    for k in 0..3 {
+        for sign in [1.0, -1.0] {
+            let mut axis = DVec3::ZERO;
+            axis[k] = sign;
+            let mut s = Stock::new(&blank([-20.0; 3], [20.0; 3]), 0.2).expect("stock");
+            let tool = Cutter::new(ToolShape::Flat, r, 100.0, 0.05);
+            let tip = 8.0 * axis;
+            let removed = s.cut(&tool, axis, tip, tip).volume;
+            let exact = PI * r * r * 12.0;
+            assert!((removed - exact).abs() < 0.01 * exact, "along {axis}: {removed} vs {exact}");
+        }
+    }
+    let h = 0.4;
+    // Rays of both blocks coincide: 40 mm is 100 ray spacings.
+    let offset = (40.0 / h) as usize;
+    for axis in [DVec3::new(1.0, 0.2, 0.1), DVec3::new(-0.3, 1.0, 2.0), DVec3::new(0.4, -0.4, -1.0)] {
+        let axis = axis.normalize();
+        let (p0, p1) = (DVec3::new(-5.0, 3.0, 1.0), DVec3::new(7.0, -2.0, 4.0));
+        let cut = |half: f64| {
+            let mut s = Stock::new(&blank([-half; 3], [half; 3]), h).expect("stock");
+            s.cut(&Cutter::new(ToolShape::Ball, r, 45.0, 0.05), axis, p0, p1);
+            s
+        };
+        let (small, large) = (cut(20.0), cut(60.0));
+        assert_eq!((small.resolution(), large.resolution()), (h, h));
+        let n = small.cells();
+        for d in 0..3 {
+            let (a, b) = others(d);
+            for j in 0..n[b] {
+                for i in 0..n[a] {
+                    let inside: Vec<_> = large
+                        .spans(d, i + offset, j + offset)
+                        .iter()
+                        .map(|s| (s.lo.max(-20.0), s.hi.min(20.0)))
+                        .filter(|(lo, hi)| hi > lo)
+                        .collect();
+                    let own: Vec<_> = small.spans(d, i, j).iter().map(|s| (s.lo, s.hi)).collect();
+                    assert_eq!(own.len(), inside.len(), "{axis} ray {d} {i} {j}: {own:?} vs {inside:?}");
+                    for (x, y) in own.iter().zip(&inside) {
+                        assert!(
+                            (x.0 - y.0).abs() < 1e-9 && (x.1 - y.1).abs() < 1e-9,
+                            "{own:?} vs {inside:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
