@@ -52,11 +52,29 @@ pub struct StockFigures {
     pub left: Option<(DVec3, DVec3)>,
 }
 
+/// A signed length as the figures write it: `+100`, `−2,5` (German decimal comma).
+fn signed_mm(v: f64, lang: Lang) -> String {
+    localise(format!("{:+}", tidy(v, 1)), lang).replace('-', "−")
+}
+
+/// What lies under the pointer in the 3D view (issue 32: "how deep is this hole?"): the height
+/// of the first material there, W-CS, and how far below the blank's top `top` it lies —
+/// `Unter dem Zeiger Z−20 mm, 20 mm unter der Rohteil-Oberkante`.
+#[must_use]
+pub fn pointer_line(hit: DVec3, top: f64, lang: Lang) -> String {
+    let depth = localise(format!("{}", tidy((top - hit.z).max(0.0), 1)), lang);
+    let z = signed_mm(hit.z, lang);
+    match lang {
+        Lang::De => format!("Unter dem Zeiger Z{z} mm, {depth} mm unter der Rohteil-Oberkante"),
+        Lang::En => format!("Under the pointer Z{z} mm, {depth} mm below the blank's top"),
+    }
+}
+
 impl StockFigures {
     /// The line under the 3D view: `Abgetragen 785,4 mm³ · Rest X+0…+100 Y+0…+100 Z−40…−2 mm`.
     #[must_use]
     pub fn line(&self, lang: Lang) -> String {
-        let mm = |v: f64| localise(format!("{:+}", tidy(v, 1)), lang).replace('-', "−");
+        let mm = |v: f64| signed_mm(v, lang);
         let removed = localise(format!("{:.1}", self.removed.max(0.0)), lang);
         let left = match self.left {
             Some((lo, hi)) => {
@@ -190,6 +208,15 @@ impl StockRef {
         Some(f)
     }
 
+    /// The first material along the ray `origin + λ·dir` (W-CS) in the stock the view shows
+    /// now, and the blank's top (its highest Z); `None` before a `BLK FORM` or off the part.
+    #[must_use]
+    pub fn under_pointer(&self, origin: DVec3, dir: DVec3) -> Option<(DVec3, f64)> {
+        let at = self.0.at.borrow();
+        let stock = at.cursor.stock.as_ref()?;
+        Some((stock.first_material(origin, dir)?, stock.bounds().1.z))
+    }
+
     /// What the stock says about step `step` (a rapid into the material), German and English.
     #[must_use]
     pub fn notes_at(&self, step: usize) -> Option<Text> {
@@ -244,6 +271,44 @@ mod tests {
         assert_eq!(f.line(Lang::En), "Removed 785.4 mm³ · left X+0…+100 Y+0…+100 Z−40…−2 mm");
         let gone = StockFigures { removed: 8000.0, left: None };
         assert_eq!(gone.line(Lang::De), "Abgetragen 8000,0 mm³ · nichts übrig");
+    }
+
+    #[test]
+    fn the_pointer_line_says_the_height_and_the_depth_below_the_top() {
+        let hit = DVec3::new(50.0, 50.0, -20.0);
+        assert_eq!(
+            pointer_line(hit, 0.0, Lang::De),
+            "Unter dem Zeiger Z−20 mm, 20 mm unter der Rohteil-Oberkante"
+        );
+        assert_eq!(
+            pointer_line(hit, 0.0, Lang::En),
+            "Under the pointer Z−20 mm, 20 mm below the blank's top"
+        );
+        let face = DVec3::new(10.0, 10.0, -2.54);
+        assert_eq!(
+            pointer_line(face, 0.0, Lang::De),
+            "Unter dem Zeiger Z−2,5 mm, 2,5 mm unter der Rohteil-Oberkante"
+        );
+    }
+
+    /// Under the pointer at the end of Musterprogramm 1: looking down the Ø8 hole of the tilted
+    /// face along its axis (SPB+15 at I-CS (50, 50, 0), 20 mm deep along the tool axis), the
+    /// first material is the hole's floor at the drill's tip, worked out from the tilt by hand,
+    /// to a ray spacing; beside the part, nothing.
+    #[test]
+    fn under_the_pointer_is_the_floor_of_the_hole() {
+        let (doc, sim) = musterprogramm1();
+        let stock = StockRef::of(&sim, &doc);
+        let last = sim.0.len() - 1;
+        mesh_at(&stock, last, 1.0);
+        let (sin, cos) = 15f64.to_radians().sin_cos();
+        // SPB+15 turns the plane about Y: I-CS X = (cos, 0, −sin), Z = (sin, 0, cos) in W-CS.
+        let axis = DVec3::new(sin, 0.0, cos);
+        let tip = DVec3::new(50.0 * cos, 50.0, -50.0 * sin) - 20.0 * axis;
+        let (hit, top) = stock.under_pointer(tip + 100.0 * axis, -axis).expect("the floor");
+        assert!((hit - tip).length() < 0.5, "floor at {hit} vs tip {tip}");
+        assert!((top - 0.0).abs() < 1e-9, "{top}");
+        assert_eq!(stock.under_pointer(DVec3::new(-50.0, 50.0, 100.0), DVec3::NEG_Z), None);
     }
 
     /// At the end of Musterprogramm 1 the view's figures are those of the whole run cut at once

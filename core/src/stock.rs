@@ -276,6 +276,60 @@ impl Stock {
         lo.cmple(hi).all().then_some((lo, hi))
     }
 
+    /// The first point of material along the ray `origin + λ·dir`, λ ≥ 0 (W-CS): what lies
+    /// under the pointer in the 3D view (issue 32: "how deep is this hole?"). The ray is
+    /// clipped to the blank's box, sampled every half ray spacing and the first sample in
+    /// material bisected against the one before, so the point is exact to a ray spacing on a
+    /// wall and to the cut on a floor (the Z rays hold the heights). `None` when the ray meets
+    /// no material.
+    #[must_use]
+    pub fn first_material(&self, origin: DVec3, dir: DVec3) -> Option<DVec3> {
+        let dir = dir.try_normalize()?;
+        if !origin.is_finite() {
+            return None;
+        }
+        // The ray's part inside the box (slabs).
+        let (mut enter, mut leave) = (0.0_f64, f64::INFINITY);
+        for k in 0..3 {
+            if dir[k].abs() < 1e-12 {
+                if origin[k] < self.min[k] || origin[k] > self.max[k] {
+                    return None;
+                }
+                continue;
+            }
+            let (a, b) = ((self.min[k] - origin[k]) / dir[k], (self.max[k] - origin[k]) / dir[k]);
+            enter = enter.max(a.min(b));
+            leave = leave.min(a.max(b));
+        }
+        if enter > leave {
+            return None;
+        }
+        let step = 0.5 * self.h.min_element();
+        let samples = ((leave - enter) / step).ceil() as usize + 1;
+        let at = |l: f64| origin + l * dir;
+        let mut before = enter;
+        for k in 0..samples {
+            let l = (enter + k as f64 * step).min(leave);
+            if self.material_at(at(l)) {
+                let (mut out, mut inside) = (before, l);
+                if k == 0 {
+                    return Some(at(l));
+                }
+                for _ in 0..40 {
+                    let mid = 0.5 * (out + inside);
+                    if self.material_at(at(mid)) {
+                        inside = mid;
+                    } else {
+                        out = mid;
+                    }
+                }
+                return Some(at(inside));
+            }
+            before = l;
+        }
+        None
+    }
+
     /// The coarsest ray spacing, mm (the resolution asked for unless the blank was too big).
     #[must_use]
     pub fn resolution(&self) -> f64 {
@@ -371,12 +425,13 @@ impl Stock {
     /// Whether `p` (W-CS) is in material, as the Z grid's ray through its cell has it.
     #[must_use]
     pub fn material_at(&self, p: DVec3) -> bool {
-        let cell = (p - self.min) / self.h;
-        if !(cell.x >= 0.0 && cell.y >= 0.0) {
-            return false;
-        }
-        let (i, j) = (cell.x as usize, cell.y as usize);
-        j < self.n[1] && self.spans(2, i, j).iter().any(|s| s.lo <= p.z && p.z <= s.hi)
+        // Outside the grid along X as well as Y: a cell index past a row's end is another ray.
+        let cell = |k: usize| {
+            let c = ((p[k] - self.min[k]) / self.h[k]).floor();
+            (c >= 0.0 && c < self.n[k] as f64).then_some(c as usize)
+        };
+        let (Some(i), Some(j)) = (cell(0), cell(1)) else { return false };
+        self.spans(2, i, j).iter().any(|s| s.lo <= p.z && p.z <= s.hi)
     }
 
     /// Volume of material, mm³: each grid's midpoint-rule sum of span lengths × cell area,

@@ -197,7 +197,8 @@ async fn the_stock_is_drawn_and_block_13_shows_the_milled_face_in_the_cut_colour
 
 /// Issue 32 item 6: in a program run the line under the 3D view says what the stock shown has
 /// lost and the box left, once the view has cut its way to the shown block; by block 13
-/// (cycle 232 mills the face) material is removed. The trainee reads it without a click.
+/// (cycle 232 mills the face) material is removed. The trainee reads it without a click, and
+/// hovering over the part the depth under the pointer.
 #[wasm_bindgen_test]
 async fn the_view_says_the_volume_removed_and_the_box_left() {
     use schwenkbar_tests::browser::{clear_storage, inject_app_css, key_on, mount, next_frame, query};
@@ -230,5 +231,38 @@ async fn the_view_says_the_volume_removed_and_the_box_left() {
     }
     assert!(text.starts_with("Abgetragen ") && text.contains(" mm³ · Rest X"), "{text:?}");
     assert!(!text.starts_with("Abgetragen 0,0 "), "block 13 milled the face: {text:?}");
+    // "How deep is this hole?": hovering over the part, the line says what lies under the
+    // pointer; off the canvas it no longer does. The pointer tries points over the view until
+    // one is over the part (the framing decides where the part lies).
+    let canvas = query(&root, "canvas.view3d").expect("the 3D view's canvas");
+    let rect = canvas.get_bounding_client_rect();
+    let pointer = |kind: &str, x: f64, y: f64| {
+        let init = web_sys::PointerEventInit::new();
+        init.set_bubbles(true);
+        init.set_client_x(x as i32);
+        init.set_client_y(y as i32);
+        init.set_pointer_id(7);
+        let e = web_sys::PointerEvent::new_with_event_init_dict(kind, &init).expect("event");
+        canvas.dispatch_event(&e).expect("dispatched");
+    };
+    let mut under = String::new();
+    'grid: for fy in [0.5, 0.6, 0.4, 0.7, 0.3] {
+        for fx in [0.5, 0.4, 0.6, 0.3, 0.7] {
+            pointer("pointermove", rect.left() + fx * rect.width(), rect.top() + fy * rect.height());
+            for _ in 0..3 {
+                next_frame().await;
+            }
+            under = figures();
+            if under.contains(" · Unter dem Zeiger Z") {
+                break 'grid;
+            }
+        }
+    }
+    assert!(under.contains("mm unter der Rohteil-Oberkante"), "{under:?}");
+    pointer("pointerleave", rect.left() - 10.0, rect.top() - 10.0);
+    for _ in 0..3 {
+        next_frame().await;
+    }
+    assert!(!figures().contains("Zeiger"), "{:?}", figures());
     clear_storage();
 }

@@ -157,3 +157,29 @@ fn a_tool_leaving_the_block_cuts_only_its_part_inside() {
         }
     }
 }
+
+/// The first material along a ray (the depth under the pointer): worked by hand on a block with
+/// a Ø8 hole 20 deep at (50, 50). Straight down the hole its floor Z−20 (the Z rays hold it
+/// exactly), beside it the top face; slanting into the hole's mouth the wall, where the line
+/// (50, 44 + s, 6 − s) meets y = 54 (s = 10: Z−4), to a ray spacing; a ray that passes above
+/// or misses the block meets nothing.
+#[test]
+fn the_first_material_along_a_ray_is_the_floor_the_face_or_the_wall() {
+    let mut s = Stock::new(&blank([0.0, 0.0, -40.0], [100.0, 100.0, 0.0]), 0.25).expect("stock");
+    let tool = Cutter::new(ToolShape::Flat, 4.0, 50.0, 0.025);
+    s.cut(&tool, DVec3::Z, DVec3::new(50.0, 50.0, 5.0), DVec3::new(50.0, 50.0, -20.0));
+    let down = DVec3::NEG_Z;
+    let floor = s.first_material(DVec3::new(50.0, 50.0, 100.0), down).expect("floor");
+    assert_close!(floor.z, -20.0, 1e-6);
+    let face = s.first_material(DVec3::new(20.0, 30.0, 100.0), down).expect("face");
+    assert_close!(face.z, 0.0, 1e-6);
+    assert_close!(face, DVec3::new(20.0, 30.0, 0.0), 1e-6);
+    let wall = s.first_material(DVec3::new(50.0, 44.0, 6.0), DVec3::new(0.0, 1.0, -1.0)).expect("wall");
+    assert!((wall - DVec3::new(50.0, 54.0, -4.0)).length() < 0.25 * 2f64.sqrt(), "{wall}");
+    assert_eq!(s.first_material(DVec3::new(50.0, 50.0, 100.0), DVec3::X), None);
+    assert_eq!(s.first_material(DVec3::new(-10.0, 50.0, -10.0), DVec3::NEG_X), None);
+    assert_eq!(s.first_material(DVec3::new(50.0, 50.0, 100.0), DVec3::ZERO), None);
+    // Past the blank's side along X is no material (not the next row's ray).
+    assert!(!s.material_at(DVec3::new(100.1, 50.0, -1.0)));
+    assert!(s.material_at(DVec3::new(99.9, 50.0, -1.0)));
+}

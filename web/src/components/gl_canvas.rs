@@ -220,6 +220,7 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
             match kind {
                 "down" => v.pointer_down(&e),
                 "move" => v.pointer_move(&e),
+                "leave" => v.pointer_leave(),
                 _ => v.pointer_up(&e),
             }
         })
@@ -252,7 +253,7 @@ pub fn gl_canvas(props: &GlCanvasProps) -> Html {
             <canvas ref={canvas_ref} class={classes!("gl", props.class.clone())} data-webgl={status.attr()} tabindex="0"
                 aria-label={props.label.clone()}
                 onpointerdown={pointer("down")} onpointermove={pointer("move")}
-                onpointerup={pointer("up")} onpointercancel={pointer("up")}
+                onpointerup={pointer("up")} onpointercancel={pointer("up")} onpointerleave={pointer("leave")}
                 oncontextmenu={Callback::from(|e: MouseEvent| e.prevent_default())}
                 {onkeydown}></canvas>
             <div ref={labels_ref} class="gl-labels" aria-hidden="true"></div>

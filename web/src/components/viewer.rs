@@ -72,6 +72,9 @@ pub struct Viewer {
     pub figures: Option<(HtmlElement, Lang)>,
     /// The figures' text written last.
     figures_shown: String,
+    /// Where the pointer hovers over the canvas (CSS px from its top left corner), for the
+    /// depth under it; `None` off the canvas or while it drags.
+    hover: Option<(f32, f32)>,
     fallback: Option<Rc<Machine>>,
 }
 
@@ -100,6 +103,7 @@ impl Viewer {
             section: false,
             figures: None,
             figures_shown: String::new(),
+            hover: None,
             fallback: None,
         }
     }
@@ -133,6 +137,7 @@ impl Viewer {
             self.dirty = true;
         }
         if !self.dirty {
+            self.show_figures();
             return FrameOutcome::Idle;
         }
         if self.hold > 0 {
@@ -170,15 +175,26 @@ impl Viewer {
         }
     }
 
-    /// Writes the figures of the stock shown (removed volume, the box left), or nothing when
-    /// no stock is drawn.
+    /// Writes the figures of the stock shown (removed volume, the box left) and what lies
+    /// under the pointer, or nothing when no stock is drawn.
     fn show_figures(&mut self) {
         let Some((el, lang)) = &self.figures else { return };
         let stock = match &self.content {
             Some(Content::Machine { state, .. }) => state.stock.as_ref(),
             _ => None,
         };
-        let text = stock.and_then(|s| s.stock.figures()).map(|f| f.line(*lang)).unwrap_or_default();
+        let mut text = stock.and_then(|s| s.stock.figures()).map(|f| f.line(*lang)).unwrap_or_default();
+        let model = self.renderer.as_ref().and_then(|r| r.stock_shown);
+        if let (Some(stock), Some(model), Some((x, y))) = (stock, model, self.hover) {
+            // The pointer's ray carried from the machine into the W-CS the stock is cut in.
+            let (eye, dir) = self.camera.ray(x, y, self.size.0, self.size.1);
+            let to_wcs = model.inverse();
+            let (origin, dir) =
+                (to_wcs.transform_point3(eye.as_dvec3()), to_wcs.transform_vector3(dir.as_dvec3()));
+            if let Some((hit, top)) = stock.stock.under_pointer(origin, dir) {
+                text = format!("{text} · {}", schwenkbar_app::stock::pointer_line(hit, top, *lang));
+            }
+        }
         if text != self.figures_shown {
             el.set_text_content(Some(&text));
             self.figures_shown = text;
@@ -224,7 +240,12 @@ impl Viewer {
     pub fn pointer_move(&mut self, e: &PointerEvent) {
         let id = e.pointer_id();
         let (x, y) = (e.client_x() as f32, e.client_y() as f32);
-        let Some(i) = self.pointers.iter().position(|p| p.0 == id) else { return };
+        let Some(i) = self.pointers.iter().position(|p| p.0 == id) else {
+            // Hovering: the depth under the pointer is written at the next frame.
+            self.hover = Some((e.offset_x() as f32, e.offset_y() as f32));
+            return;
+        };
+        self.hover = None;
         let (_, px, py) = self.pointers[i];
         let h = self.size.1;
         if self.pointers.len() >= 2 {
@@ -247,6 +268,11 @@ impl Viewer {
 
     pub fn pointer_up(&mut self, e: &PointerEvent) {
         self.pointers.retain(|p| p.0 != e.pointer_id());
+    }
+
+    /// The pointer left the canvas: nothing is under it.
+    pub fn pointer_leave(&mut self) {
+        self.hover = None;
     }
 }
 

@@ -127,15 +127,30 @@ impl Camera {
     /// `target + (dx·right − dy·up)·s` (`s` mm a pixel, proportional to the distance); keeping
     /// it while `s` becomes `s·k` moves the target by that offset times `1 − k`.
     pub fn zoom_at(&mut self, factor: f32, x: f32, y: f32, width_px: f32, height_px: f32) {
+        let offset = self.at_target_depth(x, y, width_px, height_px) - self.target;
         let before = self.distance;
         self.zoom(factor);
-        let k = self.distance / before;
+        self.target += offset * (1.0 - self.distance / before);
+    }
+
+    /// The point under the pointer at `(x, y)` CSS pixels of a view `width_px × height_px`, at
+    /// the target's depth: `target + (dx·right − dy·up)·s`, `s` mm a pixel there.
+    fn at_target_depth(&self, x: f32, y: f32, width_px: f32, height_px: f32) -> Vec3 {
         let view = self.view();
+        // Rows of the view matrix are the camera's right and up axes in world coordinates.
         let right = Vec3::new(view.x_axis.x, view.y_axis.x, view.z_axis.x);
         let up = Vec3::new(view.x_axis.y, view.y_axis.y, view.z_axis.y);
-        let mm_per_px = 2.0 * before * half_tan(self.fov_y.to_radians()) / height_px.max(1.0);
+        let mm_per_px = 2.0 * self.distance * half_tan(self.fov_y.to_radians()) / height_px.max(1.0);
         let (dx, dy) = (x - width_px / 2.0, y - height_px / 2.0);
-        self.target += (dx * right - dy * up) * mm_per_px * (1.0 - k);
+        self.target + (dx * right - dy * up) * mm_per_px
+    }
+
+    /// The ray from the eye through the pointer at `(x, y)` CSS pixels of a view `width_px ×
+    /// height_px`: `(eye, direction)`, world mm (what lies under the pointer).
+    #[must_use]
+    pub fn ray(&self, x: f32, y: f32, width_px: f32, height_px: f32) -> (Vec3, Vec3) {
+        let eye = self.eye();
+        (eye, self.at_target_depth(x, y, width_px, height_px) - eye)
     }
 
     /// Frames `points` (mm): the target at the centre of their box, the distance at which a
@@ -225,6 +240,25 @@ mod tests {
         let mut c = Camera { target: Vec3::ZERO, ..Camera::default() };
         c.set_preset(preset);
         c
+    }
+
+    /// The pointer's ray, projected back, lands under the pointer (a second way: the view's
+    /// own projection), and the centre's ray passes through the target.
+    #[test]
+    fn the_ray_under_the_pointer_projects_back_to_it() {
+        let mut c = Camera { target: Vec3::new(10.0, -20.0, 5.0), distance: 800.0, ..Camera::default() };
+        c.orbit(37.0, -12.0);
+        let (w, h) = (640.0, 360.0);
+        let view_proj = c.view_proj(w / h);
+        for (x, y) in [(320.0, 180.0), (50.0, 300.0), (600.0, 20.0)] {
+            let (eye, dir) = c.ray(x, y, w, h);
+            for s in [0.5, 1.0, 2.0] {
+                let (px, py) = project_to_css(&view_proj, eye + s * dir, w, h).expect("in front");
+                assert!((px - x).abs() < 0.05 && (py - y).abs() < 0.05, "({x}, {y}) → ({px}, {py})");
+            }
+        }
+        let (eye, dir) = c.ray(320.0, 180.0, w, h);
+        assert!((eye + dir - c.target).length() < 1e-3);
     }
 
     #[test]

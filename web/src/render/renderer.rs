@@ -109,6 +109,8 @@ pub struct Renderer {
     path: Lines,
     /// Where the stock is drawn this frame (W-CS on the table as it stands), if at all.
     stock_model: Option<DAffine3>,
+    /// Where it was drawn in the last frame painted: what the pointer looks at.
+    pub stock_shown: Option<DAffine3>,
     /// The stock drawn is still behind the one asked for: paint another frame.
     stock_behind: bool,
     /// Draw the stock cut open ([`schwenkbar_app::scene::pose::section_plane`]).
@@ -189,6 +191,7 @@ impl Renderer {
             gpu: Some(gpu),
             path,
             stock_model: None,
+            stock_shown: None,
             stock_behind: false,
             section: false,
             stock_clip: None,
@@ -303,6 +306,7 @@ impl Renderer {
         toolpath: Option<(DAffine3, usize)>,
     ) -> Result<Vec<ScreenLabel>, RenderError> {
         let stock_model = self.stock_model.take();
+        self.stock_shown = stock_model;
         let stock_clip = self.stock_clip.take();
         let gl = &self.gl;
         if gl.is_context_lost() {
