@@ -16,8 +16,10 @@ BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # of the trainer too) and 123 KB. The ceilings stop a
 # blow-up (or a page left whole by the split). The course's rose to 334 with the collision
 # check's swept test and the stock's light replay (issue 32) and the old controls' empty words
-# (issue 30): core code every page carries (330.7 KB measured with them).
-COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-334}"
+# (issue 30): core code every page carries (330.7 KB measured with them). It rose to 338 with
+# SYSREAD ID50, TABREAD and the nameless program frame (issue 30) and the depth under the
+# pointer in the 3D view (issue 32): 334.3 KB measured.
+COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-338}"
 EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-160}"
 build_pages
 # The files a page loads: the page itself and what it references (trunk's hashed names).
