@@ -5,6 +5,7 @@
 #   QUERY is appended to the URL ("#pgm=…" a share link, "kurs.html#kurs/5" a lesson).
 # Environment:
 #   SCREENSHOT_SIZE=W,H         the window (default 1920,1080)
+#   SCREENSHOT_BUDGET_MS=4000   the virtual time the page gets before the shot
 #   SCREENSHOT_PROJECTOR=1      the classroom view: the trainer in projector mode and the course's
 #                               instructor view (the shared preferences, app/src/persist.rs)
 # Every screenshot is German (the preferences `p1;lang=de;…` in localStorage, set by a small
@@ -43,6 +44,6 @@ done
 # German, as a first visit in a German browser opens (the app follows the browser's language).
 chromium --headless=new --no-sandbox --disable-gpu --disable-background-networking \
   --disable-component-update --disable-sync --no-first-run --lang=de-DE --user-data-dir="$profile" \
-  --virtual-time-budget=4000 --window-size="$size" --screenshot="$(realpath -m "$out")" \
+  --virtual-time-budget="${SCREENSHOT_BUDGET_MS:-4000}" --window-size="$size" --screenshot="$(realpath -m "$out")" \
   "$url" 2>/dev/null
 echo "screenshot: $out"
