@@ -2,7 +2,7 @@
 //! orbit camera, and returns where the labels go on screen. Per frame it only sets uniforms and
 //! issues draw calls; the unit meshes and the toolpath are uploaded once per context.
 
-use glam::{DAffine3, Mat3, Mat4, Vec4};
+use glam::{DAffine3, Mat3, Mat4};
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{HtmlCanvasElement, WebGl2RenderingContext as Gl, WebGlUniformLocation};
 
@@ -99,10 +99,6 @@ fn unit_mesh(s: Shape) -> mesh::Mesh {
         Shape::Finger => mesh::torus_arc(1.0, Shape::FINGER_TUBE, Shape::CURL_SWEEP, 24, 10),
     }
 }
-
-/// Normalised depth the toolpath is pushed back by over the stock: at a view distance d
-/// (near plane 0.05·d) about 0.004·d mm, 2 mm at 500 mm.
-const STOCK_PATH_BIAS: f32 = 4e-4;
 
 /// The renderer of one canvas.
 pub struct Renderer {
@@ -356,14 +352,7 @@ impl Renderer {
 
         if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {
             gl.use_program(Some(&gpu.line.program));
-            // Over the stock, the path of a cut lies on the face it cut: drawn at the same depth
-            // the lines and the face fight pixel by pixel (the moiré of classroom trial II, a
-            // hole hidden under the face mill's passes). Pushed back by STOCK_PATH_BIAS in
-            // clip space (z + b·w), a path on or just above the cut face is hidden by it; the
-            // rapids above the part stay in view.
-            let bias = if stock_model.is_some() { STOCK_PATH_BIAS } else { 0.0 };
-            let push = Mat4::from_cols(Vec4::X, Vec4::Y, Vec4::Z, Vec4::new(0.0, 0.0, bias, 1.0));
-            let mvp = push * proj * view * mat4(&model);
+            let mvp = proj * view * mat4(&model);
             gl.uniform_matrix4fv_with_f32_array(gpu.line_mvp.as_ref(), false, &mvp.to_cols_array());
             lines.draw(segments);
             gl.use_program(Some(&gpu.lit.program));
