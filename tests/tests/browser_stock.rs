@@ -266,3 +266,36 @@ async fn the_view_says_the_volume_removed_and_the_box_left() {
     assert!(!figures().contains("Zeiger"), "{:?}", figures());
     clear_storage();
 }
+
+/// Issue 32: a run link opened at block 30 of Musterprogramm 1 shows the stock cut up to there
+/// (the figures line appears once the view has got there) within a bounded number of frames,
+/// the view cutting a share per frame.
+#[wasm_bindgen_test]
+async fn a_run_link_at_block_30_shows_its_stock_soon() {
+    use schwenkbar_tests::browser::{clear_storage, mount, next_frame, query};
+    clear_storage();
+    let text = schwenkbar_app::samples::MUSTERPROGRAMM_1.text;
+    let encoded: String = text
+        .bytes()
+        .map(|b| match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => (b as char).to_string(),
+            _ => format!("%{b:02X}"),
+        })
+        .collect();
+    web_sys::window()
+        .expect("window")
+        .location()
+        .set_hash(&format!("pgm={encoded}&block=30&machine=ac-table&run=1"))
+        .expect("hash");
+    let root = mount().await;
+    let figures =
+        || query(&root, "[data-testid=stock-figures]").and_then(|e| e.text_content()).unwrap_or_default();
+    let mut frames = 0;
+    while !figures().starts_with("Abgetragen") {
+        next_frame().await;
+        frames += 1;
+        assert!(frames < 3000, "the stock at block 30 never shown: {:?}", figures());
+    }
+    console_log!("BENCH run link at block 30: stock shown after {frames} frames");
+    clear_storage();
+}
