@@ -75,6 +75,8 @@ pub struct Viewer {
     /// Where the pointer hovers over the canvas (CSS px from its top left corner), for the
     /// depth under it; `None` off the canvas or while it drags.
     hover: Option<(f32, f32)>,
+    /// The pointer moved since the line was written last.
+    hover_moved: bool,
     fallback: Option<Rc<Machine>>,
 }
 
@@ -104,6 +106,7 @@ impl Viewer {
             figures: None,
             figures_shown: String::new(),
             hover: None,
+            hover_moved: false,
             fallback: None,
         }
     }
@@ -137,7 +140,10 @@ impl Viewer {
             self.dirty = true;
         }
         if !self.dirty {
-            self.show_figures();
+            // Nothing to paint, but the pointer moved over the part: only the line changes.
+            if std::mem::take(&mut self.hover_moved) {
+                self.show_figures();
+            }
             return FrameOutcome::Idle;
         }
         if self.hold > 0 {
@@ -243,6 +249,7 @@ impl Viewer {
         let Some(i) = self.pointers.iter().position(|p| p.0 == id) else {
             // Hovering: the depth under the pointer is written at the next frame.
             self.hover = Some((e.offset_x() as f32, e.offset_y() as f32));
+            self.hover_moved = true;
             return;
         };
         self.hover = None;
@@ -273,6 +280,7 @@ impl Viewer {
     /// The pointer left the canvas: nothing is under it.
     pub fn pointer_leave(&mut self) {
         self.hover = None;
+        self.hover_moved = true;
     }
 }
 

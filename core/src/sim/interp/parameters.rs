@@ -1,0 +1,158 @@
+//! The Q parameters: assignments, the FN jumps, `FN 18: SYSREAD` of what the simulator knows,
+//! `FN 28: TABREAD` without its table, and the FN functions the simulator only names.
+
+use super::*;
+
+impl Interp {
+    /// `FN n` functions the simulator does not compute: `FN 14` stops with the program's own
+    /// error; every other one is said on its block.
+    #[inline(never)]
+    pub(super) fn fn_other(&mut self, rec: &mut Option<&mut Rec>, number: u32, text: &str) -> R<()> {
+        if number == 14 {
+            return Err(SimErrorCode::FnError { text: text.to_owned() });
+        }
+        if number == 28
+            && unconfirmed::TABREAD_ASSUMES_ZERO
+            && let Some((first, count)) = crate::parse::tabread_targets(text)
+        {
+            return self.tabread_assumed(rec, first, count);
+        }
+        note(rec, || {
+            Text::owned(
+                format!("FN {number}: {text} – wird nicht simuliert"),
+                format!("FN {number}: {text} – not simulated"),
+            )
+        });
+        Ok(())
+    }
+
+    /// `FN 28: TABREAD` into `count` parameters from `first` without the table
+    /// ([`unconfirmed::TABREAD_ASSUMES_ZERO`]): a parameter without a value gets 0.
+    pub(super) fn tabread_assumed(&mut self, rec: &mut Option<&mut Rec>, first: u32, count: u32) -> R<()> {
+        let mut said = (Vec::new(), Vec::new());
+        for index in first..first.saturating_add(count.min(100)) {
+            let name = QName(index);
+            match self.q.get(&index) {
+                Some(&v) => {
+                    let value = |lang| crate::number::prose(v, Some(4), lang);
+                    said.0.push(format!("{name} bleibt {}", value(crate::Lang::De)));
+                    said.1.push(format!("{name} stays {}", value(crate::Lang::En)));
+                }
+                None => {
+                    self.set_q(index, 0.0)?;
+                    said.0.push(format!("{name} = 0 angenommen"));
+                    said.1.push(format!("{name} = 0 assumed"));
+                }
+            }
+        }
+        note(rec, || {
+            Text::owned(
+                format!("FN 28: TABREAD – die Tabelle wird nicht simuliert: {}", said.0.join(", ")),
+                format!("FN 28: TABREAD – the table is not simulated: {}", said.1.join(", ")),
+            )
+        });
+        Ok(())
+    }
+
+    /// `FN 18: SYSREAD` of the data the simulator knows (iTNC 530 technical manual, "FN18:
+    /// SYSREAD"): ID10 NR1 mm/inch; ID20 NR1 tool number, NR3 tool axis, NR4 spindle speed;
+    /// ID240 NR1 IDX1…9 nominal position of axis X, Y, Z, A, B, C, U, V, W in the REF system
+    /// (the machine axes); ID270 NR1 IDX1…9 position in the active coordinate system (the
+    /// I-CS for X, Y, Z); ID50 NR1…5 IDX tool number: L, R, R2, DL, DR of the tool as a TOOL CALL
+    /// would load it (the tool table's group 50, same page), of the active tool without IDX.
+    /// Anything else is said on the block and leaves the parameter as it was.
+    #[inline(never)]
+    pub(super) fn sysread(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, r: &SysRead) -> R<()> {
+        let nr = self.value(&r.nr)?;
+        let idx = r.idx.map(|v| self.value(&v)).transpose()?;
+        let axis = |i: f64, linear: DVec3| -> Option<f64> {
+            let i = i as usize;
+            let rotary =
+                |a: RotaryAxis| self.axes.letters.iter().position(|&l| l == a).map(|k| self.axes.rotary[k]);
+            match i {
+                1..=3 => Some(self.in_program_unit(linear[i - 1])),
+                4 => rotary(RotaryAxis::A),
+                5 => rotary(RotaryAxis::B),
+                6 => rotary(RotaryAxis::C),
+                _ => None,
+            }
+        };
+        let mut assumed = None;
+        let v = match (r.id, nr, idx) {
+            (10, 1.0, _) => self.q.get(&113).copied(),
+            (20, 1.0, _) => Some(f64::from(self.tool.number)),
+            (20, 3.0, _) => Some(match self.tool.axis {
+                'X' => 0.0,
+                'Y' => 1.0,
+                _ => 2.0,
+            }),
+            (20, 4.0, _) => Some(self.spindle.speed),
+            (240, 1.0, Some(i)) => axis(i, self.axes.linear),
+            (270, 1.0, Some(i)) => axis(i, self.programmed()),
+            (50, 1.0..=5.0, _) if nr.fract() == 0.0 => {
+                let number = idx.map_or(self.tool.number, |i| i.max(0.0) as u32);
+                let (entry, known) = self.tool_entry(cx, &ToolRef::Number(number));
+                assumed = (!known).then_some(number);
+                let corner = entry.corner_radius.unwrap_or(0.0);
+                let mm = [entry.length, entry.radius, corner, entry.dl, entry.dr][nr as usize - 1];
+                Some(self.in_program_unit(mm))
+            }
+            _ => None,
+        };
+        let (id, target) = (r.id, QName(r.target));
+        match v {
+            Some(v) => {
+                self.set_q(r.target, v)?;
+                let (de, en) = match assumed {
+                    Some(n) => (
+                        format!(" (Werkzeug {n} nicht in der Werkzeugtabelle: Standardwerkzeug)"),
+                        format!(" (tool {n} not in the tool table: the default tool)"),
+                    ),
+                    None => Default::default(),
+                };
+                note(rec, || {
+                    Text::owned(
+                        format!(
+                            "FN 18: ID{id} gelesen: {target} = {}{de}",
+                            crate::number::prose(v, Some(4), crate::Lang::De)
+                        ),
+                        format!(
+                            "FN 18: ID{id} read: {target} = {}{en}",
+                            crate::number::prose(v, Some(4), crate::Lang::En)
+                        ),
+                    )
+                });
+            }
+            None => note(rec, || {
+                Text::owned(
+                    format!("FN 18: ID{id} wird nicht simuliert, {target} bleibt unverändert"),
+                    format!("FN 18: ID{id} is not simulated, {target} stays as it was"),
+                )
+            }),
+        }
+        Ok(())
+    }
+
+    #[inline(never)]
+    pub(super) fn fn_jump(&mut self, cx: &Cx<'_>, j: &FnJump) -> R<()> {
+        let (a, b) = (self.value(&j.a)?, self.value(&j.b)?);
+        if j.condition.holds(a, b) {
+            self.pc = self.label_index(cx, &j.label)?;
+        }
+        Ok(())
+    }
+
+    #[inline(never)]
+    pub(super) fn q_assign(&mut self, target: u32, expr: &Expr) -> R<()> {
+        let v = self.eval(expr)?;
+        self.set_q(target, v)
+    }
+
+    pub(super) fn set_q(&mut self, target: u32, v: f64) -> R<()> {
+        if !v.is_finite() {
+            return Err(SimErrorCode::Arithmetic { index: target });
+        }
+        self.q.insert(target, v);
+        Ok(())
+    }
+}
