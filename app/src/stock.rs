@@ -42,6 +42,31 @@ struct Shown {
     mesh: Option<Rc<TiledMesh>>,
     /// The figures of `cursor`'s stock and the version they were worked out for.
     figures: Option<(u64, StockFigures)>,
+    /// The stock asked for last (step, fraction) while the view has not got there yet.
+    behind: Option<(usize, f64)>,
+}
+
+impl Shown {
+    /// Cuts about `budget` rays towards the stock after `fraction` of step `step`: forward on
+    /// the shown stock, or a step back on a pending one (shown once it gets there); whether
+    /// the shown stock is that stock.
+    fn cut_toward(&mut self, cutting: &Cutting, step: usize, fraction: f64, budget: usize) -> bool {
+        let done = if cutting.is_past(&self.cursor, step, fraction) {
+            let pending = self.pending.get_or_insert_with(StockCursor::default);
+            let done = cutting.advance(pending, step, fraction, budget);
+            if done {
+                self.cursor = self.pending.take().unwrap_or_default();
+                self.figures = None;
+            }
+            done
+        } else {
+            // Forward again (or still): a step back under way is no longer wanted.
+            self.pending = None;
+            cutting.advance(&mut self.cursor, step, fraction, budget)
+        };
+        self.behind = (!done).then_some((step, fraction));
+        done
+    }
 }
 
 /// What the stock shown has lost (issue 32: "how deep is this hole?"): the volume removed from
@@ -139,9 +164,18 @@ impl StockRef {
     }
 
     /// Plans [`PLAN_STEPS`] more steps, then goes on with the first pass by about `rays`;
-    /// whether it is done (every step planned, every note known).
+    /// whether it is done (every step planned, every note known). While the view has not cut
+    /// its way to the stock it shows, the share goes to the view instead: a run opened at a
+    /// late block (a share link, a jump) shows its part four times as soon, and the first
+    /// pass's notes follow a few frames later.
     pub fn pass_on(&self, rays: usize) -> bool {
         let planned = self.plan_on(PLAN_STEPS);
+        let mut at = self.0.at.borrow_mut();
+        if let Some((step, fraction)) = at.behind {
+            at.cut_toward(&self.0.cutting.borrow(), step, fraction, rays);
+            return false;
+        }
+        drop(at);
         self.0.cutting.borrow_mut().pass_on(rays) && planned
     }
 
@@ -162,21 +196,7 @@ impl StockRef {
         self.plan_on(if budget == usize::MAX { step.saturating_add(1) } else { PLAN_STEPS });
         let mut guard = self.0.at.borrow_mut();
         let at = &mut *guard;
-        let cutting = &*self.0.cutting.borrow();
-        let fraction = fraction.clamp(0.0, 1.0);
-        let done = if cutting.is_past(&at.cursor, step, fraction) {
-            let pending = at.pending.get_or_insert_with(StockCursor::default);
-            let done = cutting.advance(pending, step, fraction, budget);
-            if done {
-                at.cursor = at.pending.take().unwrap_or_default();
-                at.figures = None;
-            }
-            done
-        } else {
-            // Forward again (or still): a step back under way is no longer wanted.
-            at.pending = None;
-            cutting.advance(&mut at.cursor, step, fraction, budget)
-        };
+        let done = at.cut_toward(&self.0.cutting.borrow(), step, fraction.clamp(0.0, 1.0), budget);
         let Some(stock) = &at.cursor.stock else {
             at.mesh = None;
             return (None, done);
@@ -271,6 +291,34 @@ mod tests {
         assert_eq!(f.line(Lang::En), "Removed 785.4 mm³ · left X+0…+100 Y+0…+100 Z−40…−2 mm");
         let gone = StockFigures { removed: 8000.0, left: None };
         assert_eq!(gone.line(Lang::De), "Abgetragen 8000,0 mm³ · nichts übrig");
+    }
+
+    /// A run opened at its last block (a share link): while the view is behind, the first
+    /// pass's share after each frame cuts the view's way, so it gets there in about a quarter
+    /// of the frames it needs alone; then the pass goes on to its end with every note.
+    #[test]
+    fn a_view_behind_gets_the_first_passs_share() {
+        let (doc, sim) = musterprogramm1();
+        let last = sim.0.len() - 1;
+        let frames = |helped: bool| {
+            let stock = StockRef::of(&sim, &doc);
+            let mut frames = 0;
+            while !stock.mesh_toward(last, 1.0, FRAME_RAYS).1 {
+                if helped {
+                    assert!(!stock.pass_on(PASS_RAYS), "the pass waits for the view");
+                }
+                frames += 1;
+                assert!(frames < 100_000, "the view never gets there");
+            }
+            (stock, frames)
+        };
+        let ((_, alone), (stock, helped)) = (frames(false), frames(true));
+        assert!(helped * 3 <= alone, "{helped} frames helped, {alone} alone");
+        let mut shares = 0;
+        while !stock.pass_on(PASS_RAYS) {
+            shares += 1;
+            assert!(shares < 100_000, "the pass never ends");
+        }
     }
 
     #[test]
