@@ -38,6 +38,12 @@ struct LitUniforms {
     /// The section plane in view space, `(n, d)`: a fragment with n·p + d > 0 is not drawn
     /// (zero, the default, draws everything).
     clip: Option<WebGlUniformLocation>,
+    /// The colour of a triangle's back (alpha > 0; zero, the default: its front colour). The
+    /// stock's inside is material: its back faces, seen through the gaps between the steps of
+    /// two dexel grids on a tilted face or past the section plane, are drawn as cut material,
+    /// not as the raw blank's faces behind (which showed as an orange lattice over a face milled
+    /// at SPB+15).
+    inside: Option<WebGlUniformLocation>,
 }
 
 /// Everything that lives in one GL context (rebuilt after a context loss).
@@ -76,6 +82,7 @@ impl Gpu {
             projection: lit.uniform("u_projection"),
             colour: lit.uniform("u_colour"),
             clip: lit.uniform("u_clip"),
+            inside: lit.uniform("u_inside"),
         };
         let line = Program::new(gl, include_str!("shaders/line.vert"), include_str!("shaders/line.frag"))?;
         let line_mvp = line.uniform("u_mvp");
@@ -339,6 +346,7 @@ impl Renderer {
                 let n = mv.transform_vector3(normal.as_vec3()).normalize_or_zero();
                 gl.uniform4f(gpu.lit_u.clip.as_ref(), n.x, n.y, n.z, -n.dot(p));
             }
+            gl.uniform4f(gpu.lit_u.inside.as_ref(), CUT[0], CUT[1], CUT[2], 1.0);
             gl.uniform4f(gpu.lit_u.colour.as_ref(), BLANK[0], BLANK[1], BLANK[2], 1.0);
             for t in &gpu.stock {
                 t.tris.draw(0, t.raw);
@@ -348,6 +356,7 @@ impl Renderer {
                 t.tris.draw(t.raw, t.all - t.raw);
             }
             gl.uniform4f(gpu.lit_u.clip.as_ref(), 0.0, 0.0, 0.0, 0.0);
+            gl.uniform4f(gpu.lit_u.inside.as_ref(), 0.0, 0.0, 0.0, 0.0);
         }
 
         if let (Some(lines), Some((model, segments))) = (&gpu.toolpath, toolpath) {

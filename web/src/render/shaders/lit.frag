@@ -6,6 +6,7 @@ in vec3 v_view_pos;
 
 uniform vec4 u_colour;
 uniform vec4 u_clip;
+uniform vec4 u_inside;
 
 out vec4 out_colour;
 
@@ -20,6 +21,7 @@ void main() {
   float key = max(dot(n, KEY), 0.0);
   float fill = max(dot(n, FILL), 0.0);
   float spec = pow(max(dot(n, normalize(KEY + v)), 0.0), 32.0);
-  vec3 c = u_colour.rgb * (0.34 + 0.58 * key + 0.20 * fill) + vec3(0.18 * spec);
+  vec3 base = (!gl_FrontFacing && u_inside.a > 0.0) ? u_inside.rgb : u_colour.rgb;
+  vec3 c = base * (0.34 + 0.58 * key + 0.20 * fill) + vec3(0.18 * spec);
   out_colour = vec4(min(c, vec3(1.0)), u_colour.a);
 }
