@@ -278,8 +278,12 @@ impl DiagCode {
                 ),
             ),
             DiagCode::PgmNameMismatch { begin, end } => t(
-                format!("Programmname falsch: END PGM {end} zu BEGIN PGM {begin}"),
-                format!("Wrong program name: END PGM {end} for BEGIN PGM {begin}"),
+                format!(
+                    "Programmname falsch: END PGM {end} zu BEGIN PGM {begin}; gelesen als Ende von {begin} (der Name ist Buchführung der Steuerung)"
+                ),
+                format!(
+                    "Wrong program name: END PGM {end} for BEGIN PGM {begin}; read as the end of {begin} (the name is the control's bookkeeping)"
+                ),
             ),
             DiagCode::MissingEndPgm => Text::new("END PGM fehlt", "END PGM missing"),
             DiagCode::PgmNameMissing => Text::new(

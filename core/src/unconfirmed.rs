@@ -451,6 +451,14 @@ pub const HEADER_BLANK_AT_DATUM: bool = true;
 /// **UNCONFIRMED** whether the control's dialog takes a parameter there.
 pub const REP_FROM_PARAMETER: bool = true;
 
+/// `END PGM` with another name than `BEGIN PGM` (`BEGIN PGM YL-01 MM` … `END PGM 100 MM`, as
+/// programs renamed outside the control come): a warning, and the program ends there as if the
+/// names agreed — the program name is the control's bookkeeping, written from the file name, as
+/// the block numbers are. **UNCONFIRMED**: no manual in `shared/` says what the control does with
+/// such a file; refusing a program whose every block is right would turn away what the trainee
+/// brought for a name the simulation never uses.
+pub const END_PGM_NAME_IS_BOOKKEEPING: bool = true;
+
 /// `FN 28: TABREAD Q… = row / "columns"` of a table the simulator does not have: each parameter
 /// it fills that has no value yet gets 0, one with a value keeps it, and the block says so (as a
 /// tool nobody defined runs with a stated default tool). **UNCONFIRMED**: the control reads the

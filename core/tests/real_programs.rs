@@ -196,8 +196,21 @@ fn a_training_simulators_export_opens_and_runs() {
     let m = state.message.expect("said on its block");
     assert!(m.de.contains("nicht simuliert: CYCL END"), "{m:?}");
     assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
-    let (_, d) = parse("0 BEGIN PGM X MM\n1 L X+0 R0 FMAX\n2 END PGM\n");
-    assert!(d.iter().any(|d| d.is_error() && matches!(d.code, DiagCode::PgmNameMismatch { .. })), "{d:?}");
+    // Another name in END PGM (`unconfirmed::END_PGM_NAME_IS_BOOKKEEPING`): said, not refused,
+    // and the program runs to its end.
+    let (p, d) = parse("0 BEGIN PGM X MM\n1 L X+0 R0 FMAX\n2 END PGM\n");
+    assert!(d.iter().any(|d| !d.is_error() && matches!(d.code, DiagCode::PgmNameMismatch { .. })), "{d:?}");
+    assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let (_, d) = parse("0 BEGIN PGM YL-01 MM\n1 L Z+0 R0 FMAX\n2 END PGM 100 MM\n");
+    let said: Vec<_> = d.iter().filter(|d| matches!(d.code, DiagCode::PgmNameMismatch { .. })).collect();
+    assert_eq!(said.len(), 1, "{d:?}");
+    assert!(
+        said[0].code.message().de.contains("END PGM 100 zu BEGIN PGM YL-01"),
+        "{:?}",
+        said[0].code.message()
+    );
     let (_, d) = parse("0 BEGIN PGM X\n1 END PGM X MM\n");
     assert!(d.iter().any(|d| d.is_error()), "BEGIN PGM needs its unit: {d:?}");
 }

@@ -64,8 +64,13 @@ impl AcrossBlocks {
             Some(BlockBody::EndPgm { name, .. }) => {
                 self.end_seen = true;
                 if let Some(begin) = self.begin.as_ref().filter(|b| !b.eq_ignore_ascii_case(name)) {
+                    let severity = if crate::unconfirmed::END_PGM_NAME_IS_BOOKKEEPING {
+                        Severity::Warning
+                    } else {
+                        Severity::Error
+                    };
                     found(
-                        Severity::Error,
+                        severity,
                         DiagCode::PgmNameMismatch { begin: begin.clone(), end: name.clone() },
                         span,
                     );
