@@ -269,8 +269,8 @@ async fn the_view_says_the_volume_removed_and_the_box_left() {
 
 /// Issue 32: a run link opened at block 30 of Musterprogramm 1 shows the stock cut up to there
 /// (the figures line appears once the view has got there) within a bounded number of frames,
-/// the view cutting a share per frame and the first pass lending it two thirds of its shares while it is
-/// behind: 189 frames in a debug build, 473 without the pass's help.
+/// the view cutting a share per frame and the first pass lending it two thirds of its shares
+/// while it is behind: 189 frames in a debug build, 473 without the pass's help.
 #[wasm_bindgen_test]
 async fn a_run_link_at_block_30_shows_its_stock_soon() {
     use schwenkbar_tests::browser::{clear_storage, mount, next_frame, query};
