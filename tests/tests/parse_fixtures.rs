@@ -156,7 +156,6 @@ fixtures!(ok, check_ok:
 fixtures!(err, check_err:
     cycle_param_without_value,
     duplicate_axis,
-    end_pgm_name,
     eulnu_negative,
     function_tcpm,
     garbage,
