@@ -95,8 +95,6 @@ fn next_depth(reached: f64, step: f64, total: f64) -> f64 {
 
 /// Cycle 201 REIBEN: FMAX to Q200 above Q203, at Q206 to the depth Q201 (dwell Q211), back to Q200
 /// at the retraction feed Q208, then FMAX to Q204 (manual, cycle 201 "Cycle run").
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn ream_201(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;
@@ -119,8 +117,6 @@ pub(super) fn ream_201(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
 /// ([`unconfirmed::CHIP_BREAK_AT_RETRACTION_FEED`]), Q213 times; after the next infeed it
 /// retracts at Q208 to Q200 (dwell Q210) and returns at FMAX to Q200 above the depth reached, and
 /// the count starts again. At depth (dwell Q211) it retracts at Q208 to Q200, then FMAX to Q204.
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn drill_203(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;
@@ -169,8 +165,6 @@ fn chip_break(hole: &Hole, reached: f64, lift: f64, back: f64) -> CycleMove {
 /// FMAX to the advanced stop distance above the depth reached: Q258 at the first, Q259 at the
 /// last, in between in proportion ([`unconfirmed::advanced_stop_distance`]). At depth (dwell Q211)
 /// at Q208 to Q200, then FMAX to Q204.
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;
@@ -226,8 +220,6 @@ pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
 /// nominal diameter of more than twice the tool diameter is refused (the manual: "As soon as
 /// you enter a value greater than 0 in Q342, the control no longer checks the ratio between the
 /// nominal and tool diameters").
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn bore_mill_208(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;

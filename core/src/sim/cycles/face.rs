@@ -101,8 +101,6 @@ pub(super) fn face_mill_232(p: &Params, pos: DVec3, tool_radius: f64) -> Result<
 /// the minor axis (Q350 = 2). Simulated through cycle 232's meander with the same parameters
 /// Q202, Q369, Q370, Q207, Q385, Q253, Q357, Q200, Q204 ([`unconfirmed::CYCLE233_AS_232`]): the
 /// side limits Q347–Q349 and the strategies Q389 are not simulated.
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn face_mill_233(p: &Params, pos: DVec3, tool_radius: f64) -> Result<CycleRun, SimErrorCode> {
     let (l1, l2) = (p.get(218)?, p.get(219)?);

@@ -305,8 +305,6 @@ fn too_large(cycle: u32, r: f64, size: f64) -> SimErrorCode {
 /// Cycle 251 RECHTECKTASCHE: Q218 × Q219 with corner radius Q220, turned by Q224 about the tool
 /// position, which is the pocket centre (Q367 = 0) or its lower left, lower right, upper right,
 /// upper left corner (1–4).
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn rectangular_251(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let c = Common::of(p)?;
@@ -343,8 +341,6 @@ pub(super) fn rectangular_251(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove
 }
 
 /// Cycle 252 KREISTASCHE: the circle of diameter Q223 about the tool position.
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn circular_252(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let c = Common::of(p)?;
@@ -368,8 +364,6 @@ pub(super) fn circular_252(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> 
 /// Cycle 253 NUTENFRAESEN: the slot Q218 long and Q219 wide, turned by Q374 about the tool
 /// position, which is the slot centre (Q367 = 0), its left end (1), the centre of its left arc
 /// (2), of its right arc (3) or its right end (4).
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn slot_253(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let c = Common::of(p)?;
@@ -402,8 +396,6 @@ pub(super) fn slot_253(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
 /// angle Q376 over Q248; its circle centre is Q216/Q217 (Q367 = 0), or the tool position is the
 /// slot's start (1), middle (2) or end (3) on the centre line ([`unconfirmed::CIRCULAR_SLOT_REFERENCE`]).
 /// Q377 slots, each turned by Q378 from the one before.
-// Out of line: the page split (scripts/split_pages.py) can leave this cycle's code to the wasm
-// loaded after the first screen (whose program calls only cycles 200 and 232).
 #[inline(never)]
 pub(super) fn circular_slot_254(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let c = Common::of(p)?;

@@ -276,8 +276,6 @@ impl Interp {
 
     /// `APPR LT/LN/CT/LCT`: from the start point PS (where the tool stands) via the auxiliary
     /// point PH to the first contour point PA, switching the compensation on there.
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn approach(
         &mut self,
@@ -360,8 +358,6 @@ impl Interp {
 
     /// `DEP LT/LN/CT/LCT`: from the last contour point PE away from the contour to the end point
     /// PN; the compensation ends.
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn depart(
         &mut self,

@@ -214,8 +214,6 @@ impl Interp {
     }
 
     /// Runs `C`, `CR`, `CT`, `LP`, `CP`.
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn contour(
         &mut self,
@@ -340,8 +338,6 @@ impl Interp {
 
     /// Runs `RND`/`CHF`: the piece the element before prepared. Its F acts in this block only
     /// (manual: "Feed rate F (effective only in RND block)").
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn corner_block(
         &mut self,

@@ -8,8 +8,6 @@ use crate::ast::{CycleParam, CycleValue, PatternItem, PatternKey};
 use crate::sim::cycles::{ArcTo, CycleRun, Params, PatternValues, rapid};
 
 impl Interp {
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn old_cycle(
         &mut self,
@@ -324,8 +322,6 @@ impl Interp {
     /// height, "the spindle axis coordinate at the cycle call or Q204, whichever is greater"
     /// (manual, "Calling a cycle with CYCL CALL PAT"), at the block's feed
     /// ([`unconfirmed::CYCL_CALL_PAT_FEED_BETWEEN_POINTS`]).
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn call_pattern(
         &mut self,
@@ -388,8 +384,6 @@ impl Interp {
     /// the tool axis; below it first up to the clearance height
     /// ([`unconfirmed::CYCL_CALL_POS_CLEARANCE`]), then in the plane (manual, "Calling a cycle
     /// with CYCL CALL POS"). The block's feed acts only on these moves.
-    // Out of line: `Interp::step` stays small, and the page split (scripts/split_pages.py) can leave
-    // this block kind's code to the wasm loaded after the first screen (whose program has none).
     #[inline(never)]
     pub(super) fn call_pos(
         &mut self,
