@@ -1,0 +1,392 @@
+//! The spellings and blocks of CAM systems, shops, old controls and training simulators: read as
+//! the control's own spelling, said once per file, and run.
+
+use super::*;
+
+/// A training simulator's export, written here in its dialect: a message header, `BEGIN PGM  MM`
+/// without a name, `TOOL DEF1`, `CYCL END` and `END PGM` without name and unit. It opens with a
+/// warning for each and runs to its end; `CYCL END` is said on its block. A named program still
+/// needs its name at the end, and BEGIN PGM its unit.
+#[test]
+fn a_training_simulators_export_opens_and_runs() {
+    same("TOOL DEF1 L+30 R+4", "TOOL DEF 1 L+30 R+4");
+    let src = "($Message(\"Load the machine settings first\") )\n\
+        BEGIN PGM  MM\n\
+        TOOL DEF1 L+30,000 R+4,000\n\
+        TOOL CALL 1 Z S1500\n\
+        L Z+5.000 R0 F9999 M13\n\
+        L X+10 Y+10\n\
+        CYCL END\n\
+        END PGM\n";
+    let (p, diags) = parse(src);
+    let codes: Vec<_> = diags.iter().map(|d| d.code.clone()).collect();
+    for code in [DiagCode::PgmNameMissing, DiagCode::EndPgmUnitMissing, DiagCode::UnknownBlock] {
+        assert!(codes.contains(&code), "{code:?} in {codes:?}");
+    }
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let cycl_end =
+        p.blocks.iter().position(|b| matches!(&*b.body(), BlockBody::Unknown { .. })).expect("kept");
+    let state = sim.state_at(&p, sim.first_step[cycl_end].expect("executed") as usize).expect("state");
+    let m = state.message.expect("said on its block");
+    assert!(m.de.contains("nicht simuliert: CYCL END"), "{m:?}");
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+    // Another name in END PGM (`unconfirmed::END_PGM_NAME_IS_BOOKKEEPING`): said, not refused,
+    // and the program runs to its end.
+    let (p, d) = parse("0 BEGIN PGM X MM\n1 L X+0 R0 FMAX\n2 END PGM\n");
+    assert!(d.iter().any(|d| !d.is_error() && matches!(d.code, DiagCode::PgmNameMismatch { .. })), "{d:?}");
+    assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+    let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());
+    assert!(sim.error.is_none(), "{:?}", sim.error);
+    let (_, d) = parse("0 BEGIN PGM YL-01 MM\n1 L Z+0 R0 FMAX\n2 END PGM 100 MM\n");
+    let said: Vec<_> = d.iter().filter(|d| matches!(d.code, DiagCode::PgmNameMismatch { .. })).collect();
+    assert_eq!(said.len(), 1, "{d:?}");
+    assert!(
+        said[0].code.message().de.contains("END PGM 100 zu BEGIN PGM YL-01"),
+        "{:?}",
+        said[0].code.message()
+    );
+    let (_, d) = parse("0 BEGIN PGM X\n1 END PGM X MM\n");
+    assert!(d.iter().any(|d| d.is_error()), "BEGIN PGM needs its unit: {d:?}");
+}
+
+#[test]
+fn an_old_controls_empty_words_are_words_not_programmed() {
+    // TNC 155/355 listings print `R F M` where nothing was entered: the same block without them.
+    same("L X+32.000 Y+0.000 R F5000 M13", "L X+32 Y+0 F5000 M13");
+    same("L Y+6.500 R F M", "L Y+6.5");
+    same("CYCL CALL M", "CYCL CALL");
+    same("CALL LBL 1 REP", "CALL LBL 1");
+    // … but a value after a blank and F's own MAX and AUTO stay the words they are.
+    same("L X+1 F MAX", "L X+1 FMAX");
+    same("L X+1 RL F AUTO", "L X+1 RL F AUTO");
+    let (_, d) = parse("1 L X+1 F M3\n");
+    assert!(d.is_empty(), "{d:?}");
+    let (_, d) = parse("1 L X+1 R\n");
+    assert!(d.is_empty(), "{d:?}");
+    // The feed and the radius compensation stay as they were: 5000 mm/min after `F`, RL after `R`.
+    let src = "0 BEGIN PGM OLD MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+2 R0 F5000\n\
+               3 L X+10 R F M\n4 L Y+10 RL F200\n5 L X+20 R F M\n6 L Z+50 R0 F M\n7 END PGM OLD MM\n";
+    let (program, sim) = run(src);
+    assert_eq!(after(&program, &sim, 3).feed, 5000.0);
+    let s5 = after(&program, &sim, 5);
+    assert_eq!(s5.feed, 200.0);
+    // With RL kept the tool centre stands the radius left of X+20 Y+10; with R0 it would not.
+    let tip = |src: &str| {
+        let (p, s) = run(src);
+        after(&p, &s, 5).tip_wcs
+    };
+    assert_eq!(s5.tip_wcs, tip(&src.replace("5 L X+20 R F M", "5 L X+20 RL")));
+    assert_ne!(s5.tip_wcs, tip(&src.replace("5 L X+20 R F M", "5 L X+20 R0")));
+}
+
+#[test]
+fn m140_mb_and_the_feed_of_m128_belong_to_their_m_function() {
+    same("L M140 MB MAX", "L M140 MB MAX");
+    same("M140 MB MAX", "M140 MB MAX");
+    same("M140 MB 50", "M140 MB+50");
+    same("L X+1 FQ3 M128 FQ9", "L X+1 FQ3 M128 FQ9");
+    same("M128 F25000", "M128 F25000");
+    match body("L X+1 F500 M128 F1000") {
+        BlockBody::L(l) => {
+            assert!(
+                matches!(l.feed, Some(schwenkbar_core::plane::Feed::Value(Value::Number(f))) if f == 500.0)
+            );
+            assert_eq!(l.m_words.m128_feed, Some(Value::Number(1000.0)));
+        }
+        other => panic!("{other:?}"),
+    }
+    match body("M140 MB MAX M9") {
+        BlockBody::MFunctions(m, w) => {
+            assert_eq!(&*m, &[140, 9]);
+            assert_eq!(w.mb, Some(MoveBack::Max));
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn m140_retracts_along_the_tool_axis() {
+    let (p, sim) = run("0 BEGIN PGM R MM\n\
+         1 TOOL CALL 1 Z S1000\n\
+         2 L X+10 Y+5 Z+2 R0 FMAX\n\
+         3 M140 MB+50\n\
+         4 L M140 MB MAX\n\
+         5 END PGM R MM\n");
+    let (before, up) = (after(&p, &sim, 2), after(&p, &sim, 3));
+    // Untilted: the tool axis is Z, so the tip rises by exactly 50 and stays over X10 Y5.
+    assert!((up.tip_wcs - before.tip_wcs - glam::DVec3::new(0.0, 0.0, 50.0)).length() < 1e-9);
+    let max = after(&p, &sim, 4);
+    assert!(max.tip_wcs.z > up.tip_wcs.z && (max.tip_wcs.x - 10.0).abs() < 1e-9, "{:?}", max.tip_wcs);
+    assert!(max.message.is_some_and(|m| m.de.contains("M140")), "said on its block");
+}
+
+#[test]
+fn cycle_parameters_with_symbolic_values() {
+    let def = |v: &str| format!("0 BEGIN PGM C MM\n1 CYCL DEF 200 BOHREN ~\n  Q206={v} ;VORSCHUB TIEFENZ.\n");
+    let value = |v: &str| match parse(&def(v)).0.blocks[1].body().into_owned() {
+        BlockBody::CycleDef(c) => c.params[0].value,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(value("AUTO"), CycleValue::Fauto);
+    assert_eq!(value(" FAUTO"), CycleValue::Fauto);
+    assert_eq!(value("FMAX"), CycleValue::Fmax);
+    assert_eq!(value("PREDEF"), CycleValue::Predef);
+    assert_eq!(value("-Q5"), CycleValue::Value(Value::Param { index: 5, negate: true }));
+    assert_eq!(value("+QR15"), CycleValue::Value(Value::Param { index: QR_BASE + 15, negate: false }));
+    let (p, _) = parse(&def("AUTO"));
+    assert!(format_program(&p).contains("Q206=FAUTO"), "{}", format_program(&p));
+
+    // Cycle 200 with PREDEF set-up clearance (2 mm, unconfirmed::predef) and FAUTO/FMAX feeds:
+    // the tool goes down to Q203 + 2 first (cycle manual: "to the set-up clearance above the
+    // workpiece surface").
+    let src = "0 BEGIN PGM C MM\n\
+        1 TOOL CALL 1 Z S1000 F300\n\
+        2 CYCL DEF 200 BOHREN ~\n\
+        \x20 Q200=PREDEF ;SICHERHEITS-ABST. ~\n\
+        \x20 Q201=-10 ;TIEFE ~\n\
+        \x20 Q206=AUTO ;VORSCHUB TIEFENZ. ~\n\
+        \x20 Q202=+10 ;ZUSTELL-TIEFE ~\n\
+        \x20 Q210=+0 ;VERWEILZEIT OBEN ~\n\
+        \x20 Q203=+0 ;KOOR. OBERFL. ~\n\
+        \x20 Q204=PREDEF ;2. SICHERHEITS-ABST. ~\n\
+        \x20 Q211=+0 ;VERWEILZEIT UNTEN ~\n\
+        \x20 Q395=+0 ;BEZUG TIEFE ~\n\
+        \x20 Q208=FMAX ;VORSCHUB RUECKZUG\n\
+        3 L X+10 Y+10 Z+60 R0 FMAX M3\n\
+        4 CYCL CALL\n\
+        5 END PGM C MM\n";
+    let (p, sim) = run(src);
+    let s = after(&p, &sim, 4);
+    let m = Machine::builtin("ac-table").expect("m");
+    let kin = schwenkbar_core::sim::Kin::new(&m, s.tool.length);
+    let first = kin.tip_wcs(&s.segments[0].axes_at(1.0));
+    assert!((first.z - 2.0).abs() < 1e-9, "first stop {first:?}");
+    let deepest = s.segments.iter().map(|g| kin.tip_wcs(&g.axes_at(1.0)).z).fold(f64::INFINITY, f64::min);
+    assert!((deepest + 10.0).abs() < 1e-9, "{deepest}");
+}
+
+#[test]
+fn lenient_spellings_are_said_once_per_kind_and_file() {
+    let comma = DiagCode::Lenient { kind: Lenient::DecimalComma, text: "+27,975".into() };
+    same_said("L X+27,975 Y-26,5 R0 FMAX", "L X+27.975 Y-26.5 R0 FMAX", &[comma]);
+    let blank = DiagCode::Lenient { kind: Lenient::BlankAfterAddress, text: "Z 25.000".into() };
+    same_said("L Z 25.000 FMAX", "L Z+25 FMAX", &[blank]);
+    same("CYCL DEF 7.1  X + 0", "CYCL DEF 7.1 X+0");
+    // Many lines, one note of each kind.
+    let src: String = (1..=200).map(|n| format!("{n} L X+{n},5 Y {n} F 500\n")).collect();
+    let (program, d) = parse(&src);
+    assert_eq!(program.blocks.len(), 200);
+    let kinds: Vec<_> = d
+        .iter()
+        .filter_map(|d| match &d.code {
+            DiagCode::Lenient { kind, .. } => Some(*kind),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(kinds, [Lenient::DecimalComma, Lenient::BlankAfterAddress], "{d:?}");
+    assert!(d.iter().all(|d| !d.is_error()));
+}
+
+#[test]
+fn stop_qs_touch_probe_and_a_setup_header_run_and_are_said() {
+    same("STOP", "STOP");
+    same("STOP M0", "STOP M0");
+    same("QS10 = \"ABC\"", "QS10 = \"ABC\"");
+    let src = "(Maschine: Fraese 5 Achsen)\n\
+        (Quader: QX100 QY90 QZ20)\n\
+        0 BEGIN PGM P MM\n\
+        1 TOOL CALL 1 Z S1000\n\
+        2 STOP\n\
+        3 QS1 = \"TEXT\"\n\
+        4 TCH PROBE 412 BEZUGSPUNKT KREIS INNEN ~\n\
+        \x20 Q321=+50 ;MITTE 1. ACHSE ~\n\
+        \x20 Q322=+50 ;MITTE 2. ACHSE\n\
+        5 CYCL DEF 392 ATC ~\n\
+        \x20 Q240=0 ;MODE\n\
+        6 M30\n\
+        7 END PGM P MM\n";
+    let (p, sim) = run(src);
+    assert!(matches!(&*p.blocks[0].body(), BlockBody::Header { text } if text.contains("Maschine")));
+    match &*p.blocks[6].body() {
+        BlockBody::TouchProbe(c) => assert_eq!((c.number, c.params.len()), (412, 2)),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+    for n in [2, 3, 4] {
+        assert!(after(&p, &sim, n).message.is_some(), "block {n} says what it does");
+    }
+}
+
+/// Never silent (the brief): over a program of every family (its one jump not taken), each
+/// block is executed with its own record, or is a comment/structure/header block; no block is
+/// left out.
+#[test]
+fn every_block_of_every_family_runs_or_says_why_not() {
+    let src = std::fs::read_to_string(format!(
+        "{}/../tests/fixtures/ok/real_families.h",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .expect("fixture");
+    let (p, sim) = run(&src);
+    for (i, b) in p.blocks.iter().enumerate() {
+        let quiet = matches!(
+            &*b.body(),
+            BlockBody::Empty
+                | BlockBody::Structure { .. }
+                | BlockBody::Header { .. }
+                | BlockBody::EndPgm { .. }
+        );
+        let Some(step) = sim.first_step[i] else {
+            assert!(quiet, "block {i} never ran: {:?}", b.body());
+            continue;
+        };
+        let s = sim.state_at(&p, step as usize).expect("state");
+        // END PGM after M30 is listed, not executed (unconfirmed::LIST_BLOCKS_AFTER_END).
+        assert!(s.executed || quiet, "block {i} listed only");
+        if matches!(
+            &*b.body(),
+            BlockBody::Unknown { .. }
+                | BlockBody::FnOther { .. }
+                | BlockBody::TouchProbe(_)
+                | BlockBody::QsAssign { .. }
+        ) {
+            assert!(s.message.is_some(), "block {i} not modelled and not said: {:?}", b.body());
+        }
+    }
+}
+
+/// The same part written in inches and in millimetres: every length × 25.4, every F × 2.54
+/// (1/10 inch/min). The oracle is the millimetre program, converted by hand.
+const INCH_PART: &str = "0 BEGIN PGM IN INCH
+1 BLK FORM 0.1 Z X-2 Y-2 Z-1
+2 BLK FORM 0.2 X+2 Y+2 Z+0
+3 TOOL CALL 1 Z S3000 F100 DL+0.01
+4 L Z+2 R0 FMAX M3
+5 L X+1 Y+0.5 F200
+6 FN 18: SYSREAD Q5 = ID270 NR1 IDX1
+7 CC X+0 Y+0.5
+8 C X-1 Y+0.5 DR+
+9 CR X+0 Y-0.5 R+1 DR-
+10 L Z+0.5 FMAX
+11 CYCL DEF 200 BOHREN ~
+  Q200=+0.1 ;SICHERHEITS-ABST. ~
+  Q201=-0.5 ;TIEFE ~
+  Q206=+50 ;VORSCHUB TIEFENZ. ~
+  Q202=+0.25 ;ZUSTELL-TIEFE ~
+  Q210=+0 ;VERWEILZEIT OBEN ~
+  Q203=+0 ;KOOR. OBERFLAECHE ~
+  Q204=+1 ;2. SICHERHEITS-ABST. ~
+  Q211=+0 ;VERWEILZEIT UNTEN
+12 L X+0.5 Y+0.5 FMAX M99
+13 CYCL DEF 7.0 NULLPUNKT
+14 CYCL DEF 7.1 X+0.1
+15 L IX+0.25 F300
+16 PLANE SPATIAL SPA+0 SPB+10 SPC+0 TURN MB+0.5 F200 SEQ-
+17 L Z+1 FMAX
+18 PLANE RESET TURN F500
+19 L M140 MB+1
+20 END PGM IN INCH
+";
+
+const MM_PART: &str = "0 BEGIN PGM IN MM
+1 BLK FORM 0.1 Z X-50.8 Y-50.8 Z-25.4
+2 BLK FORM 0.2 X+50.8 Y+50.8 Z+0
+3 TOOL CALL 1 Z S3000 F254 DL+0.254
+4 L Z+50.8 R0 FMAX M3
+5 L X+25.4 Y+12.7 F508
+6 FN 18: SYSREAD Q5 = ID270 NR1 IDX1
+7 CC X+0 Y+12.7
+8 C X-25.4 Y+12.7 DR+
+9 CR X+0 Y-12.7 R+25.4 DR-
+10 L Z+12.7 FMAX
+11 CYCL DEF 200 BOHREN ~
+  Q200=+2.54 ;SICHERHEITS-ABST. ~
+  Q201=-12.7 ;TIEFE ~
+  Q206=+127 ;VORSCHUB TIEFENZ. ~
+  Q202=+6.35 ;ZUSTELL-TIEFE ~
+  Q210=+0 ;VERWEILZEIT OBEN ~
+  Q203=+0 ;KOOR. OBERFLAECHE ~
+  Q204=+25.4 ;2. SICHERHEITS-ABST. ~
+  Q211=+0 ;VERWEILZEIT UNTEN
+12 L X+12.7 Y+12.7 FMAX M99
+13 CYCL DEF 7.0 NULLPUNKT
+14 CYCL DEF 7.1 X+2.54
+15 L IX+6.35 F762
+16 PLANE SPATIAL SPA+0 SPB+10 SPC+0 TURN MB+12.7 F508 SEQ-
+17 L Z+25.4 FMAX
+18 PLANE RESET TURN F1270
+19 L M140 MB+25.4
+20 END PGM IN MM
+";
+
+#[test]
+fn an_inch_program_moves_the_machine_as_its_millimetre_twin() {
+    let (pi, si) = run(INCH_PART);
+    let (pm, sm) = run(MM_PART);
+    assert_eq!(si.states(&pi).count(), sm.states(&pm).count());
+    let close = |a: f64, b: f64, what: &str| assert!((a - b).abs() < 1e-9, "{what}: {a} ≠ {b}");
+    for n in 1..=19 {
+        let (a, b) = (after(&pi, &si, n), after(&pm, &sm, n));
+        for k in 0..3 {
+            close(a.axes.linear[k], b.axes.linear[k], &format!("block {n} axis {k}"));
+            close(a.tip_ics[k], b.tip_ics[k], &format!("block {n} IST {k}"));
+        }
+        for k in 0..2 {
+            close(a.axes.rotary[k], b.axes.rotary[k], &format!("block {n} rotary {k}"));
+        }
+        close(a.tool.length, b.tool.length, "tool length");
+        close(a.feed, b.feed, &format!("block {n} feed (mm/min)"));
+        assert_eq!(a.segments.len(), b.segments.len(), "block {n}: the same moves");
+        // Linear motion takes the same time; the rotary share of a swivel keeps F as written
+        // (°/min), so the TURN blocks differ.
+        if !matches!(n, 16 | 18) {
+            close(a.duration(), b.duration(), &format!("block {n} duration"));
+        }
+        assert_eq!(a.blank, b.blank, "the blank in mm");
+    }
+    // The position display shows the program's unit: X+1 Y+0.5 after block 5.
+    let s5 = after(&pi, &si, 5);
+    assert_eq!(s5.unit, schwenkbar_core::ast::Unit::Inch);
+    close(s5.shown(s5.tip_ics.x), 1.0, "IST X in inches");
+    close(s5.shown_feed(s5.feed), 200.0, "F as written");
+    // Q parameters keep the program's numbers: SYSREAD gives inches, Q114 the length in inches.
+    close(after(&pi, &si, 6).q[&5], 1.0, "SYSREAD X in inches");
+    close(after(&pm, &sm, 6).q[&5], 25.4, "SYSREAD X in mm");
+    close(after(&pi, &si, 3).q[&114] * 25.4, after(&pm, &sm, 3).q[&114], "Q114");
+    // The drill reaches Q201 = -0.5 inch = -12.7 mm below the surface.
+    let drilled = after(&pi, &si, 12);
+    let deepest = drilled.segments.iter().map(|s| s.end.linear.z).fold(f64::INFINITY, f64::min);
+    let deepest_mm =
+        after(&pm, &sm, 12).segments.iter().map(|s| s.end.linear.z).fold(f64::INFINITY, f64::min);
+    close(deepest, deepest_mm, "the deepest point of the drill");
+    // The first block says the unit.
+    let first = after(&pi, &si, 0).message.expect("the unit is said");
+    assert!(first.de.contains("Inch") && first.en.contains("inches"), "{first:?}");
+}
+
+/// A setup-sheet header's blank is the program's when it has no BLK FORM (placed as
+/// `unconfirmed::HEADER_BLANK_AT_DATUM` says); with a BLK FORM the BLK FORM applies.
+#[test]
+fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
+    let header = "(Maschine: Fraese 5 Achsen)\n(Quader: QX100 QY90 QZ20,5)\n(T1 FRAESER D10)\n";
+    let body = "0 BEGIN PGM P MM\n1 TOOL CALL 1 Z S1000\n2 L Z+50 R0 FMAX\n3 END PGM P MM\n";
+    let (p, sim) = run(&format!("{header}{body}"));
+    let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
+    let blank = s.blank.expect("the header's blank");
+    assert_eq!((blank.min.to_array(), blank.max.to_array()), ([0.0, 0.0, -20.5], [100.0, 90.0, 0.0]));
+    let said = s.message.expect("said on the header line");
+    assert!(said.de.contains("100 × 90 × 20,5") && said.en.contains("100 × 90 × 20.5"), "{said:?}");
+    let end = after(&p, &sim, 2);
+    assert_eq!(end.blank, Some(blank), "kept to the end");
+
+    let with_blk = "0 BEGIN PGM P MM\n1 BLK FORM 0.1 Z X-10 Y-10 Z-5\n2 BLK FORM 0.2 X+10 Y+10 Z+0\n\
+        3 TOOL CALL 1 Z S1000\n4 END PGM P MM\n";
+    let (p, sim) = run(&format!("{header}{with_blk}"));
+    let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
+    assert_eq!(s.blank, None, "the BLK FORM applies, not the header");
+    assert!(s.message.is_some_and(|m| m.en.contains("BLK FORM, which applies")));
+    let blank = after(&p, &sim, 3).blank.expect("BLK FORM");
+    assert_eq!(blank.max.to_array(), [10.0, 10.0, 0.0]);
+}
