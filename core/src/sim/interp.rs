@@ -308,16 +308,6 @@ impl Interp {
         self.pos_i = self.map.inverse_orthogonal().apply(self.axes.linear);
     }
 
-    fn value(&self, v: &Value) -> R<f64> {
-        match *v {
-            Value::Number(x) => Ok(x),
-            Value::Param { index, negate } => match self.q.get(&index) {
-                Some(&x) => Ok(if negate { -x } else { x }),
-                None => Err(SimErrorCode::UndefinedQ { index }),
-            },
-        }
-    }
-
     /// A programmed length in mm (`INCH` programs: × 25.4).
     fn length(&self, v: &Value) -> R<f64> {
         Ok(self.value(v)? * self.unit.mm())
@@ -332,53 +322,6 @@ impl Interp {
     /// program).
     fn in_program_unit(&self, mm: f64) -> f64 {
         mm / self.unit.mm()
-    }
-
-    fn eval(&self, e: &Expr) -> R<f64> {
-        Ok(match e {
-            Expr::Num(x) => *x,
-            Expr::Param(i) => *self.q.get(i).ok_or(SimErrorCode::UndefinedQ { index: *i })?,
-            Expr::Pi => std::f64::consts::PI,
-            Expr::Neg(a) => -self.eval(a)?,
-            // Angles of the Q formula functions are degrees (the control works in degrees,
-            // DOMAIN.md §2).
-            Expr::Func(f, a) => {
-                let x = self.eval(a)?;
-                match f {
-                    Func::Sin => x.to_radians().sin(),
-                    Func::Cos => x.to_radians().cos(),
-                    Func::Tan => x.to_radians().tan(),
-                    Func::Asin => x.asin().to_degrees(),
-                    Func::Acos => x.acos().to_degrees(),
-                    Func::Atan => x.atan().to_degrees(),
-                    Func::Sqrt => x.sqrt(),
-                    Func::Sq => x * x,
-                    Func::Abs => x.abs(),
-                    Func::Int => x.trunc(),
-                    Func::Frac => x.fract(),
-                    Func::Ln => x.ln(),
-                    Func::Log => x.log10(),
-                    Func::Exp => x.exp(),
-                    Func::Sgn => {
-                        if x == 0.0 {
-                            0.0
-                        } else {
-                            x.signum()
-                        }
-                    }
-                }
-            }
-            Expr::Bin(op, a, b) => {
-                let (x, y) = (self.eval(a)?, self.eval(b)?);
-                match op {
-                    BinOp::Add => x + y,
-                    BinOp::Sub => x - y,
-                    BinOp::Mul => x * y,
-                    BinOp::Div => x / y,
-                    BinOp::Pow => x.powf(y),
-                }
-            }
-        })
     }
 
     /// Executes the next block; `Ok(false)` if it was only listed (after M30, or skipped).
@@ -593,25 +536,6 @@ impl Interp {
             | BlockBody::Invalid { .. } => {}
         }
         Ok(())
-    }
-
-    // Out of line, like the other block kinds below: the page split (scripts/split_pages.py)
-    // can then leave them to the wasm loaded after the first screen, whose program has none.
-    #[inline(never)]
-    fn fn_math(&mut self, f: &FnMath) -> R<()> {
-        let a = self.value(&f.a)?;
-        let b = f.b.map(|b| self.value(&b)).transpose()?.unwrap_or(0.0);
-        let v = match f.op {
-            FnOp::Add => a + b,
-            FnOp::Sub => a - b,
-            FnOp::Mul => a * b,
-            FnOp::Div => a / b,
-            FnOp::Sqrt => a.sqrt(),
-            FnOp::Sin => a.to_radians().sin(),
-            FnOp::Cos => a.to_radians().cos(),
-            FnOp::Len => a.hypot(b),
-        };
-        self.set_q(f.target, v)
     }
 
     /// `TOOL DEF`, `STOP`, `QS…`, `TCH PROBE`: blocks that store data for later blocks or say

@@ -1,9 +1,87 @@
-//! The Q parameters: assignments, the FN jumps, `FN 18: SYSREAD` of what the simulator knows,
-//! `FN 28: TABREAD` without its table, and the FN functions the simulator only names.
+//! The Q parameters: their values, the formulas, the FN arithmetic, assignments, the FN jumps,
+//! `FN 18: SYSREAD` of what the simulator knows, `FN 28: TABREAD` without its table, and the FN
+//! functions the simulator only names.
 
 use super::*;
 
 impl Interp {
+    /// A programmed value: a number, or a Q parameter's (negated if written `-Q…`).
+    pub(super) fn value(&self, v: &Value) -> R<f64> {
+        match *v {
+            Value::Number(x) => Ok(x),
+            Value::Param { index, negate } => match self.q.get(&index) {
+                Some(&x) => Ok(if negate { -x } else { x }),
+                None => Err(SimErrorCode::UndefinedQ { index }),
+            },
+        }
+    }
+
+    /// A Q formula's value.
+    pub(super) fn eval(&self, e: &Expr) -> R<f64> {
+        Ok(match e {
+            Expr::Num(x) => *x,
+            Expr::Param(i) => *self.q.get(i).ok_or(SimErrorCode::UndefinedQ { index: *i })?,
+            Expr::Pi => std::f64::consts::PI,
+            Expr::Neg(a) => -self.eval(a)?,
+            // Angles of the Q formula functions are degrees (the control works in degrees,
+            // DOMAIN.md §2).
+            Expr::Func(f, a) => {
+                let x = self.eval(a)?;
+                match f {
+                    Func::Sin => x.to_radians().sin(),
+                    Func::Cos => x.to_radians().cos(),
+                    Func::Tan => x.to_radians().tan(),
+                    Func::Asin => x.asin().to_degrees(),
+                    Func::Acos => x.acos().to_degrees(),
+                    Func::Atan => x.atan().to_degrees(),
+                    Func::Sqrt => x.sqrt(),
+                    Func::Sq => x * x,
+                    Func::Abs => x.abs(),
+                    Func::Int => x.trunc(),
+                    Func::Frac => x.fract(),
+                    Func::Ln => x.ln(),
+                    Func::Log => x.log10(),
+                    Func::Exp => x.exp(),
+                    Func::Sgn => {
+                        if x == 0.0 {
+                            0.0
+                        } else {
+                            x.signum()
+                        }
+                    }
+                }
+            }
+            Expr::Bin(op, a, b) => {
+                let (x, y) = (self.eval(a)?, self.eval(b)?);
+                match op {
+                    BinOp::Add => x + y,
+                    BinOp::Sub => x - y,
+                    BinOp::Mul => x * y,
+                    BinOp::Div => x / y,
+                    BinOp::Pow => x.powf(y),
+                }
+            }
+        })
+    }
+
+    /// `FN 0`…`FN 8`: the arithmetic functions into their target parameter.
+    #[inline(never)]
+    pub(super) fn fn_math(&mut self, f: &FnMath) -> R<()> {
+        let a = self.value(&f.a)?;
+        let b = f.b.map(|b| self.value(&b)).transpose()?.unwrap_or(0.0);
+        let v = match f.op {
+            FnOp::Add => a + b,
+            FnOp::Sub => a - b,
+            FnOp::Mul => a * b,
+            FnOp::Div => a / b,
+            FnOp::Sqrt => a.sqrt(),
+            FnOp::Sin => a.to_radians().sin(),
+            FnOp::Cos => a.to_radians().cos(),
+            FnOp::Len => a.hypot(b),
+        };
+        self.set_q(f.target, v)
+    }
+
     /// `FN n` functions the simulator does not compute: `FN 14` stops with the program's own
     /// error; every other one is said on its block.
     #[inline(never)]
