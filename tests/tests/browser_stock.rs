@@ -275,19 +275,16 @@ async fn the_view_says_the_volume_removed_and_the_box_left() {
 async fn a_run_link_at_block_30_shows_its_stock_soon() {
     use schwenkbar_tests::browser::{clear_storage, mount, next_frame, query};
     clear_storage();
-    let text = schwenkbar_app::samples::MUSTERPROGRAMM_1.text;
-    let encoded: String = text
-        .bytes()
-        .map(|b| match b {
-            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => (b as char).to_string(),
-            _ => format!("%{b:02X}"),
-        })
-        .collect();
-    web_sys::window()
-        .expect("window")
-        .location()
-        .set_hash(&format!("pgm={encoded}&block=30&machine=ac-table&run=1"))
-        .expect("hash");
+    let link = schwenkbar_app::persist::Shared {
+        program: schwenkbar_app::samples::MUSTERPROGRAMM_1.text.to_owned(),
+        block: 30,
+        machine: Some("ac-table".to_owned()),
+        own_machine: None,
+        run: true,
+        tools: None,
+    };
+    let fragment = schwenkbar_app::persist::share_fragment(&link);
+    web_sys::window().expect("window").location().set_hash(&fragment).expect("hash");
     let root = mount().await;
     let figures =
         || query(&root, "[data-testid=stock-figures]").and_then(|e| e.text_content()).unwrap_or_default();
