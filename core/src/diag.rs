@@ -77,6 +77,11 @@ pub enum DiagCode {
     BlockNumberPrefixed {
         number: u32,
     },
+    /// Said once per file, at the first comment block written without a blank after its number
+    /// (`12;created by …`, as some CAM systems write it): read as `12 ;created by …`.
+    CommentAfterNumber {
+        number: u32,
+    },
     /// Said once per kind and file, at its first occurrence: a spelling read as its canonical
     /// form ([`Lenient`]); `text` as written there.
     Lenient {
@@ -264,6 +269,14 @@ impl DiagCode {
             DiagCode::BlockNumberPrefixed { number } => t(
                 format!("N-Satznummern gelesen (zuerst N{number}): Klartext schreibt die Nummer ohne N"),
                 format!("N block numbers read (first N{number}): Klartext writes the number without N"),
+            ),
+            DiagCode::CommentAfterNumber { number } => t(
+                format!(
+                    "Kommentar direkt nach der Satznummer gelesen (zuerst {number};): Klartext schreibt ein Leerzeichen davor"
+                ),
+                format!(
+                    "Comment right after the block number read (first {number};): Klartext writes a blank before it"
+                ),
             ),
             DiagCode::Lenient { kind: Lenient::DecimalComma, text } => t(
                 format!("Dezimalkomma gelesen (zuerst „{text}“): Klartext schreibt einen Dezimalpunkt"),

@@ -520,10 +520,17 @@ fn cycle_def(out: &mut String, key: &str, c: &CycleDef, comment: Option<&str>) {
     out.push('\n');
     for (k, p) in c.params.iter().enumerate() {
         let start = out.len();
-        let _ = write!(out, "  Q{}=", p.index);
-        match p.value {
-            CycleValue::Value(v) => value(out, v),
-            w => out.push_str(w.word().unwrap_or_default()),
+        match &p.value {
+            CycleValue::Value(v) => {
+                let _ = write!(out, "  Q{}=", p.index);
+                value(out, *v);
+            }
+            CycleValue::Text(text) => {
+                let _ = write!(out, "  QS{}=\"{text}\"", p.index);
+            }
+            w => {
+                let _ = write!(out, "  Q{}={}", p.index, w.word().unwrap_or_default());
+            }
         }
         if let Some(l) = &p.label {
             // Labels start in one column, like on the control's screen.

@@ -372,8 +372,9 @@ impl Parser<'_> {
                 ),
             }
             rest = &rest[digits..];
-            if !rest.is_empty() && !rest.starts_with([' ', '\t']) {
-                // `12X` is neither a block number nor a word.
+            // `12;comment`: a CAM system's comment block without the blank (AcrossBlocks says it
+            // once per file); `12X` is neither a block number nor a word.
+            if !rest.is_empty() && !rest.starts_with([' ', '\t', ';']) {
                 let at = first.start + (line_text.len() - rest.len());
                 self.diag_at(Severity::Error, DiagCode::InvalidInput, at, at + 1, Some(Expected::Blank));
             }
@@ -406,8 +407,13 @@ impl Parser<'_> {
         let text: Cow<'_, str> = if continued && !is_cycle {
             let mut joined = String::from(body_text);
             segments.push((0, body_start));
+            // Once a line's comment ran on with `~`, the lines after it are its text (a long
+            // comment block as the control wraps it: `3 ;This program is free~`).
+            let mut in_comment = comment.is_some();
             for l in &self.block_lines[1..] {
-                let (b, c) = split_comment(&src[l.start..l.end]);
+                let line = &src[l.start..l.end];
+                let (b, c) = if in_comment { ("", Some(line)) } else { split_comment(line) };
+                in_comment |= c.is_some();
                 let b = strip_tilde(b.trim());
                 if let Some(c) = c {
                     let c = strip_tilde(c.trim());

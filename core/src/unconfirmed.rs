@@ -172,8 +172,8 @@ pub const TRANSFORM_LEVELS: bool = true;
 /// Block numbers in a file read from outside (a CAM system's, a shop's): the control's editor
 /// numbers the blocks itself (TNC 620 ISO manual, "Programme eröffnen und eingeben": the TNC
 /// numbers the blocks automatically), and the blocks run in their order in the file. What the
-/// control says on reading numbers that are missing, repeated, not ascending or written `N…`
-/// is **UNCONFIRMED**: the trainer reads them all and says each kind once per file, as a warning
+/// control says on reading numbers that are missing, repeated, not ascending, written `N…` or
+/// followed directly by a comment (`12;`) is **UNCONFIRMED**: the trainer reads them all and says each kind once per file, as a warning
 /// (`true`); `false` would make them errors again.
 pub const IMPORT_BLOCK_NUMBERS_ARE_WARNINGS: bool = true;
 

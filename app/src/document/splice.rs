@@ -77,6 +77,7 @@ fn across_blocks(code: &DiagCode) -> bool {
         DiagCode::BlockNumberNotAscending { .. }
             | DiagCode::MissingBlockNumber
             | DiagCode::BlockNumberPrefixed { .. }
+            | DiagCode::CommentAfterNumber { .. }
             | DiagCode::Lenient { .. }
             | DiagCode::PgmNameMismatch { .. }
             | DiagCode::MissingEndPgm

@@ -144,9 +144,10 @@ pub struct CycleDef {
     pub params: Vec<CycleParam>,
 }
 
-/// One continuation line `Q200=+2 ;SICHERHEITS-ABST.`.
+/// One continuation line `Q200=+2 ;SICHERHEITS-ABST.` (or `QS500="TEXT" ;…`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CycleParam {
+    /// The parameter's number: `Q200` → 200, `QS500` → 500 (a [`CycleValue::Text`]).
     pub index: u32,
     pub value: CycleValue,
     /// The text after `;` without the trailing `~`; a label only, the control ignores it.
@@ -156,9 +157,12 @@ pub struct CycleParam {
 /// What stands after `Q…=` in a cycle definition: a number or Q parameter, or one of the words
 /// the control's cycle dialog offers in its place (TNC 640 cycle manual, parameters such as
 /// "Q253 F PRE-POSITIONING … alternatively FMAX, FAUTO, PREDEF").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum CycleValue {
     Value(Value),
+    /// The text of a string parameter line `QS500="P2002-B8"` (cycle 225's text to engrave):
+    /// only a `QS` parameter takes one, and it takes nothing else.
+    Text(String),
     /// `PREDEF`: the value of the global program settings (`GLOBAL DEF`).
     Predef,
     /// `FMAX`: rapid traverse.
@@ -168,11 +172,11 @@ pub enum CycleValue {
 }
 
 impl CycleValue {
-    /// The word as the control writes it; `None` for a number or Q parameter.
+    /// The word as the control writes it; `None` for a number, a Q parameter or a text.
     #[must_use]
-    pub fn word(self) -> Option<&'static str> {
+    pub fn word(&self) -> Option<&'static str> {
         match self {
-            CycleValue::Value(_) => None,
+            CycleValue::Value(_) | CycleValue::Text(_) => None,
             CycleValue::Predef => Some("PREDEF"),
             CycleValue::Fmax => Some("FMAX"),
             CycleValue::Fauto => Some("FAUTO"),

@@ -11,9 +11,10 @@ use crate::diag::{DiagCode, Severity};
 /// (`Document::edited` in the app).
 ///
 /// Block numbers are the control's own bookkeeping (its editor numbers the blocks itself), so
-/// numbers that are missing, not ascending or written `N…` are never an error: each is said
-/// once per file, a warning at its first block, and the blocks run in their order in the file
-/// (`unconfirmed::IMPORT_BLOCK_NUMBERS`).
+/// numbers that are missing, not ascending, written `N…` or followed by a comment without a
+/// blank (`12;…`) are never an error: each is said once per file, a warning at its first
+/// block, and the blocks run in their order in the file
+/// (`unconfirmed::IMPORT_BLOCK_NUMBERS_ARE_WARNINGS`).
 #[derive(Debug, Default)]
 pub struct AcrossBlocks {
     previous: Option<u32>,
@@ -22,6 +23,7 @@ pub struct AcrossBlocks {
     not_ascending_said: bool,
     missing_said: bool,
     prefixed_said: bool,
+    glued_said: bool,
     lenient_said: [bool; 2],
 }
 
@@ -43,6 +45,9 @@ impl AcrossBlocks {
             let at = Span::new(span.start, span.start + lead + digits);
             if prefix > 0 && !std::mem::replace(&mut self.prefixed_said, true) {
                 found(numbers, DiagCode::BlockNumberPrefixed { number: n }, at);
+            }
+            if text[lead + digits..].starts_with(';') && !std::mem::replace(&mut self.glued_said, true) {
+                found(numbers, DiagCode::CommentAfterNumber { number: n }, at);
             }
             if let Some(previous) = self.previous.filter(|&p| n <= p)
                 && !std::mem::replace(&mut self.not_ascending_said, true)

@@ -1,5 +1,6 @@
 //! Cycle definitions and calls.
-//!   def  := CYCL DEF n name [~] { NL Q<n>=(value|PREDEF|FMAX|FAUTO|AUTO) [;label] [~] }   (continuation lines, DOMAIN.md §8)
+//!   def  := CYCL DEF n name [~] { NL (Q<n>=(value|PREDEF|FMAX|MAX|FAUTO|AUTO) | QS<n>="text") [;label] [~] }
+//!           (continuation lines, DOMAIN.md §8)
 //!   old  := CYCL DEF n.0 name | CYCL DEF n.s words
 //!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS X… Y… Z… [F…|FMAX] { Mn }
 //!   (CYCL CALL POS with all three axes: iTNC 530 cycle manual, DOMAIN.md §11)
@@ -11,8 +12,8 @@ use nom::combinator::{map, value};
 use nom::sequence::terminated;
 
 use super::words::{
-    Step, axis_word, boundary, def_keyword, empty_word, feed, keyword, letters, m_function, run, sp, uint,
-    word_value,
+    Step, axis_word, boundary, def_keyword, empty_word, feed, keyword, letters, m_function, quoted, run, sp,
+    uint, word_value,
 };
 use crate::ast::{
     Axis, BlockBody, CycleDef, CycleDefOld, CycleParam, CycleValue, OldCycleData, OldCycleWord,
@@ -40,8 +41,13 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
         let (body, label) = super::split_comment(line);
         let body = super::strip_tilde(body.trim());
         let label = label.map(|l| super::strip_tilde(l.trim()));
-        let Some(q) = body.strip_prefix('Q') else {
-            return cx.invalid(body, Some(Expected::Nc("Q…=")));
+        // `QS500="TEXT"`: a string parameter takes a quoted text and nothing else.
+        let (q, string) = match body.strip_prefix("QS") {
+            Some(q) => (q, true),
+            None => match body.strip_prefix('Q') {
+                Some(q) => (q, false),
+                None => return cx.invalid(body, Some(Expected::Nc("Q…="))),
+            },
         };
         let (r, index) = match uint(q) {
             Ok(ok) => ok,
@@ -50,15 +56,24 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
         let Some(r) = sp(r).strip_prefix('=') else {
             return cx.invalid(sp(r), Some(Expected::Nc("=")));
         };
-        let (r, value) = match cycle_value(sp(r)) {
+        let value = if string {
+            quoted(sp(r)).map(|(r, text)| (r, CycleValue::Text(text.to_owned())))
+        } else {
+            cycle_value(sp(r))
+        };
+        let (r, value) = match value {
             Ok(ok) => ok,
             Err(e) => return cx.fail(e),
         };
         if !sp(r).is_empty() {
             return cx.invalid(sp(r), None);
         }
-        if out.iter().any(|p: &CycleParam| p.index == index) {
-            cx.error(body, body.len(), DiagCode::Duplicate { word: format!("Q{index}") });
+        if out
+            .iter()
+            .any(|p: &CycleParam| p.index == index && matches!(p.value, CycleValue::Text(_)) == string)
+        {
+            let word = if string { format!("QS{index}") } else { format!("Q{index}") };
+            cx.error(body, body.len(), DiagCode::Duplicate { word });
             return None;
         }
         if k + 1 == params.len() && line.trim_end().ends_with('~') {
@@ -72,12 +87,13 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
 }
 
 /// The value of a parameter line: a number or Q parameter, or `PREDEF`, `FMAX`, `FAUTO` (CAM
-/// systems also write `AUTO`).
+/// systems also write `AUTO`, and `MAX` for `FMAX`).
 fn cycle_value(i: &str) -> Step<'_, CycleValue> {
     let word = |w: &'static str, v: CycleValue| value(v, terminated(tag(w), boundary));
     let words = alt((
         word("PREDEF", CycleValue::Predef),
         word("FMAX", CycleValue::Fmax),
+        word("MAX", CycleValue::Fmax),
         word("FAUTO", CycleValue::Fauto),
         word("AUTO", CycleValue::Fauto),
         map(word_value, CycleValue::Value),

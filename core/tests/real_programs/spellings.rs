@@ -126,10 +126,12 @@ fn m140_retracts_along_the_tool_axis() {
 fn cycle_parameters_with_symbolic_values() {
     let def = |v: &str| format!("0 BEGIN PGM C MM\n1 CYCL DEF 200 BOHREN ~\n  Q206={v} ;VORSCHUB TIEFENZ.\n");
     let value = |v: &str| match parse(&def(v)).0.blocks[1].body().into_owned() {
-        BlockBody::CycleDef(c) => c.params[0].value,
+        BlockBody::CycleDef(c) => c.params[0].value.clone(),
         other => panic!("{other:?}"),
     };
     assert_eq!(value("AUTO"), CycleValue::Fauto);
+    assert_eq!(value("MAX"), CycleValue::Fmax);
+    assert_eq!(value(" MAX"), CycleValue::Fmax);
     assert_eq!(value(" FAUTO"), CycleValue::Fauto);
     assert_eq!(value("FMAX"), CycleValue::Fmax);
     assert_eq!(value("PREDEF"), CycleValue::Predef);
@@ -165,6 +167,66 @@ fn cycle_parameters_with_symbolic_values() {
     assert!((first.z - 2.0).abs() < 1e-9, "first stop {first:?}");
     let deepest = s.segments.iter().map(|g| kin.tip_wcs(&g.axes_at(1.0)).z).fold(f64::INFINITY, f64::min);
     assert!((deepest + 10.0).abs() < 1e-9, "{deepest}");
+}
+
+/// Cycle 225's text in a string parameter line (`QS500="…"`): read with its text, written back
+/// as the control writes it; a Q parameter takes no text and a QS parameter nothing else.
+#[test]
+fn a_string_parameter_line_keeps_its_text() {
+    let def = |line: &str| {
+        format!(
+            "0 BEGIN PGM C MM\n1 CYCL DEF 225 GRAVIEREN ~\n  {line} ~\n  Q513=+5 ;HOEHE\n2 END PGM C MM\n"
+        )
+    };
+    let (p, d) = parse(&def("QS500=\"P2002-B8 2.0L\" ;TEXT"));
+    assert!(d.is_empty(), "{d:?}");
+    let BlockBody::CycleDef(c) = p.blocks[1].body().into_owned() else { panic!("a cycle") };
+    assert_eq!((c.params[0].index, &c.params[0].value), (500, &CycleValue::Text("P2002-B8 2.0L".into())));
+    assert_eq!(c.params[0].label.as_deref(), Some("TEXT"));
+    assert_eq!(c.params[1].value, CycleValue::Value(Value::Number(5.0)));
+    let text = format_program(&p);
+    assert!(text.contains("QS500=\"P2002-B8 2.0L\" ;TEXT ~"), "{text}");
+    assert_eq!(format_program(&parse(&text).0), text, "fmt is stable");
+    for refused in ["Q500=\"AB\"", "QS500=+1", "QS500=\"AB"] {
+        let (_, d) = parse(&def(refused));
+        assert!(d.iter().any(|d| d.is_error()), "{refused}: {d:?}");
+    }
+}
+
+/// A comment block run on over the next lines with `~`, and `12;` without the blank: one
+/// comment each, as if written on one line with the blank; the missing blank said once per file.
+#[test]
+fn comments_wrapped_with_a_tilde_or_written_against_the_number() {
+    let (p, d) = parse(
+        "0 BEGIN PGM C MM\n1 ;free to use~\n under these terms~\n as written\n2 L X+1 R0 FMAX ;move~\n there\n3 END PGM C MM\n",
+    );
+    assert!(d.is_empty(), "{d:?}");
+    assert_eq!(p.blocks.len(), 4);
+    assert_eq!(p.blocks[1].comment(), Some("free to use under these terms as written"));
+    assert_eq!(p.blocks[2].body(), parse("2 L X+1 R0 FMAX\n").0.blocks[0].body());
+    assert_eq!(p.blocks[2].comment(), Some("move there"));
+
+    let (p, d) =
+        parse("0 BEGIN PGM C MM\n12;created by CAM\n13; --- TOOLLIST\n14 L X+1 R0 FMAX\n15 END PGM C MM\n");
+    assert_eq!(
+        d.iter().map(|d| (d.severity, d.code.clone(), d.line)).collect::<Vec<_>>(),
+        [(Severity::Warning, DiagCode::CommentAfterNumber { number: 12 }, 2)]
+    );
+    assert_eq!(p.blocks[1].comment(), Some("created by CAM"));
+    assert_eq!(p.blocks[2].comment(), Some("--- TOOLLIST"));
+    assert_eq!(
+        format_program(&p),
+        format_program(
+            &parse(
+                "0 BEGIN PGM C MM\n12 ;created by CAM\n13 ; --- TOOLLIST\n14 L X+1 R0 FMAX\n15 END PGM C MM\n"
+            )
+            .0
+        )
+    );
+    let m = DiagCode::CommentAfterNumber { number: 12 }.message();
+    assert!(m.de.contains("12;") && m.en.contains("12;"), "{m:?}");
+    // A letter right after the number stays refused.
+    assert!(parse("1L X+1\n").1.iter().any(|d| d.is_error()));
 }
 
 #[test]

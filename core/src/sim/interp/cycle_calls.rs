@@ -135,20 +135,22 @@ impl Interp {
         let values = d
             .params
             .iter()
-            .map(|p| {
-                let v = match p.value {
+            .filter_map(|p| {
+                let v = match &p.value {
                     CycleValue::Value(v) => match cycles::quantity(p.index) {
-                        Some(cycles::Quantity::Length) => self.length(&v)?,
-                        Some(cycles::Quantity::Feed) => self.feed_rate(&v)?,
-                        _ => self.value(&v)?,
+                        Some(cycles::Quantity::Length) => self.length(v),
+                        Some(cycles::Quantity::Feed) => self.feed_rate(v),
+                        _ => self.value(v),
                     },
-                    CycleValue::Fmax => unconfirmed::CYCLE_FMAX_FEED,
+                    CycleValue::Fmax => Ok(unconfirmed::CYCLE_FMAX_FEED),
                     CycleValue::Fauto => {
-                        [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0).ok_or_else(|| word(p))?
+                        [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0).ok_or_else(|| word(p))
                     }
-                    CycleValue::Predef => unconfirmed::predef(p.index).ok_or_else(|| word(p))?,
+                    CycleValue::Predef => unconfirmed::predef(p.index).ok_or_else(|| word(p)),
+                    // A string parameter (cycle 225's text) is no number: no simulated cycle reads one.
+                    CycleValue::Text(_) => return None,
                 };
-                Ok((p.index, v))
+                Some(v.map(|v| (p.index, v)))
             })
             .collect::<R<Vec<_>>>()?;
         Ok(Params::new(d.number, values))
