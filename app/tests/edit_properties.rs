@@ -10,18 +10,20 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
 
 /// Programs with cycles and their `~` lines, labels, calls and jumps, contours with RND/CHF and
-/// radius compensation (look-ahead), a missing END PGM, blank and unnumbered lines.
-const PROGRAMS: [&str; 6] = [
+/// radius compensation (look-ahead), a missing END PGM, blank and unnumbered lines, comments
+/// wrapped with `~` and written against their number (`2;…`).
+const PROGRAMS: [&str; 7] = [
     include_str!("../../tests/fixtures/sim/contour_rl.h"),
     include_str!("../../tests/fixtures/sim/cycle_calls.h"),
     include_str!("../../tests/fixtures/sim/fn_jump_loop.h"),
     include_str!("../../tests/fixtures/sim/call_lbl.h"),
     include_str!("../../static/programs/musterprogramm1.h"),
     "0 BEGIN PGM K MM\n\n1 TOOL CALL 1 Z S1000\nL X+0 Y+0 R0 FMAX\n2 CYCL DEF 200 BOHREN ~\n\n  Q200=+2 ~\n3 L X+10 RND R2\n",
+    "0 BEGIN PGM W MM\n1 ;a comment~\n  wrapped over~\n  three lines\n2;against its number\n3 L X+1 R0 FMAX ;a move~\n there\n4 END PGM W MM\n",
 ];
 
 /// What is typed or pasted: parts of blocks, line breaks, `~`, numbers, labels, corners, junk.
-const PIECES: [&str; 18] = [
+const PIECES: [&str; 19] = [
     "",
     "\n",
     "~",
@@ -38,6 +40,7 @@ const PIECES: [&str; 18] = [
     "Ü",
     "\r\n",
     ";x",
+    "5;",
     "END PGM K MM\n",
     "7 FN 12: IF +Q1 LT +3 GOTO LBL 1\n",
 ];
@@ -215,4 +218,20 @@ fn a_window_that_is_not_in_the_text_is_refused() {
     let doc = Document::new("0 BEGIN PGM Ü MM\n".to_owned());
     assert!(doc.replaced(0..99, "x").is_none());
     assert!(doc.replaced(13..14, "x").is_none(), "not a char boundary");
+}
+
+/// Every one-character edit of the program with wrapped comments and a comment against its
+/// number (a character cut, a `~`, a line break or a blank put in at each place): the spliced
+/// document equals a fresh parse of the text.
+#[test]
+fn every_small_edit_of_wrapped_comments_equals_a_fresh_parse() {
+    let text = PROGRAMS[6];
+    let doc = Document::new(text.to_owned());
+    for at in 0..=text.len() {
+        for (cut, piece) in [(1, ""), (0, "~"), (0, "\n"), (0, " ")] {
+            let t = edit(text, at, cut, piece);
+            let (next, _) = doc.edited(t.clone());
+            assert_same(&next, &Document::new(t));
+        }
+    }
 }
