@@ -11,22 +11,7 @@ use std::time::Instant;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, simulate};
 use schwenkbar_core::{format_program, parse};
-
-/// xorshift64*: small, fixed, reproducible.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
+use schwenkbar_testkit::Rng;
 
 /// Bytes that matter to the grammar, and a few that should not be there.
 const ALPHABET: &[u8] = b" \t~;:=+-.,()\"/*0123456789QLRSXYZABCIJKMNFPDTEGOUVW^\r\xc3\xa4";
@@ -78,23 +63,23 @@ const WORDS: &[&str] = &[
 
 fn mutate(rng: &mut Rng, text: &str) -> String {
     let mut b = text.as_bytes().to_vec();
-    for _ in 0..1 + rng.below(4) {
-        let at = rng.below(b.len() + 1);
-        match rng.below(6) {
-            0 => b.insert(at, ALPHABET[rng.below(ALPHABET.len())]),
+    for _ in 0..1 + rng.index(4) {
+        let at = rng.index(b.len() + 1);
+        match rng.index(6) {
+            0 => b.insert(at, ALPHABET[rng.index(ALPHABET.len())]),
             1 if at < b.len() => {
                 b.remove(at);
             }
-            2 if at < b.len() => b[at] = ALPHABET[rng.below(ALPHABET.len())],
+            2 if at < b.len() => b[at] = ALPHABET[rng.index(ALPHABET.len())],
             3 => {
-                let w = WORDS[rng.below(WORDS.len())].as_bytes();
+                let w = WORDS[rng.index(WORDS.len())].as_bytes();
                 b.splice(at..at, w.iter().copied());
             }
             4 => b.truncate(at),
             _ => {
-                let end = (at + rng.below(12)).min(b.len());
+                let end = (at + rng.index(12)).min(b.len());
                 let piece = b[at..end].to_vec();
-                let to = rng.below(b.len() + 1);
+                let to = rng.index(b.len() + 1);
                 b.splice(to..to, piece);
             }
         }
@@ -131,13 +116,13 @@ fn main() {
     for k in 0..n {
         let whole = k % 10_000 == 0;
         let input = if whole {
-            let p = rng.below(programs.len());
+            let p = rng.index(programs.len());
             mutate(&mut rng, &programs[p])
         } else {
             // One block, sometimes with the next line as its continuation.
-            let i = rng.below(lines.len());
+            let i = rng.index(lines.len());
             let mut s = lines[i].clone();
-            if rng.below(8) == 0
+            if rng.index(8) == 0
                 && let Some(next) = lines.get(i + 1)
             {
                 s.push('\n');

@@ -384,23 +384,12 @@ mod tests {
         }
     }
 
-    /// xorshift64*: reproducible inputs without a dependency.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 >> 12;
-            self.0 ^= self.0 << 25;
-            self.0 ^= self.0 >> 27;
-            self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-        }
-        fn below(&mut self, n: u64) -> u64 {
-            self.next() % n
-        }
-        /// Up to `max` random digits.
-        fn digits(&mut self, out: &mut String, max: u64) {
-            for _ in 0..self.below(max + 1) {
-                out.push(char::from(b'0' + self.below(10) as u8));
-            }
+    use schwenkbar_testkit::Rng;
+
+    /// Up to `max` random digits.
+    fn digits(rng: &mut Rng, out: &mut String, max: u64) {
+        for _ in 0..rng.below(max + 1) {
+            out.push(char::from(b'0' + rng.below(10) as u8));
         }
     }
 
@@ -550,7 +539,7 @@ mod tests {
         for i in 0..400 {
             // Every binade, normal and subnormal, near the overflow and at ordinary sizes.
             let bits = match i % 4 {
-                0 => rng.next() & 0x7FEF_FFFF_FFFF_FFFF,
+                0 => rng.next_u64() & 0x7FEF_FFFF_FFFF_FFFF,
                 1 => rng.below(1 << 52),
                 2 => 0x7FEF_FFFF_FFFF_FFFF - rng.below(1 << 20),
                 _ => (rng.below(80) + 1000) << 52 | rng.below(1 << 52),
@@ -589,11 +578,11 @@ mod tests {
                 _ => {}
             }
             let int = [0, 1, 3, 8, 16, 17, 19, 25][rng.below(8) as usize];
-            rng.digits(&mut s, int);
+            digits(&mut rng, &mut s, int);
             if rng.below(3) != 0 {
                 s.push('.');
                 let frac = [0, 2, 4, 7, 15, 22, 30][rng.below(7) as usize];
-                rng.digits(&mut s, frac);
+                digits(&mut rng, &mut s, frac);
             }
             if rng.below(4) == 0 {
                 s.push(if rng.below(2) == 0 { 'e' } else { 'E' });

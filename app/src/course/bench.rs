@@ -486,15 +486,20 @@ mod tests {
         assert_eq!(d.label(0.0, 60.0).1, "middle");
     }
 
-    #[test]
-    fn the_gauge_marks_limits_symmetry_start_and_both_candidates() {
-        let g = Gauge::new(
+    /// The A gauge of a table turning −90…+10 with the candidates A+45 and A−45 (chosen).
+    fn a_table_gauge() -> Gauge {
+        Gauge::new(
             RotaryAxis::A,
             Some(Limits { min: -90.0, max: 10.0 }),
             0.0,
             0.0,
             &[(45.0, false), (-45.0, true)],
-        );
+        )
+    }
+
+    #[test]
+    fn the_gauge_marks_limits_symmetry_start_and_both_candidates() {
+        let g = a_table_gauge();
         let [min, max] = g.limits.clone().expect("limit switches");
         assert_eq!((min.word.as_str(), max.word.as_str()), ("A-90", "A+10"));
         assert_eq!(min.at, DIAL.point(-90.0, DIAL.r));
@@ -530,13 +535,7 @@ mod tests {
 
     #[test]
     fn the_gauge_svg_carries_every_mark_and_marks_the_chosen_candidate() {
-        let g = Gauge::new(
-            RotaryAxis::A,
-            Some(Limits { min: -90.0, max: 10.0 }),
-            0.0,
-            0.0,
-            &[(45.0, false), (-45.0, true)],
-        );
+        let g = a_table_gauge();
         let svg = g.svg(Lang::De);
         assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>"));
         assert_eq!(svg.matches("data-testid=\"gauge-limit\"").count(), 2);

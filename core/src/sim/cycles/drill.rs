@@ -283,6 +283,11 @@ mod tests {
     const F: Option<f64> = Some(150.0);
     const FMAX: Option<f64> = None;
 
+    /// A stop on the Z axis of a hole at X0 Y0 and its feed (`FMAX`: `None`).
+    fn at(z: f64, f: Option<f64>) -> (f64, f64, f64, Option<f64>) {
+        (0.0, 0.0, z, f)
+    }
+
     fn drilling(cycle: u32, extra: &[(u32, f64)]) -> Params {
         let mut p =
             params(cycle, &[(200, 2.0), (201, -20.0), (206, 150.0), (202, 5.0), (203, 0.0), (204, 50.0)]);
@@ -356,7 +361,6 @@ mod tests {
         // FMAX back to 2 above the depth reached.
         let p = drilling(203, &[(202, 6.0), (212, 2.0), (213, 2.0), (205, 3.0), (208, 500.0), (256, 0.5)]);
         let got = path(&drill_203(&p, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
-        let at = |z: f64, f| (0.0, 0.0, z, f);
         let back = Some(500.0);
         #[rustfmt::skip]
         let want = vec![
@@ -390,7 +394,6 @@ mod tests {
             ],
         );
         let got = path(&peck_205(&p, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
-        let at = |z: f64, f| (0.0, 0.0, z, f);
         let back = Some(1000.0);
         #[rustfmt::skip]
         let want = vec![
@@ -410,24 +413,17 @@ mod tests {
         assert_eq!(&got[..3], &[at(2.0, FMAX), at(-4.0, Some(750.0)), at(-16.0, F)]);
     }
 
+    /// Cycle 208 from 2 above the surface to −5 at pitch 2, not pre-drilled, DR+ (Q351 = +1);
+    /// each test sets the bore (Q335).
+    const BORE_208: [(u32, f64); 8] =
+        [(200, 2.0), (201, -5.0), (206, 150.0), (334, 2.0), (203, 0.0), (204, 20.0), (342, 0.0), (351, 1.0)];
+
     #[test]
     fn cycle_208_semicircle_helix_full_circle_and_back_to_the_centre() {
         // Tool Ø 10, bore Ø 16: helix radius 3 about (40, 30). From 2 above the surface down to
         // −5 with pitch 2: 3.5 turns; DR+ (Q351 = +1).
-        let p = params(
-            208,
-            &[
-                (200, 2.0),
-                (201, -5.0),
-                (206, 150.0),
-                (334, 2.0),
-                (203, 0.0),
-                (204, 20.0),
-                (335, 16.0),
-                (342, 0.0),
-                (351, 1.0),
-            ],
-        );
+        let mut p = params(208, &BORE_208);
+        p.set(335, 16.0);
         let moves = bore_mill_208(&p, DVec3::new(40.0, 30.0, 10.0), 5.0).expect("cycle");
         let got = path(&moves);
         let at = |x: f64, y: f64, z: f64, f| (x, y, z, f);
@@ -451,18 +447,9 @@ mod tests {
 
     #[test]
     fn cycle_208_tool_size_against_the_bore() {
-        let base = [
-            (200, 2.0),
-            (201, -5.0),
-            (206, 150.0),
-            (334, 2.0),
-            (203, 0.0),
-            (204, 20.0),
-            (342, 0.0),
-            (351, -1.0),
-        ];
         let with = |d: f64, pre: f64| {
-            let mut p = params(208, &base);
+            let mut p = params(208, &BORE_208);
+            p.set(351, -1.0);
             p.set(335, d);
             p.set(342, pre);
             bore_mill_208(&p, DVec3::ZERO, 5.0)
