@@ -39,6 +39,9 @@ pub enum SimErrorCode {
     /// A cycle parameter written `PREDEF` or `FAUTO` whose value the run does not know (no
     /// global default for it, no feed in the TOOL CALL).
     CycleWordUnknown { cycle: u32, param: u32, word: &'static str },
+    /// `FMAX` or `FAUTO` for a cycle parameter that is no feed rate (`Q201=FMAX`): the cycle
+    /// dialog offers the words only for feed rates.
+    CycleWordNotFeed { cycle: u32, param: u32, word: &'static str },
     /// A machining cycle with a positive depth Q201.
     DepthSign { cycle: u32, value: f64 },
     /// The tool is larger than the bore, pocket or slot the cycle mills (`size`: its diameter or
@@ -151,7 +154,9 @@ impl SimErrorCode {
             SimErrorCode::CompensationOffPlane => {
                 t("Radiuskorrektur nicht erlaubt", "Radius compensation not permitted")
             }
-            SimErrorCode::RepCount { .. } => t("Eingabewert falsch", "Incorrect input value"),
+            SimErrorCode::RepCount { .. } | SimErrorCode::CycleWordNotFeed { .. } => {
+                t("Eingabewert falsch", "Incorrect input value")
+            }
             SimErrorCode::NoCycle => t("Zyklus nicht definiert", "Cycle not defined"),
             SimErrorCode::CycleParamsMissing { .. }
             | SimErrorCode::CycleParamMissing { .. }
@@ -286,6 +291,14 @@ impl SimErrorCode {
                     format!("CYCL DEF {cycle}: Q{param}={word}, but no feed in the TOOL CALL"),
                 ),
             },
+            SimErrorCode::CycleWordNotFeed { cycle, param, word } => t(
+                format!(
+                    "CYCL DEF {cycle}: Q{param}={word}, aber Q{param} ist kein Vorschub: bitte eine Zahl eingeben"
+                ),
+                format!(
+                    "CYCL DEF {cycle}: Q{param}={word}, but Q{param} is no feed rate: please enter a number"
+                ),
+            ),
             SimErrorCode::DepthSign { cycle, value } => t(
                 format!("Zyklus {cycle}: Tiefe Q201 = {} ist positiv", prose(*value, Some(4), Lang::De)),
                 format!("Cycle {cycle}: depth Q201 = {} is positive", prose(*value, Some(4), Lang::En)),

@@ -167,6 +167,31 @@ fn cycle_parameters_with_symbolic_values() {
     assert!((first.z - 2.0).abs() < 1e-9, "first stop {first:?}");
     let deepest = s.segments.iter().map(|g| kin.tip_wcs(&g.axes_at(1.0)).z).fold(f64::INFINITY, f64::min);
     assert!((deepest + 10.0).abs() < 1e-9, "{deepest}");
+
+    // FMAX and FAUTO are words for feed rates: as a depth the run stops at the call with the
+    // control's "Eingabewert falsch", never drilling 99999 mm deep.
+    let stop = src.replace("Q201=-10 ", "Q201=MAX ");
+    let (program, diags) = parse(&stop);
+    assert!(diags.iter().all(|d| !d.is_error()), "{diags:?}");
+    let sim = simulate(&program, &Machine::builtin("ac-table").expect("m"), &SimOptions::default());
+    let e = sim.error.expect("a depth of FMAX stops");
+    assert_eq!(e.block, 4);
+    let (m, detail) = (e.code.message(), e.code.detail());
+    assert_eq!(m.de, "Eingabewert falsch");
+    assert!(detail.de.contains("Q201=FMAX") && detail.en.contains("no feed rate"), "{detail:?}");
+    // A parameter no simulated cycle reads needs no feed: cycle 22's Q11=AUTO without a feed in
+    // the TOOL CALL runs, and the call says the cycle is not simulated.
+    let (p, sim) = run("0 BEGIN PGM C MM\n\
+        1 TOOL CALL 1 Z S1000\n\
+        2 CYCL DEF 22 AUSRAEUMEN ~\n\
+        \x20 Q10=-10 ;ZUSTELL-TIEFE ~\n\
+        \x20 Q11=AUTO ;VORSCHUB TIEFENZ. ~\n\
+        \x20 Q208=MAX ;VORSCHUB RUECKZUG\n\
+        3 L X+0 Y+0 Z+50 R0 FMAX M3\n\
+        4 CYCL CALL\n\
+        5 END PGM C MM\n");
+    let m = after(&p, &sim, 4).message.expect("said on its block");
+    assert!(m.de.contains("Zyklus 22 nicht simuliert"), "{m:?}");
 }
 
 /// Cycle 225's text in a string parameter line (`QS500="…"`): read with its text, written back

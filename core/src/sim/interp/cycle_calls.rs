@@ -136,16 +136,32 @@ impl Interp {
             .params
             .iter()
             .filter_map(|p| {
+                let quantity = cycles::quantity(p.index);
                 let v = match &p.value {
-                    CycleValue::Value(v) => match cycles::quantity(p.index) {
+                    CycleValue::Value(v) => match quantity {
                         Some(cycles::Quantity::Length) => self.length(v),
                         Some(cycles::Quantity::Feed) => self.feed_rate(v),
                         _ => self.value(v),
                     },
-                    CycleValue::Fmax => Ok(unconfirmed::CYCLE_FMAX_FEED),
-                    CycleValue::Fauto => {
-                        [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0).ok_or_else(|| word(p))
+                    // The cycle dialog offers FMAX and FAUTO for feed rates only (TNC 640 cycle
+                    // manual, e.g. "Q253 … alternatively FMAX, FAUTO").
+                    CycleValue::Fmax | CycleValue::Fauto
+                        if matches!(quantity, Some(cycles::Quantity::Length | cycles::Quantity::Other)) =>
+                    {
+                        Err(SimErrorCode::CycleWordNotFeed {
+                            cycle: d.number,
+                            param: p.index,
+                            word: p.value.word().unwrap_or_default(),
+                        })
                     }
+                    CycleValue::Fmax => Ok(unconfirmed::CYCLE_FMAX_FEED),
+                    CycleValue::Fauto => match [self.tool.feed, self.feed].into_iter().find(|&f| f > 0.0) {
+                        Some(f) => Ok(f),
+                        // A parameter no simulated cycle reads (cycle 22's Q11): its value is not
+                        // needed, so an unknown feed stops nothing.
+                        None if quantity.is_none() => return None,
+                        None => Err(word(p)),
+                    },
                     CycleValue::Predef => unconfirmed::predef(p.index).ok_or_else(|| word(p)),
                     // A string parameter (cycle 225's text) is no number: no simulated cycle reads one.
                     CycleValue::Text(_) => return None,
