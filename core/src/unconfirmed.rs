@@ -491,7 +491,8 @@ pub const CYCLE_FMAX_FEED: f64 = 99_999.0;
 /// 2 mm, 2nd set-up clearance Q204 50 mm, pre-positioning feed Q253 750 mm/min, retraction feed
 /// Q208 rapid, chip-breaking distance Q256 0.2 mm, dwell times Q210/Q211 0 s, overlap factor
 /// Q370 1, climb milling Q351 +1, helical plunge Q366 1); any other parameter written `PREDEF`
-/// stops the run with a message. **UNCONFIRMED**: a real control takes them from its
+/// stops the run with a message. A cycle 208 written without Q351 (programs for older software)
+/// takes the same climb milling. **UNCONFIRMED**: a real control takes them from its
 /// GLOBAL DEF settings.
 #[must_use]
 pub fn predef(param: u32) -> Option<f64> {

@@ -224,7 +224,9 @@ pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
 pub(super) fn bore_mill_208(p: &Params, pos: DVec3, r: f64) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;
     let (f, pitch, nominal, predrilled) = (p.get(206)?, p.get(334)?, p.get(335)?, p.get(342)?);
-    let dir = if p.get(351)? < 0.0 { -1.0 } else { 1.0 };
+    // Programs written for older software leave Q351 out (CAM output for DMC machines among
+    // them): the PREDEF value, climb milling (`unconfirmed::predef`).
+    let dir = if p.or(351, crate::unconfirmed::predef(351).unwrap_or(1.0)) < 0.0 { -1.0 } else { 1.0 };
     let total = depth(p)?;
     let tool = 2.0 * r;
     if nominal < tool - EPS {
@@ -443,6 +445,20 @@ mod tests {
         let r = |x: f64| (x * 1e9).round() / 1e9;
         assert_eq!(sweeps.into_iter().map(r).collect::<Vec<_>>(), vec![1.0, 2.0, 2.0, 2.0, 1.0, 2.0]);
         assert!(moves.iter().filter_map(|m| m.arc).skip(1).all(|a| a.centre == DVec2::new(40.0, 30.0)));
+    }
+
+    #[test]
+    fn cycle_208_without_q351_mills_as_with_climb_milling() {
+        // Programs for older software leave Q351 out: the helix runs as with Q351 = +1 (DR+).
+        let bore = |list: &[(u32, f64)]| {
+            let mut p = params(208, list);
+            p.set(335, 16.0);
+            bore_mill_208(&p, DVec3::new(40.0, 30.0, 10.0), 5.0).expect("cycle")
+        };
+        let without: Vec<(u32, f64)> = BORE_208.iter().copied().filter(|&(q, _)| q != 351).collect();
+        assert_eq!(bore(&without), bore(&BORE_208));
+        let up_cut: Vec<(u32, f64)> = without.iter().copied().chain([(351, -1.0)]).collect();
+        assert_ne!(bore(&without), bore(&up_cut));
     }
 
     #[test]
