@@ -56,6 +56,14 @@ pub(crate) struct Rec {
     pub explanation: Option<Arc<Explanation>>,
 }
 
+/// What the parts of one step share: the run's context, the record a full-detail step fills
+/// (none in the fast run) and the block being executed.
+pub(crate) struct At<'s, 'r> {
+    pub cx: &'s Cx<'s>,
+    pub rec: Option<&'r mut Rec>,
+    pub block: usize,
+}
+
 /// A stored cycle definition.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum StoredCycle {
@@ -326,8 +334,8 @@ impl Interp {
 
     /// Executes the next block; `Ok(false)` if it was only listed (after M30, or skipped).
     pub fn step(&mut self, cx: &Cx<'_>, rec: Option<&mut Rec>) -> R<bool> {
-        let mut rec = rec;
         let idx = self.pc;
+        let mut at = At { cx, rec, block: idx };
         let Some(block) = cx.program.blocks.get(idx) else {
             self.pc = cx.program.blocks.len();
             return Ok(false);
@@ -340,7 +348,7 @@ impl Interp {
             if matches!(*body, BlockBody::EndPgm { .. }) {
                 self.pc = cx.program.blocks.len();
             }
-            note(&mut rec, || {
+            note(&mut at.rec, || {
                 Text::new(
                     "Nach Programmende (M30/M2): nicht ausgeführt",
                     "After program end (M30/M2): not executed",
@@ -349,7 +357,7 @@ impl Interp {
             return Ok(false);
         }
         if block.skip() && cx.options.block_skip {
-            note(&mut rec, || Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
+            note(&mut at.rec, || Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
             return Ok(false);
         }
         if !matches!(&*body, BlockBody::CycleDefOld(d) if d.number == 7) {
@@ -364,7 +372,7 @@ impl Interp {
                 self.q.insert(113, if *unit == Unit::Inch { 1.0 } else { 0.0 });
                 self.unit = *unit;
                 if *unit == Unit::Inch {
-                    note(&mut rec, || {
+                    note(&mut at.rec, || {
                         Text::new(
                             "Programm in Inch: Längen in Zoll (× 25,4 mm), F in 1/10 inch/min",
                             "Program in inches: lengths × 25.4 mm, F in 1/10 inch/min",
@@ -378,22 +386,22 @@ impl Interp {
                 self.pc = cx.program.blocks.len();
             }
             BlockBody::BlkForm(b) => self.blk_form(cx, b)?,
-            BlockBody::ToolCall(t) => self.tool_call(cx, t, &mut rec)?,
+            BlockBody::ToolCall(t) => self.tool_call(&mut at, t)?,
             BlockBody::L(line) => {
-                self.line(cx, &mut rec, idx, line)?;
+                self.line(&mut at, line)?;
                 if let Some(mb) = line.m_words.mb {
-                    self.m140(cx, &mut rec, idx, mb)?;
+                    self.m140(&mut at, mb)?;
                 }
-                self.modal_call(cx, &mut rec, idx, line)?;
+                self.modal_call(&mut at, line)?;
             }
             BlockBody::MFunctions(m, w) => {
                 self.spindle_m(m);
-                m_note(&mut rec, m);
+                m_note(&mut at.rec, m);
                 if let Some(mb) = w.mb {
-                    self.m140(cx, &mut rec, idx, mb)?;
+                    self.m140(&mut at, mb)?;
                 }
                 if m.contains(&99) {
-                    self.call_cycle(cx, &mut rec, idx)?;
+                    self.call_cycle(&mut at)?;
                 }
                 self.m89 = m.contains(&89) || (self.m89 && !m.contains(&99));
                 self.end_m(m);
@@ -402,16 +410,16 @@ impl Interp {
             // cycle with CYCL DEF"; DOMAIN.md §11); a CYCL CALL does not (the TNC 306/406 rule).
             BlockBody::CycleDef(d) => {
                 self.m89 = false;
-                self.cycle_def(cx, &mut rec, idx, d)?;
+                self.cycle_def(&mut at, d)?;
             }
             BlockBody::CyclCall { m } => {
                 self.spindle_m(m);
-                self.call_cycle(cx, &mut rec, idx)?;
+                self.call_cycle(&mut at)?;
                 self.end_m(m);
             }
-            BlockBody::Plane(p) => self.plane(cx, &mut rec, idx, p)?,
+            BlockBody::Plane(p) => self.plane(&mut at, p)?,
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
-            _ => self.other_block(cx, &mut rec, idx, &body, pending_corner)?,
+            _ => self.other_block(&mut at, &body, pending_corner)?,
         }
         Ok(true)
     }
@@ -422,22 +430,21 @@ impl Interp {
     #[inline(never)]
     fn other_block(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         body: &BlockBody,
         pending_corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
     ) -> R<()> {
         match body {
-            BlockBody::Header { text } => self.header(cx, rec, text),
+            BlockBody::Header { text } => self.header(at, text),
             BlockBody::ToolDef { .. }
             | BlockBody::Stop { .. }
             | BlockBody::QsAssign { .. }
-            | BlockBody::TouchProbe(_) => self.program_data(rec, body)?,
+            | BlockBody::TouchProbe(_) => self.program_data(at, body)?,
             BlockBody::Cc(m) => {
                 let last = self.geom_start.unwrap_or(self.programmed());
                 self.pole = Some(self.pole_of(&m.axes, last)?);
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::new(
                         "CC: Kreismittelpunkt/Pol (keine Bewegung)",
                         "CC: circle centre/pole (no motion)",
@@ -445,22 +452,22 @@ impl Interp {
                 });
             }
             BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
-                self.contour(cx, rec, idx, body, m)?;
+                self.contour(at, body, m)?;
             }
             BlockBody::Rnd { feed, .. } => {
-                self.corner_block(cx, rec, idx, "RND", feed.as_ref(), pending_corner)?;
+                self.corner_block(at, "RND", feed.as_ref(), pending_corner)?;
             }
             BlockBody::Chf { feed, .. } => {
-                self.corner_block(cx, rec, idx, "CHF", feed.as_ref(), pending_corner)?;
+                self.corner_block(at, "CHF", feed.as_ref(), pending_corner)?;
             }
-            BlockBody::Appr(a) => self.approach(cx, rec, idx, a)?,
-            BlockBody::Dep(a) => self.depart(cx, rec, idx, a)?,
-            BlockBody::CyclCallPat { feed, m } => self.call_pattern(cx, rec, idx, feed.as_ref(), m)?,
-            BlockBody::CyclCallPos(l) => self.call_pos(cx, rec, idx, l)?,
+            BlockBody::Appr(a) => self.approach(at, a)?,
+            BlockBody::Dep(a) => self.depart(at, a)?,
+            BlockBody::CyclCallPat { feed, m } => self.call_pattern(at, feed.as_ref(), m)?,
+            BlockBody::CyclCallPos(l) => self.call_pos(at, l)?,
             BlockBody::PatternDef(items) => {
-                self.pattern = Some(idx);
+                self.pattern = Some(at.block);
                 let n = items.len();
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
                         format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
@@ -468,10 +475,10 @@ impl Interp {
                 });
             }
             BlockBody::FnMath(f) => self.fn_math(f)?,
-            BlockBody::FnJump(j) => self.fn_jump(cx, j)?,
+            BlockBody::FnJump(j) => self.fn_jump(at.cx, j)?,
             BlockBody::CycleDefOld(d) => {
                 self.m89 &= d.sub != 0;
-                self.old_cycle(cx, rec, idx, d)?;
+                self.old_cycle(at, d)?;
             }
             BlockBody::TransDatum { axes } => self.datum(axes)?,
             BlockBody::TransDatumReset => {
@@ -490,8 +497,8 @@ impl Interp {
                 self.tf.rotation = 0.0;
                 self.sync_pos();
             }
-            BlockBody::FunctionTcpm(t) => self.function_tcpm(rec, *t),
-            BlockBody::FunctionResetTcpm => self.function_reset_tcpm(rec),
+            BlockBody::FunctionTcpm(t) => self.function_tcpm(at, *t),
+            BlockBody::FunctionResetTcpm => self.function_reset_tcpm(at),
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)
                     && let Some(ret) = self.calls.pop()
@@ -501,11 +508,11 @@ impl Interp {
             }
             BlockBody::CallLbl { label, rep } => {
                 let rep = rep.map(|v| self.repeats(&v)).transpose()?;
-                self.call_lbl(cx, idx, label, rep)?;
+                self.call_lbl(at.cx, at.block, label, rep)?;
             }
             BlockBody::CallPgm { path } => {
                 let p = path.clone();
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("CALL PGM {p}: nicht simuliert"),
                         format!("CALL PGM {p}: not simulated"),
@@ -513,11 +520,11 @@ impl Interp {
                 })
             }
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
-            BlockBody::SysRead(r) => self.sysread(cx, rec, r)?,
-            BlockBody::FnOther { number, text } => self.fn_other(rec, *number, text)?,
+            BlockBody::SysRead(r) => self.sysread(at, r)?,
+            BlockBody::FnOther { number, text } => self.fn_other(at, *number, text)?,
             BlockBody::Unknown { text } => {
                 let t = text.clone();
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
                 })
             }
@@ -542,7 +549,7 @@ impl Interp {
     /// what the control would do. Out of line, like the other rare kinds: the page split leaves
     /// them to the wasm loaded after the first screen.
     #[inline(never)]
-    fn program_data(&mut self, rec: &mut Option<&mut Rec>, body: &BlockBody) -> R<()> {
+    fn program_data(&mut self, at: &mut At<'_, '_>, body: &BlockBody) -> R<()> {
         match body {
             BlockBody::ToolDef { tool, length, radius } => {
                 let l = length.map(|v| self.length(&v)).transpose()?;
@@ -550,7 +557,7 @@ impl Interp {
                 let tool = self.tool_of(tool)?;
                 self.tool_defs.retain(|(t, ..)| *t != tool);
                 self.tool_defs.push((tool, l, r));
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::new(
                         "TOOL DEF: Werkzeug im Programm definiert",
                         "TOOL DEF: tool defined in the program",
@@ -559,7 +566,7 @@ impl Interp {
             }
             BlockBody::Stop { m } => {
                 self.spindle_m(m);
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::new(
                         "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
                         "STOP: the control stops here (continue with NC start); the trainer runs on",
@@ -569,7 +576,7 @@ impl Interp {
             }
             BlockBody::QsAssign { index, .. } => {
                 let n = *index;
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("QS{n}: String-Parameter werden nicht simuliert"),
                         format!("QS{n}: string parameters are not simulated"),
@@ -578,7 +585,7 @@ impl Interp {
             }
             BlockBody::TouchProbe(d) => {
                 let n = d.number;
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
                         format!("TCH PROBE {n}: touch-probe cycle not simulated"),
@@ -595,7 +602,7 @@ impl Interp {
     /// BLK FORM ([`unconfirmed::HEADER_BLANK_AT_DATUM`]); any other header line is shown as
     /// written.
     #[inline(never)]
-    fn header(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, text: &str) {
+    fn header(&mut self, at: &mut At<'_, '_>, text: &str) {
         // The first cuboid of the header applies (and a later line does not scan the program
         // for a BLK FORM again).
         let Some(size) =
@@ -604,8 +611,8 @@ impl Interp {
             return;
         };
         let (x, y, z) = (size.x, size.y, size.z);
-        if cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
-            note(rec, || {
+        if at.cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
+            note(&mut at.rec, || {
                 Text::new(
                     "Rohteil des Einrichteblatts: das Programm hat eine BLK FORM, sie gilt",
                     "Blank of the setup sheet: the program has a BLK FORM, which applies",
@@ -614,12 +621,12 @@ impl Interp {
             return;
         }
         self.blank = Some(Blank { min: DVec3::new(0.0, 0.0, -z), max: DVec3::new(x, y, 0.0) });
-        self.rebuild_bodies(cx.machine);
+        self.rebuild_bodies(at.cx.machine);
         let sizes = |l| {
             let n = |v: f64| crate::number::prose(v, None, l);
             (format!("{} × {} × {} mm", n(x), n(y), n(z)), format!("X0…{} Y0…{} Z−{}…0", n(x), n(y), n(z)))
         };
-        note(rec, || {
+        note(&mut at.rec, || {
             let ((de, de_blk), (en, en_blk)) = (sizes(crate::Lang::De), sizes(crate::Lang::En));
             Text::owned(
                 format!("Rohteil des Einrichteblatts {de} als BLK FORM {de_blk}"),

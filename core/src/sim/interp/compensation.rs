@@ -105,9 +105,8 @@ impl Interp {
     /// programmed point).
     pub(super) fn run_element(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         elem: Elem,
         word: Option<RadiusComp>,
         rate: Rate,
@@ -119,31 +118,31 @@ impl Interp {
         };
         let plane = self.work_plane();
         match (before, side) {
-            (None, None) => self.follow(cx, rec, idx, &elem, rate)?,
+            (None, None) => self.follow(at, &elem, rate)?,
             (None, Some(s)) => {
-                let t = match self.next_element(cx, idx, elem.end, elem.tangent(&plane, true)) {
+                let t = match self.next_element(at.cx, at.block, elem.end, elem.tangent(&plane, true)) {
                     Some((n, w)) if w.is_none_or(|w| side_of(w) == Some(s)) => n.tangent(&plane, false),
                     _ => None,
                 }
                 .or_else(|| elem.tangent(&plane, true));
                 let shift = t.map_or(DVec3::ZERO, |t| s * self.tool.radius * plane.normal.cross(t));
-                self.follow(cx, rec, idx, &Elem::line(self.pos_i, elem.end + shift), rate)?;
+                self.follow(at, &Elem::line(self.pos_i, elem.end + shift), rate)?;
             }
             (Some(_), None) => {
                 if let Shape::Arc { .. } = elem.shape {
-                    self.follow(cx, rec, idx, &Elem::line(self.pos_i, elem.start), rate)?;
-                    self.follow(cx, rec, idx, &elem, rate)?;
+                    self.follow(at, &Elem::line(self.pos_i, elem.start), rate)?;
+                    self.follow(at, &elem, rate)?;
                 } else {
-                    self.follow(cx, rec, idx, &Elem::line(self.pos_i, elem.end), rate)?;
+                    self.follow(at, &Elem::line(self.pos_i, elem.end), rate)?;
                 }
             }
             (Some(c), Some(s)) if c.side != s => return Err(SimErrorCode::CompensationChange),
             (Some(_), Some(s)) => {
                 let next = self
-                    .next_element(cx, idx, elem.end, elem.tangent(&plane, true))
+                    .next_element(at.cx, at.block, elem.end, elem.tangent(&plane, true))
                     .filter(|(_, w)| w.is_none_or(|w| side_of(w) == Some(s)))
                     .map(|(n, _)| n);
-                self.compensated(cx, rec, idx, &elem, s, next.as_ref(), rate)?;
+                self.compensated(at, &elem, s, next.as_ref(), rate)?;
             }
         }
         self.comp = side.map(|s| Comp { side: s, at: elem.end, centre: self.pos_i });
@@ -159,12 +158,10 @@ impl Interp {
     /// it (on the offset path after an inside corner, else around the corner point on the
     /// transition arc), to the intersection with `next`'s offset path at an inside corner or
     /// perpendicular to the element's end.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn compensated(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         elem: &Elem,
         s: f64,
         next: Option<&Elem>,
@@ -178,7 +175,7 @@ impl Interp {
             // Along the tool axis only: the tool keeps its side offset.
             Err(OffsetError::NoDirection) => {
                 let shifted = elem.end + plane.planar(here - elem.start);
-                return self.follow(cx, rec, idx, &Elem::line(here, shifted), rate);
+                return self.follow(at, &Elem::line(here, shifted), rate);
             }
             Err(OffsetError::RadiusGone { radius }) => {
                 return Err(SimErrorCode::ToolRadiusTooLarge { radius: r, contour_radius: radius });
@@ -234,7 +231,7 @@ impl Interp {
         pieces.push(off);
         pieces.extend(after);
         for p in &pieces {
-            self.follow(cx, rec, idx, p, rate)?;
+            self.follow(at, p, rate)?;
         }
         Ok(())
     }
@@ -243,20 +240,20 @@ impl Interp {
     /// element; after it comes the element after the corner, from the piece's end.
     pub(super) fn compensated_piece(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         piece: &Elem,
         corner: DVec3,
         rate: Rate,
     ) -> R<bool> {
         let Some(c) = self.active_comp() else { return Ok(false) };
         let plane = self.work_plane();
-        let next = self.next_element(cx, idx, corner, piece.tangent(&plane, true)).and_then(|(n, w)| {
-            w.is_none_or(|w| side_of(w) == Some(c.side))
-                .then(|| n.tail_from(&plane, n.fraction_of(&plane, piece.end), piece.end))
-        });
-        self.compensated(cx, rec, idx, piece, c.side, next.as_ref(), rate)?;
+        let next =
+            self.next_element(at.cx, at.block, corner, piece.tangent(&plane, true)).and_then(|(n, w)| {
+                w.is_none_or(|w| side_of(w) == Some(c.side))
+                    .then(|| n.tail_from(&plane, n.fraction_of(&plane, piece.end), piece.end))
+            });
+        self.compensated(at, piece, c.side, next.as_ref(), rate)?;
         self.comp = Some(Comp { side: c.side, at: piece.end, centre: self.pos_i });
         if let Some(t) = piece.tangent(&plane, true) {
             self.tangent = Some(t);
@@ -264,26 +261,33 @@ impl Interp {
         Ok(true)
     }
 
-    /// The radius of the tool centre path of an APPR/DEP arc of programmed radius `r` turning
-    /// `dir` on side `s` ([`unconfirmed::APPR_DEP_RADIUS_OF_CENTRE_PATH`]).
-    fn approach_radius(&self, r: f64, s: f64, dir: f64) -> f64 {
-        if unconfirmed::APPR_DEP_RADIUS_OF_CENTRE_PATH {
+    /// The centre of an APPR/DEP arc of programmed radius `r` turning `dir` on side `s`, beside
+    /// the contour point `p` (`left`: left of the contour's direction in the working plane), and
+    /// the radius of its tool centre path ([`unconfirmed::APPR_DEP_RADIUS_OF_CENTRE_PATH`]); a
+    /// radius of zero is the control's error.
+    fn approach_arc(
+        &self,
+        r: f64,
+        s: f64,
+        dir: f64,
+        p: DVec3,
+        left: DVec3,
+    ) -> Result<(DVec3, f64), ApprDepReason> {
+        let rho = if unconfirmed::APPR_DEP_RADIUS_OF_CENTRE_PATH {
             r.abs()
         } else {
             r.abs() - dir * s * self.tool.radius
+        };
+        if r == 0.0 || rho <= 0.0 {
+            return Err(ApprDepReason::ZeroRadius);
         }
+        Ok((p + dir * rho * left, rho))
     }
 
     /// `APPR LT/LN/CT/LCT`: from the start point PS (where the tool stands) via the auxiliary
     /// point PH to the first contour point PA, switching the compensation on there.
     #[inline(never)]
-    pub(super) fn approach(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        a: &ApprDep,
-    ) -> R<()> {
+    pub(super) fn approach(&mut self, at: &mut At<'_, '_>, a: &ApprDep) -> R<()> {
         self.spindle_m(&a.m);
         let rate = self.rate(a.feed.as_ref())?;
         let kind = a.kind.as_str();
@@ -293,7 +297,7 @@ impl Interp {
         self.geom_start = None;
         let pa = self.target(&a.axes, self.programmed())?;
         let t = self
-            .next_element(cx, idx, pa, None)
+            .next_element(at.cx, at.block, pa, None)
             .and_then(|(e, _)| e.tangent(&plane, false))
             .ok_or(fail(ApprDepReason::NoContourAfter))?;
         let left = plane.normal.cross(t);
@@ -318,12 +322,8 @@ impl Interp {
             ApprKind::Ct => {
                 let r = length(a.radius)?;
                 let dir = s * r.signum();
-                let rho = self.approach_radius(r, s, dir);
-                if r == 0.0 || rho <= 0.0 {
-                    return Err(fail(ApprDepReason::ZeroRadius));
-                }
+                let (m, _) = self.approach_arc(r, s, dir, pa_c, left).map_err(fail)?;
                 let sweep = dir * angle(a.cca)?.to_radians();
-                let m = pa_c + dir * rho * left;
                 let ph = m + plane.rotate(plane.planar(pa_c - m), -sweep);
                 vec![
                     Elem::line(ps, ph),
@@ -334,11 +334,7 @@ impl Interp {
             // compensation.
             ApprKind::Lct => {
                 let r = length(a.radius)?;
-                let rho = self.approach_radius(r, s, s);
-                if r == 0.0 || rho <= 0.0 {
-                    return Err(fail(ApprDepReason::ZeroRadius));
-                }
-                let m = pa_c + s * rho * left;
+                let (m, rho) = self.approach_arc(r, s, s, pa_c, left).map_err(fail)?;
                 let ph = arc::tangent_point(&plane, m, rho, s, ps, true)
                     .ok_or(fail(ApprDepReason::PointInsideArc))?;
                 let sweep = arc::directed(&plane, ph - m, pa_c - m, s);
@@ -349,7 +345,7 @@ impl Interp {
             }
         };
         for p in &pieces {
-            self.follow(cx, rec, idx, p, rate)?;
+            self.follow(at, p, rate)?;
         }
         self.comp = Some(Comp { side: s, at: pa, centre: self.pos_i });
         self.end_m(&a.m);
@@ -359,13 +355,7 @@ impl Interp {
     /// `DEP LT/LN/CT/LCT`: from the last contour point PE away from the contour to the end point
     /// PN; the compensation ends.
     #[inline(never)]
-    pub(super) fn depart(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        a: &ApprDep,
-    ) -> R<()> {
+    pub(super) fn depart(&mut self, at: &mut At<'_, '_>, a: &ApprDep) -> R<()> {
         self.spindle_m(&a.m);
         let rate = self.rate(a.feed.as_ref())?;
         let kind = a.kind.as_str();
@@ -386,12 +376,8 @@ impl Interp {
             ApprKind::Ct => {
                 let r = length(a.radius)?;
                 let dir = s * r.signum();
-                let rho = self.approach_radius(r, s, dir);
-                if r == 0.0 || rho <= 0.0 {
-                    return Err(fail(ApprDepReason::ZeroRadius));
-                }
+                let (m, _) = self.approach_arc(r, s, dir, pe_c, left).map_err(fail)?;
                 let sweep = dir * angle(a.cca)?.to_radians();
-                let m = pe_c + dir * rho * left;
                 let pn = m + plane.rotate(plane.planar(pe_c - m), sweep);
                 vec![Elem { start: pe_c, end: pn, shape: Shape::Arc { centre: m, sweep } }]
             }
@@ -400,11 +386,7 @@ impl Interp {
             ApprKind::Lct => {
                 let pn = self.target(&a.axes, c.at)?;
                 let r = length(a.radius)?;
-                let rho = self.approach_radius(r, s, s);
-                if r == 0.0 || rho <= 0.0 {
-                    return Err(fail(ApprDepReason::ZeroRadius));
-                }
-                let m = pe_c + s * rho * left;
+                let (m, rho) = self.approach_arc(r, s, s, pe_c, left).map_err(fail)?;
                 let ph = arc::tangent_point(&plane, m, rho, s, pn, false)
                     .ok_or(fail(ApprDepReason::PointInsideArc))?;
                 let sweep = arc::directed(&plane, pe_c - m, ph - m, s);
@@ -415,7 +397,7 @@ impl Interp {
             }
         };
         for p in &pieces {
-            self.follow(cx, rec, idx, p, rate)?;
+            self.follow(at, p, rate)?;
         }
         self.comp = None;
         self.end_m(&a.m);

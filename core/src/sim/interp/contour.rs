@@ -215,14 +215,7 @@ impl Interp {
 
     /// Runs `C`, `CR`, `CT`, `LP`, `CP`.
     #[inline(never)]
-    pub(super) fn contour(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        body: &BlockBody,
-        m: &Motion,
-    ) -> R<()> {
+    pub(super) fn contour(&mut self, at: &mut At<'_, '_>, body: &BlockBody, m: &Motion) -> R<()> {
         self.spindle_m(&m.m);
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
@@ -233,7 +226,7 @@ impl Interp {
         }
         let plane = self.plane_of(body);
         if plane != self.work_plane() {
-            return self.contour_off_plane(cx, rec, idx, elem, m, rate, plane);
+            return self.contour_off_plane(at, elem, m, rate, plane);
         }
         // After a rounding the element starts at the tangent point, not at the corner.
         let elem = if geometric == here {
@@ -241,18 +234,18 @@ impl Interp {
         } else {
             elem.tail_from(&plane, elem.fraction_of(&plane, here), here)
         };
-        let elem = self.before_corner(cx, idx, elem)?;
+        let elem = self.before_corner(at.cx, at.block, elem)?;
         if m.axes.iter().any(|w| linear_index(w.axis).is_none()) {
-            note(rec, || {
+            note(&mut at.rec, || {
                 Text::new(
                     "Drehachse im Kreissatz nicht simuliert",
                     "Rotary axis in an arc block not simulated",
                 )
             });
         }
-        self.run_element(cx, rec, idx, elem, m.comp, rate)?;
+        self.run_element(at, elem, m.comp, rate)?;
         if m.m.contains(&99) {
-            self.call_cycle(cx, rec, idx)?;
+            self.call_cycle(at)?;
         }
         self.end_m(&m.m);
         Ok(())
@@ -262,12 +255,10 @@ impl Interp {
     /// systems write, `CC X… Z…` + `CP IPA… DR…`): the tool centre on the programmed path, no
     /// radius compensation (the control compensates in the working plane only) and no tangent
     /// for a following `CT` or corner.
-    #[allow(clippy::too_many_arguments)]
     fn contour_off_plane(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         elem: Elem,
         m: &Motion,
         rate: Rate,
@@ -276,10 +267,10 @@ impl Interp {
         if self.active_comp().is_some() || matches!(m.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
             return Err(SimErrorCode::CompensationOffPlane);
         }
-        self.follow_in(cx, rec, idx, &elem, rate, plane)?;
+        self.follow_in(at, &elem, rate, plane)?;
         self.tangent = None;
         if m.m.contains(&99) {
-            self.call_cycle(cx, rec, idx)?;
+            self.call_cycle(at)?;
         }
         self.end_m(&m.m);
         Ok(())
@@ -341,9 +332,8 @@ impl Interp {
     #[inline(never)]
     pub(super) fn corner_block(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         word: &'static str,
         feed: Option<&Feed<Value>>,
         pending: Option<Result<PendingCorner, SimErrorCode>>,
@@ -360,37 +350,22 @@ impl Interp {
             _ if self.feed > 0.0 => Rate::Feed(self.feed),
             _ => Rate::Rapid,
         };
-        if !self.compensated_piece(cx, rec, idx, &p.piece, p.corner, rate)? {
-            self.follow(cx, rec, idx, &p.piece, rate)?;
+        if !self.compensated_piece(at, &p.piece, p.corner, rate)? {
+            self.follow(at, &p.piece, rate)?;
         }
         self.geom_start = Some(p.corner);
         Ok(())
     }
 
     /// Moves along `elem` (I-CS) with the rotary axes standing, recording the exact path.
-    pub(super) fn follow(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        elem: &Elem,
-        rate: Rate,
-    ) -> R<()> {
-        self.follow_in(cx, rec, idx, elem, rate, self.work_plane())
+    pub(super) fn follow(&mut self, at: &mut At<'_, '_>, elem: &Elem, rate: Rate) -> R<()> {
+        self.follow_in(at, elem, rate, self.work_plane())
     }
 
     /// [`Self::follow`] for an element in `plane`.
-    fn follow_in(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        elem: &Elem,
-        rate: Rate,
-        plane: WorkPlane,
-    ) -> R<()> {
+    fn follow_in(&mut self, at: &mut At<'_, '_>, elem: &Elem, rate: Rate, plane: WorkPlane) -> R<()> {
         let target = self.map.apply(elem.end);
-        self.check_linear(cx, target)?;
+        self.check_linear(at.cx, target)?;
         let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
         let to = MachineAxes { linear: target, ..self.axes };
         let length = elem.length(&plane);
@@ -409,7 +384,7 @@ impl Interp {
                 }))
             }
         };
-        self.go_along(cx, rec, idx, kind, to, rate, length, path)?;
+        self.go_along(at, kind, to, rate, length, path)?;
         self.pos_i = elem.end;
         if let Some(t) = elem.tangent(&plane, true) {
             self.tangent = Some(t);

@@ -9,13 +9,7 @@ use crate::sim::cycles::{ArcTo, CycleRun, Params, PatternValues, rapid};
 
 impl Interp {
     #[inline(never)]
-    pub(super) fn old_cycle(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        d: &CycleDefOld,
-    ) -> R<()> {
+    pub(super) fn old_cycle(&mut self, at: &mut At<'_, '_>, d: &CycleDefOld) -> R<()> {
         let words: &[OldCycleWord] = match &d.data {
             OldCycleData::Words(w) => w,
             _ => &[],
@@ -75,19 +69,19 @@ impl Interp {
                 }
                 self.sync_pos();
             }
-            (11, _) => note(rec, || {
+            (11, _) => note(&mut at.rec, || {
                 Text::new("Zyklus 11 (Maßfaktor) nicht simuliert", "Cycle 11 (scaling) not simulated")
             }),
-            (19, 0) => note(rec, || {
+            (19, 0) => note(&mut at.rec, || {
                 Text::new(
                     "Zyklus 19: die Winkel folgen im Satz 19.1",
                     "Cycle 19: the angles follow in block 19.1",
                 )
             }),
-            (19, _) => self.cycle19(cx, rec, idx, words)?,
+            (19, _) => self.cycle19(at, words)?,
             (n, 0) => {
                 self.cycle = Some(StoredCycle::Old(n));
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("Zyklus {n} (alte Form) definiert"),
                         format!("Cycle {n} (old form) defined"),
@@ -101,19 +95,13 @@ impl Interp {
 
     /// `CYCL DEF n …`: a machining cycle is stored for its calls; 220 and 221 are DEF-active and
     /// call the stored one at once.
-    pub(super) fn cycle_def(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        d: &CycleDef,
-    ) -> R<()> {
+    pub(super) fn cycle_def(&mut self, at: &mut At<'_, '_>, d: &CycleDef) -> R<()> {
         if matches!(d.number, 220 | 221) {
-            return self.pattern_cycle(cx, rec, idx, d);
+            return self.pattern_cycle(at, d);
         }
-        self.cycle = Some(StoredCycle::New(idx));
+        self.cycle = Some(StoredCycle::New(at.block));
         let n = d.number;
-        note(rec, || {
+        note(&mut at.rec, || {
             Text::owned(
                 format!("Zyklus {n} definiert, wirkt beim Aufruf"),
                 format!("Cycle {n} defined, acts when called"),
@@ -174,54 +162,50 @@ impl Interp {
 
     /// The stored machining cycle's parameters; `None` (with a note) for an old-style cycle,
     /// which is not simulated.
-    fn stored_params(&self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>) -> R<Option<Params>> {
+    fn stored_params(&self, at: &mut At<'_, '_>) -> R<Option<Params>> {
         match self.cycle {
             None => Err(SimErrorCode::NoCycle),
             Some(StoredCycle::Old(n)) => {
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
                 });
                 Ok(None)
             }
-            Some(StoredCycle::New(b)) => match cx.program.blocks.get(b).and_then(crate::Block::stored_body) {
-                Some(BlockBody::CycleDef(d)) => self.params_of(d).map(Some),
-                _ => Err(SimErrorCode::NoCycle),
-            },
+            Some(StoredCycle::New(b)) => {
+                match at.cx.program.blocks.get(b).and_then(crate::Block::stored_body) {
+                    Some(BlockBody::CycleDef(d)) => self.params_of(d).map(Some),
+                    _ => Err(SimErrorCode::NoCycle),
+                }
+            }
         }
     }
 
     /// Runs the stored cycle at the current position with its parameters adjusted by `adjust`;
     /// the number of moves, or `None` when it is not simulated (said in the block's message).
-    fn run_stored(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        adjust: impl Fn(&mut Params),
-    ) -> R<Option<(u32, usize)>> {
-        let Some(mut p) = self.stored_params(cx, rec)? else { return Ok(None) };
+    fn run_stored(&mut self, at: &mut At<'_, '_>, adjust: impl Fn(&mut Params)) -> R<Option<(u32, usize)>> {
+        let Some(mut p) = self.stored_params(at)? else { return Ok(None) };
         adjust(&mut p);
         let n = p.cycle;
         let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)?
         else {
-            note(rec, || {
+            note(&mut at.rec, || {
                 Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
             });
             return Ok(None);
         };
         if let Some(t) = simplified {
-            note(rec, || t);
+            note(&mut at.rec, || t);
         }
-        self.run_moves(cx, rec, idx, &moves)?;
+        self.run_moves(at, &moves)?;
         Ok(Some((n, moves.len())))
     }
 
     /// `M99`, `CYCL CALL` and each block of a modal `M89` call: the stored cycle here.
-    pub(super) fn call_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize) -> R<()> {
-        if let Some((number, n)) = self.run_stored(cx, rec, idx, |_| {})?
-            && rec.as_ref().is_some_and(|r| r.message.is_none())
+    pub(super) fn call_cycle(&mut self, at: &mut At<'_, '_>) -> R<()> {
+        if let Some((number, n)) = self.run_stored(at, |_| {})?
+            && at.rec.as_ref().is_some_and(|r| r.message.is_none())
         {
-            note(rec, || {
+            note(&mut at.rec, || {
                 Text::owned(
                     format!("Zyklus {number} ausgeführt ({n} Bewegungen in der Bearbeitungsebene)"),
                     format!("Cycle {number} executed ({n} moves in the working plane)"),
@@ -236,13 +220,7 @@ impl Interp {
     /// machining cycle" (HEIDENHAIN TNC 306/406 technical manual, "M-function M89"); it ends with
     /// `M99` (which calls once more, in [`Self::line`]) or a new `CYCL DEF` (iTNC 530 cycle
     /// manual, DOMAIN.md §11).
-    pub(super) fn modal_call(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        line: &Line,
-    ) -> R<()> {
+    pub(super) fn modal_call(&mut self, at: &mut At<'_, '_>, line: &Line) -> R<()> {
         if line.m.contains(&99) {
             self.m89 = false;
             return Ok(());
@@ -254,29 +232,23 @@ impl Interp {
             }
         }
         if self.m89 && !self.ended && line.axes.iter().any(|w| linear_index(w.axis).is_some()) {
-            self.call_cycle(cx, rec, idx)?;
+            self.call_cycle(at)?;
         }
         Ok(())
     }
 
     /// The moves of a cycle, each recorded as a segment (arcs and helices exact at any fraction).
-    fn run_moves(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        moves: &[CycleMove],
-    ) -> R<()> {
+    fn run_moves(&mut self, at: &mut At<'_, '_>, moves: &[CycleMove]) -> R<()> {
         for m in moves {
             let l = self.map.apply(m.target);
-            self.check_linear(cx, l)?;
+            self.check_linear(at.cx, l)?;
             let (kind, rate) = match m.feed {
                 None => (SegmentKind::Rapid, Rate::Rapid),
                 Some(f) => (SegmentKind::CycleFeed, Rate::Feed(f)),
             };
             let target = MachineAxes { linear: l, ..self.axes };
             match m.arc {
-                None => self.go(cx, rec, idx, kind, target, [0.0; 2], rate, || SegmentPath::Linear)?,
+                None => self.go(at, kind, target, [0.0; 2], rate, || SegmentPath::Linear)?,
                 Some(ArcTo { centre, sweep }) => {
                     // The I-CS arc about the tool axis (Z) carried through the I-CS → axes map,
                     // which only turns, mirrors and shifts (as the contour's arcs).
@@ -293,7 +265,7 @@ impl Interp {
                         lead: mm * DVec3::new(0.0, 0.0, rise),
                     }));
                     let length = (u.length() * sweep).hypot(rise);
-                    self.go_along(cx, rec, idx, kind, target, rate, length, path)?;
+                    self.go_along(at, kind, target, rate, length, path)?;
                 }
             }
             self.pos_i = m.target;
@@ -343,24 +315,26 @@ impl Interp {
     #[inline(never)]
     pub(super) fn call_pattern(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         feed: Option<&Feed<Value>>,
         m: &[u32],
     ) -> R<()> {
         self.spindle_m(m);
-        let items =
-            match self.pattern.and_then(|b| cx.program.blocks.get(b)).and_then(crate::Block::stored_body) {
-                Some(BlockBody::PatternDef(items)) => items,
-                _ => return Err(SimErrorCode::NoPattern),
-            };
+        let items = match self
+            .pattern
+            .and_then(|b| at.cx.program.blocks.get(b))
+            .and_then(crate::Block::stored_body)
+        {
+            Some(BlockBody::PatternDef(items)) => items,
+            _ => return Err(SimErrorCode::NoPattern),
+        };
         let mut points = Vec::new();
         for item in items.iter() {
             points.extend(cycles::pattern_points(&self.pattern_values(item)?));
         }
         points.truncate(MAX_PATTERN_POINTS);
-        let Some(p) = self.stored_params(cx, rec)? else {
+        let Some(p) = self.stored_params(at)? else {
             self.end_m(m);
             return Ok(());
         };
@@ -380,13 +354,12 @@ impl Interp {
                 pre.push(rapid(self.pos_i.truncate().extend(height)));
             }
             pre.push(CycleMove { target: xy.extend(self.pos_i.z.max(height)), feed: rate, arc: None });
-            self.run_moves(cx, rec, idx, &pre)?;
-            moves +=
-                pre.len() + self.run_stored(cx, rec, idx, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
+            self.run_moves(at, &pre)?;
+            moves += pre.len() + self.run_stored(at, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
         }
         let (number, k) = (p.cycle, points.len());
-        if rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            note(rec, || {
+        if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
+            note(&mut at.rec, || {
                 Text::owned(
                     format!("CYCL CALL PAT: Zyklus {number} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
                     format!("CYCL CALL PAT: cycle {number} executed at {k} points ({moves} moves)"),
@@ -403,15 +376,9 @@ impl Interp {
     /// ([`unconfirmed::CYCL_CALL_POS_CLEARANCE`]), then in the plane (manual, "Calling a cycle
     /// with CYCL CALL POS"). The block's feed acts only on these moves.
     #[inline(never)]
-    pub(super) fn call_pos(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        l: &Line,
-    ) -> R<()> {
+    pub(super) fn call_pos(&mut self, at: &mut At<'_, '_>, l: &Line) -> R<()> {
         self.spindle_m(&l.m);
-        let Some(p) = self.stored_params(cx, rec)? else {
+        let Some(p) = self.stored_params(at)? else {
             self.end_m(&l.m);
             return Ok(());
         };
@@ -438,12 +405,12 @@ impl Interp {
             let h = surface + p.or(204, 0.0);
             vec![go(here.truncate().extend(h)), go(target.truncate().extend(h)), go(target)]
         };
-        self.run_moves(cx, rec, idx, &pre)?;
+        self.run_moves(at, &pre)?;
         let shift = target.z;
-        if let Some((number, n)) = self.run_stored(cx, rec, idx, |q| shift_surface(q, shift))?
-            && rec.as_ref().is_some_and(|r| r.message.is_none())
+        if let Some((number, n)) = self.run_stored(at, |q| shift_surface(q, shift))?
+            && at.rec.as_ref().is_some_and(|r| r.message.is_none())
         {
-            note(rec, || {
+            note(&mut at.rec, || {
                 Text::owned(
                     format!("CYCL CALL POS: Zyklus {number} ausgeführt ({n} Bewegungen)"),
                     format!("CYCL CALL POS: cycle {number} executed ({n} moves)"),
@@ -460,7 +427,7 @@ impl Interp {
     /// selected fixed cycle"). To the first point: up to Q204, in the plane, (the cycle) down to
     /// Q200; between the points at Q200 (Q301 = 0) or Q204 (Q301 = 1), on a straight line or,
     /// for 220 with Q365 = 1, on the circle; at the end to Q204 ([`unconfirmed::PATTERN_CYCLE_END`]).
-    fn pattern_cycle(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, d: &CycleDef) -> R<()> {
+    fn pattern_cycle(&mut self, at: &mut At<'_, '_>, d: &CycleDef) -> R<()> {
         let p = self.params_of(d)?;
         let (points, circle) = if d.number == 220 {
             let (points, centre, step) = cycles::circle_220(&p)?;
@@ -488,8 +455,8 @@ impl Interp {
                 let arc = on_circle.map(|(centre, step)| ArcTo { centre, sweep: step.to_radians() });
                 vec![CycleMove { target: xy.extend(here.z), feed: None, arc }]
             };
-            self.run_moves(cx, rec, idx, &pre)?;
-            let Some((n, count)) = self.run_stored(cx, rec, idx, |q| {
+            self.run_moves(at, &pre)?;
+            let Some((n, count)) = self.run_stored(at, |q| {
                 q.set(200, clear);
                 q.set(203, surface);
                 q.set(204, between);
@@ -502,12 +469,12 @@ impl Interp {
         }
         if unconfirmed::PATTERN_CYCLE_END && self.pos_i.z < high {
             moves += 1;
-            self.run_moves(cx, rec, idx, &[rapid(self.pos_i.truncate().extend(high))])?;
+            self.run_moves(at, &[rapid(self.pos_i.truncate().extend(high))])?;
         }
         let (number, k) = (d.number, points.len().min(MAX_PATTERN_POINTS));
         let called = called.map_or_else(String::new, |n| n.to_string());
-        if rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            note(rec, || {
+        if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
+            note(&mut at.rec, || {
                 Text::owned(
                     format!(
                         "Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"

@@ -66,12 +66,10 @@ impl Interp {
 
     /// Moves to `target`, checking the motion for collisions and recording a segment when a
     /// full record is asked for.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn go(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        block: usize,
+        at: &mut At<'_, '_>,
+
         kind: SegmentKind,
         target: MachineAxes,
         rotary_delta: [f64; 2],
@@ -79,26 +77,26 @@ impl Interp {
         path: impl FnOnce() -> SegmentPath,
     ) -> R<()> {
         let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
-        if moves && (rec.is_some() || self.bodies.is_some()) {
+        if moves && (at.rec.is_some() || self.bodies.is_some()) {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
-            let duration = duration(cx, self.unit, rate, lin, rot);
-            let seg = self.segment(block, kind, target, rotary_delta, duration, path());
-            self.record(rec, seg)?;
+            let duration = duration(at.cx, self.unit, rate, lin, rot);
+            let seg = self.segment(at.block, kind, target, rotary_delta, duration, path());
+            self.record(at, seg)?;
         }
         self.axes = target;
         Ok(())
     }
 
     /// Checks `seg` for collisions, then records it when a full record is asked for.
-    fn record(&mut self, rec: &mut Option<&mut Rec>, seg: Segment) -> R<()> {
+    fn record(&mut self, at: &mut At<'_, '_>, seg: Segment) -> R<()> {
         let mut clear = std::mem::take(&mut self.clearances);
         let collided = self.collided(&seg, &mut clear);
         self.clearances = clear;
         if let Some(c) = collided {
             return Err(SimErrorCode::Collision(Box::new(c)));
         }
-        if let Some(r) = rec.as_deref_mut() {
+        if let Some(r) = at.rec.as_deref_mut() {
             r.segments.push(seg);
         }
         Ok(())
@@ -121,22 +119,20 @@ impl Interp {
     /// Moves the linear axes to `target` along `path` of `length` mm (an arc may end where it
     /// started), checking it for collisions and recording a segment when a full record is asked
     /// for.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn go_along(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        block: usize,
+        at: &mut At<'_, '_>,
+
         kind: SegmentKind,
         target: MachineAxes,
         rate: Rate,
         length: f64,
         path: SegmentPath,
     ) -> R<()> {
-        if length > 0.0 && (rec.is_some() || self.bodies.is_some()) {
-            let duration = duration(cx, self.unit, rate, length, 0.0);
-            let seg = self.segment(block, kind, target, [0.0; 2], duration, path);
-            self.record(rec, seg)?;
+        if length > 0.0 && (at.rec.is_some() || self.bodies.is_some()) {
+            let duration = duration(at.cx, self.unit, rate, length, 0.0);
+            let seg = self.segment(at.block, kind, target, [0.0; 2], duration, path);
+            self.record(at, seg)?;
         }
         self.axes = target;
         Ok(())
@@ -167,7 +163,7 @@ impl Interp {
         })
     }
 
-    pub(super) fn line(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, idx: usize, line: &Line) -> R<()> {
+    pub(super) fn line(&mut self, at: &mut At<'_, '_>, line: &Line) -> R<()> {
         self.spindle_m(&line.m);
         if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
             self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
@@ -202,21 +198,21 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
-        m_note(rec, &line.m);
+        m_note(&mut at.rec, &line.m);
         if rot_prog && self.spat.is_some() {
-            rot = self.spatial_tool_axis(cx, rec, spatial)?;
+            rot = self.spatial_tool_axis(at, spatial)?;
         }
-        self.check_rotary(cx, rot)?;
+        self.check_rotary(at.cx, rot)?;
         // A straight contour element in the working plane: it ends at the tangent point when a
         // RND/CHF follows, and leaves its direction for a CT.
         self.geom_start = None;
         if lin_prog && !m91 && !rot_prog {
-            let elem = self.before_corner(cx, idx, Elem::line(self.programmed(), p))?;
+            let elem = self.before_corner(at.cx, at.block, Elem::line(self.programmed(), p))?;
             if self.active_comp().is_some() || matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
                 // A contour element with the tool radius compensation on, switched on or off.
-                self.run_element(cx, rec, idx, elem, line.comp, rate)?;
+                self.run_element(at, elem, line.comp, rate)?;
                 if line.m.contains(&99) {
-                    self.call_cycle(cx, rec, idx)?;
+                    self.call_cycle(at)?;
                 }
                 self.end_m(&line.m);
                 return Ok(());
@@ -241,13 +237,13 @@ impl Interp {
             };
         }
         if lin_prog || rot_prog {
-            self.check_linear(cx, l)?;
-            let delta = self.rotary_delta(cx, rot, self.m126);
+            self.check_linear(at.cx, l)?;
+            let delta = self.rotary_delta(at.cx, rot, self.m126);
             let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
             let target = MachineAxes { linear: l, rotary: rot, letters: self.axes.letters };
             let (ics_to_wcs, from) = (self.tf.ics_to_wcs(), self.programmed());
             let kin = tcpm.then_some(self.kin);
-            self.go(cx, rec, idx, kind, target, delta, rate, || match kin {
+            self.go(at, kind, target, delta, rate, || match kin {
                 // The tip on the straight line between the programmed points (W-CS).
                 Some(kin) => SegmentPath::Tcpm(Box::new(TcpmPath {
                     kin,
@@ -266,7 +262,7 @@ impl Interp {
             }
         }
         if line.m.contains(&99) {
-            self.call_cycle(cx, rec, idx)?;
+            self.call_cycle(at)?;
         }
         self.end_m(&line.m);
         Ok(())

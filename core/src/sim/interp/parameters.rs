@@ -85,7 +85,7 @@ impl Interp {
     /// `FN n` functions the simulator does not compute: `FN 14` stops with the program's own
     /// error; every other one is said on its block.
     #[inline(never)]
-    pub(super) fn fn_other(&mut self, rec: &mut Option<&mut Rec>, number: u32, text: &str) -> R<()> {
+    pub(super) fn fn_other(&mut self, at: &mut At<'_, '_>, number: u32, text: &str) -> R<()> {
         if number == 14 {
             return Err(SimErrorCode::FnError { text: text.to_owned() });
         }
@@ -93,9 +93,9 @@ impl Interp {
             && unconfirmed::TABREAD_ASSUMES_ZERO
             && let Some((first, count)) = crate::parse::tabread_targets(text)
         {
-            return self.tabread_assumed(rec, first, count);
+            return self.tabread_assumed(at, first, count);
         }
-        note(rec, || {
+        note(&mut at.rec, || {
             Text::owned(
                 format!("FN {number}: {text} – wird nicht simuliert"),
                 format!("FN {number}: {text} – not simulated"),
@@ -106,7 +106,7 @@ impl Interp {
 
     /// `FN 28: TABREAD` into `count` parameters from `first` without the table
     /// ([`unconfirmed::TABREAD_ASSUMES_ZERO`]): a parameter without a value gets 0.
-    pub(super) fn tabread_assumed(&mut self, rec: &mut Option<&mut Rec>, first: u32, count: u32) -> R<()> {
+    pub(super) fn tabread_assumed(&mut self, at: &mut At<'_, '_>, first: u32, count: u32) -> R<()> {
         let mut said = (Vec::new(), Vec::new());
         for index in first..first.saturating_add(count.min(100)) {
             let name = QName(index);
@@ -123,7 +123,7 @@ impl Interp {
                 }
             }
         }
-        note(rec, || {
+        note(&mut at.rec, || {
             Text::owned(
                 format!("FN 28: TABREAD – die Tabelle wird nicht simuliert: {}", said.0.join(", ")),
                 format!("FN 28: TABREAD – the table is not simulated: {}", said.1.join(", ")),
@@ -140,7 +140,7 @@ impl Interp {
     /// would load it (the tool table's group 50, same page), of the active tool without IDX.
     /// Anything else is said on the block and leaves the parameter as it was.
     #[inline(never)]
-    pub(super) fn sysread(&mut self, cx: &Cx<'_>, rec: &mut Option<&mut Rec>, r: &SysRead) -> R<()> {
+    pub(super) fn sysread(&mut self, at: &mut At<'_, '_>, r: &SysRead) -> R<()> {
         let nr = self.value(&r.nr)?;
         let idx = r.idx.map(|v| self.value(&v)).transpose()?;
         let axis = |i: f64, linear: DVec3| -> Option<f64> {
@@ -169,7 +169,7 @@ impl Interp {
             (270, 1.0, Some(i)) => axis(i, self.programmed()),
             (50, 1.0..=5.0, _) if nr.fract() == 0.0 => {
                 let number = idx.map_or(self.tool.number, |i| i.max(0.0) as u32);
-                let (entry, known) = self.tool_entry(cx, &ToolRef::Number(number));
+                let (entry, known) = self.tool_entry(at.cx, &ToolRef::Number(number));
                 assumed = (!known).then_some(number);
                 let corner = entry.corner_radius.unwrap_or(0.0);
                 let mm = [entry.length, entry.radius, corner, entry.dl, entry.dr][nr as usize - 1];
@@ -188,7 +188,7 @@ impl Interp {
                     ),
                     None => Default::default(),
                 };
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!(
                             "FN 18: ID{id} gelesen: {target} = {}{de}",
@@ -201,7 +201,7 @@ impl Interp {
                     )
                 });
             }
-            None => note(rec, || {
+            None => note(&mut at.rec, || {
                 Text::owned(
                     format!("FN 18: ID{id} wird nicht simuliert, {target} bleibt unverändert"),
                     format!("FN 18: ID{id} is not simulated, {target} stays as it was"),

@@ -56,13 +56,13 @@ impl Interp {
         Ok(())
     }
 
-    pub(super) fn tool_call(&mut self, cx: &Cx<'_>, t: &ToolCall, rec: &mut Option<&mut Rec>) -> R<()> {
+    pub(super) fn tool_call(&mut self, at: &mut At<'_, '_>, t: &ToolCall) -> R<()> {
         self.tcpm_reset_before("TOOL CALL")?;
         let mut dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let mut dr = t.dr.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
         let mut written_length = None;
         if let Some(tool) = &t.tool {
-            let (entry, known) = self.tool_entry(cx, &self.tool_of(tool)?);
+            let (entry, known) = self.tool_entry(at.cx, &self.tool_of(tool)?);
             // The control adds the table's deltas to those of the TOOL CALL.
             dl += entry.dl;
             dr += entry.dr;
@@ -76,7 +76,7 @@ impl Interp {
             self.tool.known = known;
             if self.tool.length != entry.length + dl {
                 let (l, sim) = (entry.length, self.tool.length);
-                note(rec, || zero_tool_note(l, sim));
+                note(&mut at.rec, || zero_tool_note(l, sim));
             }
             if !known {
                 let (l, r) = (self.tool.length, self.tool.radius);
@@ -85,7 +85,7 @@ impl Interp {
                     "" => self.tool.number.to_string(),
                     name => format!("\"{name}\""),
                 };
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
                         format!("Tool {n} not in the tool table: assuming L={l} R={r}"),
@@ -97,7 +97,7 @@ impl Interp {
             self.tool.axis = letter(a);
             if a != Axis::Z {
                 let c = self.tool.axis;
-                note(rec, || {
+                note(&mut at.rec, || {
                     Text::owned(
                         format!("Werkzeugachse {c}: simuliert wird mit Werkzeugachse Z"),
                         format!("Tool axis {c}: simulated with tool axis Z"),
@@ -119,7 +119,7 @@ impl Interp {
         let written_length = written_length.unwrap_or(self.tool.length);
         self.q.insert(114, self.in_program_unit(written_length));
         self.kin.tool_length = self.tool.length;
-        self.rebuild_bodies(cx.machine);
+        self.rebuild_bodies(at.cx.machine);
         self.sync_pos();
         Ok(())
     }

@@ -56,10 +56,10 @@ impl Interp {
     /// `FUNCTION TCPM`: on as `M128`; the feed and path modes are not told apart
     /// (unconfirmed::Decision::TcpmFunction). `AXIS POS` takes `A`, `B`, `C` as axis angles,
     /// `AXIS SPAT` as spatial angles ([`Self::spatial_tool_axis`]), each block's anew.
-    pub(super) fn function_tcpm(&mut self, rec: &mut Option<&mut Rec>, t: Tcpm) {
+    pub(super) fn function_tcpm(&mut self, at: &mut At<'_, '_>, t: Tcpm) {
         self.set_tcpm(true);
         self.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
-        note(rec, || match t.axis {
+        note(&mut at.rec, || match t.axis {
             TcpmAxis::Pos => switched_on("FUNCTION TCPM"),
             TcpmAxis::Spat => {
                 let on = switched_on("FUNCTION TCPM");
@@ -81,8 +81,7 @@ impl Interp {
     /// limits, the shorter path) — unconfirmed::Decision::TcpmAxisSpat.
     pub(super) fn spatial_tool_axis(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
+        at: &mut At<'_, '_>,
         written: [Option<(f64, bool)>; 3],
     ) -> R<[f64; 2]> {
         let Some(modal) = self.spat.as_mut() else { return Ok(self.axes.rotary) };
@@ -99,14 +98,17 @@ impl Interp {
         let mw = self.tf.mirror_w_matrix();
         let r = self.tf.r() * mw * orientation::spatial(a, b, c) * mw;
         let start = self.axes.rotary_values();
-        let mut expl =
-            Self::solved(solve::solve(cx.machine, &r, &SolveOptions { start, ..SolveOptions::default() }))?;
+        let mut expl = Self::solved(solve::solve(
+            at.cx.machine,
+            &r,
+            &SolveOptions { start, ..SolveOptions::default() },
+        ))?;
         expl.decisions.push(unconfirmed::Decision::TcpmAxisSpat);
         let expl = Arc::new(expl);
         let axes = expl.chosen_axes().unwrap_or_default();
         let words = format!("SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c));
         let chosen = axis_words(&axes);
-        note(rec, || {
+        note(&mut at.rec, || {
             if missing > 0 {
                 Text::owned(
                     format!(
@@ -123,16 +125,16 @@ impl Interp {
                 )
             }
         });
-        if let Some(r) = rec.as_deref_mut() {
+        if let Some(r) = at.rec.as_deref_mut() {
             r.explanation = Some(expl);
         }
         Ok(self.target_rotary(&axes))
     }
 
     /// `FUNCTION RESET TCPM`: off, whichever way it was switched on.
-    pub(super) fn function_reset_tcpm(&mut self, rec: &mut Option<&mut Rec>) {
+    pub(super) fn function_reset_tcpm(&mut self, at: &mut At<'_, '_>) {
         self.set_tcpm(false);
-        note(rec, || Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off"));
+        note(&mut at.rec, || Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off"));
     }
 
     /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off

@@ -34,15 +34,9 @@ impl Interp {
         rot
     }
 
-    pub(super) fn plane(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        pb: &PlaneBlock,
-    ) -> R<()> {
+    pub(super) fn plane(&mut self, at: &mut At<'_, '_>, pb: &PlaneBlock) -> R<()> {
         let pb = self.positioning_in_mm(pb.try_map(|v| self.value(v))?);
-        let machine = cx.machine;
+        let machine = at.cx.machine;
         let start = self.axes.rotary_values();
         let opts = SolveOptions { start, ..SolveOptions::default() };
         let mw = self.tf.mirror_w_matrix();
@@ -87,7 +81,7 @@ impl Interp {
         self.tf.tilt = tilt;
         self.plane = tilt.map(|r| {
             Arc::new(ActivePlane {
-                block: idx,
+                block: at.block,
                 source: TiltSource::Plane,
                 orientation: r,
                 spatial: orientation::to_spatial(&r),
@@ -95,45 +89,45 @@ impl Interp {
                 explanation: expl.clone(),
             })
         });
-        if let Some(r) = rec.as_deref_mut() {
+        if let Some(r) = at.rec.as_deref_mut() {
             r.explanation = Some(expl.clone());
         }
         match pb.positioning {
             None | Some(Positioning::Stay) => {
                 if pb.positioning.is_none() {
-                    note(rec, || {
+                    note(&mut at.rec, || {
                         Text::new(
                             "MOVE/TURN/STAY fehlt: wie STAY behandelt",
                             "MOVE/TURN/STAY missing: treated as STAY",
                         )
                     });
                 }
-                self.stay_segment(rec, idx, before, self.tf.r());
+                self.stay_segment(at, before, self.tf.r());
             }
             Some(Positioning::Turn { move_back, feed }) => {
                 if let Some(mb) = move_back {
                     let rate =
                         if unconfirmed::MB_RETRACT_AT_RAPID { Rate::Rapid } else { self.swivel_rate(feed) };
-                    self.retract(cx, rec, idx, mb, rate)?;
+                    self.retract(at, mb, rate)?;
                 }
                 let rate = self.swivel_rate(feed);
                 let plan = |it: &Self, target: [f64; 2]| {
                     let end = MachineAxes { rotary: target, ..it.axes };
-                    (end, it.rotary_delta(cx, target, true), SegmentPath::Linear)
+                    (end, it.rotary_delta(at.cx, target, true), SegmentPath::Linear)
                 };
-                self.swivel(cx, rec, idx, &expl, SegmentKind::SwivelTurn, rate, target, plan)?;
+                self.swivel(at, &expl, SegmentKind::SwivelTurn, rate, target, plan)?;
             }
             Some(Positioning::Move { dist, feed }) => {
                 let dist = dist.unwrap_or(unconfirmed::MOVE_DEFAULT_DIST);
                 let tip = self.kin.tip_wcs(&self.axes);
                 let centre = tip - dist * self.kin.tool_axis_wcs(self.axes.rotary);
                 let mp = MovePath { kin: self.kin, centre, dist };
-                let delta = self.rotary_delta(cx, target, true);
+                let delta = self.rotary_delta(at.cx, target, true);
                 // Check the travel along the way (16 samples) and at the end.
                 for k in 1..=16 {
                     let f = f64::from(k) / 16.0;
                     let rot = [self.axes.rotary[0] + f * delta[0], self.axes.rotary[1] + f * delta[1]];
-                    self.check_linear(cx, move_linear(&mp, rot))?;
+                    self.check_linear(at.cx, move_linear(&mp, rot))?;
                 }
                 let rate = self.swivel_rate(feed);
                 let plan = |it: &Self, target: [f64; 2]| {
@@ -142,9 +136,9 @@ impl Interp {
                         rotary: target,
                         letters: it.axes.letters,
                     };
-                    (end, it.rotary_delta(cx, target, true), SegmentPath::Move(Box::new(mp.clone())))
+                    (end, it.rotary_delta(at.cx, target, true), SegmentPath::Move(Box::new(mp.clone())))
                 };
-                self.swivel(cx, rec, idx, &expl, SegmentKind::SwivelMove, rate, target, plan)?;
+                self.swivel(at, &expl, SegmentKind::SwivelMove, rate, target, plan)?;
             }
         }
         self.sync_pos();
@@ -154,12 +148,10 @@ impl Interp {
     /// The swivel of a PLANE block to `target` as `plan` lays it out from the axes now. When it
     /// collides and the swivel to another permitted solution of `expl` would not, the error
     /// names that solution (the why panel's safe alternative, the view's ghost).
-    #[allow(clippy::too_many_arguments)]
     fn swivel(
         &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
+        at: &mut At<'_, '_>,
+
         expl: &Explanation,
         kind: SegmentKind,
         rate: Rate,
@@ -167,9 +159,9 @@ impl Interp {
         plan: impl Fn(&Self, [f64; 2]) -> (MachineAxes, [f64; 2], SegmentPath),
     ) -> R<()> {
         let (end, delta, path) = plan(self, target);
-        match self.go(cx, rec, idx, kind, end, delta, rate, || path) {
+        match self.go(at, kind, end, delta, rate, || path) {
             Err(SimErrorCode::Collision(mut c)) => {
-                c.alternative = self.safe_alternative(cx, idx, expl, kind, &plan);
+                c.alternative = self.safe_alternative(at.cx, at.block, expl, kind, &plan);
                 Err(SimErrorCode::Collision(c))
             }
             other => other,
@@ -203,11 +195,11 @@ impl Interp {
 
     /// STAY: no axis moves; a segment of [`STAY_SECONDS`] lets the view turn the working plane
     /// from `from` to `to` (W-CS orientations).
-    pub(super) fn stay_segment(&self, rec: &mut Option<&mut Rec>, block: usize, from: DMat3, to: DMat3) {
-        if let Some(r) = rec.as_deref_mut() {
+    pub(super) fn stay_segment(&self, at: &mut At<'_, '_>, from: DMat3, to: DMat3) {
+        if let Some(r) = at.rec.as_deref_mut() {
             r.segments.push(Segment {
                 step: self.step_count.saturating_sub(1),
-                block,
+                block: at.block,
                 kind: SegmentKind::SwivelStay,
                 start: self.axes,
                 end: self.axes,
@@ -256,41 +248,28 @@ impl Interp {
 
     /// The retract along the tool axis of `TURN MB…` and `M140 MB…`, by the distance or to
     /// just before the limits (`MB MAX`).
-    pub(super) fn retract(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        mb: MoveBack<f64>,
-        rate: Rate,
-    ) -> R<()> {
+    pub(super) fn retract(&mut self, at: &mut At<'_, '_>, mb: MoveBack<f64>, rate: Rate) -> R<()> {
         let d = self.kin.tool_axis_mcs(self.axes.rotary);
         let s = match mb {
             MoveBack::Dist(v) => v,
-            MoveBack::Max => self.mb_max(cx, d),
+            MoveBack::Max => self.mb_max(at.cx, d),
         };
         let l = self.axes.linear + s * d;
-        self.check_linear(cx, l)?;
+        self.check_linear(at.cx, l)?;
         let target = MachineAxes { linear: l, ..self.axes };
-        self.go(cx, rec, idx, SegmentKind::Retract, target, [0.0; 2], rate, || SegmentPath::Linear)
+        self.go(at, SegmentKind::Retract, target, [0.0; 2], rate, || SegmentPath::Linear)
     }
 
     /// `M140 MB…` ("retraction in the tool axis direction", TNC 640 user's manual), at rapid,
     /// after the block's own move. Out of line: rare, so the page split defers it.
     #[inline(never)]
-    pub(super) fn m140(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        mb: MoveBack,
-    ) -> R<()> {
+    pub(super) fn m140(&mut self, at: &mut At<'_, '_>, mb: MoveBack) -> R<()> {
         let mb = match mb {
             MoveBack::Dist(v) => MoveBack::Dist(self.length(&v)?),
             MoveBack::Max => MoveBack::Max,
         };
-        self.retract(cx, rec, idx, mb, Rate::Rapid)?;
-        note(rec, || {
+        self.retract(at, mb, Rate::Rapid)?;
+        note(&mut at.rec, || {
             Text::new(
                 "M140: Rückzug in Werkzeugachsrichtung (Eilgang)",
                 "M140: retraction in the tool axis direction (rapid)",
@@ -316,13 +295,7 @@ impl Interp {
     }
 
     /// Cycle 19 WORKING PLANE (DOMAIN.md §6, [M:320cyc-p258]).
-    pub(super) fn cycle19(
-        &mut self,
-        cx: &Cx<'_>,
-        rec: &mut Option<&mut Rec>,
-        idx: usize,
-        words: &[OldCycleWord],
-    ) -> R<()> {
+    pub(super) fn cycle19(&mut self, at: &mut At<'_, '_>, words: &[OldCycleWord]) -> R<()> {
         let mut abc = [0.0_f64; 3];
         for w in words {
             if let OldCycleWord::Axis(a) = w
@@ -340,12 +313,12 @@ impl Interp {
         if abc.iter().all(|&v| v == 0.0) {
             self.tf.tilt = None;
             self.plane = None;
-            self.stay_segment(rec, idx, before, DMat3::IDENTITY);
+            self.stay_segment(at, before, DMat3::IDENTITY);
             self.sync_pos();
-            note(rec, || Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
+            note(&mut at.rec, || Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
             return Ok(());
         }
-        let machine = cx.machine;
+        let machine = at.cx.machine;
         let mw = self.tf.mirror_w_matrix();
         let r = if unconfirmed::CYCLE19_INPUT_SPATIAL {
             let def = PlaneDef::Spatial { spa: abc[0], spb: abc[1], spc: abc[2] };
@@ -366,23 +339,25 @@ impl Interp {
         ))?);
         self.set_q_from(&e);
         self.tf.tilt = Some(r);
-        self.stay_segment(rec, idx, before, r);
+        self.stay_segment(at, before, r);
         self.plane = Some(Arc::new(ActivePlane {
-            block: idx,
+            block: at.block,
             source: TiltSource::Cycle19,
             orientation: r,
             spatial: orientation::to_spatial(&r),
             tool_axis: r.z_axis.to_array(),
             explanation: e.clone(),
         }));
-        if let Some(rr) = rec.as_deref_mut() {
+        if let Some(rr) = at.rec.as_deref_mut() {
             rr.explanation = Some(e);
         }
         if unconfirmed::CYCLE19_MOVES_AXES {
             // Not the chosen convention; kept so the switch in unconfirmed.rs stays meaningful.
-            note(rec, || Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes"));
+            note(&mut at.rec, || {
+                Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes")
+            });
         } else {
-            note(rec, || {
+            note(&mut at.rec, || {
                 Text::new(
                     "Zyklus 19 aktiv: Drehachsen mit L A+Q120 … positionieren",
                     "Cycle 19 active: position the rotary axes with L A+Q120 …",
