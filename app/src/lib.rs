@@ -14,6 +14,7 @@ pub mod i18n;
 pub mod keymap;
 pub mod persist;
 pub mod preview;
+pub mod right_hand;
 pub mod run;
 pub mod samples;
 pub mod saved_machines;

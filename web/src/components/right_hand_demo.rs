@@ -4,6 +4,8 @@
 //! checks the trainee's answer; the angle and the block stay hidden until "Prüfen", they would
 //! give the sign away. In the trainer the demo opens on the cursor's PLANE block (`block`).
 
+use std::rc::Rc;
+
 use wasm_bindgen::JsCast;
 use web_sys::{HtmlElement, HtmlInputElement, PointerEvent};
 use yew::prelude::*;
@@ -11,12 +13,11 @@ use yew::prelude::*;
 use super::gl_canvas::{GlCanvas, SharedViewer};
 use super::viewer::{Content, Viewer};
 use crate::render::camera::Camera;
-use crate::render::right_hand::{
-    DragTurn, TASKS, Verdict, block_text, check, draw_list, first_turn, pivot_on_screen, points_towards,
-};
+use crate::render::right_hand::{DragTurn, block_text, draw_list, pivot_on_screen, points_towards};
 use glam::Vec3;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::preview::block_angles;
+use schwenkbar_app::right_hand::{RightHand, RightHandAction};
 use schwenkbar_core::number::parse_f64;
 use schwenkbar_core::plane::RelAxis;
 use schwenkbar_core::solve::fmt_deg;
@@ -51,13 +52,16 @@ struct Drag {
     active: Option<(i32, DragTurn)>,
 }
 
-/// The task prompt ("Drehen Sie die Ebene um +30° um Y").
-#[must_use]
-pub fn task_text(lang: Lang, task: (RelAxis, f64)) -> String {
-    let angle = fmt_deg(task.1);
-    match lang {
-        Lang::De => format!("Drehen Sie die Ebene um {angle}° um {}", task.0.about()),
-        Lang::En => format!("Turn the plane by {angle}° about {}", task.0.about()),
+/// The demo's state in yew: the app's reducer ([`RightHand`]), so that drag events between two
+/// renders each act on the state the one before left.
+#[derive(PartialEq, Default)]
+struct Demo(RightHand);
+
+impl Reducible for Demo {
+    type Action = RightHandAction;
+
+    fn reduce(self: Rc<Self>, action: RightHandAction) -> Rc<Self> {
+        Rc::new(Demo(self.0.apply(action)))
     }
 }
 
@@ -65,44 +69,29 @@ pub fn task_text(lang: Lang, task: (RelAxis, f64)) -> String {
 pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
     let l = props.lang;
     let viewer = use_mut_ref(|| Viewer::new(demo_camera()));
-    let axis = use_state(|| RelAxis::Spb);
-    let angle = use_state(|| 15.0_f64);
-    let task = use_state(|| None::<usize>);
-    let verdict = use_state(|| None::<Verdict>);
+    let demo = use_reducer(Demo::default);
+    let state = demo.0;
     let drag = use_mut_ref(Drag::default);
     let block_turns = props.block.as_deref().and_then(block_angles);
     {
-        // A new block: show its first turn.
-        let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
+        // A new block (or none): the reducer shows a new block's first turn.
+        let demo = demo.dispatcher();
         use_effect_with(block_turns.map(|a| a.map(f64::to_bits)), move |bits| {
-            if let Some(bits) = bits {
-                let turns = bits.map(f64::from_bits);
-                let first = first_turn(turns);
-                axis.set(first);
-                angle.set(turns[first as usize]);
-                verdict.set(None);
-            }
+            demo.dispatch(RightHandAction::Block(bits.map(|b| b.map(f64::from_bits))));
         });
     }
     {
         let viewer = viewer.clone();
-        use_effect_with((*axis, *angle), move |(axis, angle)| {
+        use_effect_with((state.axis, state.angle), move |(axis, angle)| {
             let mut v = viewer.borrow_mut();
             let eye = v.camera.eye().as_dvec3();
             v.content = Some(Content::List(draw_list(*axis, *angle, eye)));
             v.dirty = true;
         });
     }
-    let set_angle = {
-        let (angle, verdict) = (angle.clone(), verdict.clone());
-        move |a: f64| {
-            angle.set(a.round().clamp(-180.0, 180.0));
-            verdict.set(None);
-        }
-    };
     let on_pointer = {
-        let (viewer, drag, axis, angle, set_angle) =
-            (viewer.clone(), drag.clone(), *axis, *angle, set_angle.clone());
+        let (viewer, drag, axis, angle, demo) =
+            (viewer.clone(), drag.clone(), state.axis, state.angle, demo.dispatcher());
         Callback::from(move |(kind, e): (&'static str, PointerEvent)| {
             let at = (e.offset_x() as f32, e.offset_y() as f32);
             let mut d = drag.borrow_mut();
@@ -125,59 +114,28 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                     }
                     let turn = turn.moved(at);
                     d.active = Some((id, turn));
-                    set_angle(turn.angle);
+                    demo.dispatch(RightHandAction::Turn(turn.angle));
                 }
                 _ => d.active = None,
             }
         })
     };
-    let pick = |a: RelAxis| {
-        let (axis, angle, verdict) = (axis.clone(), angle.clone(), verdict.clone());
-        // With a block, each axis shows that block's turn about it; without, the plane starts flat.
-        let start = block_turns.map_or(0.0, |t| t[a as usize]);
-        Callback::from(move |_: MouseEvent| {
-            axis.set(a);
-            angle.set(start);
-            verdict.set(None);
-        })
+    let send = |action: RightHandAction| {
+        let demo = demo.dispatcher();
+        Callback::from(move |_: MouseEvent| demo.dispatch(action))
     };
     let on_slider = {
-        let set_angle = set_angle.clone();
+        let demo = demo.dispatcher();
         Callback::from(move |e: InputEvent| {
             if let Some(v) = e.target_dyn_into::<HtmlInputElement>().and_then(|i| parse_f64(&i.value())) {
-                set_angle(v);
+                demo.dispatch(RightHandAction::Turn(v));
             }
         })
     };
-    let start_task = {
-        let (task, axis, angle, verdict) = (task.clone(), axis.clone(), angle.clone(), verdict.clone());
-        Callback::from(move |_: MouseEvent| {
-            let next = task.map_or(0, |i| (i + 1) % TASKS.len());
-            task.set(Some(next));
-            // The trainee picks the axis; start from the untilted plane.
-            angle.set(0.0);
-            axis.set(RelAxis::Spb);
-            verdict.set(None);
-        })
-    };
-    let on_check = {
-        let (task, axis, angle, verdict) = (task.clone(), *axis, *angle, verdict.clone());
-        Callback::from(move |_: MouseEvent| {
-            if let Some(i) = *task {
-                verdict.set(Some(check(TASKS[i], axis, angle)));
-            }
-        })
-    };
-    let block = block_text(*axis, *angle);
-    // During a task the readout would give the sign away: it shows after "Prüfen".
-    let hidden = task.is_some() && verdict.is_none();
-    let feedback = verdict.map(|v| match v {
-        Verdict::Right => ("right", l.t("Richtig! Daumen in Plus-Richtung, die Finger zeigen die positive Drehung.",
-                                          "Right! Thumb along plus, the fingers show the positive turn.")),
-        Verdict::WrongSign => ("wrong-sign", l.t("Falsches Vorzeichen: richtig gedreht, aber andersherum. Daumen in Plus-Richtung der Achse – die Finger zeigen Plus.",
-                                                 "Wrong sign: the right amount, the other way round. Thumb along the plus axis – the fingers show plus.")),
-        Verdict::Off => ("off", l.t("Noch nicht: Achse und Winkel prüfen.", "Not yet: check the axis and the angle.")),
-    });
+    let (axis, angle) = (state.axis, state.angle);
+    let block = block_text(axis, angle);
+    let hidden = state.hidden();
+    let feedback = state.feedback(l);
     html! {
         <section class="right-hand" aria-label={l.t("Rechte-Hand-Regel", "Right-hand rule")}>
             <style>{ STYLE }</style>
@@ -188,8 +146,8 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
             <div class="rh-controls">
                 <div role="group" aria-label={l.t("Drehachse", "Axis")}>
                     { for RelAxis::ALL.iter().map(|a| html! {
-                        <button type="button" class="rh-axis" data-axis={a.about()} aria-pressed={(*axis == *a).to_string()}
-                            onclick={pick(*a)}>{ a.about() }</button>
+                        <button type="button" class="rh-axis" data-axis={a.about()} aria-pressed={(axis == *a).to_string()}
+                            onclick={send(RightHandAction::Pick(*a))}>{ a.about() }</button>
                     }) }
                 </div>
                 <label class="rh-slider">{ l.t("Winkel", "Angle") }
@@ -199,7 +157,7 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                     <output class="rh-angle" data-hidden="true">{ format!("{} ?", axis.word()) }</output>
                     <p class="rh-hidden">{ l.t("Winkel und Satz erscheinen nach „Prüfen“.", "The angle and the block show after \"Check\".") }</p>
                 } else {
-                    <output class="rh-angle" data-angle={angle.to_string()}>{ format!("{}{}°", axis.word(), fmt_deg(*angle)) }</output>
+                    <output class="rh-angle" data-angle={angle.to_string()}>{ format!("{}{}°", axis.word(), fmt_deg(angle)) }</output>
                     <code class="rh-block">{ block }</code>
                 }
                 if let Some(t) = block_turns {
@@ -211,11 +169,11 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                 <p class="rh-rule">{ l.t("Rechte Hand: Daumen in Plus-Richtung der Achse, die gekrümmten Finger zeigen die positive Drehrichtung.",
                                          "Right hand: thumb along the plus axis, the curled fingers show the positive turning direction.") }</p>
                 <div class="rh-try">
-                    <button type="button" class="rh-start" onclick={start_task}>
-                        { if task.is_some() { l.t("Nächste Aufgabe", "Next task") } else { l.t("Ausprobieren", "Try it") } }</button>
-                    if let Some(i) = *task {
-                        <p class="rh-task">{ task_text(l, TASKS[i]) }</p>
-                        <button type="button" class="rh-check" onclick={on_check}>{ l.t("Prüfen", "Check") }</button>
+                    <button type="button" class="rh-start" onclick={send(RightHandAction::NextTask)}>
+                        { if state.task.is_some() { l.t("Nächste Aufgabe", "Next task") } else { l.t("Ausprobieren", "Try it") } }</button>
+                    if let Some(task) = state.task_text(l) {
+                        <p class="rh-task">{ task }</p>
+                        <button type="button" class="rh-check" onclick={send(RightHandAction::Check)}>{ l.t("Prüfen", "Check") }</button>
                     }
                     if let Some((kind, text)) = feedback {
                         <p class={classes!("rh-verdict", kind)}>{ text }</p>
@@ -223,16 +181,5 @@ pub fn right_hand_demo(props: &RightHandDemoProps) -> Html {
                 </div>
             </div>
         </section>
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_task_asks_for_a_signed_turn_in_german_first() {
-        assert_eq!(task_text(Lang::De, (RelAxis::Spb, 30.0)), "Drehen Sie die Ebene um +30° um Y");
-        assert_eq!(task_text(Lang::En, (RelAxis::Spa, -45.0)), "Turn the plane by -45° about X");
     }
 }

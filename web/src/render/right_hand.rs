@@ -88,13 +88,6 @@ impl DragTurn {
     }
 }
 
-/// The first turn the control makes for `angles` (about X, then Y, then Z): the axis the demo
-/// opens on for a block.
-#[must_use]
-pub fn first_turn(angles: [f64; 3]) -> RelAxis {
-    RelAxis::ALL.into_iter().zip(angles).find(|(_, a)| a.abs() > 1e-9).map_or(RelAxis::Spc, |(t, _)| t)
-}
-
 /// Whether the axis (through the origin) points towards the eye at `eye`.
 #[must_use]
 pub fn points_towards(axis: RelAxis, eye: Vec3) -> bool {
@@ -105,40 +98,6 @@ pub fn points_towards(axis: RelAxis, eye: Vec3) -> bool {
 #[must_use]
 pub fn pivot_on_screen(view_proj: &glam::Mat4, width: f32, height: f32) -> (f32, f32) {
     project_to_css(view_proj, Vec3::ZERO, width, height).unwrap_or((width / 2.0, height / 2.0))
-}
-
-/// The practice tasks of "try it": axis and signed angle, both signs on every axis.
-pub const TASKS: [(RelAxis, f64); 6] = [
-    (RelAxis::Spb, 30.0),
-    (RelAxis::Spa, -45.0),
-    (RelAxis::Spc, 60.0),
-    (RelAxis::Spb, -20.0),
-    (RelAxis::Spa, 30.0),
-    (RelAxis::Spc, -90.0),
-];
-
-/// Tolerance of a trainee's turn, degrees (a drag cannot be exact).
-pub const TOLERANCE: f64 = 5.0;
-
-/// How a trainee's turn compares with the task.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Verdict {
-    Right,
-    /// Right size, wrong direction: the classic mistake the demo is for.
-    WrongSign,
-    /// Wrong axis or size.
-    Off,
-}
-
-#[must_use]
-pub fn check(task: (RelAxis, f64), axis: RelAxis, angle: f64) -> Verdict {
-    if axis == task.0 && (angle - task.1).abs() <= TOLERANCE {
-        Verdict::Right
-    } else if axis == task.0 && (angle + task.1).abs() <= TOLERANCE {
-        Verdict::WrongSign
-    } else {
-        Verdict::Off
-    }
 }
 
 /// Skin colour of the stylised hand, translucent so the arrows show through.
@@ -242,7 +201,6 @@ fn hand(list: &mut DrawList, frame: DMat3, grip: DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use schwenkbar_app::preview::block_angles;
 
     #[test]
     fn block_text_writes_every_sign_like_the_control() {
@@ -306,20 +264,6 @@ mod tests {
     }
 
     #[test]
-    fn a_plane_block_gives_its_spatial_angles_and_the_first_turn() {
-        let a = block_angles("7 PLANE SPATIAL SPA+0 SPB+30 SPC+90 TURN FMAX").unwrap();
-        assert!((a[1] - 30.0).abs() < 1e-9 && (a[2] - 90.0).abs() < 1e-9 && a[0].abs() < 1e-9, "{a:?}");
-        assert_eq!(first_turn(a), RelAxis::Spb);
-        // EULER (90, 45, 0) = SPATIAL (45, 0, 90) (DOMAIN.md oracle 3): the same orientation.
-        let e = block_angles("PLANE EULER EULPR+90 EULNU+45 EULROT+0 STAY").unwrap();
-        let (r, s) = (spatial(e[0], e[1], e[2]), spatial(45.0, 0.0, 90.0));
-        assert!(r.abs_diff_eq(s, 1e-6), "{e:?}");
-        assert_eq!(first_turn(e), RelAxis::Spa);
-        assert_eq!(block_angles("PLANE SPATIAL SPA+0 SPB+Q1 SPC+0 TURN FMAX"), None);
-        assert_eq!(block_angles("L X+10 R0 FMAX"), None);
-    }
-
-    #[test]
     fn the_curl_arc_mesh_turns_counter_clockwise_about_plus_z() {
         // The curled arrow means "positive about the thumb" only if the arc mesh runs from +X
         // towards +Y (counter-clockwise seen from +Z), as Shape::CurlArc promises.
@@ -339,16 +283,6 @@ mod tests {
         assert!(ring(1).1 > 0.05, "then turns towards +Y");
         let (xe, ye) = ring(48);
         assert!(xe.abs() < 0.05 && (ye + 1.0).abs() < 0.05, "ends at 270°, i.e. −Y: {xe},{ye}");
-    }
-
-    #[test]
-    fn try_it_tells_a_wrong_sign_from_a_wrong_turn() {
-        let task = (RelAxis::Spb, 30.0);
-        assert_eq!(check(task, RelAxis::Spb, 28.0), Verdict::Right);
-        assert_eq!(check(task, RelAxis::Spb, -31.0), Verdict::WrongSign);
-        assert_eq!(check(task, RelAxis::Spa, 30.0), Verdict::Off);
-        assert_eq!(check(task, RelAxis::Spb, 60.0), Verdict::Off);
-        assert!(TASKS.iter().any(|t| t.1 < 0.0) && TASKS.iter().any(|t| t.1 > 0.0));
     }
 
     #[test]
