@@ -6,9 +6,10 @@
 use glam::DMat3;
 use schwenkbar_core::BlockBody;
 use schwenkbar_core::axes::AxisValues;
+use schwenkbar_core::format::plane_angles;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{localise, prose, prose_vec};
-use schwenkbar_core::plane::{PlaneBlock, RotaryAxis};
+use schwenkbar_core::plane::{PlaneBlock, PlaneDef, RotaryAxis};
 use schwenkbar_core::sim::{Simulation, State};
 use schwenkbar_core::solve::{Explanation, SolveOptions, axis_words, fmt_deg, solve_block};
 
@@ -140,8 +141,8 @@ fn from_explanation(e: &Explanation, l: Lang) -> PlaneWhy {
     PlaneWhy {
         plain: plain_words(e, l),
         candidate_axes: e.candidates.iter().map(|c| c.axes).collect(),
-        spatial: format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c)),
-        euler: format!("PLANE EULER EULPR{} EULNU{} EULROT{}", fmt_deg(pr), fmt_deg(nu), fmt_deg(rot)),
+        spatial: plane_angles(PlaneDef::Spatial { spa: a, spb: b, spc: c }),
+        euler: plane_angles(PlaneDef::Euler { eulpr: pr, eulnu: nu, eulrot: rot }),
         tool_axis: prose_vec([tx, ty, tz], 4, l),
         candidates,
         rule: e.rule.text().get(l).to_owned(),

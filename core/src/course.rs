@@ -15,16 +15,14 @@ mod expected;
 mod orientation;
 mod programs;
 
-use std::convert::Infallible;
 use std::hash::{Hash, Hasher};
 
 use glam::DMat3;
 
 use crate::axes::AxisValues;
-use crate::format::plane_text;
 use crate::lang::Text;
 use crate::machine::Machine;
-use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning, Value};
+use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning};
 use crate::solve::Explanation;
 
 pub use answer::Answer;
@@ -232,16 +230,6 @@ fn spatial_def([spa, spb, spc]: [f64; 3]) -> PlaneDef<f64> {
 
 fn euler_def([eulpr, eulnu, eulrot]: [f64; 3]) -> PlaneDef<f64> {
     PlaneDef::Euler { eulpr, eulnu, eulrot }
-}
-
-/// The block as the softkey dialog writes it ([`plane_text`]), numbers rounded to the 4
-/// decimals the control shows.
-fn block_text(block: &PlaneBlock<f64>) -> String {
-    let round = |v: &f64| Ok::<_, Infallible>(Value::Number((v * 1e4).round() / 1e4 + 0.0));
-    match block.try_map(round) {
-        Ok(b) => plane_text(&b),
-        Err(never) => match never {},
-    }
 }
 
 impl Exercise {

@@ -34,6 +34,23 @@ pub fn plane_text(p: &PlaneBlock) -> String {
     out
 }
 
+/// A PLANE block of computed values as the softkey dialog writes it, each number rounded to 4
+/// decimals (`PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX`): the course's generated programs.
+#[must_use]
+pub fn plane_rounded(block: &PlaneBlock<f64>) -> String {
+    match block.try_map(|&x| Ok::<_, std::convert::Infallible>(Value::Number(crate::number::tidy(x, 4)))) {
+        Ok(p) => plane_text(&p),
+        Err(never) => match never {},
+    }
+}
+
+/// [`plane_rounded`] of a definition alone (`PLANE SPATIAL SPA+0 SPB+15 SPC+0`): the why
+/// panel's equivalent blocks, the right-hand demo's block.
+#[must_use]
+pub fn plane_angles(def: PlaneDef<f64>) -> String {
+    plane_rounded(&PlaneBlock { def, positioning: None, selection: None, transform: None })
+}
+
 fn block(out: &mut String, n: usize, b: &Block) {
     if b.skip() {
         out.push('/');
@@ -700,5 +717,21 @@ fn expr(out: &mut String, e: &Expr) {
             out.push_str(sym);
             paren(out, b, right_paren);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn computed_angles_are_written_as_the_dialog_writes_them() {
+        let spatial = PlaneDef::Spatial { spa: 0.0, spb: 15.0, spc: -0.000_01 };
+        assert_eq!(plane_angles(spatial), "PLANE SPATIAL SPA+0 SPB+15 SPC+0");
+        let euler = PlaneDef::Euler { eulpr: 90.0, eulnu: 12.345_67, eulrot: -44.999_999_999 };
+        assert_eq!(plane_angles(euler), "PLANE EULER EULPR+90 EULNU+12.3457 EULROT-45");
+        // The rounded text reads back as the block it names.
+        let text = plane_angles(PlaneDef::Spatial { spa: -30.0, spb: 7.5, spc: 90.0 });
+        assert!(crate::parse::plane_block(&format!("{text} TURN FMAX")).is_ok(), "{text}");
     }
 }

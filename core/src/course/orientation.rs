@@ -6,8 +6,9 @@ use glam::DMat3;
 
 use super::{
     Answer, AnswerKind, Check, Exercise, Hint, ORIENTATION_TOL, Rng, Spec, TURN_FMAX, VALUE_TOL, Verdict,
-    block_text, euler_def, plane, spatial_def,
+    euler_def, plane, spatial_def,
 };
+use crate::format::plane_rounded;
 use crate::lang::Text;
 use crate::orientation::{self, Context};
 use crate::plane::{Feed, PlaneBlock, PlaneDef, Positioning};
@@ -87,10 +88,10 @@ fn orientation_exercise(
         variant,
         prompt,
         answer_kind: AnswerKind::PlaneBlock,
-        solution: Text::same(block_text(&plane(spatial_def(spatial), positioning))),
-        equivalent: Text::same(block_text(&plane(euler_def(orientation::to_euler(&target)), positioning))),
+        solution: Text::same(plane_rounded(&plane(spatial_def(spatial), positioning))),
+        equivalent: Text::same(plane_rounded(&plane(euler_def(orientation::to_euler(&target)), positioning))),
         typical_mistake: (
-            Answer::Text(block_text(&plane(spatial_def(flipped), positioning))),
+            Answer::Text(plane_rounded(&plane(spatial_def(flipped), positioning))),
             Hint::RightHand,
         ),
         program: None,
@@ -193,7 +194,7 @@ pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
     };
     let r = orientation::euler(e[0], e[1], e[2]);
     let spatial = orientation::to_spatial(&r);
-    let given = block_text(&plane(euler_def(e), None));
+    let given = plane_rounded(&plane(euler_def(e), None));
     let prompt = Text::owned(
         format!(
             "Gegeben: {given}. Geben Sie dieselbe Lage als anderen PLANE-Satz ein (z. B. PLANE SPATIAL)."
@@ -203,7 +204,7 @@ pub(super) fn euler_to_other(variant: u32, rng: &mut Rng) -> Exercise {
     let mut ex = orientation_exercise(Spec::EulerToOther, variant, prompt, spatial, Require::Nothing, true);
     // The other equivalent form: VECTOR (base = tilted X, normal = tool axis).
     let vector = PlaneDef::Vector { base: r.x_axis.to_array(), normal: r.z_axis.to_array() };
-    ex.equivalent = Text::same(block_text(&plane(vector, Some(TURN_FMAX))));
+    ex.equivalent = Text::same(plane_rounded(&plane(vector, Some(TURN_FMAX))));
     ex
 }
 
@@ -233,12 +234,12 @@ pub(super) fn chamfer(variant: u32, rng: &mut Rng) -> Exercise {
     let spatial = orientation::to_spatial(&r);
     let mut ex = orientation_exercise(Spec::Chamfer, variant, prompt, spatial, Require::Nothing, false);
     // Here the EULER block is the natural answer; SPATIAL the equivalent one.
-    ex.solution = Text::same(block_text(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX))));
-    ex.equivalent = Text::same(block_text(&plane(spatial_def(spatial), Some(TURN_FMAX))));
+    ex.solution = Text::same(plane_rounded(&plane(euler_def([pr, 45.0, 0.0]), Some(TURN_FMAX))));
+    ex.equivalent = Text::same(plane_rounded(&plane(spatial_def(spatial), Some(TURN_FMAX))));
     // The typical mistake: the chamfer on the opposite side (EULPR off by 180°). It tilts the
     // tool the other way, so it gets the right-hand hint.
     let wrong_pr = if pr > 0.0 { pr - 180.0 } else { pr + 180.0 };
-    let mistake = block_text(&plane(euler_def([wrong_pr, 45.0, 0.0]), Some(TURN_FMAX)));
+    let mistake = plane_rounded(&plane(euler_def([wrong_pr, 45.0, 0.0]), Some(TURN_FMAX)));
     ex.typical_mistake = (Answer::Text(mistake), Hint::RightHand);
     ex
 }
@@ -302,11 +303,11 @@ pub(super) fn check(
             None => Verdict::Correct(Text::owned(
                 format!(
                     "Richtig. Dieselbe Lage als SPATIAL: {}",
-                    block_text(&plane(spatial_def(spatial), None))
+                    plane_rounded(&plane(spatial_def(spatial), None))
                 ),
                 format!(
                     "Correct. The same orientation as SPATIAL: {}",
-                    block_text(&plane(spatial_def(spatial), None))
+                    plane_rounded(&plane(spatial_def(spatial), None))
                 ),
             )),
             Some(text) => Verdict::Wrong { hint: Hint::Positioning, text },

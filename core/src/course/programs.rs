@@ -6,12 +6,13 @@ use glam::DMat3;
 
 use super::expected::{axes_exercise, value_exercise};
 use super::orientation::TILTS;
-use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, block_text, plane, spatial_def};
+use super::{ChooseKind, Exercise, Rng, RunKind, Spec, TURN_FMAX, plane, spatial_def};
 use crate::axes::AxisValues;
+use crate::format::{plane_angles, plane_rounded};
 use crate::lang::Text;
 use crate::machine::{Limits, Machine};
 use crate::number::signed;
-use crate::plane::{PlaneBlock, RotaryAxis, Selection, Sign, TransformMode};
+use crate::plane::{PlaneBlock, PlaneDef, RotaryAxis, Selection, Sign, TransformMode};
 use crate::solve::{SolveError, SolveOptions, axis_words, fmt_deg, solve_block};
 
 const SELECTIONS: [Selection; 4] = [
@@ -151,7 +152,7 @@ pub(super) fn choose(kind: ChooseKind, variant: u32, rng: &mut Rng) -> Exercise 
         .map(|(ax, l)| format!(", Endschalter {}{} … {}", ax, fmt_deg(l.min), fmt_deg(l.max)))
         .collect::<String>();
     let limit_text_en = limit_text.replace("Endschalter", "limit switches");
-    let text = block_text(&block);
+    let text = plane_rounded(&block);
     // The control's refusal as the solver words it, in each language.
     let refuse = SolveError::NoSolutionInLimits { candidates: 0 }.message();
     let prompt = Text::owned(
@@ -226,7 +227,7 @@ const MUSTERPROGRAMM_1: &str = include_str!("../../../static/programs/musterprog
 pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
     let fixed = variant == 0;
     let b = if fixed { 45.0 } else { rng.pick(&TILTS) * rng.pick(&[1.0, -1.0]) };
-    let spatial = format!("PLANE SPATIAL SPA+0 SPB{} SPC+0", fmt_deg(b));
+    let spatial = plane_angles(PlaneDef::Spatial { spa: 0.0, spb: b, spc: 0.0 });
     // The prompt quotes the block asked about, so a fresh variant shows its new numbers.
     let ask = |text: &str, block: u32, what_de: &str, what_en: &str| {
         let line = block_line(text, block);
@@ -297,7 +298,7 @@ pub(super) fn run(kind: RunKind, variant: u32, rng: &mut Rng) -> Exercise {
             let with_tilt = |b: f64| {
                 program(&[
                     format!("TRANS DATUM AXIS X{} Y+50 Z+0", signed(dx, 3)),
-                    format!("PLANE SPATIAL SPA+0 SPB{} SPC+0 TURN FMAX", fmt_deg(b)),
+                    format!("{} TURN FMAX", plane_angles(PlaneDef::Spatial { spa: 0.0, spb: b, spc: 0.0 })),
                     format!("L X+0 Y+0 Z{} R0 FMAX", signed(z, 3)),
                 ])
             };

@@ -4,9 +4,9 @@
 //! `components/right_hand_demo.rs` draws it.
 
 use glam::{DAffine3, DMat3, DVec3, Vec3};
+use schwenkbar_core::format::plane_angles;
 use schwenkbar_core::orientation::spatial;
-use schwenkbar_core::plane::RelAxis;
-use schwenkbar_core::solve::fmt_deg;
+use schwenkbar_core::plane::{PlaneDef, RelAxis};
 
 use super::camera::project_to_css;
 use super::draw_list::{DrawList, Label, Pass, Shape, rod, z_to};
@@ -33,8 +33,8 @@ pub fn spatial_angles(axis: RelAxis, angle: f64) -> [f64; 3] {
 /// SPC+0`; seed 000, Musterprogramm 1 block 10).
 #[must_use]
 pub fn block_text(axis: RelAxis, angle: f64) -> String {
-    let [a, b, c] = spatial_angles(axis, angle);
-    format!("PLANE SPATIAL SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c))
+    let [spa, spb, spc] = spatial_angles(axis, angle);
+    plane_angles(PlaneDef::Spatial { spa, spb, spc })
 }
 
 /// The plane's orientation after the turn: the same matrix `core` computes for the block.
