@@ -89,6 +89,21 @@ impl Document {
         self.text.get(start..end).unwrap_or("").trim_end_matches('\r')
     }
 
+    /// Whether 0-based line `i` continues a comment that a line before it in the same block ran
+    /// on with `~` (as the parser reads it: in a cycle every line has its own label instead).
+    #[must_use]
+    pub fn comment_continues(&self, i: usize) -> bool {
+        let Some(b) = self.block_at_line(i) else { return false };
+        let Some((first, _)) = self.block_lines(b).filter(|&(_, last)| i <= last) else { return false };
+        let cycle = self.program.blocks[b].stored_body().is_some_and(|body| {
+            matches!(
+                body,
+                schwenkbar_core::BlockBody::CycleDef(_) | schwenkbar_core::BlockBody::TouchProbe(_)
+            )
+        });
+        !cycle && (first..i).any(|k| schwenkbar_core::parse::split_comment(self.line(k)).1.is_some())
+    }
+
     /// The block a 0-based line belongs to (continuation lines belong to the block above).
     #[must_use]
     pub fn block_at_line(&self, line: usize) -> Option<usize> {
@@ -136,5 +151,15 @@ mod tests {
         assert_eq!(doc.block_lines(1), Some((1, 3)));
         assert_eq!(doc.block_lines(2), Some((4, 4)));
         assert_eq!(doc.line(99), "");
+    }
+
+    #[test]
+    fn a_wrapped_comment_continues_over_its_lines_but_a_cycle_label_does_not() {
+        let doc = Document::new(
+            "0 BEGIN PGM T MM\n1 ;free~\n under these~\n terms\n2 CYCL DEF 200 BOHREN ;B ~\n  Q200=+2 ;A ~\n  Q201=-5 ;T\n\n3 L X+1 R0 FMAX ;x\n4 END PGM T MM\n"
+                .to_owned(),
+        );
+        let continues: Vec<usize> = (0..doc.line_count()).filter(|&i| doc.comment_continues(i)).collect();
+        assert_eq!(continues, [2, 3], "the wrapped comment's lines, not the cycle's or a blank line");
     }
 }

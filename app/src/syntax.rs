@@ -29,12 +29,18 @@ impl Class {
     }
 }
 
-/// Splits a line into classed pieces that concatenate back to the line.
+/// Splits a line into classed pieces that concatenate back to the line; `in_comment`: the line
+/// continues a comment the block's line before ran on with `~` (all of it is comment text).
 #[must_use]
-pub fn highlight(line: &str) -> Vec<(Class, &str)> {
-    let (code, comment) = match line.find(';') {
-        Some(i) => (&line[..i], Some(&line[i..])),
-        None => (line, None),
+pub fn highlight(line: &str, in_comment: bool) -> Vec<(Class, &str)> {
+    if in_comment {
+        return vec![(Class::Comment, line)];
+    }
+    // The comment starts at the first `;` outside a quoted text (`QS500="A;B"`), as the parser
+    // reads it.
+    let (code, comment) = match schwenkbar_core::parse::split_comment(line) {
+        (code, Some(_)) => (code, Some(&line[code.len()..])),
+        (code, None) => (code, None),
     };
     let mut out = Vec::new();
     let mut first_word = true;
@@ -72,7 +78,7 @@ mod tests {
     #[test]
     fn plane_block_splits_into_number_keywords_words_and_comment() {
         let line = "10 PLANE SPATIAL SPA+0 SPB+15 SPC+0 TURN FMAX ; Einschwenken";
-        let pieces = highlight(line);
+        let pieces = highlight(line, false);
         assert_eq!(pieces.iter().map(|(_, s)| *s).collect::<String>(), line);
         let classes: Vec<_> =
             pieces.iter().filter(|(c, _)| *c != Class::Space).map(|(c, s)| (*c, *s)).collect();
@@ -94,8 +100,16 @@ mod tests {
 
     #[test]
     fn continuation_line_has_no_block_number() {
-        let pieces = highlight("  Q200=+2 ;SICHERHEITS-ABST. ~");
+        let pieces = highlight("  Q200=+2 ;SICHERHEITS-ABST. ~", false);
         assert_eq!(pieces[1], (Class::Word, "Q200=+2"));
         assert_eq!(pieces.last().map(|p| p.0), Some(Class::Comment));
+    }
+
+    #[test]
+    fn a_quoted_semicolon_is_text_and_a_wrapped_comment_stays_a_comment() {
+        let pieces = highlight("  QS500=\"A;B\" ;TEXT ~", false);
+        assert_eq!(pieces[1], (Class::Word, "QS500=\"A;B\""));
+        assert_eq!(pieces.last(), Some(&(Class::Comment, ";TEXT ~")));
+        assert_eq!(highlight(" under the terms of~", true), [(Class::Comment, " under the terms of~")]);
     }
 }

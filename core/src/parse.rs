@@ -205,8 +205,10 @@ fn find_newline(b: &[u8]) -> Option<usize> {
     chunks.remainder().iter().position(|&c| c == b'\n').map(|i| at + i)
 }
 
-/// Splits `text` at the first `;` outside double quotes: (body, comment).
-pub(crate) fn split_comment(text: &str) -> (&str, Option<&str>) {
+/// Splits `text` at the first `;` outside double quotes: (body, comment). The program pane's
+/// colours split there too.
+#[must_use]
+pub fn split_comment(text: &str) -> (&str, Option<&str>) {
     let mut quoted = false;
     for (i, b) in text.bytes().enumerate() {
         match b {

@@ -329,7 +329,7 @@ fn program_list(props: &ListProps) -> Html {
             class.push(if d.is_error() { "has-error" } else { "has-warning" });
         }
         let onclick = block.map(|b| props.on_select.reform(move |_: MouseEvent| b));
-        let pieces = highlight(doc.line(i));
+        let pieces = highlight(doc.line(i), doc.comment_continues(i));
         html! {
             <li {class} {onclick} data-line={(i + 1).to_string()} aria-current={current.then_some("true")}>
                 { for pieces.into_iter().map(|(c, s)| html! { <span class={c.css()}>{ s }</span> }) }
