@@ -1,5 +1,7 @@
-//! The blocks that set the machine up rather than move it: `BLK FORM`, `TOOL CALL`, the datum
-//! shift and mirroring, and the collision bodies the blank and the tool change.
+//! The blocks that set the machine up rather than move it: `BLK FORM` and a setup sheet's
+//! blank, `TOOL CALL` and `TOOL DEF`, the datum shift, mirroring and rotation, the collision
+//! bodies the blank and the tool change, and the blocks that only say what the control would do
+//! (`STOP`, `QS…`, `TCH PROBE`).
 
 use super::*;
 
@@ -190,6 +192,115 @@ impl Interp {
         }
         self.sync_pos();
     }
+
+    /// `TOOL DEF`, `STOP`, `QS…`, `TCH PROBE`: blocks that store data for later blocks or say
+    /// what the control would do. Out of line, like the other rare kinds: the page split leaves
+    /// them to the wasm loaded after the first screen.
+    #[inline(never)]
+    pub(super) fn program_data(&mut self, at: &mut At<'_, '_>, body: &BlockBody) -> R<()> {
+        match body {
+            BlockBody::ToolDef { tool, length, radius } => {
+                let l = length.map(|v| self.length(&v)).transpose()?;
+                let r = radius.map(|v| self.length(&v)).transpose()?;
+                let tool = self.tool_of(tool)?;
+                self.tool_defs.retain(|(t, ..)| *t != tool);
+                self.tool_defs.push((tool, l, r));
+                note(&mut at.rec, || {
+                    Text::new(
+                        "TOOL DEF: Werkzeug im Programm definiert",
+                        "TOOL DEF: tool defined in the program",
+                    )
+                });
+            }
+            BlockBody::Stop { m } => {
+                self.spindle_m(m);
+                note(&mut at.rec, || {
+                    Text::new(
+                        "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
+                        "STOP: the control stops here (continue with NC start); the trainer runs on",
+                    )
+                });
+                self.end_m(m);
+            }
+            BlockBody::QsAssign { index, .. } => {
+                let n = *index;
+                note(&mut at.rec, || {
+                    Text::owned(
+                        format!("QS{n}: String-Parameter werden nicht simuliert"),
+                        format!("QS{n}: string parameters are not simulated"),
+                    )
+                });
+            }
+            BlockBody::TouchProbe(d) => {
+                let n = d.number;
+                note(&mut at.rec, || {
+                    Text::owned(
+                        format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
+                        format!("TCH PROBE {n}: touch-probe cycle not simulated"),
+                    )
+                });
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// A setup-sheet header line before `BEGIN PGM`, as a training simulator exports it: a
+    /// cuboid blank `Quader: QX100 QY90 QZ20` is the program's blank when the program has no
+    /// BLK FORM ([`unconfirmed::HEADER_BLANK_AT_DATUM`]); any other header line is shown as
+    /// written.
+    #[inline(never)]
+    pub(super) fn header(&mut self, at: &mut At<'_, '_>, text: &str) {
+        // The first cuboid of the header applies (and a later line does not scan the program
+        // for a BLK FORM again).
+        let Some(size) =
+            header_blank(text).filter(|_| unconfirmed::HEADER_BLANK_AT_DATUM && self.blank.is_none())
+        else {
+            return;
+        };
+        let (x, y, z) = (size.x, size.y, size.z);
+        if at.cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
+            note(&mut at.rec, || {
+                Text::new(
+                    "Rohteil des Einrichteblatts: das Programm hat eine BLK FORM, sie gilt",
+                    "Blank of the setup sheet: the program has a BLK FORM, which applies",
+                )
+            });
+            return;
+        }
+        self.blank = Some(Blank { min: DVec3::new(0.0, 0.0, -z), max: DVec3::new(x, y, 0.0) });
+        self.rebuild_bodies(at.cx.machine);
+        let sizes = |l| {
+            let n = |v: f64| crate::number::prose(v, None, l);
+            (format!("{} × {} × {} mm", n(x), n(y), n(z)), format!("X0…{} Y0…{} Z−{}…0", n(x), n(y), n(z)))
+        };
+        note(&mut at.rec, || {
+            let ((de, de_blk), (en, en_blk)) = (sizes(crate::Lang::De), sizes(crate::Lang::En));
+            Text::owned(
+                format!("Rohteil des Einrichteblatts {de} als BLK FORM {de_blk}"),
+                format!("Blank of the setup sheet {en} as BLK FORM {en_blk}"),
+            )
+        });
+    }
+
+    #[inline(never)]
+    pub(super) fn mirror(&mut self, axes: &[Axis]) {
+        let mut set = [false; 3];
+        for a in axes {
+            if let Some(i) = linear_index(*a) {
+                set[i] = true;
+            }
+        }
+        self.set_mirror(set);
+    }
+
+    #[inline(never)]
+    pub(super) fn rotation(&mut self, rot: &Value, incremental: bool) -> R<()> {
+        let v = self.value(rot)?;
+        self.tf.rotation = if incremental { self.tf.rotation + v } else { v };
+        self.sync_pos();
+        Ok(())
+    }
 }
 
 /// The TOOL CALL's note for a length read as the difference to a zero tool
@@ -208,4 +319,19 @@ fn zero_tool_note(l: f64, sim: f64) -> Text {
             "L={l} counts as the difference to a zero tool: simulated with L={sim} (zero tool L={l0} assumed)"
         ),
     )
+}
+
+/// The cuboid of a setup-sheet header line: `QX…`, `QY…` and `QZ…` (each a positive number,
+/// a decimal comma read as a point), as in `(Quader: QX100 QY90 QZ20)`.
+pub(in crate::sim) fn header_blank(text: &str) -> Option<DVec3> {
+    let size = |key: &str| -> Option<f64> {
+        let at = text.find(key)? + key.len();
+        let digits: String = text[at..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | ','))
+            .map(|c| if c == ',' { '.' } else { c })
+            .collect();
+        crate::number::parse_f64(&digits).filter(|v| *v > 0.0 && v.is_finite())
+    };
+    Some(DVec3::new(size("QX")?, size("QY")?, size("QZ")?))
 }
