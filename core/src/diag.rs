@@ -95,6 +95,8 @@ pub enum DiagCode {
     MissingEndPgm,
     /// `BEGIN PGM  MM`: no program name.
     PgmNameMissing,
+    /// `BEGIN PGM SP1 1002 MM`: a blank in the program name.
+    PgmNameBlank,
     /// `END PGM name` without MM or INCH.
     EndPgmUnitMissing,
     /// A well-formed block of a kind the trainer does not model.
@@ -290,6 +292,28 @@ impl DiagCode {
                     "Blank after the address letter read (first \"{text}\"): Klartext writes the value right after it"
                 ),
             ),
+            DiagCode::Lenient { kind: Lenient::PointAfterM, text } => t(
+                format!(
+                    "Punkt nach der M-Funktion gelesen (zuerst „{text}“): Klartext schreibt M-Funktionen ohne Punkt"
+                ),
+                format!(
+                    "Point after the M function read (first \"{text}\"): Klartext writes M functions without a point"
+                ),
+            ),
+            DiagCode::Lenient { kind: Lenient::RadiusInDep, text } => t(
+                format!(
+                    "„{text}“ im DEP-Satz überlesen: DEP hebt die Radiuskorrektur selbst auf (Klartext: DEP … LEN/R … F … M)"
+                ),
+                format!(
+                    "\"{text}\" in the DEP block skipped: DEP cancels the radius compensation itself (Klartext: DEP … LEN/R … F … M)"
+                ),
+            ),
+            DiagCode::Lenient { kind: Lenient::MissingL, text } => t(
+                format!("Geradensätze ohne L gelesen (zuerst „{text}“): Klartext beginnt eine Gerade mit L"),
+                format!(
+                    "Straight-line blocks without L read (first \"{text}\"): Klartext starts a straight line with L"
+                ),
+            ),
             DiagCode::PgmNameMismatch { begin, end } => t(
                 format!(
                     "Programmname falsch: END PGM {end} zu BEGIN PGM {begin}; gelesen als Ende von {begin} (der Name ist Buchführung der Steuerung)"
@@ -302,6 +326,10 @@ impl DiagCode {
             DiagCode::PgmNameMissing => Text::new(
                 "Programmname fehlt: gelesen als Programm ohne Namen (die Steuerung schreibt den Dateinamen)",
                 "Program name missing: read as a program without a name (the control writes the file name)",
+            ),
+            DiagCode::PgmNameBlank => Text::new(
+                "Programmname mit Leerzeichen gelesen: die Steuerung erlaubt kein Leerzeichen im Dateinamen (Benutzerhandbuch TNC 620/320: Dateinamen)",
+                "Program name with a blank read: the control allows no blank in a file name (TNC 620/320 user's manual: file names)",
             ),
             DiagCode::EndPgmUnitMissing => Text::new(
                 "Maßeinheit fehlt: END PGM gelesen mit der Einheit von BEGIN PGM",
@@ -330,10 +358,22 @@ pub enum Lenient {
     DecimalComma,
     /// `Z 25.000` for `Z25.000`.
     BlankAfterAddress,
+    /// `M128.` for `M128` (a CAM post's number format on an M function).
+    PointAfterM,
+    /// `DEP LT LEN10 R0`: the departure ends the compensation itself, `R0` says nothing more.
+    RadiusInDep,
+    /// `Z0.0 B0.0 C0.0 FMAX M91` for `L Z0.0 B0.0 C0.0 FMAX M91` (a CAM post for another control).
+    MissingL,
 }
 
 impl Lenient {
-    pub const ALL: [Lenient; 2] = [Lenient::DecimalComma, Lenient::BlankAfterAddress];
+    pub const ALL: [Lenient; 5] = [
+        Lenient::DecimalComma,
+        Lenient::BlankAfterAddress,
+        Lenient::PointAfterM,
+        Lenient::RadiusInDep,
+        Lenient::MissingL,
+    ];
 }
 
 #[cfg(test)]

@@ -527,6 +527,10 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
             motion::path(cx, kw, rest)
         }
         "M" if digit_follows => motion::m_only(cx, body),
+        // A CAM post for another control leaves out the `L`; said once per file (`lenient`).
+        _ if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS && lenient::lacks_l(body.as_bytes()) => {
+            motion::line_without_l(cx, body)
+        }
         "APPR" => approach::appr_dep(cx, true, rest),
         "DEP" => approach::appr_dep(cx, false, rest),
         "PATTERN" => pattern::pattern_def(cx, body),

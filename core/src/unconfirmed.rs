@@ -433,10 +433,11 @@ pub const COMP_CORNER_ARC_WITH_NEXT_BLOCK: bool = true;
 /// smaller or larger by the tool radius like any compensated arc. **UNCONFIRMED**.
 pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
-/// A decimal comma (`X-49,000`) and a blank between an address letter and its value
-/// (`L Z 25.000`), as some CAM posts and exporting simulators write: read as the canonical
-/// spelling, said once per kind and file (`parse::Lenient`). **UNCONFIRMED** whether the control
-/// reads them on import.
+/// A decimal comma (`X-49,000`), a blank between an address letter and its value
+/// (`L Z 25.000`), a point after an M function (`M128.`), `R0` in `DEP LT`/`DEP LN` and a
+/// straight line without its `L` (`Z0.0 B0.0 FMAX`), as some CAM posts and exporting
+/// simulators write: read as the canonical spelling, said once per kind and file
+/// (`parse::Lenient`). **UNCONFIRMED** whether the control reads them on import.
 pub const IMPORT_LENIENT_SPELLINGS: bool = true;
 
 /// A setup-sheet header's cuboid blank (`(Quader: QX100 QY90 QZ20)`, before `BEGIN PGM`, as a

@@ -3,7 +3,7 @@
 
 use super::{lenient, n_number, split_comment};
 use crate::ast::{Block, BlockBody, Span};
-use crate::diag::{DiagCode, Severity};
+use crate::diag::{DiagCode, Lenient, Severity};
 
 /// The checks across blocks, made block by block in program order: block numbers ascending,
 /// the END PGM name equal to the BEGIN PGM name, a BEGIN PGM without END PGM. The parser makes
@@ -24,7 +24,7 @@ pub struct AcrossBlocks {
     missing_said: bool,
     prefixed_said: bool,
     glued_said: bool,
-    lenient_said: [bool; 2],
+    lenient_said: [bool; Lenient::ALL.len()],
 }
 
 impl AcrossBlocks {
@@ -92,9 +92,9 @@ impl AcrossBlocks {
             return;
         }
         let mut at = span.start;
-        for line in src.get(span.start..span.end).unwrap_or("").split('\n') {
+        for (k, line) in src.get(span.start..span.end).unwrap_or("").split('\n').enumerate() {
             let (body, _) = split_comment(line);
-            lenient::first_of_each(body, |kind, a, b| {
+            lenient::first_of_each(body, k == 0, |kind, a, b| {
                 if !std::mem::replace(&mut self.lenient_said[kind as usize], true) {
                     let text = body[a..b].to_owned();
                     found(Severity::Warning, DiagCode::Lenient { kind, text }, Span::new(at + a, at + b));

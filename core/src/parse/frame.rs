@@ -1,5 +1,5 @@
 //! Program frame (empty, comment and structure blocks are read by the driver in `parse.rs`).
-//!   begin := BEGIN PGM [name] MM|INCH         (a missing name: a warning)
+//!   begin := BEGIN PGM [name] MM|INCH         (a missing name or one with blanks: a warning)
 //!   end   := END PGM [name] [MM|INCH]         (a missing name or unit: a warning)
 
 use super::Cx;
@@ -21,12 +21,15 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     // writes the file's name there): read as a program without a name, said once at BEGIN PGM.
     let (rest, name) = match token(rest) {
         Ok((r, unit)) if matches!(unit, "MM" | "INCH") && sp(r).is_empty() => (rest, ""),
-        Ok(ok) => ok,
+        Ok(ok) => blank_in_name(rest, ok),
         Err(_) if rest.is_empty() => (rest, ""),
         Err(e) => return cx.fail(e),
     };
     if name.is_empty() && begin {
         cx.warn(body, body.len() - rest.len(), DiagCode::PgmNameMissing);
+    }
+    if name.contains(' ') && begin {
+        cx.warn(body, body.len() - rest.len(), DiagCode::PgmNameBlank);
     }
     let rest = sp(rest);
     let (rest, unit) = if let Some(r) = keyword(rest, "MM") {
@@ -46,4 +49,18 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
     }
     let name = name.to_owned();
     Some(if begin { BlockBody::BeginPgm { name, unit } } else { BlockBody::EndPgm { name, unit } })
+}
+
+/// A name with blanks (`SP1 1002 MM`, as an exporting simulator writes it): the words up to the
+/// unit at the end of the block, when the first word (`read`) is not followed by the unit.
+fn blank_in_name<'a>(from: &'a str, read: (&'a str, &'a str)) -> (&'a str, &'a str) {
+    let after = sp(read.0);
+    if after.is_empty() || keyword(after, "MM").is_some() || keyword(after, "INCH").is_some() {
+        return read;
+    }
+    let Some(unit) = from.trim_end().rfind([' ', '\t']).map(|k| k + 1) else { return read };
+    if !matches!(&from.trim_end()[unit..], "MM" | "INCH") {
+        return read;
+    }
+    (&from[unit..], from[..unit].trim_end())
 }

@@ -1,10 +1,11 @@
 //! Spellings the control's editor never writes but programs from elsewhere contain: a decimal
-//! comma (`X-49,000`) and a blank between an address letter and its value (`L Z 25.000 FMAX`,
-//! `S 5000`). The parser reads the block as if it were written canonically, rewriting the
-//! text in place with the same length, so every offset of a diagnostic stays where it was;
-//! [`super::AcrossBlocks`] says each kind once per file, at its first block
-//! (`unconfirmed::IMPORT_LENIENT_SPELLINGS`).
-
+//! comma (`X-49,000`), a blank between an address letter and its value (`L Z 25.000 FMAX`,
+//! `S 5000`), a point after an M function (`M128.`), `R0` in a straight departure
+//! (`DEP LT LEN10 R0`) and a straight line without its `L` (`Z0.0 B0.0 C0.0 FMAX M91`). The
+//! parser reads the block as if it were written canonically, rewriting the text in place with
+//! the same length, so every offset of a diagnostic stays where it was (a missing `L` is read by
+//! the dispatcher instead, `parse_body`); [`super::AcrossBlocks`] says each kind once per file,
+//! at its first block (`unconfirmed::IMPORT_LENIENT_SPELLINGS`).
 pub use crate::diag::Lenient;
 
 /// The address letters whose value may follow after blanks.
@@ -22,13 +23,65 @@ fn starts_value(b: &[u8]) -> bool {
     b.first().is_some_and(|c| c.is_ascii_digit() || *c == b'.')
 }
 
+/// The linear and rotary axes a straight line moves.
+fn is_axis(b: u8) -> bool {
+    matches!(b, b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W')
+}
+
+/// Whether `body` (a block's text after its number) starts with an axis word (`Z0.0`, `X+Q11`,
+/// `Y-.5`): a straight line written without `L`.
+pub(crate) fn lacks_l(body: &[u8]) -> bool {
+    body.first().copied().is_some_and(is_axis)
+        && body.get(1).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'))
+}
+
+/// Where the block's first word starts in a source line: after a skip mark and the block
+/// number (`/`, `N`, digits, blanks).
+fn first_word(line: &[u8]) -> usize {
+    let mut i = line.iter().take_while(|&&c| c == b'/' || is_blank(c)).count();
+    if line.get(i) == Some(&b'N') && line.get(i + 1).is_some_and(u8::is_ascii_digit) {
+        i += 1;
+    }
+    let digits = line[i..].iter().take_while(|c| c.is_ascii_digit()).count();
+    if digits == 0 {
+        return i;
+    }
+    i + digits + line[i + digits..].iter().take_while(|&&c| is_blank(c)).count()
+}
+
+/// The word `R0` in a straight departure (`DEP LT`, `DEP LN`; the arcs' `R` is their radius):
+/// its start.
+fn radius_in_dep(body: &[u8]) -> Option<usize> {
+    let rest = body.strip_prefix(b"DEP")?;
+    let blanks = rest.iter().take_while(|&&c| is_blank(c)).count();
+    let kind = &rest[blanks..];
+    if blanks == 0 || !(kind.starts_with(b"LT") || kind.starts_with(b"LN")) {
+        return None;
+    }
+    let bounded = |i: usize| i == body.len() || is_blank(body[i]);
+    (3..body.len().saturating_sub(1))
+        .find(|&i| is_blank(body[i - 1]) && body[i..].starts_with(b"R0") && bounded(i + 2))
+}
+
 /// Each lenient spelling in `body` (one block's text without its comment), in order: its kind,
 /// the bytes to show as the example, and where the value starts (for a blank after an address
-/// letter: the letter at `a`, blanks up to `value`, the value up to `b`).
-fn scan(body: &[u8], mut found: impl FnMut(Lenient, usize, usize, usize)) {
+/// letter: the letter at `a`, blanks up to `value`, the value up to `b`). `start`: where the
+/// block's first word is when `body` is the block's first line (the spellings that depend on
+/// the block's kind are found only there).
+fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize, usize, usize)) {
     // A header line or text in quotes is kept as written.
     if body.first() == Some(&b'(') {
         return;
+    }
+    if let Some(w) = start.filter(|&w| w <= body.len()) {
+        let word = &body[w..];
+        if lacks_l(word) {
+            let end = w + word.iter().take_while(|&&c| !is_blank(c)).count();
+            found(Lenient::MissingL, w, end, w);
+        }
+        if let Some(r) = radius_in_dep(word) {
+            found(Lenient::RadiusInDep, w + r, w + r + 2, w + r);
+        }
     }
     let mut quoted = false;
     for i in 0..body.len() {
@@ -58,23 +111,41 @@ fn scan(body: &[u8], mut found: impl FnMut(Lenient, usize, usize, usize)) {
                 let k = j + 1 + body[j + 1..].iter().take_while(|&&c| !is_blank(c) && c != b'"').count();
                 found(Lenient::BlankAfterAddress, i, k, j);
             }
+        } else if b == b'M' && (i == 0 || is_blank(body[i - 1])) {
+            let digits = body[i + 1..].iter().take_while(|c| c.is_ascii_digit()).count();
+            let point = i + 1 + digits;
+            if digits > 0
+                && body.get(point) == Some(&b'.')
+                && (point + 1 == body.len() || is_blank(body[point + 1]))
+            {
+                found(Lenient::PointAfterM, i, point + 1, point);
+            }
         }
     }
 }
 
-/// `body` read canonically, or `None` when it has no lenient spelling: each decimal comma a
-/// point, each value moved next to its address letter (`Z  25.0` → `Z25.0  `).
+/// `body` (a block's text after its number) read canonically, or `None` when it has no lenient
+/// spelling to rewrite: each decimal comma a point, each value moved next to its address letter
+/// (`Z  25.0` → `Z25.0  `), the point after an M function and the `R0` of a straight departure
+/// blanked.
 pub(crate) fn normalize(body: &str) -> Option<String> {
     let mut found = Vec::new();
-    scan(body.as_bytes(), |kind, a, b, at| found.push((kind, a, b, at)));
+    scan(body.as_bytes(), Some(0), |kind, a, b, at| {
+        if kind != Lenient::MissingL {
+            found.push((kind, a, b, at));
+        }
+    });
     if found.is_empty() {
         return None;
     }
     let mut bytes = body.as_bytes().to_vec();
     // Commas first: a value that moves takes its point with it.
-    for &(kind, _, _, at) in &found {
-        if kind == Lenient::DecimalComma {
-            bytes[at] = b'.';
+    for &(kind, a, b, at) in &found {
+        match kind {
+            Lenient::DecimalComma => bytes[at] = b'.',
+            Lenient::PointAfterM => bytes[at] = b' ',
+            Lenient::RadiusInDep => bytes[a..b].fill(b' '),
+            Lenient::BlankAfterAddress | Lenient::MissingL => {}
         }
     }
     for &(kind, a, b, value) in &found {
@@ -86,10 +157,12 @@ pub(crate) fn normalize(body: &str) -> Option<String> {
     String::from_utf8(bytes).ok()
 }
 
-/// The first occurrence of each kind in `body`: (kind, start, end).
-pub(crate) fn first_of_each(body: &str, mut found: impl FnMut(Lenient, usize, usize)) {
-    let mut seen = [false; 2];
-    scan(body.as_bytes(), |kind, a, b, _| {
+/// The first occurrence of each kind in the source line `line` (without its comment): (kind,
+/// start, end). `first`: the block's first line, starting with its number.
+pub(crate) fn first_of_each(line: &str, first: bool, mut found: impl FnMut(Lenient, usize, usize)) {
+    let mut seen = [false; Lenient::ALL.len()];
+    let body = line.as_bytes();
+    scan(body, first.then(|| first_word(body)), |kind, a, b, _| {
         let k = kind as usize;
         if !seen[k] {
             seen[k] = true;
@@ -110,6 +183,9 @@ mod tests {
             ("TOOL CALL 3 Z S 5000,000", "TOOL CALL 3 Z S5000.000 "),
             ("L X  5 Y-2", "L X5   Y-2"),
             ("Q4 = Q4 + 0,001", "Q4 = Q4 + 0.001"),
+            ("L M128. F10000.", "L M128  F10000."),
+            ("DEP LT LEN10 R0", "DEP LT LEN10   "),
+            ("DEP LN LEN5 R0 F200", "DEP LN LEN5    F200"),
         ] {
             let got = normalize(text).unwrap_or_else(|| panic!("{text}"));
             assert_eq!(got, want);
@@ -128,6 +204,9 @@ mod tests {
             "QS1 = \"X 5,5\"",
             "( Quader: QX100 QY90 QZ20 )",
             "CALL LBL 5 REP 2",
+            "DEP CT CCA90 R5 F100",
+            "L M128.5",
+            "Z0.0 B0.0",
         ] {
             assert_eq!(normalize(text), None, "{text}");
         }

@@ -84,8 +84,20 @@ pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
         "RND" | "CHF" => return rounding(cx, kw, sp(rest)),
         _ => {}
     }
+    path_words(cx, kw, sp(rest))
+}
+
+/// A straight line written without its `L` (`Z0.0 B0.0 C0.0 FMAX M91`, `body` starting with
+/// the first axis word), read as `L` (`lenient::lacks_l`).
+pub(super) fn line_without_l(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+    cx.axes.clear();
+    cx.m.clear();
+    path_words(cx, "L", body)
+}
+
+/// The words of a path block `kw` from `i` on.
+fn path_words(cx: &mut Cx, kw: &str, mut i: &str) -> Option<BlockBody> {
     let mut w = Words::default();
-    let mut i = sp(rest);
     while !i.is_empty() {
         let at = i;
         if let Some(r) = empty_word(i, b"RFM") {

@@ -276,6 +276,52 @@ fn lenient_spellings_are_said_once_per_kind_and_file() {
     assert!(d.iter().all(|d| !d.is_error()));
 }
 
+/// What a CAM post for another control writes: `M128.` with its number format's point, a
+/// straight line without `L`, `R0` in a straight departure. Each is read as the control's own
+/// spelling and said once per kind and file; what would change the meaning stays refused.
+#[test]
+fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
+    let point = |t: &str| DiagCode::Lenient { kind: Lenient::PointAfterM, text: t.into() };
+    same_said("L M128. F10000", "L M128 F10000", &[point("M128.")]);
+    same_said("M129.", "M129", &[point("M129.")]);
+    let no_l = |t: &str| DiagCode::Lenient { kind: Lenient::MissingL, text: t.into() };
+    same_said("Z0.0 B0.0 C0.0 FMAX M91", "L Z+0 B+0 C+0 FMAX M91", &[no_l("Z0.0")]);
+    same_said("X-.5 Y+Q11 R0 F500", "L X-0.5 Y+Q11 R0 F500", &[no_l("X-.5")]);
+    same_said("C270.", "L C+270", &[no_l("C270.")]);
+    let r0 = DiagCode::Lenient { kind: Lenient::RadiusInDep, text: "R0".into() };
+    same_said("DEP LT LEN10 R0", "DEP LT LEN10", std::slice::from_ref(&r0));
+    same_said("DEP LN LEN+5 R0 F200 M9", "DEP LN LEN5 F200 M9", std::slice::from_ref(&r0));
+    // Not these: the circle `C`, the radius of an arc departure, a point inside a number.
+    same("C X+5 Y+0 DR+", "C X+5 Y+0 DR+");
+    assert!(parse("1 DEP CT CCA90 R0 F100\n").1.iter().any(|d| d.is_error()));
+    assert!(parse("1 L M128.5\n").1.iter().any(|d| d.is_error()));
+    // Once per kind in a file of many such blocks, at the first; the run goes through them.
+    let src: String = std::iter::once("0 BEGIN PGM NX MM\n1 TOOL CALL 1 Z S1000\n".to_owned())
+        .chain((2..=40).map(|n| format!("{n} X+{n}. Y{}. Z-1. F500 M3.\n", n % 7)))
+        .chain(std::iter::once("41 L Z+50 R0 FMAX\n42 END PGM NX MM\n".to_owned()))
+        .collect();
+    let (program, sim) = run(&src);
+    let d = parse(&src).1;
+    assert_eq!(d.iter().filter(|d| matches!(d.code, DiagCode::Lenient { .. })).count(), 2, "{d:?}");
+    let tip = after(&program, &sim, 40).tip_ics;
+    assert!(tip.distance(glam::DVec3::new(40.0, 5.0, -1.0)) < 1e-9, "{tip}");
+}
+
+/// An exporting simulator writes a blank in the program name (`BEGIN PGM SP1 1002 MM`), which
+/// the control's file names do not allow: read with the whole name and said once.
+#[test]
+fn a_program_name_with_a_blank() {
+    let (p, d) = parse("0 BEGIN PGM SP1 1002 MM\n1 L X+1 R0 FMAX\n2 END PGM SP1 1002 MM\n");
+    assert_eq!(d.iter().map(|d| d.code.clone()).collect::<Vec<_>>(), [DiagCode::PgmNameBlank]);
+    assert!(matches!(&*p.blocks[0].body(), BlockBody::BeginPgm { name, .. } if name == "SP1 1002"));
+    assert!(format_program(&p).starts_with("0 BEGIN PGM SP1 1002 MM\n"));
+    // The END PGM name is compared whole.
+    let d = parse("0 BEGIN PGM SP1 1002 MM\n1 END PGM SP1 MM\n").1;
+    assert!(d.iter().any(|d| matches!(d.code, DiagCode::PgmNameMismatch { .. })), "{d:?}");
+    // Without a unit at the end it stays refused.
+    assert!(parse("0 BEGIN PGM SP1 1002\n").1.iter().any(|d| d.is_error()));
+}
+
 #[test]
 fn stop_qs_touch_probe_and_a_setup_header_run_and_are_said() {
     same("STOP", "STOP");
