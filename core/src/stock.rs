@@ -14,7 +14,8 @@
 //! (the spacing per axis is `size / ⌈size / resolution⌉`, so the cells tile the blank exactly).
 //!
 //! # Cutting
-//! A motion removes, on every ray that crosses its bounding box, the interval where the ray
+//! A motion removes, on every ray that can meet its sweep (in its bounding box, within the
+//! tool's radius of the parallelogram its axis sweeps), the interval where the ray
 //! meets the volume the tool sweeps ([`sweep`]: closed form for a straight move with a fixed
 //! tool orientation). A motion that turns the tool relative to the workpiece (rotary axes
 //! moving, PLANE … MOVE) is cut as straight sub-moves with the orientation of each sub-move's
@@ -548,6 +549,7 @@ impl Stock {
         // in the slab s_lo ≤ p·t ≤ s_hi: a cheap test that skips rays whose material is outside
         // it (a tool passing just above a tilted face touches many rays' boxes but no material).
         let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + reach + 1e-9);
+        let core = Core { origin: p0, edges: [p1 - p0, top], radius: cutter.radius };
         let mut scratch = Vec::new();
         for d in start.d..3 {
             let (a, b) = others(d);
@@ -564,8 +566,17 @@ impl Stock {
             let area = self.h[a] * self.h[b];
             let (tile_first, tiles_per_row) = self.tile_base(d);
             for j in first_row..=*rj.end() {
-                out.visited += ri.end() + 1 - ri.start();
-                for i in ri.clone() {
+                // Only the rays of the row within the radius of the core's shadow.
+                let y = self.min[b] + (j as f64 + 0.5) * self.h[b];
+                let Some((x0, x1)) = core.row(a, b, y) else { continue };
+                let first = ((x0 - self.min[a]) / self.h[a] - 0.5).ceil().max(*ri.start() as f64) as usize;
+                let last = ((x1 - self.min[a]) / self.h[a] - 0.5).floor().min(*ri.end() as f64);
+                if last < first as f64 {
+                    continue;
+                }
+                let row = first..=last as usize;
+                out.visited += row.end() + 1 - row.start();
+                for i in row {
                     let mut r0 = DVec3::ZERO;
                     r0[a] = self.min[a] + (i as f64 + 0.5) * self.h[a];
                     r0[b] = self.min[b] + (j as f64 + 0.5) * self.h[b];
@@ -584,7 +595,7 @@ impl Stock {
                         continue;
                     }
                     out.rays += 1;
-                    if let Some((x0, x1)) = cutter.ray_interval(&frame, p0, p1, r0, dir) {
+                    if let Some((x0, x1)) = cutter.material_interval(&frame, p0, p1, r0, dir, dexel.spans()) {
                         let removed = dexel.subtract(x0, x1, &mut scratch);
                         out.volume += removed * area / 3.0;
                         out.depth = out.depth.max(removed);
@@ -603,6 +614,37 @@ impl Stock {
             }
         }
         (out, None)
+    }
+}
+
+/// The core of a sweep: the parallelogram the tool's axis sweeps (from `origin` along the move
+/// and along the axis up to the reach), every point of the tool within `radius` of it (a tool is
+/// round about its axis, no wider than its radius). A ray of grid `d` misses the sweep when, seen
+/// along `d`, its point lies farther than the radius from the parallelogram's shadow: the
+/// shadow's edges, each grown by the radius to a 2D capsule, bound the row's rays that can hit.
+struct Core {
+    origin: DVec3,
+    edges: [DVec3; 2],
+    radius: f64,
+}
+
+impl Core {
+    /// The `a` coordinates of the points on the line `b = y` (the two other axes of a grid)
+    /// within the radius of the shadow: the union of the four edges' capsules, which holds
+    /// the shadow's part of the line too (its ends lie on edges).
+    fn row(&self, a: usize, b: usize, y: f64) -> Option<(f64, f64)> {
+        let flat = |v: DVec3| DVec3::new(v[a], v[b], 0.0);
+        let (e1, e2) = (flat(self.edges[0]), flat(self.edges[1]));
+        let start = DVec3::new(0.0, y - self.origin[b], 0.0);
+        // A hair wider than the radius: roundoff must not drop a ray the sweep touches.
+        let r = self.radius * (1.0 + 1e-9) + 1e-9;
+        let mut out: Option<(f64, f64)> = None;
+        for (from, along) in [(DVec3::ZERO, e1), (DVec3::ZERO, e2), (e1, e2), (e2, e1)] {
+            if let Some((lo, hi)) = sweep::capsule_interval(start - from, DVec3::X, along, r) {
+                out = Some(out.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
+            }
+        }
+        out.map(|(lo, hi)| (lo + self.origin[a], hi + self.origin[a]))
     }
 }
 
