@@ -159,6 +159,7 @@ fixtures!(err, check_err:
     eulnu_negative,
     function_tcpm,
     garbage,
+    other_control_post,
     path_words,
     propr_90,
     seq_with_sym,
