@@ -550,6 +550,7 @@ impl Stock {
         // it (a tool passing just above a tilted face touches many rays' boxes but no material).
         let (s_lo, s_hi) = (p0.dot(t).min(p1.dot(t)) - 1e-9, p0.dot(t).max(p1.dot(t)) + reach + 1e-9);
         let core = Core { origin: p0, edges: [p1 - p0, top], radius: cutter.radius };
+        let sweep = cutter.sweep(frame, p0, p1);
         let mut scratch = Vec::new();
         for d in start.d..3 {
             let (a, b) = others(d);
@@ -595,7 +596,7 @@ impl Stock {
                         continue;
                     }
                     out.rays += 1;
-                    if let Some((x0, x1)) = cutter.material_interval(&frame, p0, p1, r0, dir, dexel.spans()) {
+                    if let Some((x0, x1)) = sweep.material_interval(r0, dir, dexel.spans()) {
                         let removed = dexel.subtract(x0, x1, &mut scratch);
                         out.volume += removed * area / 3.0;
                         out.depth = out.depth.max(removed);
@@ -640,6 +641,11 @@ impl Core {
         let r = self.radius * (1.0 + 1e-9) + 1e-9;
         let mut out: Option<(f64, f64)> = None;
         for (from, along) in [(DVec3::ZERO, e1), (DVec3::ZERO, e2), (e1, e2), (e2, e1)] {
+            // An edge farther than the radius from the line along y meets it nowhere.
+            let (y0, y1) = (from.y.min(from.y + along.y), from.y.max(from.y + along.y));
+            if start.y < y0 - r || start.y > y1 + r {
+                continue;
+            }
             if let Some((lo, hi)) = sweep::capsule_interval(start - from, DVec3::X, along, r) {
                 out = Some(out.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
             }

@@ -36,7 +36,8 @@
 //! # Less work, the same result
 //! A ball's sweep is a capsule, met in closed form ([`capsule_interval`]; the enumeration is its
 //! test oracle). The other pieces are enumerated only on rays whose material their sweep can
-//! reach: a cheap bound (the slab met with the 2D capsule of the axis's shadow, [`Piece::bound`])
+//! reach: a cheap bound (the slab, [`Piece::slab`], met with the 2D capsule of the axis's
+//! shadow, [`Piece::radial`])
 //! that holds no material skips the piece, which changes nothing, since the pieces' intervals
 //! join to one and a part without material removes none ([`Cutter::material_interval`]).
 
@@ -70,25 +71,28 @@ impl Piece {
         Piece { ball: false, s: -b * b, g: -a * b, h: -a * a, z0, z1 }
     }
 
-    /// A λ range holding where the line `o + λ·u` meets this piece swept by `−w` (see
-    /// [`piece_interval`]), cheaper than the exact one: the range within the slab for some t,
-    /// met with the range within the piece's largest radius of the axis for some t (seen along
-    /// the axis, a 2D capsule). `None`: the line misses the piece's sweep.
-    fn bound(&self, o: DVec3, u: DVec3, w: DVec3) -> Option<(f64, f64)> {
-        // Slab: z0 ≤ o.z + λ·u.z + t·w.z ≤ z1 for some t in [0, 1].
+    /// The λ range where the line `o + λ·u` lies within this piece's slab `z0 ≤ z ≤ z1` for
+    /// some t in [0, 1] (the piece swept by `−w`, see [`piece_interval`]): it holds where the
+    /// line meets the sweep, and costs no root. `None`: the line misses the slab's sweep.
+    fn slab(&self, o: DVec3, u: DVec3, w: DVec3) -> Option<(f64, f64)> {
+        // z0 ≤ o.z + λ·u.z + t·w.z ≤ z1.
         let (wl, wh) = (w.z.min(0.0), w.z.max(0.0));
-        let (mut lo, mut hi) = if u.z.abs() > 1e-12 {
+        if u.z.abs() > 1e-12 {
             let (x, y) = ((self.z0 - o.z - wh) / u.z, (self.z1 - o.z - wl) / u.z);
-            (x.min(y), x.max(y))
+            Some((x.min(y), x.max(y)))
         } else if o.z + wh < self.z0 || o.z + wl > self.z1 {
-            return None;
+            None
         } else {
-            (f64::NEG_INFINITY, f64::INFINITY)
-        };
-        // The largest radius: √(−(s·z² + 2g·z + h)) at either end of the slab (a frustum's radius
-        // is linear in z).
-        let radius = |z: f64| (-(self.s * z * z + 2.0 * self.g * z + self.h)).max(0.0).sqrt();
-        let r = radius(self.z0).max(radius(self.z1)) * (1.0 + 1e-9) + 1e-9;
+            Some((f64::NEG_INFINITY, f64::INFINITY))
+        }
+    }
+
+    /// `range` narrowed to where the line lies within the piece's largest radius of the axis
+    /// for some t (seen along the axis, a 2D capsule): with [`Piece::slab`] a bound of the
+    /// sweep cheaper than the exact one. `None`: the line misses the sweep.
+    fn radial(&self, o: DVec3, u: DVec3, w: DVec3, range: (f64, f64)) -> Option<(f64, f64)> {
+        let (mut lo, mut hi) = range;
+        let r = self.widest() * (1.0 + 1e-9) + 1e-9;
         let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
         let (o2, u2, m2) = (flat(o), flat(u), -flat(w));
         let k = u2.length();
@@ -97,8 +101,8 @@ impl Piece {
             lo = lo.max(a / k);
             hi = hi.min(b / k);
         } else {
-            // Along the axis: within the radius for every λ or for none.
-            // The nearest point of the segment from 0 to m2 (the axis's shadow moving).
+            // Along the axis: within the radius for every λ or for none. The nearest point of
+            // the segment from 0 to m2 (the axis's shadow moving).
             let mm = m2.length_squared();
             let along = if mm > 0.0 { (o2.dot(m2) / mm).clamp(0.0, 1.0) } else { 0.0 };
             if (o2 - along * m2).length() > r {
@@ -106,6 +110,16 @@ impl Piece {
             }
         }
         (lo <= hi).then_some((lo, hi))
+    }
+
+    /// The piece's largest radius: a ball's own, √(g² − h); a frustum's, √(−(s·z² + 2g·z + h)),
+    /// at either end of the slab (its radius is linear in z).
+    fn widest(&self) -> f64 {
+        if self.ball {
+            return (self.g * self.g - self.h).max(0.0).sqrt();
+        }
+        let radius = |z: f64| (-(self.s * z * z + 2.0 * self.g * z + self.h)).max(0.0).sqrt();
+        radius(self.z0).max(radius(self.z1))
     }
 
     /// A ball's sweep: a capsule ([`capsule_interval`]); centre at z = −g, radius² = g² − h.
@@ -178,47 +192,42 @@ impl Cutter {
         Cutter { pieces, radius: r, length: l }
     }
 
-    /// What [`Cutter::ray_interval`] would remove from a ray holding `material`: the same
-    /// material removed, with less work. A piece whose sweep cannot reach the material
-    /// ([`Piece::bound`]) is skipped: the pieces' intervals join to the sweep's one interval,
-    /// and leaving out a part without material removes the same material. `None`: nothing to
-    /// remove.
-    pub fn material_interval(
-        &self,
-        frame: &[DVec3; 3],
-        p0: DVec3,
-        p1: DVec3,
-        r0: DVec3,
-        dir: DVec3,
-        material: &[super::Span],
-    ) -> Option<(f64, f64)> {
+    /// This tool moving straight from tip `p0` to tip `p1` with tool axis `frame[2]` (`frame`
+    /// orthonormal, columns x, y, axis), ready for its rays.
+    pub fn sweep(&self, frame: [DVec3; 3], p0: DVec3, p1: DVec3) -> Sweep<'_> {
         let local = |v: DVec3| DVec3::new(frame[0].dot(v), frame[1].dot(v), frame[2].dot(v));
-        let o = local(r0 - p0);
-        let u = local(dir);
-        let w = -local(p1 - p0);
-        let mut out: Option<(f64, f64)> = None;
-        for piece in &self.pieces {
-            let hit = if piece.ball {
-                piece.swept_ball(o, u, w)
-            } else {
-                match piece.bound(o, u, w) {
-                    Some((lo, hi)) if material.iter().any(|s| s.hi > lo && s.lo < hi) => {
-                        piece_interval(piece, o, u, w)
-                    }
-                    _ => None,
-                }
-            };
-            if let Some((a, b)) = hit {
-                out = Some(out.map_or((a, b), |(lo, hi)| (lo.min(a), hi.max(b))));
-            }
-        }
-        out
+        let t = frame[2];
+        // Each piece lies within its widest radius of its stretch of the axis; a disc of radius
+        // r square to t reaches r·√(1 − t_k²) along axis k.
+        let disc = DVec3::ONE - t * t;
+        let disc = DVec3::new(disc.x.max(0.0).sqrt(), disc.y.max(0.0).sqrt(), disc.z.max(0.0).sqrt());
+        let boxes = self
+            .pieces
+            .iter()
+            .map(|piece| {
+                let (lo, hi) = if piece.ball {
+                    // The centre's segment grown by the radius.
+                    let c = -piece.g * t;
+                    let r = DVec3::splat(piece.widest());
+                    ((p0 + c).min(p1 + c) - r, (p0 + c).max(p1 + c) + r)
+                } else {
+                    let ends = [p0 + piece.z0 * t, p0 + piece.z1 * t, p1 + piece.z0 * t, p1 + piece.z1 * t];
+                    let grow = piece.widest() * disc;
+                    let lo = ends.iter().fold(DVec3::INFINITY, |a, e| a.min(*e));
+                    let hi = ends.iter().fold(DVec3::NEG_INFINITY, |a, e| a.max(*e));
+                    (lo - grow, hi + grow)
+                };
+                // A hair wider: roundoff must not drop a ray the piece touches.
+                let hair = DVec3::splat(1e-9 * (1.0 + lo.abs().max(hi.abs()).max_element()));
+                (lo - hair, hi + hair)
+            })
+            .collect();
+        Sweep { cutter: self, frame, p0, w: -local(p1 - p0), boxes }
     }
 
     /// Where the ray `r0 + λ·dir` crosses the volume swept by this tool moving from tip `p0` to
-    /// tip `p1` with tool axis `frame[2]` (`frame` orthonormal, columns x, y, axis): `(λmin,
-    /// λmax)`, or `None` if it misses; [`Cutter::material_interval`] of a ray in material all
-    /// along.
+    /// tip `p1` with tool axis `frame[2]`: `(λmin, λmax)`, or `None` if it misses;
+    /// [`Sweep::material_interval`] of a ray in material all along.
     #[cfg(test)]
     pub fn ray_interval(
         &self,
@@ -229,7 +238,55 @@ impl Cutter {
         dir: DVec3,
     ) -> Option<(f64, f64)> {
         let all = super::Span { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
-        self.material_interval(frame, p0, p1, r0, dir, &[all])
+        self.sweep(*frame, p0, p1).material_interval(r0, dir, &[all])
+    }
+}
+
+/// A tool's straight sweep ([`Cutter::sweep`]): what every ray of one cut shares.
+pub(crate) struct Sweep<'a> {
+    cutter: &'a Cutter,
+    frame: [DVec3; 3],
+    p0: DVec3,
+    /// −(p1 − p0) in the tool frame.
+    w: DVec3,
+    /// Per piece, the box its sweep lies in (W-CS).
+    boxes: Vec<(DVec3, DVec3)>,
+}
+
+impl Sweep<'_> {
+    /// What the whole sweep would remove from the ray `r0 + λ·dir` holding `material`: the same
+    /// material, with less work. A piece whose sweep cannot reach the material is skipped: the
+    /// ray passes its box (along an axis the ray does not move on), or the material lies
+    /// outside its cheap bounds ([`Piece::slab`], [`Piece::radial`]). The pieces' intervals
+    /// join to the sweep's one interval, and leaving out a part without material removes the
+    /// same material. `None`: nothing to remove.
+    pub fn material_interval(&self, r0: DVec3, dir: DVec3, material: &[super::Span]) -> Option<(f64, f64)> {
+        let frame = &self.frame;
+        let local = |v: DVec3| DVec3::new(frame[0].dot(v), frame[1].dot(v), frame[2].dot(v));
+        let (o, u, w) = (local(r0 - self.p0), local(dir), self.w);
+        let mut out: Option<(f64, f64)> = None;
+        let touches = |(lo, hi): (f64, f64)| material.iter().any(|s| s.hi > lo && s.lo < hi);
+        let passes =
+            |(lo, hi): &(DVec3, DVec3)| (0..3).any(|k| dir[k] == 0.0 && (r0[k] < lo[k] || r0[k] > hi[k]));
+        for (piece, bounds) in self.cutter.pieces.iter().zip(&self.boxes) {
+            // The cheap bounds first: most rays' material lies beyond most pieces' reach.
+            if passes(bounds) {
+                continue;
+            }
+            let Some(slab) = piece.slab(o, u, w).filter(|&b| touches(b)) else { continue };
+            let hit = if piece.ball {
+                piece.swept_ball(o, u, w)
+            } else {
+                match piece.radial(o, u, w, slab) {
+                    Some(b) if touches(b) => piece_interval(piece, o, u, w),
+                    _ => None,
+                }
+            };
+            if let Some((a, b)) = hit {
+                out = Some(out.map_or((a, b), |(lo, hi)| (lo.min(a), hi.max(b))));
+            }
+        }
+        out
     }
 }
 
@@ -530,12 +587,13 @@ mod tests {
         assert!(hits > 3_000, "{hits}");
     }
 
-    /// Each frustum's cheap bound holds its exact interval.
+    /// Each piece's cheap bound holds its exact interval.
     #[test]
     fn a_pieces_bound_holds_its_sweep() {
         let mut rng = Rng(0xB0_u64 << 32 | 0x0D);
         let tools = [
             Cutter::new(ToolShape::Flat, 5.0, 40.0, 0.01),
+            Cutter::new(ToolShape::Ball, 5.0, 40.0, 0.01),
             Cutter::new(ToolShape::Drill { point_angle: 118.0 }, 4.0, 40.0, 0.01),
             Cutter::new(ToolShape::Bull { corner_radius: 2.0 }, 6.0, 40.0, 0.0625),
         ];
@@ -554,7 +612,8 @@ mod tests {
             let w = vector(&mut rng, 10.0);
             if let Some((a, b)) = piece_interval(&piece, o, u, w) {
                 checked += 1;
-                let (lo, hi) = piece.bound(o, u, w).expect("a bound where the sweep is met");
+                let bound = piece.slab(o, u, w).and_then(|s| piece.radial(o, u, w, s));
+                let (lo, hi) = bound.expect("a bound where the sweep is met");
                 assert!(lo <= a + 1e-9 && b <= hi + 1e-9, "{piece:?} {o} {u} {w}: [{a}, {b}] ⊄ [{lo}, {hi}]");
             }
         }
@@ -599,7 +658,7 @@ mod tests {
                 dexel
             };
             let whole = cut(tool.ray_interval(&frame, p0, p1, r0, dir));
-            let skipped = cut(tool.material_interval(&frame, p0, p1, r0, dir, &spans));
+            let skipped = cut(tool.sweep(frame, p0, p1).material_interval(r0, dir, &spans));
             assert_eq!(whole.spans(), skipped.spans(), "{frame:?} {p0} {p1} {r0} {dir}");
             removed += usize::from(whole.spans() != spans.as_slice());
         }
