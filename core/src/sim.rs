@@ -148,6 +148,10 @@ pub struct Record {
     pub block: u32,
     /// `false` for a block only listed (after M30/M2, or skipped with `/`).
     pub executed: bool,
+    /// Whether the step made a positioning motion (a rapid, an MB retract, the swivel of
+    /// MOVE/TURN): the steps [`crate::stock::Cutting::collisions`] looks at.
+    #[serde(skip)]
+    pub positioned: bool,
     pub axes: MachineAxes,
 }
 
@@ -309,7 +313,7 @@ impl Simulation {
             }
             rec.segments.clear();
             match it.step(&cx, row.is_some().then_some(&mut rec)) {
-                Ok(executed) => {
+                Ok(stepped) => {
                     if let Some(row) = row.as_mut() {
                         row(ListingRow {
                             step,
@@ -327,7 +331,8 @@ impl Simulation {
                     }
                     records.push(Record {
                         block: u32::try_from(block).unwrap_or(u32::MAX),
-                        executed,
+                        executed: stepped.executed,
+                        positioned: stepped.positioned,
                         axes: it.axes,
                     });
                 }
@@ -485,8 +490,8 @@ impl Simulation {
             it.step(&cx, None).ok()?;
         }
         let mut rec = Rec::default();
-        let executed = it.step(&cx, Some(&mut rec)).ok()?;
-        Some(it.state(program, &self.machine, step, executed, rec))
+        let stepped = it.step(&cx, Some(&mut rec)).ok()?;
+        Some(it.state(program, &self.machine, step, stepped.executed, rec))
     }
 
     /// Every state in order, re-simulated once from the start (for listings of a whole run).
@@ -536,8 +541,8 @@ impl Simulation {
                 interp.step(&cx, None).ok()?;
             }
             let mut rec = Rec::default();
-            let executed = interp.step(&cx, Some(&mut rec)).ok()?;
-            let made = make(interp, step, executed, rec);
+            let stepped = interp.step(&cx, Some(&mut rec)).ok()?;
+            let made = make(interp, step, stepped.executed, rec);
             step += 1;
             Some(made)
         })

@@ -65,6 +65,16 @@ pub(crate) struct At<'s, 'r> {
     pub cx: &'s Cx<'s>,
     pub rec: Option<&'r mut Rec>,
     pub block: usize,
+    /// Whether the step made a positioning motion ([`SegmentKind::is_positioning`]).
+    pub positioned: bool,
+}
+
+/// What one step did: whether it executed its block (not only listed it) and whether it made a
+/// positioning motion (the material check looks at those steps only).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Stepped {
+    pub executed: bool,
+    pub positioned: bool,
 }
 
 /// A stored cycle definition.
@@ -321,9 +331,14 @@ impl Interp {
     }
 
     /// Executes the next block; `Ok(false)` if it was only listed (after M30, or skipped).
-    pub fn step(&mut self, cx: &Cx<'_>, rec: Option<&mut Rec>) -> R<bool> {
-        let idx = self.pc;
-        let mut at = At { cx, rec, block: idx };
+    pub fn step(&mut self, cx: &Cx<'_>, rec: Option<&mut Rec>) -> R<Stepped> {
+        let mut at = At { cx, rec, block: self.pc, positioned: false };
+        let executed = self.step_at(&mut at)?;
+        Ok(Stepped { executed, positioned: at.positioned })
+    }
+
+    fn step_at(&mut self, at: &mut At<'_, '_>) -> R<bool> {
+        let (cx, idx) = (at.cx, self.pc);
         let Some(block) = cx.program.blocks.get(idx) else {
             self.pc = cx.program.blocks.len();
             return Ok(false);
@@ -374,22 +389,22 @@ impl Interp {
                 self.pc = cx.program.blocks.len();
             }
             BlockBody::BlkForm(b) => self.blk_form(cx, b)?,
-            BlockBody::ToolCall(t) => self.tool_call(&mut at, t)?,
+            BlockBody::ToolCall(t) => self.tool_call(at, t)?,
             BlockBody::L(line) => {
-                self.line(&mut at, line)?;
+                self.line(at, line)?;
                 if let Some(mb) = line.m_words.mb {
-                    self.m140(&mut at, mb)?;
+                    self.m140(at, mb)?;
                 }
-                self.modal_call(&mut at, line)?;
+                self.modal_call(at, line)?;
             }
             BlockBody::MFunctions(m, w) => {
                 self.spindle_m(m);
                 m_note(&mut at.rec, m);
                 if let Some(mb) = w.mb {
-                    self.m140(&mut at, mb)?;
+                    self.m140(at, mb)?;
                 }
                 if m.contains(&99) {
-                    self.call_cycle(&mut at)?;
+                    self.call_cycle(at)?;
                 }
                 self.m89 = m.contains(&89) || (self.m89 && !m.contains(&99));
                 self.end_m(m);
@@ -398,16 +413,16 @@ impl Interp {
             // cycle with CYCL DEF"; DOMAIN.md §11); a CYCL CALL does not (the TNC 306/406 rule).
             BlockBody::CycleDef(d) => {
                 self.m89 = false;
-                self.cycle_def(&mut at, d)?;
+                self.cycle_def(at, d)?;
             }
             BlockBody::CyclCall { m } => {
                 self.spindle_m(m);
-                self.call_cycle(&mut at)?;
+                self.call_cycle(at)?;
                 self.end_m(m);
             }
-            BlockBody::Plane(p) => self.plane(&mut at, p)?,
+            BlockBody::Plane(p) => self.plane(at, p)?,
             BlockBody::Invalid { .. } => return Err(SimErrorCode::InvalidBlock),
-            _ => self.other_block(&mut at, &body, pending_corner)?,
+            _ => self.other_block(at, &body, pending_corner)?,
         }
         Ok(true)
     }

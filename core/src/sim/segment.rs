@@ -67,6 +67,18 @@ pub enum SegmentKind {
     CycleFeed,
 }
 
+impl SegmentKind {
+    /// A positioning, which must not touch the material (a rapid, an MB retract, the swivel of
+    /// MOVE/TURN), as against a motion that may cut.
+    #[must_use]
+    pub fn is_positioning(self) -> bool {
+        matches!(
+            self,
+            SegmentKind::Rapid | SegmentKind::Retract | SegmentKind::SwivelMove | SegmentKind::SwivelTurn
+        )
+    }
+}
+
 /// How the axes get from `start` to `end`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(tag = "path", rename_all = "snake_case")]

@@ -298,10 +298,7 @@ impl Cutting {
             let cutter = match &p.tool {
                 Some((t, k)) if *t == state.tool => *k,
                 _ => {
-                    let t = &state.tool;
-                    // The bull nose's profile error: a quarter of the resolution (sweep.rs).
-                    let tolerance = self.options.resolution / 4.0;
-                    self.cutters.push(Cutter::new(t.shape, t.radius, t.length, tolerance));
+                    self.cutters.push(self.cutter(&state.tool));
                     p.tool = Some((state.tool.clone(), self.cutters.len() - 1));
                     self.cutters.len() - 1
                 }
@@ -318,6 +315,12 @@ impl Cutting {
         done
     }
 
+    /// The cutter of `tool`; the bull nose's profile error is a quarter of the resolution
+    /// (sweep.rs).
+    fn cutter(&self, tool: &ToolState) -> Cutter {
+        Cutter::new(tool.shape, tool.radius, tool.length, self.options.resolution / 4.0)
+    }
+
     /// Whether step `step` is planned.
     fn is_planned(&self, step: usize) -> bool {
         self.planning.is_none() || step + 1 < self.step_events.len()
@@ -330,7 +333,12 @@ impl Cutting {
     /// blank: most runs cost only the plan.
     #[must_use]
     pub fn collisions(program: &Program, sim: &Simulation, options: StockOptions, work: usize) -> Collisions {
-        let mut c = Cutting::planned(program, sim, StockOptions { checkpoints: 0, ..options });
+        let options = StockOptions { checkpoints: 0, ..options };
+        let Some(step) = Cutting::last_positioning_step_in_a_blank(program, sim, options) else {
+            return Collisions::default();
+        };
+        let mut c = Cutting::unplanned(options);
+        c.plan_on(program, sim, step + 1);
         let Some(last) = c.last_positioning_in_a_blank() else { return Collisions::default() };
         // This cutting is never sought: the events after the last one that can collide go.
         c.events.truncate(last + 1);
@@ -343,38 +351,76 @@ impl Cutting {
         Collisions { notes: c.notes, unchecked }
     }
 
-    /// The last positioning sweep whose tool (tip to shank end, in a box widened by the radius)
-    /// overlaps the blank in effect.
+    /// The last step whose positioning reaches into the blank in effect
+    /// ([`Cutting::reaches_blank`]). Only the steps that position ([`crate::sim::Record`]) are
+    /// planned, each stretch of them between two of the run's checkpoints re-simulated once, the
+    /// last stretch first: a run whose rapids stay above its blank costs no plan of its cuts
+    /// (100,000 moves inside a blank: the check took more than the run itself).
+    fn last_positioning_step_in_a_blank(
+        program: &Program,
+        sim: &Simulation,
+        options: StockOptions,
+    ) -> Option<usize> {
+        let steps: Vec<usize> = (0..sim.len()).filter(|&k| sim.records[k].positioned).collect();
+        let n = sim.options.checkpoint_interval.max(1);
+        for stretch in steps.chunk_by(|a, b| a / n == b / n).rev() {
+            let (first, last) = (stretch[0], stretch[stretch.len() - 1]);
+            let mut found = None;
+            for state in sim.motions_from(program, first).take(last + 1 - first) {
+                if stretch.binary_search(&state.step).is_err() || state.segments.is_empty() {
+                    continue;
+                }
+                let Some(blank) = state.blank else { continue };
+                let mut scratch = Cutting::unplanned(options);
+                scratch.cutters.push(scratch.cutter(&state.tool));
+                scratch.plan_step(sim, &state, 0);
+                if scratch.events.iter().any(|e| scratch.reaches_blank(&blank, &e.action)) {
+                    found = Some(state.step);
+                }
+            }
+            if found.is_some() {
+                return found;
+            }
+        }
+        None
+    }
+
+    /// The last positioning sweep that reaches into the blank in effect.
     fn last_positioning_in_a_blank(&self) -> Option<usize> {
         let mut blank: Option<&Blank> = None;
         let mut last = None;
         for (k, e) in self.events.iter().enumerate() {
             match &e.action {
                 Action::Blank(b) => blank = Some(b),
-                Action::Cut { motion: Motion::Cut, .. } => {}
-                Action::Cut { cutter, axis, from, to, .. } => {
-                    let Some(b) = blank else { continue };
-                    let Cutter { radius, length, .. } = self.cutters[*cutter];
-                    let (shank_from, shank_to) = (*from + *axis * length, *to + *axis * length);
-                    // Straight up its own axis (a retract) the tool only sweeps what is new
-                    // above its shank's end: where it stands is free, it has just cut there.
-                    let d = *to - *from;
-                    let (lo, hi) = if d.dot(*axis) >= d.length() * (1.0 - 1e-9) {
-                        (shank_from.min(shank_to), shank_from.max(shank_to))
-                    } else {
-                        (
-                            from.min(*to).min(shank_from).min(shank_to),
-                            from.max(*to).max(shank_from).max(shank_to),
-                        )
-                    };
-                    let (lo, hi) = (lo - DVec3::splat(radius), hi + DVec3::splat(radius));
-                    if lo.cmplt(b.max).all() && hi.cmpgt(b.min).all() {
+                action => {
+                    if blank.is_some_and(|b| self.reaches_blank(b, action)) {
                         last = Some(k);
                     }
                 }
             }
         }
         last
+    }
+
+    /// Whether `action` is a positioning sweep whose tool (tip to shank end, in a box widened
+    /// by the radius) overlaps the blank `b`.
+    fn reaches_blank(&self, b: &Blank, action: &Action) -> bool {
+        let Action::Cut { cutter, axis, from, to, motion } = action else { return false };
+        if *motion == Motion::Cut {
+            return false;
+        }
+        let Cutter { radius, length, .. } = self.cutters[*cutter];
+        let (shank_from, shank_to) = (*from + *axis * length, *to + *axis * length);
+        // Straight up its own axis (a retract) the tool only sweeps what is new above its
+        // shank's end: where it stands is free, it has just cut there.
+        let d = *to - *from;
+        let (lo, hi) = if d.dot(*axis) >= d.length() * (1.0 - 1e-9) {
+            (shank_from.min(shank_to), shank_from.max(shank_to))
+        } else {
+            (from.min(*to).min(shank_from).min(shank_to), from.max(*to).max(shank_from).max(shank_to))
+        };
+        let (lo, hi) = (lo - DVec3::splat(radius), hi + DVec3::splat(radius));
+        lo.cmplt(b.max).all() && hi.cmpgt(b.min).all()
     }
 
     /// The sweeps of one step's segments (see the module doc of [`super`]).

@@ -77,6 +77,7 @@ impl Interp {
         path: impl FnOnce() -> SegmentPath,
     ) -> R<()> {
         let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
+        at.positioned |= moves && kind.is_positioning();
         if moves && (at.rec.is_some() || self.bodies.is_some()) {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
@@ -129,6 +130,7 @@ impl Interp {
         length: f64,
         path: SegmentPath,
     ) -> R<()> {
+        at.positioned |= length > 0.0 && kind.is_positioning();
         if length > 0.0 && (at.rec.is_some() || self.bodies.is_some()) {
             let duration = duration(at.cx, self.unit, rate, length, 0.0);
             let seg = self.segment(at.block, kind, target, [0.0; 2], duration, path);
