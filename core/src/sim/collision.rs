@@ -607,6 +607,12 @@ impl Bodies {
         // a translation, tested whole by the swept boxes (`swept_obb_gap`) before any halving.
         let straight = rot == [0.0, 0.0]
             && matches!(seg.path, SegmentPath::Linear | SegmentPath::Stay { .. } | SegmentPath::Tcpm(_));
+        // Broad phase of a translation: the box around every head-side body swept along it,
+        // against each table-side body's box; apart by more than the resolution, every pair of
+        // that body is clear along the whole motion by at least that much (boxes hold their
+        // bodies, and a gap along one axis is a lower bound on the distance). Computed once the
+        // first pair needs a test.
+        let mut apart: Option<Vec<f64>> = None;
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
             let rate = rate_of(a) + rate_of(b);
             if known && rate < clear.gaps[k] - RESOLUTION {
@@ -615,6 +621,11 @@ impl Bodies {
             }
             let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
             if straight {
+                let apart = apart.get_or_insert_with(|| self.apart(end, seg.start.linear - seg.end.linear));
+                if apart[b] > RESOLUTION {
+                    clear.gaps[k] = apart[b];
+                    continue;
+                }
                 // Pairs are (head side, table side): `a` came to its place at the end along
                 // the linear axes' travel, `b` stood still.
                 let swept = self.swept_gap(a, &end[a], b, &end[b], seg.start.linear - seg.end.linear);
@@ -688,6 +699,40 @@ impl Bodies {
             Placed::Box(o) => point_obb_distance(centre, o) - ka.radius,
             Placed::Cylinder { .. } => (centre - pb.apply(kb.centre)).length() - ka.radius - kb.radius,
         }
+    }
+
+    /// Per body, how far the table-side ones are from the box around every head-side body swept
+    /// from where it is placed by the translation `d` (0 for a head-side body or one that
+    /// overlaps it): a lower bound on the distance of each of its pairs along the motion.
+    fn apart(&self, placed: &[(Affine, Placed)], d: DVec3) -> Vec<f64> {
+        let aabb = |o: &Obb| {
+            let a = o.axes;
+            let reach = DVec3::new(
+                a.row(0).abs().dot(o.half),
+                a.row(1).abs().dot(o.half),
+                a.row(2).abs().dot(o.half),
+            );
+            (o.center - reach, o.center + reach)
+        };
+        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+        for (solid, (_, p)) in self.solids.iter().zip(placed) {
+            if solid.role.head_side() {
+                let (l, h) = aabb(&p.bound());
+                lo = lo.min(l).min(l + d);
+                hi = hi.max(h).max(h + d);
+            }
+        }
+        self.solids
+            .iter()
+            .zip(placed)
+            .map(|(solid, (_, p))| {
+                if solid.role.head_side() {
+                    return 0.0;
+                }
+                let (l, h) = aabb(&p.bound());
+                (l - hi).max(lo - h).max_element().max(0.0)
+            })
+            .collect()
     }
 
     /// A lower bound on the distance of body `a`, swept from where it is placed by the
