@@ -113,6 +113,29 @@ fn a_collision_only_in_the_middle_of_a_rotary_move_is_found() {
     assert!(sim.error.is_none(), "{:?}\n{text}", sim.error);
 }
 
+/// The same holder, moved straight across the blank at rapid from far beside it to far beyond
+/// it (every head-side body, the spindle too, clear of the blank at both ends), through the
+/// blank in between: it touches the face Y+100 when its axis reaches Y+126, after 74 of its
+/// 300 mm. The broad phase of a translation must look at the whole sweep.
+#[test]
+fn a_straight_rapid_through_the_blank_is_found_though_both_ends_are_free() {
+    let setup = |x: &'static str| {
+        let mut body: Vec<&str> = BLANK.to_vec();
+        body.extend(["TOOL CALL 1 Z S3000 DL-40", "L Z+0 R0 FMAX M91", x, "L Z-35 R0 FMAX"]);
+        body
+    };
+    for x in ["L X+50 Y+200 R0 FMAX", "L X+50 Y-100 R0 FMAX"] {
+        let (sim, text) = run(&setup(x));
+        assert!(sim.error.is_none(), "{:?}\n{text}", sim.error);
+    }
+    let mut body = setup("L X+50 Y+200 R0 FMAX");
+    body.push("L Y-100 R0 FMAX");
+    let (sim, text) = run(&body);
+    let c = collision_at(&sim, &text, body.len());
+    assert_eq!((&*c.a.en, &*c.b.en), ("tool holder", "blank"), "{c:?}");
+    assert!((c.fraction - 74.0 / 300.0).abs() < RESOLUTION / 300.0 + 1e-9, "{c:?}");
+}
+
 /// `SPA−30` on `ac-table` has two solutions: A−30 C+0 lifts the +Y side of the table into the
 /// tool standing there, A+30 C±180 lowers it (and turns the round table and the square blank,
 /// which stay clear of the holder). SEQ− picks the colliding one; the error names the other.
