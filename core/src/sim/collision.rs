@@ -607,25 +607,35 @@ impl Bodies {
         // a translation, tested whole by the swept boxes (`swept_obb_gap`) before any halving.
         let straight = rot == [0.0, 0.0]
             && matches!(seg.path, SegmentPath::Linear | SegmentPath::Stay { .. } | SegmentPath::Tcpm(_));
-        // Broad phase of a translation: the box around every head-side body swept along it,
-        // against each table-side body's box; apart by more than the resolution, every pair of
-        // that body is clear along the whole motion by at least that much (boxes hold their
-        // bodies, and a gap along one axis is a lower bound on the distance). Computed once the
-        // first pair needs a test.
-        let mut apart: Option<Vec<f64>> = None;
+        // Broad phase of a translation: each head-side body's box swept along it against each
+        // table-side body's box; apart by more than the resolution, the pair is clear along the
+        // whole motion by at least that much (a box holds its body, and a gap along one axis is
+        // a lower bound on the distance). Computed once the first pair needs a test.
+        // The boxes at the start are the last motion's at its end, moved along, while the run
+        // goes from translation to translation: most motions place no body at all.
+        let d = seg.end.linear - seg.start.linear;
+        let mut start_boxes: Option<Vec<(DVec3, DVec3)>> = None;
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
             let rate = rate_of(a) + rate_of(b);
             if known && rate < clear.gaps[k] - RESOLUTION {
                 clear.gaps[k] -= rate;
                 continue;
             }
-            let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
             if straight {
-                let apart = apart.get_or_insert_with(|| self.apart(end, seg.start.linear - seg.end.linear));
-                if apart[b] > RESOLUTION {
-                    clear.gaps[k] = apart[b];
+                let boxes = start_boxes.get_or_insert_with(|| match clear.boxes.take() {
+                    Some((at, boxes)) if at == seg.start => boxes,
+                    _ => self.boxes(at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0))), -d),
+                });
+                // `a` (head side) swept along the translation, `b` (table side) standing.
+                let ((la, ha), (lb, hb)) = (boxes[a], boxes[b]);
+                let apart = (lb - ha.max(ha + d)).max(la.min(la + d) - hb).max_element();
+                if apart > RESOLUTION {
+                    clear.gaps[k] = apart;
                     continue;
                 }
+            }
+            let end = at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0)));
+            if straight {
                 // Pairs are (head side, table side): `a` came to its place at the end along
                 // the linear axes' travel, `b` stood still.
                 let swept = self.swept_gap(a, &end[a], b, &end[b], seg.start.linear - seg.end.linear);
@@ -675,6 +685,15 @@ impl Bodies {
             clear.at = Some(seg.end);
             clear.slack = clear.gaps.iter().copied().fold(f64::INFINITY, f64::min);
         }
+        let boxes =
+            start_boxes.or_else(|| clear.boxes.take().filter(|(at, _)| *at == seg.start).map(|(_, b)| b));
+        clear.boxes = match boxes {
+            Some(mut boxes) if straight && best.is_none() => {
+                self.move_head_side(&mut boxes, d);
+                Some((seg.end, boxes))
+            }
+            _ => None,
+        };
         best
     }
 
@@ -701,38 +720,33 @@ impl Bodies {
         }
     }
 
-    /// Per body, how far the table-side ones are from the box around every head-side body swept
-    /// from where it is placed by the translation `d` (0 for a head-side body or one that
-    /// overlaps it): a lower bound on the distance of each of its pairs along the motion.
-    fn apart(&self, placed: &[(Affine, Placed)], d: DVec3) -> Vec<f64> {
-        let aabb = |o: &Obb| {
-            let a = o.axes;
-            let reach = DVec3::new(
-                a.row(0).abs().dot(o.half),
-                a.row(1).abs().dot(o.half),
-                a.row(2).abs().dot(o.half),
-            );
-            (o.center - reach, o.center + reach)
-        };
-        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
-        for (solid, (_, p)) in self.solids.iter().zip(placed) {
+    /// Per body, the axis-parallel box it lies in where it is `placed`, the head side's moved by
+    /// `d`.
+    fn boxes(&self, placed: &[(Affine, Placed)], d: DVec3) -> Vec<(DVec3, DVec3)> {
+        let mut boxes: Vec<(DVec3, DVec3)> = placed
+            .iter()
+            .map(|(_, p)| {
+                let o = p.bound();
+                let a = o.axes;
+                let reach = DVec3::new(
+                    a.row(0).abs().dot(o.half),
+                    a.row(1).abs().dot(o.half),
+                    a.row(2).abs().dot(o.half),
+                );
+                (o.center - reach, o.center + reach)
+            })
+            .collect();
+        self.move_head_side(&mut boxes, d);
+        boxes
+    }
+
+    /// Moves the head side's boxes by `d` (the linear axes' travel).
+    fn move_head_side(&self, boxes: &mut [(DVec3, DVec3)], d: DVec3) {
+        for (solid, (lo, hi)) in self.solids.iter().zip(boxes) {
             if solid.role.head_side() {
-                let (l, h) = aabb(&p.bound());
-                lo = lo.min(l).min(l + d);
-                hi = hi.max(h).max(h + d);
+                (*lo, *hi) = (*lo + d, *hi + d);
             }
         }
-        self.solids
-            .iter()
-            .zip(placed)
-            .map(|(solid, (_, p))| {
-                if solid.role.head_side() {
-                    return 0.0;
-                }
-                let (l, h) = aabb(&p.bound());
-                (l - hi).max(lo - h).max_element().max(0.0)
-            })
-            .collect()
     }
 
     /// A lower bound on the distance of body `a`, swept from where it is placed by the
@@ -765,12 +779,15 @@ pub struct Clearances {
     slack: f64,
     /// …and how far any pair may have moved since (`gaps` are that much too large).
     spent: f64,
+    /// Each body's box (axis-parallel, M-CS) with the axes at the first of these.
+    boxes: Option<(MachineAxes, Vec<(DVec3, DVec3)>)>,
 }
 
 impl Clearances {
     /// Nothing known (the bodies changed).
     pub fn forget(&mut self) {
         self.at = None;
+        self.boxes = None;
     }
 }
 
