@@ -37,6 +37,16 @@
 //! test clears the whole interval, otherwise it is halved, until the margin is at most
 //! [`RESOLUTION`]. So **no contact along the motion is missed**, and a reported collision has the
 //! two bodies within [`RESOLUTION`] mm of each other at the reported fraction.
+//!
+//! # Broad phase
+//! With the rotary axes standing still a motion translates the head side by the linear axes'
+//! travel and leaves the table side standing. Each head-side body's axis-parallel box, swept
+//! along the travel, is tested against each table-side body's box first: a gap along one axis
+//! is a lower bound on the distance, so a pair apart by more than [`RESOLUTION`] is clear along
+//! the whole motion. The boxes at a motion's end are carried to the next one ([`Clearances`]),
+//! so a run of translations (CAM output, moves inside a blank) places no body at all. What a
+//! motion before has shown to be far apart is not tested again until the motions since could
+//! have closed that gap.
 
 use glam::{DMat3, DVec3};
 use serde::Serialize;
