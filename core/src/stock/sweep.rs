@@ -122,6 +122,45 @@ impl Piece {
         radius(self.z0).max(radius(self.z1))
     }
 
+    /// What a cylinder's sweep removes from a line holding material where `touches` says:
+    /// seen along the axis the line runs within the radius of the axis's moving shadow over a
+    /// λ range (a 2D capsule), which with the slab range `slab` bounds the sweep. When the slab
+    /// holds the line over that range for every t (its height is linear in λ and t, so the
+    /// range's ends and t = 0, 1 suffice), the range is the sweep's exactly; else an end binds
+    /// and [`piece_interval`] decides. `None`: not a cylinder, or a line along its axis (then
+    /// [`Piece::radial`] and the enumeration); `Some(None)`: nothing to remove.
+    #[allow(clippy::option_option)]
+    fn swept_cylinder(
+        &self,
+        o: DVec3,
+        u: DVec3,
+        w: DVec3,
+        slab: (f64, f64),
+        touches: impl Fn((f64, f64)) -> bool,
+    ) -> Option<Option<(f64, f64)>> {
+        if self.s != 0.0 || self.g != 0.0 {
+            return None;
+        }
+        let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
+        let k = flat(u).length();
+        if k <= 1e-9 {
+            return None;
+        }
+        let Some((a, b)) = capsule_interval(flat(o), flat(u) / k, -flat(w), (-self.h).max(0.0).sqrt()) else {
+            return Some(None);
+        };
+        let (a, b) = (a / k, b / k);
+        if !touches((a.max(slab.0), b.min(slab.1))) {
+            return Some(None);
+        }
+        let (wl, wh) = (w.z.min(0.0), w.z.max(0.0));
+        let free = |l: f64| {
+            let z = o.z + l * u.z;
+            z + wl >= self.z0 && z + wh <= self.z1
+        };
+        Some(if free(a) && free(b) { Some((a, b)) } else { piece_interval(self, o, u, w) })
+    }
+
     /// A ball's sweep: a capsule ([`capsule_interval`]); centre at z = −g, radius² = g² − h.
     fn swept_ball(&self, o: DVec3, u: DVec3, w: DVec3) -> Option<(f64, f64)> {
         let c = -self.g;
@@ -276,6 +315,8 @@ impl Sweep<'_> {
             let Some(slab) = piece.slab(o, u, w).filter(|&b| touches(b)) else { continue };
             let hit = if piece.ball {
                 piece.swept_ball(o, u, w)
+            } else if let Some(hit) = piece.swept_cylinder(o, u, w, slab, touches) {
+                hit
             } else {
                 match piece.radial(o, u, w, slab) {
                     Some(b) if touches(b) => piece_interval(piece, o, u, w),
@@ -585,6 +626,44 @@ mod tests {
             }
         }
         assert!(hits > 3_000, "{hits}");
+    }
+
+    /// A cylinder's sweep away from its ends (the 2D capsule) against the general enumeration.
+    #[test]
+    fn a_swept_cylinder_away_from_its_ends_agrees_with_the_general_enumeration() {
+        let mut rng = Rng(0xC7_11DE);
+        let piece = Piece::frustum(5.0, 0.0, 2.0, 40.0);
+        let mut decided = 0;
+        for _ in 0..20_000 {
+            let o = vector(&mut rng, 12.0) + DVec3::new(0.0, 0.0, 20.0);
+            let u = match rng.below(3) {
+                0 => DVec3::new(uniform(&mut rng, -1.0, 1.0), uniform(&mut rng, -1.0, 1.0), 0.0)
+                    .normalize_or(DVec3::X),
+                _ => vector(&mut rng, 1.0).normalize_or(DVec3::Z),
+            };
+            let w = vector(&mut rng, 6.0);
+            let all = |_: (f64, f64)| true;
+            let Some(fast) = piece.swept_cylinder(o, u, w, (f64::NEG_INFINITY, f64::INFINITY), all) else {
+                continue;
+            };
+            decided += 1;
+            match (fast, piece_interval(&piece, o, u, w)) {
+                (Some((a, b)), Some((x, y))) => {
+                    assert!((a - x).abs() < 1e-6 && (b - y).abs() < 1e-6, "{o} {u} {w}: {a} {b} vs {x} {y}");
+                }
+                (None, None) => {}
+                (Some((a, b)), None) | (None, Some((a, b))) => assert!(b - a < 1e-5, "{o} {u} {w}: {a} {b}"),
+            }
+        }
+        assert!(decided > 10_000, "{decided}");
+        // A ball or a cone is left to the enumeration.
+        let any = (f64::NEG_INFINITY, f64::INFINITY);
+        assert_eq!(
+            Piece::ball(5.0, 5.0).swept_cylinder(DVec3::ZERO, DVec3::X, DVec3::Y, any, |_| true),
+            None
+        );
+        let cone = Piece::frustum(0.0, 1.0, 0.0, 4.0);
+        assert_eq!(cone.swept_cylinder(DVec3::ZERO, DVec3::X, DVec3::Y, any, |_| true), None);
     }
 
     /// Each piece's cheap bound holds its exact interval.
