@@ -135,11 +135,15 @@ fn tail_with(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u
 fn ms(out: &mut String, m: &[u32], w: MWords) {
     for &m in m {
         let _ = write!(out, " M{m}");
-        match (m, w.mb, w.m128_feed) {
-            (140, Some(mb), _) => mb_words(out, mb),
-            (128, _, Some(f)) => {
+        match (m, w.mb, w.m128_feed, w.look_ahead) {
+            (140, Some(mb), _, _) => mb_words(out, mb),
+            (128, _, Some(f), _) => {
                 out.push_str(" F");
                 plain(out, f);
+            }
+            (120, _, _, Some(la)) => {
+                out.push_str(" LA");
+                plain(out, la);
             }
             _ => {}
         }

@@ -27,12 +27,14 @@ pub struct Line {
 
 /// Words that belong to an M function rather than to the block: the retract of `M140`
 /// (`M140 MB MAX`, `M140 MB+50`: "retraction in the tool axis direction", TNC 640 user's
-/// manual) and the feed of `M128` (`M128 F1000`: the largest feed of the compensating moves).
-/// Each is written right after its M function.
+/// manual), the feed of `M128` (`M128 F1000`: the largest feed of the compensating moves) and
+/// the look-ahead of `M120` (`M120 LA5`: how many blocks a radius-compensated contour is
+/// computed ahead, 0 to 99). Each is written right after its M function.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct MWords {
     pub mb: Option<MoveBack>,
     pub m128_feed: Option<Value>,
+    pub look_ahead: Option<Value>,
 }
 
 /// `PR…`/`PA…` of a polar block, `IPR`/`IPA` incremental.

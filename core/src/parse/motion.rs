@@ -315,6 +315,11 @@ fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a
             words.mb = Some(MoveBack::Dist(d));
             Ok(r)
         }
+        120 if t.starts_with("LA") => {
+            let (r, v) = word_value(&t[2..]).map_err(hard)?;
+            words.look_ahead = Some(v);
+            Ok(r)
+        }
         128 if t.starts_with('F') && keyword(t, "FMAX").is_none() => {
             let (r, f) = feed(t)?;
             match f {

@@ -307,6 +307,29 @@ fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
     assert!(tip.distance(glam::DVec3::new(40.0, 5.0, -1.0)) < 1e-9, "{tip}");
 }
 
+/// `M120 LA5` (the radius compensation computes 5 blocks ahead) is read with its words, written
+/// back as written, and said on its block as not simulated.
+#[test]
+fn m120_with_its_look_ahead() {
+    for (written, la) in [("M120 LA5", 5.0), ("L X+10 Y+0 RL F200 M120 LA3", 3.0)] {
+        let b = body(written);
+        let words = match &b {
+            BlockBody::MFunctions(m, w) => (m.to_vec(), *w),
+            BlockBody::L(l) => (l.m.to_vec(), l.m_words),
+            other => panic!("{written}: {other:?}"),
+        };
+        assert_eq!(words.0, [120], "{written}");
+        assert_eq!(words.1.look_ahead, Some(Value::Number(la)), "{written}");
+        same(written, written);
+    }
+    let (program, sim) = run("0 BEGIN PGM LA MM\n1 TOOL CALL 1 Z S1000\n2 M120 LA5\n3 END PGM LA MM\n");
+    let state = after(&program, &sim, 2);
+    let message = state.message.expect("said");
+    assert!(message.de.contains("M120 nicht simuliert"), "{message:?}");
+    // LA without a value stays refused.
+    assert!(parse("1 M120 LA\n").1.iter().any(|d| d.is_error()));
+}
+
 /// An exporting simulator writes a blank in the program name (`BEGIN PGM SP1 1002 MM`), which
 /// the control's file names do not allow: read with the whole name and said once.
 #[test]
