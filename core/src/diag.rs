@@ -314,6 +314,10 @@ impl DiagCode {
                     "Straight-line blocks without L read (first \"{text}\"): Klartext starts a straight line with L"
                 ),
             ),
+            DiagCode::Lenient { kind: Lenient::CycleSpeltOut, text } => t(
+                format!("„{text}“ als CYCL DEF gelesen: Klartext schreibt CYCL"),
+                format!("\"{text}\" read as CYCL DEF: Klartext writes CYCL"),
+            ),
             DiagCode::PgmNameMismatch { begin, end } => t(
                 format!(
                     "Programmname falsch: END PGM {end} zu BEGIN PGM {begin}; gelesen als Ende von {begin} (der Name ist Buchführung der Steuerung)"
@@ -364,15 +368,18 @@ pub enum Lenient {
     RadiusInDep,
     /// `Z0.0 B0.0 C0.0 FMAX M91` for `L Z0.0 B0.0 C0.0 FMAX M91` (a CAM post for another control).
     MissingL,
+    /// `CYCLE DEF 9.0 DWELL TIME` for `CYCL DEF 9.0 …` (an old-style cycle with its word spelt out).
+    CycleSpeltOut,
 }
 
 impl Lenient {
-    pub const ALL: [Lenient; 5] = [
+    pub const ALL: [Lenient; 6] = [
         Lenient::DecimalComma,
         Lenient::BlankAfterAddress,
         Lenient::PointAfterM,
         Lenient::RadiusInDep,
         Lenient::MissingL,
+        Lenient::CycleSpeltOut,
     ];
 }
 

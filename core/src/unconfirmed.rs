@@ -434,8 +434,9 @@ pub const COMP_CORNER_ARC_WITH_NEXT_BLOCK: bool = true;
 pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
 /// A decimal comma (`X-49,000`), a blank between an address letter and its value
-/// (`L Z 25.000`), a point after an M function (`M128.`), `R0` in `DEP LT`/`DEP LN` and a
-/// straight line without its `L` (`Z0.0 B0.0 FMAX`), as some CAM posts and exporting
+/// (`L Z 25.000`), a point after an M function (`M128.`), `R0` in `DEP LT`/`DEP LN`,
+/// `CYCLE DEF` for an old-style cycle and a straight line without its `L` (`Z0.0 B0.0 FMAX`),
+/// as some CAM posts and exporting
 /// simulators write: read as the canonical spelling, said once per kind and file
 /// (`parse::Lenient`). **UNCONFIRMED** whether the control reads them on import.
 pub const IMPORT_LENIENT_SPELLINGS: bool = true;

@@ -1,7 +1,8 @@
 //! Spellings the control's editor never writes but programs from elsewhere contain: a decimal
 //! comma (`X-49,000`), a blank between an address letter and its value (`L Z 25.000 FMAX`,
 //! `S 5000`), a point after an M function (`M128.`), `R0` in a straight departure
-//! (`DEP LT LEN10 R0`) and a straight line without its `L` (`Z0.0 B0.0 C0.0 FMAX M91`). The
+//! (`DEP LT LEN10 R0`), an old-style cycle spelt `CYCLE DEF` and a straight line without its
+//! `L` (`Z0.0 B0.0 C0.0 FMAX M91`). The
 //! parser reads the block as if it were written canonically, rewriting the text in place with
 //! the same length, so every offset of a diagnostic stays where it was (a missing `L` is read by
 //! the dispatcher instead, `parse_body`); [`super::AcrossBlocks`] says each kind once per file,
@@ -82,6 +83,14 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
         if let Some(r) = radius_in_dep(word) {
             found(Lenient::RadiusInDep, w + r, w + r + 2, w + r);
         }
+        // Only an old-style cycle (`9.0`): a new one's parameters follow on their own lines,
+        // which the parser reads only after `CYCL DEF` itself.
+        if let Some(rest) = word.strip_prefix(b"CYCLE DEF ")
+            && rest.first().is_some_and(u8::is_ascii_digit)
+            && rest.iter().find(|c| !c.is_ascii_digit()) == Some(&b'.')
+        {
+            found(Lenient::CycleSpeltOut, w, w + 9, w + 4);
+        }
     }
     let mut quoted = false;
     for i in 0..body.len() {
@@ -145,6 +154,8 @@ pub(crate) fn normalize(body: &str) -> Option<String> {
             Lenient::DecimalComma => bytes[at] = b'.',
             Lenient::PointAfterM => bytes[at] = b' ',
             Lenient::RadiusInDep => bytes[a..b].fill(b' '),
+            // `CYCLE DEF` → `CYCL  DEF`.
+            Lenient::CycleSpeltOut => bytes[at] = b' ',
             Lenient::BlankAfterAddress | Lenient::MissingL => {}
         }
     }
@@ -186,6 +197,7 @@ mod tests {
             ("L M128. F10000.", "L M128  F10000."),
             ("DEP LT LEN10 R0", "DEP LT LEN10   "),
             ("DEP LN LEN5 R0 F200", "DEP LN LEN5    F200"),
+            ("CYCLE DEF 9.0 DWELL TIME", "CYCL  DEF 9.0 DWELL TIME"),
         ] {
             let got = normalize(text).unwrap_or_else(|| panic!("{text}"));
             assert_eq!(got, want);
@@ -207,6 +219,7 @@ mod tests {
             "DEP CT CCA90 R5 F100",
             "L M128.5",
             "Z0.0 B0.0",
+            "CYCLE DEF 200 BOHREN",
         ] {
             assert_eq!(normalize(text), None, "{text}");
         }

@@ -277,7 +277,8 @@ fn lenient_spellings_are_said_once_per_kind_and_file() {
 }
 
 /// What a CAM post for another control writes: `M128.` with its number format's point, a
-/// straight line without `L`, `R0` in a straight departure. Each is read as the control's own
+/// straight line without `L`, `R0` in a straight departure; and an old-style cycle spelt
+/// `CYCLE DEF`, as a family of trainee programs has it. Each is read as the control's own
 /// spelling and said once per kind and file; what would change the meaning stays refused.
 #[test]
 fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
@@ -291,6 +292,9 @@ fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
     let r0 = DiagCode::Lenient { kind: Lenient::RadiusInDep, text: "R0".into() };
     same_said("DEP LT LEN10 R0", "DEP LT LEN10", std::slice::from_ref(&r0));
     same_said("DEP LN LEN+5 R0 F200 M9", "DEP LN LEN5 F200 M9", std::slice::from_ref(&r0));
+    let spelt = DiagCode::Lenient { kind: Lenient::CycleSpeltOut, text: "CYCLE DEF".into() };
+    same_said("CYCLE DEF 9.0 DWELL TIME", "CYCL DEF 9.0 DWELL TIME", std::slice::from_ref(&spelt));
+    same_said("CYCLE DEF 9.1 5", "CYCL DEF 9.1 5", std::slice::from_ref(&spelt));
     // Not these: the circle `C`, the radius of an arc departure, a point inside a number.
     same("C X+5 Y+0 DR+", "C X+5 Y+0 DR+");
     assert!(parse("1 DEP CT CCA90 R0 F100\n").1.iter().any(|d| d.is_error()));
