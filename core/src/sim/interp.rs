@@ -170,8 +170,10 @@ type R<T> = Result<T, SimErrorCode>;
 
 /// M functions with a motion meaning the simulator does not model (M92 OEM position, M120 the
 /// radius compensation's look-ahead, M140 retract, M197 extending the elements at outside
-/// corners instead of the transition arc); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 4] = [92, 120, 140, 197];
+/// corners instead of the transition arc) or a feed it does not (M109/M110 the feed at arcs,
+/// M116 the rotary axes' feed in mm/min, M136 the feed per revolution: the run's times take F
+/// in mm/min on the path); a block with one of them says so (DOMAIN.md §8).
+const NOT_SIMULATED_M: [u32; 8] = [92, 109, 110, 116, 120, 136, 140, 197];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).

@@ -312,9 +312,10 @@ fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
 }
 
 /// `M120 LA5` (the radius compensation computes 5 blocks ahead) is read with its words, written
-/// back as written, and said on its block as not simulated.
+/// back as written, and said on its block as not simulated; so are the feed functions M109,
+/// M110, M116 and M136 (the run's times take F in mm/min on the path).
 #[test]
-fn m120_with_its_look_ahead() {
+fn m120_with_its_look_ahead_and_the_feed_functions_not_simulated() {
     for (written, la) in [("M120 LA5", 5.0), ("L X+10 Y+0 RL F200 M120 LA3", 3.0)] {
         let b = body(written);
         let words = match &b {
@@ -330,6 +331,20 @@ fn m120_with_its_look_ahead() {
     let state = after(&program, &sim, 2);
     let message = state.message.expect("said");
     assert!(message.de.contains("M120 nicht simuliert"), "{message:?}");
+    // The feed functions the run does not model say so too.
+    for m in [109, 110, 116, 136] {
+        let src = format!(
+            "0 BEGIN PGM F MM\n1 TOOL CALL 1 Z S1000\n2 M{m}\n3 L X+1 R0 F100 M{m}\n4 END PGM F MM\n"
+        );
+        let (program, sim) = run(&src);
+        for block in [2, 3] {
+            let message = after(&program, &sim, block).message.expect("said");
+            assert!(
+                message.de.contains(&format!("M{m} nicht simuliert")),
+                "M{m} in block {block}: {message:?}"
+            );
+        }
+    }
     // LA without a value stays refused.
     assert!(parse("1 M120 LA\n").1.iter().any(|d| d.is_error()));
 }
