@@ -93,16 +93,15 @@ impl Piece {
     fn radial(&self, o: DVec3, u: DVec3, w: DVec3, range: (f64, f64)) -> Option<(f64, f64)> {
         let (mut lo, mut hi) = range;
         let r = self.widest() * (1.0 + 1e-9) + 1e-9;
-        let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
-        let (o2, u2, m2) = (flat(o), flat(u), -flat(w));
-        let k = u2.length();
-        if k > 1e-12 {
-            let (a, b) = capsule_interval(o2, u2 / k, m2, r)?;
-            lo = lo.max(a / k);
-            hi = hi.min(b / k);
+        if let Some(range) = shadow(o, u, w, r, 1e-12) {
+            let (a, b) = range?;
+            lo = lo.max(a);
+            hi = hi.min(b);
         } else {
             // Along the axis: within the radius for every λ or for none. The nearest point of
             // the segment from 0 to m2 (the axis's shadow moving).
+            let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
+            let (o2, m2) = (flat(o), -flat(w));
             let mm = m2.length_squared();
             let along = if mm > 0.0 { (o2.dot(m2) / mm).clamp(0.0, 1.0) } else { 0.0 };
             if (o2 - along * m2).length() > r {
@@ -141,15 +140,7 @@ impl Piece {
         if self.s != 0.0 || self.g != 0.0 {
             return None;
         }
-        let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
-        let k = flat(u).length();
-        if k <= 1e-9 {
-            return None;
-        }
-        let Some((a, b)) = capsule_interval(flat(o), flat(u) / k, -flat(w), (-self.h).max(0.0).sqrt()) else {
-            return Some(None);
-        };
-        let (a, b) = (a / k, b / k);
+        let Some((a, b)) = shadow(o, u, w, (-self.h).max(0.0).sqrt(), 1e-9)? else { return Some(None) };
         if !touches((a.max(slab.0), b.min(slab.1))) {
             return Some(None);
         }
@@ -505,6 +496,17 @@ pub(crate) fn capsule_interval(o: DVec3, u: DVec3, m: DVec3, r: f64) -> Option<(
     (lo <= hi).then_some((lo, hi))
 }
 
+/// Seen along the tool axis: the λ range where the line `o + λ·u` runs within `r` of the axis's
+/// shadow swept by `−w` (a 2D capsule; `Some(None)`: never). `None` when the line runs along
+/// the axis (its shadow moves less than `min` per unit of λ): then its distance does not
+/// depend on λ.
+#[allow(clippy::option_option)]
+fn shadow(o: DVec3, u: DVec3, w: DVec3, r: f64, min: f64) -> Option<Option<(f64, f64)>> {
+    let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
+    let k = flat(u).length();
+    (k > min).then(|| capsule_interval(flat(o), flat(u) / k, -flat(w), r).map(|(a, b)| (a / k, b / k)))
+}
+
 /// An orthonormal frame with `axis` as its third column (tools are round, so any x works).
 pub(crate) fn frame_of(axis: DVec3) -> [DVec3; 3] {
     let z = axis.normalize_or(DVec3::Z);
@@ -513,242 +515,4 @@ pub(crate) fn frame_of(axis: DVec3) -> [DVec3; 3] {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use schwenkbar_testkit::{Rng, assert_close};
-
-    const Z: [DVec3; 3] = [DVec3::X, DVec3::Y, DVec3::Z];
-
-    #[test]
-    fn standing_cylinder_against_rays_along_each_axis() {
-        let c = Cutter::new(ToolShape::Flat, 5.0, 50.0, 0.01);
-        let p = DVec3::new(10.0, 0.0, 0.0);
-        // Along Z through the axis: the tool's length.
-        let (a, b) = c.ray_interval(&Z, p, p, DVec3::new(10.0, 0.0, 0.0), DVec3::Z).expect("hit");
-        assert_close!(a, 0.0, 1e-9);
-        assert_close!(b, 50.0, 1e-9);
-        // Along X at height 1, 3 off the axis: chord 2·√(25 − 9) = 8.
-        let (a, b) = c.ray_interval(&Z, p, p, DVec3::new(0.0, 3.0, 1.0), DVec3::X).expect("hit");
-        assert_close!(a, 6.0, 1e-9);
-        assert_close!(b, 14.0, 1e-9);
-        assert!(c.ray_interval(&Z, p, p, DVec3::new(0.0, 6.0, 1.0), DVec3::X).is_none());
-        assert!(c.ray_interval(&Z, p, p, DVec3::new(0.0, 0.0, -1.0), DVec3::X).is_none());
-    }
-
-    #[test]
-    fn moving_cylinder_sweeps_a_slot_with_round_ends() {
-        let c = Cutter::new(ToolShape::Flat, 5.0, 50.0, 0.01);
-        let (p0, p1) = (DVec3::ZERO, DVec3::new(20.0, 0.0, 0.0));
-        let (a, b) = c.ray_interval(&Z, p0, p1, DVec3::new(0.0, 4.0, 1.0), DVec3::X).expect("hit");
-        assert_close!(a, -3.0, 1e-9);
-        assert_close!(b, 23.0, 1e-9);
-        // Across the slot: its width.
-        let (a, b) = c.ray_interval(&Z, p0, p1, DVec3::new(7.0, 0.0, 1.0), DVec3::Y).expect("hit");
-        assert_close!(a, -5.0, 1e-9);
-        assert_close!(b, 5.0, 1e-9);
-        // Plunge along the axis: the tool plus the travel.
-        let down = DVec3::new(0.0, 0.0, -10.0);
-        let (a, b) = c.ray_interval(&Z, p0, down, DVec3::new(1.0, 1.0, 0.0), DVec3::Z).expect("hit");
-        assert_close!(a, -10.0, 1e-9);
-        assert_close!(b, 50.0, 1e-9);
-    }
-
-    #[test]
-    fn ball_and_drill_tips() {
-        let ball = Cutter::new(ToolShape::Ball, 5.0, 50.0, 0.01);
-        // Ray along Z 3 off the axis: the sphere's bottom at 5 − √(25 − 9) = 1.
-        let (a, _) = ball
-            .ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(3.0, 0.0, 0.0), DVec3::Z)
-            .expect("hit");
-        assert_close!(a, 1.0, 1e-9);
-        let drill = Cutter::new(ToolShape::Drill { point_angle: 90.0 }, 4.0, 50.0, 0.01);
-        // 90° point: the cone rises 1 per 1 of radius.
-        let (a, _) = drill
-            .ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(3.0, 0.0, 0.0), DVec3::Z)
-            .expect("hit");
-        assert_close!(a, 3.0, 1e-9);
-        // A tilted drill moving laterally: the far end of a ray along its axis line is the top.
-        let t = DVec3::new(1.0, 0.0, 1.0).normalize();
-        let f = frame_of(t);
-        let (a, b) = drill.ray_interval(&f, DVec3::ZERO, DVec3::Y, DVec3::ZERO, t).expect("hit");
-        assert_close!(a, 0.0, 1e-9);
-        assert_close!(b, 50.0, 1e-9);
-    }
-
-    #[test]
-    fn bull_nose_profile_stays_within_the_tolerance() {
-        let tol = 0.01;
-        let c = Cutter::new(ToolShape::Bull { corner_radius: 2.0 }, 5.0, 30.0, tol);
-        // Rays from the corner arc's centre (r = 3, z = 2) outward through the arc: each leaves
-        // the tool between the arc (2 away) and the inscribed chords (the sagitta less).
-        let centre = DVec3::new(3.0, 0.0, 2.0);
-        for i in 0..=50 {
-            let th = std::f64::consts::FRAC_PI_2 * f64::from(i) / 50.0;
-            let dir = DVec3::new(th.sin(), 0.0, -th.cos());
-            let (_, b) = c.ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, centre, dir).expect("hit");
-            assert!(b <= 2.0 + 1e-9 && b >= 2.0 - tol - 1e-9, "angle {th}: {b}");
-        }
-        // The flat bottom inside the corner.
-        let (a, _) =
-            c.ray_interval(&Z, DVec3::ZERO, DVec3::ZERO, DVec3::new(1.0, 1.0, -5.0), DVec3::Z).expect("hit");
-        assert_close!(a, 5.0, 1e-9);
-    }
-
-    /// A uniform number in `[lo, hi)`.
-    fn uniform(rng: &mut Rng, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn vector(rng: &mut Rng, size: f64) -> DVec3 {
-        DVec3::new(uniform(rng, -size, size), uniform(rng, -size, size), uniform(rng, -size, size))
-    }
-
-    /// The ball's capsule against the general enumeration of the module doc (a second method)
-    /// on random lines and moves; a line that only grazes may be met by one method and not the
-    /// other, in an interval of no length.
-    #[test]
-    fn a_swept_ball_in_closed_form_agrees_with_the_general_enumeration() {
-        let mut rng = Rng(0x5EED_BA11);
-        let mut hits = 0;
-        for _ in 0..20_000 {
-            let (c, r) = (uniform(&mut rng, 0.5, 8.0), uniform(&mut rng, 0.5, 8.0));
-            let piece = Piece::ball(c, r);
-            let o = vector(&mut rng, 12.0);
-            let u = vector(&mut rng, 1.0).normalize_or(DVec3::X);
-            let w = if rng.below(4) == 0 { DVec3::ZERO } else { vector(&mut rng, 10.0) };
-            match (piece.swept_ball(o, u, w), piece_interval(&piece, o, u, w)) {
-                (Some((a, b)), Some((x, y))) => {
-                    hits += 1;
-                    assert!((a - x).abs() < 1e-6 && (b - y).abs() < 1e-6, "{o} {u} {w}: {a} {b} vs {x} {y}");
-                }
-                (None, None) => {}
-                (Some((a, b)), None) | (None, Some((a, b))) => assert!(b - a < 1e-5, "{o} {u} {w}: {a} {b}"),
-            }
-        }
-        assert!(hits > 3_000, "{hits}");
-    }
-
-    /// A cylinder's sweep away from its ends (the 2D capsule) against the general enumeration.
-    #[test]
-    fn a_swept_cylinder_away_from_its_ends_agrees_with_the_general_enumeration() {
-        let mut rng = Rng(0xC7_11DE);
-        let piece = Piece::frustum(5.0, 0.0, 2.0, 40.0);
-        let mut decided = 0;
-        for _ in 0..20_000 {
-            let o = vector(&mut rng, 12.0) + DVec3::new(0.0, 0.0, 20.0);
-            let u = match rng.below(3) {
-                0 => DVec3::new(uniform(&mut rng, -1.0, 1.0), uniform(&mut rng, -1.0, 1.0), 0.0)
-                    .normalize_or(DVec3::X),
-                _ => vector(&mut rng, 1.0).normalize_or(DVec3::Z),
-            };
-            let w = vector(&mut rng, 6.0);
-            let all = |_: (f64, f64)| true;
-            let Some(fast) = piece.swept_cylinder(o, u, w, (f64::NEG_INFINITY, f64::INFINITY), all) else {
-                continue;
-            };
-            decided += 1;
-            match (fast, piece_interval(&piece, o, u, w)) {
-                (Some((a, b)), Some((x, y))) => {
-                    assert!((a - x).abs() < 1e-6 && (b - y).abs() < 1e-6, "{o} {u} {w}: {a} {b} vs {x} {y}");
-                }
-                (None, None) => {}
-                (Some((a, b)), None) | (None, Some((a, b))) => assert!(b - a < 1e-5, "{o} {u} {w}: {a} {b}"),
-            }
-        }
-        assert!(decided > 10_000, "{decided}");
-        // A ball or a cone is left to the enumeration.
-        let any = (f64::NEG_INFINITY, f64::INFINITY);
-        assert_eq!(
-            Piece::ball(5.0, 5.0).swept_cylinder(DVec3::ZERO, DVec3::X, DVec3::Y, any, |_| true),
-            None
-        );
-        let cone = Piece::frustum(0.0, 1.0, 0.0, 4.0);
-        assert_eq!(cone.swept_cylinder(DVec3::ZERO, DVec3::X, DVec3::Y, any, |_| true), None);
-    }
-
-    /// Each piece's cheap bound holds its exact interval.
-    #[test]
-    fn a_pieces_bound_holds_its_sweep() {
-        let mut rng = Rng(0xB0_u64 << 32 | 0x0D);
-        let tools = [
-            Cutter::new(ToolShape::Flat, 5.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Ball, 5.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Drill { point_angle: 118.0 }, 4.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Bull { corner_radius: 2.0 }, 6.0, 40.0, 0.0625),
-        ];
-        let mut checked = 0;
-        for _ in 0..20_000 {
-            let tool = &tools[rng.index(tools.len())];
-            let piece = tool.pieces[rng.index(tool.pieces.len())];
-            let o = vector(&mut rng, 12.0) + DVec3::new(0.0, 0.0, 10.0);
-            // Some lines along the axis or square to it, as the grids' rays of an upright tool.
-            let u = match rng.below(4) {
-                0 => DVec3::Z * if rng.below(2) == 0 { 1.0 } else { -1.0 },
-                1 => DVec3::new(uniform(&mut rng, -1.0, 1.0), uniform(&mut rng, -1.0, 1.0), 0.0)
-                    .normalize_or(DVec3::X),
-                _ => vector(&mut rng, 1.0).normalize_or(DVec3::Z),
-            };
-            let w = vector(&mut rng, 10.0);
-            if let Some((a, b)) = piece_interval(&piece, o, u, w) {
-                checked += 1;
-                let bound = piece.slab(o, u, w).and_then(|s| piece.radial(o, u, w, s));
-                let (lo, hi) = bound.expect("a bound where the sweep is met");
-                assert!(lo <= a + 1e-9 && b <= hi + 1e-9, "{piece:?} {o} {u} {w}: [{a}, {b}] ⊄ [{lo}, {hi}]");
-            }
-        }
-        assert!(checked > 2_000, "{checked}");
-    }
-
-    /// Cutting a ray with the pieces that can reach its material removes exactly what cutting it
-    /// with the whole sweep removes, for every tool shape, tilted, on random rays and material.
-    #[test]
-    fn skipping_pieces_without_material_removes_the_same_material() {
-        use super::super::{Dexel, Span};
-        let mut rng = Rng(0xD3_7E15);
-        let tools = [
-            Cutter::new(ToolShape::Flat, 5.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Ball, 5.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Drill { point_angle: 118.0 }, 4.0, 40.0, 0.01),
-            Cutter::new(ToolShape::Bull { corner_radius: 2.0 }, 6.0, 40.0, 0.0625),
-        ];
-        let mut removed = 0;
-        for _ in 0..20_000 {
-            let tool = &tools[rng.index(tools.len())];
-            // Upright as often as tilted: the grids' rays then run along or square to the axis.
-            let frame = if rng.below(2) == 0 {
-                Z
-            } else {
-                frame_of(vector(&mut rng, 1.0) + DVec3::new(0.0, 0.0, 1.5))
-            };
-            let p0 = vector(&mut rng, 10.0);
-            let p1 = p0 + vector(&mut rng, 6.0);
-            let dir = [DVec3::X, DVec3::Y, DVec3::Z][rng.index(3)];
-            let r0 = vector(&mut rng, 12.0);
-            // One to three spans along the ray.
-            let mut ends: Vec<f64> =
-                (0..2 * (1 + rng.index(3))).map(|_| uniform(&mut rng, -30.0, 50.0)).collect();
-            ends.sort_by(f64::total_cmp);
-            let spans: Vec<Span> = ends.chunks(2).map(|e| Span { lo: e[0], hi: e[1] }).collect();
-            let cut = |interval: Option<(f64, f64)>| {
-                let mut dexel = Dexel::Many(spans.clone());
-                if let Some((a, b)) = interval {
-                    dexel.subtract(a, b, &mut Vec::new());
-                }
-                dexel
-            };
-            let whole = cut(tool.ray_interval(&frame, p0, p1, r0, dir));
-            let skipped = cut(tool.sweep(frame, p0, p1).material_interval(r0, dir, &spans));
-            assert_eq!(whole.spans(), skipped.spans(), "{frame:?} {p0} {p1} {r0} {dir}");
-            removed += usize::from(whole.spans() != spans.as_slice());
-        }
-        assert!(removed > 2_000, "{removed}");
-    }
-
-    #[test]
-    fn nothing_for_a_tool_without_size() {
-        let c = Cutter::new(ToolShape::Flat, 0.0, 50.0, 0.01);
-        assert!(c.ray_interval(&Z, DVec3::ZERO, DVec3::X, DVec3::ZERO, DVec3::X).is_none());
-        let c = Cutter::new(ToolShape::Flat, f64::NAN, 50.0, 0.01);
-        assert!(c.pieces.is_empty());
-    }
-}
+mod tests;
