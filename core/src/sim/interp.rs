@@ -168,25 +168,50 @@ struct Cycle7 {
 
 type R<T> = Result<T, SimErrorCode>;
 
-/// M functions with a motion meaning the simulator does not model (M92 OEM position, M120 the
-/// radius compensation's look-ahead, M140 retract, M197 extending the elements at outside
-/// corners instead of the transition arc) or a feed it does not (M109/M110 the feed at arcs,
-/// M116 the rotary axes' feed in mm/min, M136 the feed per revolution: the run's times take F
-/// in mm/min on the path); a block with one of them says so (DOMAIN.md §8).
-const NOT_SIMULATED_M: [u32; 8] = [92, 109, 110, 116, 120, 136, 140, 197];
+/// The M functions whose effect the run models (HEIDENHAIN's M function overview, DOMAIN.md §8
+/// [M:helman-M]): M0/M1 program stop (said: the trainer runs on), M2/M30 end, M3/M4/M5 and
+/// M13/M14 the spindle, M89/M99 cycle calls, M91 machine coordinates, M126/M127 the rotary axes'
+/// shortest path, M128/M129 TCPM. Every other one is said on its block as not simulated, so that
+/// no block passes silently: coolant, M90, M92 (the machine maker's position), M94,
+/// M109/M110/M116/M136 (feeds: the run's times take F in mm/min on the path), M120, M197, M140
+/// without MB (with MB the retraction says itself), M6 (the trainer changes tools at TOOL
+/// CALL) and the machine makers' own numbers.
+const MODELED_M: [u32; 16] = [0, 1, 2, 3, 4, 5, 13, 14, 30, 89, 91, 99, 126, 127, 128, 129];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
 pub const STAY_SECONDS: f64 = 1.0;
 
-/// What a block's M functions tell the trainee: TCPM switched on or off, or a function the
-/// simulator does not model.
+/// What a block's M functions tell the trainee: TCPM switched on or off, a program stop, or the
+/// functions the simulator does not model.
 fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
     if let Some(text) = tcpm::m_note(m) {
         note(rec, || text);
-    } else if let Some(&f) = m.iter().find(|&&f| NOT_SIMULATED_M.contains(&f)) {
-        note(rec, || Text::owned(format!("M{f} nicht simuliert"), format!("M{f} not simulated")));
+    } else if m.contains(&0) {
+        note(rec, || halt_note("M0"));
+    } else if m.contains(&1) {
+        note(rec, || {
+            Text::new(
+                "M1: wahlweiser Programmhalt (nur mit Programmiertem Halt); der Trainer läuft weiter",
+                "M1: optional program stop (only with optional stop on); the trainer runs on",
+            )
+        });
+    } else if m.iter().any(|f| !MODELED_M.contains(f)) {
+        note(rec, || {
+            let words: Vec<String> =
+                m.iter().filter(|f| !MODELED_M.contains(f)).map(|f| format!("M{f}")).collect();
+            let words = words.join(", ");
+            Text::owned(format!("{words} nicht simuliert"), format!("{words} not simulated"))
+        });
     }
+}
+
+/// `STOP` and `M0` (`word`): the control stops the program run there; the trainer does not.
+fn halt_note(word: &str) -> Text {
+    Text::owned(
+        format!("{word}: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter"),
+        format!("{word}: the control stops here (continue with NC start); the trainer runs on"),
+    )
 }
 
 fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
@@ -400,8 +425,7 @@ impl Interp {
                 self.modal_call(at, line)?;
             }
             BlockBody::MFunctions(m, w) => {
-                self.spindle_m(m);
-                m_note(&mut at.rec, m);
+                self.m_functions(&mut at.rec, m);
                 if let Some(mb) = w.mb {
                     self.m140(at, mb)?;
                 }
@@ -418,7 +442,7 @@ impl Interp {
                 self.cycle_def(at, d)?;
             }
             BlockBody::CyclCall { m } => {
-                self.spindle_m(m);
+                self.m_functions(&mut at.rec, m);
                 self.call_cycle(at)?;
                 self.end_m(m);
             }
@@ -550,12 +574,21 @@ impl Interp {
         Ok(())
     }
 
+    /// A block's M functions: their effect on the state, and what they tell the trainee.
+    fn m_functions(&mut self, rec: &mut Option<&mut Rec>, m: &[u32]) {
+        self.spindle_m(m);
+        m_note(rec, m);
+    }
+
+    /// The M functions' effect on the spindle and the modal switches.
     fn spindle_m(&mut self, m: &[u32]) {
         for &f in m {
             match f {
-                3 => self.spindle.dir = SpindleDir::Cw,
-                4 => self.spindle.dir = SpindleDir::Ccw,
-                5 => self.spindle.dir = SpindleDir::Off,
+                // M13/M14: the spindle with coolant; M0 and M6 stop the spindle (the overview
+                // above MODELED_M).
+                3 | 13 => self.spindle.dir = SpindleDir::Cw,
+                4 | 14 => self.spindle.dir = SpindleDir::Ccw,
+                0 | 5 | 6 => self.spindle.dir = SpindleDir::Off,
                 126 => self.m126 = true,
                 127 => self.m126 = false,
                 // From the block's start (unconfirmed::TCPM_FROM_BLOCK_START); the programmed

@@ -349,6 +349,39 @@ fn m120_with_its_look_ahead_and_the_feed_functions_not_simulated() {
     assert!(parse("1 M120 LA\n").1.iter().any(|d| d.is_error()));
 }
 
+/// No M function passes silently: each the run does not model is said on its block, in every
+/// block that carries M functions (a line, an arc, a block of its own), and a machine maker's own
+/// number too. M13/M14 turn the spindle on with the coolant, M0 and M6 stop it (HEIDENHAIN's M
+/// function overview, DOMAIN.md §8); M0 says that the control halts there.
+#[test]
+fn every_m_function_not_modelled_is_said_and_m13_m14_m0_m6_set_the_spindle() {
+    use schwenkbar_core::sim::SpindleDir;
+    let src = "0 BEGIN PGM M MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+50 R0 FMAX M13\n3 M8\n\
+               4 L X+10 R0 F100 M90 M25\n5 CC X+0 Y+0\n6 C X-10 Y+0 DR+ M7\n7 M0\n8 M14\n9 M6\n\
+               10 M30\n11 END PGM M MM\n";
+    let (program, sim) = run(src);
+    let message = |n| after(&program, &sim, n).message.map(|m| m.de).unwrap_or_default();
+    let spindle = |n| after(&program, &sim, n).spindle.dir;
+    assert_eq!(message(3), "M8 nicht simuliert");
+    assert_eq!(message(4), "M90, M25 nicht simuliert");
+    assert!(message(6).contains("M7 nicht simuliert"), "{}", message(6));
+    assert!(message(7).starts_with("M0: die Steuerung hält hier an"), "{}", message(7));
+    assert_eq!(message(9), "M6 nicht simuliert");
+    for n in [2, 8, 10] {
+        assert!(!message(n).contains("nicht simuliert"), "block {n}: {}", message(n));
+    }
+    let expected = [
+        (2, SpindleDir::Cw),
+        (6, SpindleDir::Cw),
+        (7, SpindleDir::Off),
+        (8, SpindleDir::Ccw),
+        (9, SpindleDir::Off),
+    ];
+    for (n, dir) in expected {
+        assert_eq!(spindle(n), dir, "block {n}");
+    }
+}
+
 /// An exporting simulator writes a blank in the program name (`BEGIN PGM SP1 1002 MM`), which
 /// the control's file names do not allow: read with the whole name and said once.
 #[test]

@@ -216,7 +216,7 @@ impl Interp {
     /// Runs `C`, `CR`, `CT`, `LP`, `CP`.
     #[inline(never)]
     pub(super) fn contour(&mut self, at: &mut At<'_, '_>, body: &BlockBody, m: &Motion) -> R<()> {
-        self.spindle_m(&m.m);
+        self.m_functions(&mut at.rec, &m.m);
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
         let geometric = self.geom_start.take().unwrap_or(here);

@@ -320,7 +320,7 @@ impl Interp {
         feed: Option<&Feed<Value>>,
         m: &[u32],
     ) -> R<()> {
-        self.spindle_m(m);
+        self.m_functions(&mut at.rec, m);
         let items = match self
             .pattern
             .and_then(|b| at.cx.program.blocks.get(b))
@@ -377,7 +377,7 @@ impl Interp {
     /// with CYCL CALL POS"). The block's feed acts only on these moves.
     #[inline(never)]
     pub(super) fn call_pos(&mut self, at: &mut At<'_, '_>, l: &Line) -> R<()> {
-        self.spindle_m(&l.m);
+        self.m_functions(&mut at.rec, &l.m);
         let Some(p) = self.stored_params(at)? else {
             self.end_m(&l.m);
             return Ok(());

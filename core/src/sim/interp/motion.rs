@@ -166,7 +166,7 @@ impl Interp {
     }
 
     pub(super) fn line(&mut self, at: &mut At<'_, '_>, line: &Line) -> R<()> {
-        self.spindle_m(&line.m);
+        self.m_functions(&mut at.rec, &line.m);
         if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
             self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
         }
@@ -200,7 +200,6 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
-        m_note(&mut at.rec, &line.m);
         if rot_prog && self.spat.is_some() {
             rot = self.spatial_tool_axis(at, spatial)?;
         }

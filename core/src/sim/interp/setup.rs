@@ -214,12 +214,7 @@ impl Interp {
             }
             BlockBody::Stop { m } => {
                 self.spindle_m(m);
-                note(&mut at.rec, || {
-                    Text::new(
-                        "STOP: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter",
-                        "STOP: the control stops here (continue with NC start); the trainer runs on",
-                    )
-                });
+                note(&mut at.rec, || halt_note("STOP"));
                 self.end_m(m);
             }
             BlockBody::QsAssign { index, .. } => {
