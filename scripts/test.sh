@@ -15,50 +15,52 @@ log=target/test-output.log
 export INSTA_UPDATE=no
 unset INSTA_FORCE_PASS
 : >"$log"
+# Each phase says when it started (seconds since the command began): where the time goes.
+phase() { printf '\n==> [%ds] %s\n' "$SECONDS" "$*"; }
 
-echo; echo "==> rustfmt --check"
+phase "rustfmt --check"
 cargo fmt --all -- --check
 
-echo; echo "==> crate boundaries (scripts/boundary.sh)"
+phase "crate boundaries (scripts/boundary.sh)"
 bash scripts/boundary.sh
-echo; echo "==> every path the docs name exists (scripts/doc_paths.py)"
+phase "every path the docs name exists (scripts/doc_paths.py)"
 python3 scripts/doc_paths.py
-echo; echo "==> core has no import circle (scripts/core_layers.py)"
+phase "core has no import circle (scripts/core_layers.py)"
 python3 scripts/core_layers.py
 
-echo; echo "==> clippy (warnings are errors)"
+phase "clippy (warnings are errors)"
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 
-echo; echo "==> native tests: cargo test --workspace"
+phase "native tests: cargo test --workspace"
 cargo test --workspace 2>&1 | tee -a "$log"
 
-echo; echo "==> browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
+phase "browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
 wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | tee -a "$log"
 
-echo; echo "==> the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
+phase "the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
 python3 scripts/wasm_split_test.py --log "$log"
 
-echo; echo "==> release bundle: trunk build --release --offline, each page's wasm split (scripts/split_pages.py)"
+phase "release bundle: trunk build --release --offline, each page's wasm split (scripts/split_pages.py)"
 bash scripts/bundle.sh
 
-echo; echo "==> single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
+phase "single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
 bash scripts/single-file.sh --from-dist
 
-echo; echo "==> offline: service worker and manifest (dist/), single-file pages (dist-single/)"
+phase "offline: service worker and manifest (dist/), single-file pages (dist-single/)"
 offline_rc=0
 python3 scripts/offline_test.py --log "$log" || offline_rc=$?
 
-echo; echo "==> screenshot: Musterprogramm 1 after block 10 on ac-table, 1920x1080"
+phase "screenshot: Musterprogramm 1 after block 10 on ac-table, 1920x1080"
 # The app's share link opens the program run at a block (`app/src/persist.rs`, `share_fragment`).
 fragment=$(python3 -c 'import sys, urllib.parse
 text = open(sys.argv[1], encoding="utf-8").read()
 print("pgm=" + urllib.parse.quote(text, safe="-_.~") + "&block=10&machine=ac-table&run=1")' static/programs/musterprogramm1.h)
 bash scripts/screenshot.sh target/screenshots/musterprogramm1-block10.png "#$fragment"
-echo; echo "==> screenshot: the course page, lesson 5 (SEQ/SYM bench)"
+phase "screenshot: the course page, lesson 5 (SEQ/SYM bench)"
 bash scripts/screenshot.sh target/screenshots/kurs-lektion-5.png "kurs.html#kurs/5"
-echo; echo "==> screenshot: the machine editor page on ba-table"
+phase "screenshot: the machine editor page on ba-table"
 bash scripts/screenshot.sh target/screenshots/maschinen-editor.png "maschine.html#ba-table"
-echo; echo "==> screenshots: the classroom projector, 1280x720 (trainer in projector mode, course instructor view)"
+phase "screenshots: the classroom projector, 1280x720 (trainer in projector mode, course instructor view)"
 SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
   bash scripts/screenshot.sh target/screenshots/projektor-1280x720-musterprogramm1-block10.png "#$fragment"
 SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
@@ -67,5 +69,6 @@ SCREENSHOT_SIZE=1280,720 SCREENSHOT_PROJECTOR=1 \
 passed=$(grep -oE 'test result: [a-zA-Z]+\. [0-9]+ passed' "$log" | awk '{s+=$4} END {print s+0}')
 failed=$(grep -oE '[0-9]+ failed' "$log" | awk '{s+=$1} END {print s+0}')
 echo
+echo "time: ${SECONDS}s"
 echo "tests: $passed passed, $failed failed"
 [ "$failed" = 0 ] && [ "$offline_rc" = 0 ]
