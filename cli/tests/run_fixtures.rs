@@ -1,5 +1,5 @@
 //! Every simulator fixture (`tests/fixtures/sim/*.h`) through `schwenkbar run --json`: one test
-//! and one insta snapshot per file (`tests/snapshots/run_fixtures__NAME.snap`), so a change in
+//! and one insta snapshot per file (`tests/snapshots/cli__run_fixtures__NAME.snap`), so a change in
 //! what the simulator computes for any block shows up as a reviewed diff. The detailed
 //! assertions on the same programs are in core/tests/sim.rs; these also catch changes to the
 //! numbers no assertion names.
@@ -16,7 +16,7 @@ fn sim_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures/sim")
 }
 
-/// Runs one fixture and compares the snapshot `run_fixtures__NAME`.
+/// Runs one fixture and compares the snapshot `cli__run_fixtures__NAME`.
 fn snapshot(name: &str, machine: &str, max_blocks: Option<usize>) {
     let file = sim_dir().join(format!("{name}.h"));
     let max = max_blocks.map(|n| n.to_string());

@@ -1,7 +1,7 @@
 //! Bad input gives a typed error carrying the numbers (DOMAIN.md §10 oracle 33 and the issue's
 //! list: NaN/inf, zero-length vectors, collinear POINTS, EULNU outside 0…180), never a panic.
 
-mod support;
+use crate::support;
 
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;

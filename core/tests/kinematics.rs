@@ -1,7 +1,7 @@
 //! Machine-specific behaviour beyond the seed oracles: the nutating head, a free head axis with
 //! TABLE ROT, SEQ with both solutions on one side, and the unconfirmed-decision catalogue.
 
-mod support;
+use crate::support;
 
 use glam::{DMat3, DVec3};
 use schwenkbar_core::axes::AxisValues;

@@ -2,7 +2,7 @@
 //! rule, each made by editing one field of a shipped file; the seed's SEQ/SYM table on edited
 //! copies; and the export → import round trip.
 
-mod support;
+use crate::support;
 
 use glam::DMat3;
 use schwenkbar_core::machine::{Machine, MachineDef, MachineError, MachineIssue, Problem};

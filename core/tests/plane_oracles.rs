@@ -4,7 +4,7 @@
 // The oracle numbers are DOMAIN.md's 4-decimal values (0.7071 etc.), kept as printed there.
 #![allow(clippy::approx_constant)]
 
-mod support;
+use crate::support;
 
 use glam::DMat3;
 use schwenkbar_core::axes::AxisValues;

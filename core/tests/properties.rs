@@ -1,7 +1,7 @@
 //! Property tests per machine: inverse kinematics against forward kinematics, angle round trips,
 //! the mirror symmetry of the two solutions, and "bad input never panics".
 
-mod support;
+use crate::support;
 
 use glam::DMat3;
 use proptest::prelude::*;

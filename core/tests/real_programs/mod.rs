@@ -2,8 +2,8 @@
 //! control's own spelling (the same AST, `fmt` writes the control's form), lenient spellings are
 //! said once per file, and every block runs: executed, or said on its block, never skipped.
 //! Oracles: closed forms worked by hand (sin 30° = 0.5, 3–4–5, a retract of 50 mm along an
-//! untilted Z axis, the cycle's set-up clearance above the surface). One test binary, a file per
-//! idea: the parameters and FN functions, the spellings and blocks, the tools and machines.
+//! untilted Z axis, the cycle's set-up clearance above the surface). A file per idea: the
+//! parameters and FN functions, the spellings and blocks, the tools and machines.
 
 use schwenkbar_core::ast::{BlockBody, CycleValue, QL_BASE, QR_BASE};
 use schwenkbar_core::diag::{DiagCode, Severity};
