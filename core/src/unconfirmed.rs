@@ -203,6 +203,13 @@ pub const MOVE_DEFAULT_DIST: f64 = 0.0;
 /// **UNCONFIRMED** (DOMAIN.md §4 gives no feed for the retract).
 pub const MB_RETRACT_AT_RAPID: bool = true;
 
+/// `M92`: the block's coordinates refer to an additional machine datum whose distance from the
+/// machine datum the machine tool builder sets per axis (TNC 426B ISO manual, "Behavior with
+/// M92 — Additional machine datum"). No shipped machine's data gives that distance, so the M92
+/// datum is taken as the machine datum: `M92` moves as `M91` does (a CAM post's
+/// `L Z+0 R0 FMAX M92` goes up to the top of Z, not to the workpiece's Z0). **UNCONFIRMED**.
+pub const M92_AT_MACHINE_DATUM: bool = true;
+
 /// `MB MAX` retracts "to just before the software limit switch" (DOMAIN.md §4): how far before
 /// is machine data the sources do not give; each linear axis stops this many mm inside its
 /// limits. **UNCONFIRMED**.

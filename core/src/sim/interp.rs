@@ -170,13 +170,14 @@ type R<T> = Result<T, SimErrorCode>;
 
 /// The M functions whose effect the run models (HEIDENHAIN's M function overview, DOMAIN.md §8
 /// [M:helman-M]): M0/M1 program stop (said: the trainer runs on), M2/M30 end, M3/M4/M5 and
-/// M13/M14 the spindle, M89/M99 cycle calls, M91 machine coordinates, M126/M127 the rotary axes'
-/// shortest path, M128/M129 TCPM. Every other one is said on its block as not simulated, so that
-/// no block passes silently: coolant, M90, M92 (the machine maker's position), M94,
+/// M13/M14 the spindle, M89/M99 cycle calls, M91 and M92 machine coordinates
+/// ([`unconfirmed::M92_AT_MACHINE_DATUM`]), M126/M127 the rotary axes' shortest path, M128/M129
+/// TCPM. Every other one is said on its block as not simulated, so that no block passes
+/// silently: coolant, M90, M94,
 /// M109/M110/M116/M136 (feeds: the run's times take F in mm/min on the path), M120, M197, M140
 /// without MB (with MB the retraction says itself), M6 (the trainer changes tools at TOOL
 /// CALL) and the machine makers' own numbers.
-const MODELED_M: [u32; 16] = [0, 1, 2, 3, 4, 5, 13, 14, 30, 89, 91, 99, 126, 127, 128, 129];
+const MODELED_M: [u32; 17] = [0, 1, 2, 3, 4, 5, 13, 14, 30, 89, 91, 92, 99, 126, 127, 128, 129];
 
 /// Animation time of a STAY swivel, seconds: nothing moves on the machine, so no feed gives a
 /// duration; one second lets the view show the coordinate system turning (derived, display only).

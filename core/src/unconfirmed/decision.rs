@@ -63,6 +63,8 @@ pub enum Decision {
     TcpmAxisSpat,
     /// Simulator: [`MB_RETRACT_AT_RAPID`](super::MB_RETRACT_AT_RAPID), [`MB_MAX_CLEARANCE`](super::MB_MAX_CLEARANCE).
     MbRetractRapid,
+    /// Simulator: [`M92_AT_MACHINE_DATUM`](super::M92_AT_MACHINE_DATUM).
+    M92Datum,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`](super::ROTARY_FEED_DEG_PER_MIN).
     RotaryFeed,
     /// Collision check: [`holder`](super::holder), the tool holder's size.
@@ -122,7 +124,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 43] = [
+    pub const ALL: [Decision; 44] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -148,6 +150,7 @@ impl Decision {
         Decision::TcpmFunction,
         Decision::TcpmAxisSpat,
         Decision::MbRetractRapid,
+        Decision::M92Datum,
         Decision::RotaryFeed,
         Decision::Cycle19Spatial,
         Decision::Cycle19NoMotion,
@@ -271,6 +274,10 @@ impl Decision {
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",
                 "MB/MB MAX: retract at rapid traverse before the swivel; MB MAX ends 1 mm before each linear axis's software limit switch.",
+            ),
+            Decision::M92Datum => Text::new(
+                "M92: der zusätzliche Maschinen-Nullpunkt des Herstellers wird auf dem Maschinen-Nullpunkt angenommen (M92 wie M91).",
+                "M92: the machine tool builder's additional machine datum is taken at the machine datum (M92 as M91).",
             ),
             Decision::ToolHolder => Text::new(
                 "Kollisionsprüfung: Werkzeughalter als Zylinder unter der Spindelnase, 35 % der Werkzeuglänge lang (höchstens 50 mm), Radius = Werkzeugradius (mindestens 12 mm) + 14 mm; darunter das Werkzeug mit seinem Radius. Eine Werkzeuglänge L unter 30 mm gilt als Differenz zum Nullwerkzeug, simuliert mit 100 mm + L.",

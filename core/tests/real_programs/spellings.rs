@@ -382,6 +382,33 @@ fn every_m_function_not_modelled_is_said_and_m13_m14_m0_m6_set_the_spindle() {
     }
 }
 
+/// `M92` (the machine tool builder's additional machine datum, no distance given by any shipped
+/// machine) moves in machine coordinates as `M91` does: a CAM post's safe position
+/// `L Z+0 R0 FMAX M92` ends at the machine's Z0 (the top of its travel), not at the workpiece's
+/// Z0, whatever the preset; the block says the assumption. A later block without M92 is in
+/// workpiece coordinates again.
+#[test]
+fn m92_moves_in_machine_coordinates_as_m91_does() {
+    let src = |m| {
+        format!(
+            "0 BEGIN PGM M MM\n1 TOOL CALL 1 Z S1000\n2 L X+10 Y+20 Z+30 R0 FMAX\n\
+             3 L Z+0 R0 FMAX M{m}\n4 L X-5 Y+7 R0 FMAX M{m}\n5 L Z+30 R0 FMAX\n6 END PGM M MM\n"
+        )
+    };
+    let (p91, s91) = run(&src(91));
+    let (p92, s92) = run(&src(92));
+    for n in [3, 4, 5] {
+        assert_eq!(after(&p92, &s92, n).axes, after(&p91, &s91, n).axes, "block {n}");
+    }
+    let (z0, xy) = (after(&p92, &s92, 3).axes.linear, after(&p92, &s92, 4).axes.linear);
+    assert_eq!(z0.z, 0.0, "machine Z0");
+    assert_eq!((xy.x, xy.y), (-5.0, 7.0), "machine X/Y");
+    // Block 5 is in workpiece coordinates again: the tip 30 mm above the workpiece datum.
+    assert!((after(&p92, &s92, 5).tip_wcs.z - 30.0).abs() < 1e-9);
+    let said = after(&p92, &s92, 3).message.expect("said").de;
+    assert!(said.starts_with("M92:") && said.contains("M91"), "{said}");
+}
+
 /// An exporting simulator writes a blank in the program name (`BEGIN PGM SP1 1002 MM`), which
 /// the control's file names do not allow: read with the whole name and said once.
 #[test]

@@ -136,7 +136,9 @@ impl Interp {
         };
         match body {
             BlockBody::L(line) => {
-                if line.m.contains(&91) || line.axes.iter().any(|w| linear_index(w.axis).is_none()) {
+                if motion::in_machine_coordinates(line)
+                    || line.axes.iter().any(|w| linear_index(w.axis).is_none())
+                {
                     return Ok(None);
                 }
                 Ok(Some(Elem::line(start, self.target(&line.axes, start)?)))

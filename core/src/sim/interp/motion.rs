@@ -5,6 +5,12 @@ use super::*;
 use crate::sim::arc::Elem;
 use crate::sim::segment::TcpmPath;
 
+/// `M91`, and `M92` whose datum is taken as the machine datum
+/// ([`unconfirmed::M92_AT_MACHINE_DATUM`]): the block's coordinates are machine coordinates.
+pub(super) fn in_machine_coordinates(line: &Line) -> bool {
+    line.m.contains(&91) || (unconfirmed::M92_AT_MACHINE_DATUM && line.m.contains(&92))
+}
+
 /// Duration (s) = distance / (feed per minute) · 60; the longer of the linear (`lin`, mm) and
 /// rotary (`rot`, °) shares wins (sim.rs doc). The rotary share takes F as written in °/min:
 /// `unit` undoes the mm/min conversion of an `INCH` program's F.
@@ -170,7 +176,10 @@ impl Interp {
         if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
             self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
         }
-        let m91 = line.m.contains(&91);
+        if line.m.contains(&92) {
+            note(&mut at.rec, || unconfirmed::Decision::M92Datum.text());
+        }
+        let m91 = in_machine_coordinates(line);
         let rate = self.rate(line.feed.as_ref())?;
         let mut p = self.programmed();
         let mut l = self.axes.linear;
