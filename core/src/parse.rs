@@ -554,7 +554,9 @@ pub(crate) fn unknown(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         && !body.chars().any(char::is_control);
     if well_formed {
         cx.warn(body, first_word.len(), DiagCode::UnknownBlock);
-        Some(BlockBody::Unknown { text: body.to_owned() })
+        // Trimmed: a lenient reading may have blanked a character at the end (`A M0.`), and the
+        // text must format to what reads back the same.
+        Some(BlockBody::Unknown { text: body.trim_end().to_owned() })
     } else {
         cx.invalid(body, None)
     }
