@@ -32,5 +32,14 @@ if [ -n "$floats" ]; then
   echo "$floats"
   fail=1
 fi
-[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64"
+# Every property test runs a fixed number of cases from a fixed seed (testkit's proptest_cases):
+# no test's outcome, time or memory depends on chance.
+configs=$(grep -rnE 'ProptestConfig(::with_cases|::default\(\)| \{)|proptest_config\((ProptestConfig|cases)' \
+  core/src core/tests app/src app/tests cli tests/tests 2>/dev/null || true)
+if [ -n "$configs" ]; then
+  echo "boundary: a property test configured without schwenkbar_testkit::proptest_cases:"
+  echo "$configs"
+  fail=1
+fi
+[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64; property tests from a fixed seed"
 exit "$fail"

@@ -4,7 +4,6 @@
 use std::sync::Arc;
 
 use proptest::prelude::*;
-use proptest::test_runner::RngSeed;
 use schwenkbar_app::document::Document;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::{SimOptions, Simulation, simulate};
@@ -44,12 +43,6 @@ const PIECES: [&str; 19] = [
     "END PGM K MM\n",
     "7 FN 12: IF +Q1 LT +3 GOTO LBL 1\n",
 ];
-
-/// A fixed number of cases from a fixed seed: the suite's time and memory do not depend on
-/// luck, and a failure replays as it is (proptest prints the minimal input).
-fn cases(n: u32) -> ProptestConfig {
-    ProptestConfig { cases: n, rng_seed: RngSeed::Fixed(0x5c4e_2026), ..ProptestConfig::default() }
-}
 
 /// A run bounded far below the default budget: an edit can make an endless loop (`LBL 1` and
 /// `FN 12: … GOTO LBL 1` are among the pieces), which then stops here with the same error in the
@@ -109,7 +102,7 @@ fn assert_same_run(got: &Simulation, want: &Simulation, doc: &Document) {
 }
 
 proptest! {
-    #![proptest_config(cases(400))]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(400))]
 
     #[test]
     fn an_edit_parsed_and_run_again_in_part_equals_a_fresh_parse_and_run(
@@ -135,7 +128,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(cases(300))]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(300))]
 
     /// Typing breaks a block and the next keys heal it: edits, then the same edits undone one by
     /// one, each run resumed (joining an earlier run, also the one before the run stopped at a
@@ -186,7 +179,7 @@ fn emptied_and_refilled_text_and_an_edit_at_either_end() {
 }
 
 proptest! {
-    #![proptest_config(cases(300))]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(300))]
 
     /// What the text editor does (issue 16): a window of the text typed in and put back in
     /// place is the same document as the whole text edited the same way.

@@ -289,7 +289,7 @@ fn a_diagonal_sweep_past_a_corner_is_parted_by_its_own_axis() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(256))]
 
     /// A box swept along an axis fills the box from its start to its end: the swept test's gap
     /// is exactly that box's widest per-axis gap to an axis-parallel box (closed form).

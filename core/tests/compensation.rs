@@ -453,6 +453,7 @@ fn an_inside_rounding_of_the_tool_radius_leaves_the_tool_standing_at_its_centre(
 }
 
 proptest::proptest! {
+    #![proptest_config(schwenkbar_testkit::proptest_cases(256))]
     /// Any mix of compensated contour blocks, approach and departure with random numbers never
     /// panics; every segment stays finite and evaluable, and every recorded step can be stepped to.
     #[test]
@@ -518,6 +519,7 @@ fn to_segment(q: DVec3, a: DVec3, b: DVec3) -> f64 {
 }
 
 proptest::proptest! {
+    #![proptest_config(schwenkbar_testkit::proptest_cases(256))]
     /// RR around any convex polygon run counter-clockwise: every corner is an outside corner, so
     /// every point of the tool centre path is exactly R + DR from the polygon (its distance to
     /// the nearest edge, computed here), on every block of the contour.

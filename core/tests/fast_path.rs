@@ -148,7 +148,7 @@ fn line() -> impl Strategy<Value = String> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2000))]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(2000))]
 
     #[test]
     fn generated_lines_read_the_same_through_both_paths(

@@ -22,6 +22,7 @@ fn machines() -> Vec<Machine> {
 }
 
 proptest! {
+    #![proptest_config(schwenkbar_testkit::proptest_cases(256))]
     /// Random reachable orientation (forward kinematics of random axis values and a random γ):
     /// every candidate reproduces the tool axis, and with its residual the whole orientation;
     /// the axis values we started from are among the candidates.

@@ -23,7 +23,7 @@ fn axes(m: &Machine, linear: DVec3, rotary: [f64; 2]) -> MachineAxes {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(64))]
 
     /// Wᵀ·H (workpiece pose, head pose) is the kinematics' R_machine, and the tool axis in W-CS
     /// is its third column.

@@ -387,7 +387,7 @@ fn pocket_251_removes_its_volume() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(24))]
 
     /// Any blank (flat, huge, inside out), any tool of the table (and unknown ones), straight,
     /// tilted, swivelling and arc moves with random numbers: cutting, stepping in random frames

@@ -117,7 +117,7 @@ fn tcpm_program(m: &Machine, switch: Switch, start: DVec3, [a, b, c]: [[f64; 2];
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 40, ..ProptestConfig::default() })]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(40))]
 
     /// M128 and FUNCTION TCPM keep the tip, on every machine and for the same poses: the steps
     /// under TCPM with rotary axes only hold it at the programmed point, the step with X +5 mm
@@ -318,7 +318,7 @@ fn axis_spat_angles_are_relative_to_the_tilted_plane_and_modal() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 40, ..ProptestConfig::default() })]
+    #![proptest_config(schwenkbar_testkit::proptest_cases(40))]
 
     /// AXIS SPAT on every machine, random spatial angles with tilts up to 60° (inside every
     /// shipped machine's reach near the table): the tool axis ends at Rz(C)·Ry(B)·Rx(A)·ez (the

@@ -12,6 +12,20 @@ pub mod seq_sym;
 
 use std::path::Path;
 
+/// The configuration of every property test: `cases` cases from a fixed seed, so that a run's
+/// outcome, time and memory do not depend on chance (a failure found once replays as it is; the
+/// fuzz run in scripts/bench.sh is where random inputs are explored). proptest prints the
+/// minimal failing input.
+#[cfg(not(target_arch = "wasm32"))]
+#[must_use]
+pub fn proptest_cases(cases: u32) -> proptest::test_runner::Config {
+    proptest::test_runner::Config {
+        cases,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x5c4e_2026),
+        ..proptest::test_runner::Config::default()
+    }
+}
+
 /// Asserts that the NC programs in `dir` (`*.h`) are exactly `names` (file stems, any order):
 /// the per-file harnesses list their fixtures by name, so a new file without a test fails here.
 ///

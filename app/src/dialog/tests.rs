@@ -373,7 +373,7 @@ mod round_trip {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(512))]
+        #![proptest_config(schwenkbar_testkit::proptest_cases(512))]
 
         /// Reopening a block and closing it without changes — at once with END, or prompt by
         /// prompt with ENT — writes a block the parser reads as the same block.
