@@ -1,6 +1,7 @@
 //! Never panics on any input (issue 30): 10,000,000 mutated blocks of every family — the lines of
 //! every fixture program (`tests/fixtures/{ok,err,sim}`, the families of real programs included)
-//! changed byte by byte and word by word — are parsed, formatted and parsed again; every
+//! changed byte by byte and word by word — are parsed, formatted, parsed and formatted again
+//! (the second text must equal the first: fmt writes what reads back the same); every
 //! 10,000th input is a whole mutated program, also simulated. Deterministic (a fixed seed), so
 //! the figure does not depend on luck; a panic prints its input and counts.
 //! Run: `scripts/bench.sh` or `cargo run --release -p schwenkbar-core --example fuzz_parse [N]`.
@@ -112,6 +113,7 @@ fn main() {
     let machine = Machine::builtin("ac-table").expect("builtin machine");
     let mut rng = Rng(0x5eed_2026_1126);
     let mut panics = 0u64;
+    let mut unstable = 0u64;
     let t = Instant::now();
     for k in 0..n {
         let whole = k % 10_000 == 0;
@@ -133,11 +135,19 @@ fn main() {
         let ok = catch_unwind(AssertUnwindSafe(|| {
             let (p, _) = parse(&input);
             let text = format_program(&p);
-            let _ = parse(&text);
+            // What fmt writes reads back as the same program: formatting it again changes nothing.
+            let fixed = format_program(&parse(&text).0) == text;
             if whole {
                 let _ = simulate(&p, &machine, &SimOptions::default());
             }
+            fixed
         }));
+        if matches!(ok, Ok(false)) {
+            unstable += 1;
+            if unstable <= 10 {
+                eprintln!("NOT A FIXED POINT of fmt, input {k}: {input:?}");
+            }
+        }
         if ok.is_err() {
             panics += 1;
             if panics <= 10 {
@@ -147,7 +157,7 @@ fn main() {
     }
     let secs = t.elapsed().as_secs_f64();
     println!(
-        "fuzz: {n} mutated inputs of {} fixture programs ({} lines), {panics} panics, {secs:.1} s",
+        "fuzz: {n} mutated inputs of {} fixture programs ({} lines), {panics} panics, {unstable} not formatting to a fixed point, {secs:.1} s",
         programs.len(),
         lines.len()
     );

@@ -392,9 +392,13 @@ impl Parser<'_> {
         let mut comment = comment.map(|c| c.trim().to_owned());
         let continued = self.block_lines.len() > 1;
         let dangling_tilde = line_text.trim_end().ends_with('~');
+        // The continuation mark after the body or after the comment (`Q200=2 ;LABEL ~`); a line
+        // with both marks (`Q203=+0 ~ ;KOOR. ~`) keeps neither in its comment, or fmt's one
+        // mark at the end would read back as the comment's.
         if body_text.ends_with('~') {
             body_text = strip_tilde(body_text);
-        } else if let Some(c) = comment.as_mut()
+        }
+        if let Some(c) = comment.as_mut()
             && c.ends_with('~')
         {
             *c = strip_tilde(c).to_owned();
@@ -442,7 +446,9 @@ impl Parser<'_> {
         };
 
         // A decimal comma or a blank after an address letter: read as written canonically
-        // (the same length, so offsets stay); AcrossBlocks says it once per file.
+        // (the same length, so offsets stay); AcrossBlocks says it once per file. A block that
+        // stays invalid keeps the text as written: nothing the user typed is changed.
+        let written = text.clone();
         let text = match (is_cycle, lenient::normalize(&text)) {
             (false, Some(canonical)) if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => Cow::Owned(canonical),
             _ => text,
@@ -457,7 +463,7 @@ impl Parser<'_> {
         } else {
             parse_body(&mut self.cx, &text)
         };
-        let body = body.unwrap_or_else(|| invalid(&text));
+        let body = body.unwrap_or_else(|| invalid(written.trim_end()));
         if dangling_tilde && !continued {
             let code = match &body {
                 BlockBody::CycleDef(c) => DiagCode::CycleParamsElided { cycle: c.number },

@@ -135,11 +135,23 @@ fn program() -> impl Strategy<Value = Program> {
 /// formats to a text that formats to itself.
 #[test]
 fn found_inputs_format_to_a_fixed_point() {
-    // An unknown block whose M function's point was read leniently (a trailing blank was kept).
-    for s in ["A M0.\n", "A M0. \n", "X1 M3.\n"] {
+    // An unknown block whose M function's point was read leniently (a trailing blank was kept);
+    // invalid blocks whose blanks and decimal commas were read leniently (the same); a dangling
+    // continuation mark before and after a comment (the comment kept the second one).
+    for s in [
+        "A M0.\n",
+        "A M0. \n",
+        "X1 M3.\n",
+        "5 TOOL CALL 16 Z 5000F1000\n",
+        "10 L Z+30 R0X 25,5 X 25,5FMAX\n",
+        "  Q203=+0  ~        ;KOOR. NR1OBERFLAECHE ~\n",
+    ] {
         let once = format_program(&parse(s).0);
         assert_eq!(format_program(&parse(&once).0), once, "{s:?}");
     }
+    // An invalid block keeps what was typed, not the lenient reading of it.
+    let once = format_program(&parse("5 TOOL CALL 16 Z 5000F1000\n").0);
+    assert!(once.contains("TOOL CALL 16 Z 5000F1000"), "{once:?}");
 }
 
 proptest! {
