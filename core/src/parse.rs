@@ -449,7 +449,8 @@ impl Parser<'_> {
         // (the same length, so offsets stay); AcrossBlocks says it once per file. A block that
         // stays invalid keeps the text as written: nothing the user typed is changed.
         let written = text.clone();
-        let text = match (is_cycle, lenient::normalize(&text)) {
+        // A `*` line is text (a structure block): nothing in it is read as a word.
+        let text = match (is_cycle || text.starts_with('*'), lenient::normalize(&text)) {
             (false, Some(canonical)) if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => Cow::Owned(canonical),
             _ => text,
         };

@@ -145,6 +145,8 @@ fn found_inputs_format_to_a_fixed_point() {
         "5 TOOL CALL 16 Z 5000F1000\n",
         "10 L Z+30 R0X 25,5 X 25,5FMAX\n",
         "  Q203=+0  ~        ;KOOR. NR1OBERFLAECHE ~\n",
+        // A structure block's text is not read as words (its `M30.` lost the point once blank).
+        "15 *M30.\n",
     ] {
         let once = format_program(&parse(s).0);
         assert_eq!(format_program(&parse(&once).0), once, "{s:?}");
