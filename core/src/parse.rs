@@ -447,12 +447,13 @@ impl Parser<'_> {
 
         // A decimal comma or a blank after an address letter: read as written canonically
         // (the same length, so offsets stay); AcrossBlocks says it once per file. A block that
-        // stays invalid keeps the text as written: nothing the user typed is changed.
-        let written = text.clone();
+        // stays invalid keeps the text as written (`written`): nothing the user typed is changed.
         // A `*` line is text (a structure block): nothing in it is read as a word.
-        let text = match (is_cycle || text.starts_with('*'), lenient::normalize(&text)) {
-            (false, Some(canonical)) if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => Cow::Owned(canonical),
-            _ => text,
+        let (text, written) = match (is_cycle || text.starts_with('*'), lenient::normalize(&text)) {
+            (false, Some(canonical)) if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => {
+                (Cow::Owned(canonical), Some(text))
+            }
+            _ => (text, None),
         };
         self.cx.base = text.as_ptr() as usize;
         // A cycle's parameter lines follow its header in the source: offsets reach up to there.
@@ -464,7 +465,7 @@ impl Parser<'_> {
         } else {
             parse_body(&mut self.cx, &text)
         };
-        let body = body.unwrap_or_else(|| invalid(written.trim_end()));
+        let body = body.unwrap_or_else(|| invalid(written.as_deref().unwrap_or(&text).trim_end()));
         if dangling_tilde && !continued {
             let code = match &body {
                 BlockBody::CycleDef(c) => DiagCode::CycleParamsElided { cycle: c.number },

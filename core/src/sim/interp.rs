@@ -183,8 +183,8 @@ const MODELED_M: [u32; 17] = [0, 1, 2, 3, 4, 5, 13, 14, 30, 89, 91, 92, 99, 126,
 /// duration; one second lets the view show the coordinate system turning (derived, display only).
 pub const STAY_SECONDS: f64 = 1.0;
 
-/// What a block's M functions tell the trainee: TCPM switched on or off, a program stop, or the
-/// functions the simulator does not model.
+/// What a block's M functions tell the trainee: TCPM switched on or off, a program stop, M92's
+/// assumed datum, or the functions the simulator does not model.
 fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
     if let Some(text) = tcpm::m_note(m) {
         note(rec, || text);
@@ -197,6 +197,8 @@ fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
                 "M1: optional program stop (only with optional stop on); the trainer runs on",
             )
         });
+    } else if m.contains(&92) {
+        note(rec, || unconfirmed::Decision::M92Datum.text());
     } else if m.iter().any(|f| !MODELED_M.contains(f)) {
         note(rec, || {
             let words: Vec<String> =

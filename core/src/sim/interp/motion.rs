@@ -176,9 +176,6 @@ impl Interp {
         if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
             self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
         }
-        if line.m.contains(&92) {
-            note(&mut at.rec, || unconfirmed::Decision::M92Datum.text());
-        }
         let m91 = in_machine_coordinates(line);
         let rate = self.rate(line.feed.as_ref())?;
         let mut p = self.programmed();
