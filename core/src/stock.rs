@@ -564,6 +564,8 @@ impl Stock {
             let (Some(ri), Some(rj)) = (range(a), range(b)) else { continue };
             let first_row = if d == start.d { start.j.max(*rj.start()) } else { *rj.start() };
             let dir = DVec3::from_array(std::array::from_fn(|k| if k == d { 1.0 } else { 0.0 }));
+            let rays = sweep.rays(dir);
+            let inv_td = (t[d].abs() > 1e-12).then(|| 1.0 / t[d]);
             let area = self.h[a] * self.h[b];
             let (tile_first, tiles_per_row) = self.tile_base(d);
             for j in first_row..=*rj.end() {
@@ -584,8 +586,8 @@ impl Stock {
                     // The slab along this ray: r0·t + λ·t_d within [s_lo, s_hi].
                     let (mut from, mut to) = (lo[d], hi[d]);
                     let at = r0.dot(t);
-                    if t[d].abs() > 1e-12 {
-                        let (x, y) = ((s_lo - at) / t[d], (s_hi - at) / t[d]);
+                    if let Some(inv) = inv_td {
+                        let (x, y) = ((s_lo - at) * inv, (s_hi - at) * inv);
                         from = from.max(x.min(y));
                         to = to.min(x.max(y));
                     } else if at < s_lo || at > s_hi {
@@ -596,7 +598,7 @@ impl Stock {
                         continue;
                     }
                     out.rays += 1;
-                    if let Some((x0, x1)) = sweep.material_interval(r0, dir, dexel.spans()) {
+                    if let Some((x0, x1)) = rays.material_interval(r0, dexel.spans()) {
                         let removed = dexel.subtract(x0, x1, &mut scratch);
                         out.volume += removed * area / 3.0;
                         out.depth = out.depth.max(removed);
