@@ -100,11 +100,16 @@ impl Dexel {
                 scratch.push(Span { lo: hi, hi: s.hi });
             }
         }
-        *self = match scratch.as_slice() {
-            [] => Dexel::Empty,
-            [s] => Dexel::One(*s),
-            more => Dexel::Many(more.to_vec()),
-        };
+        match (scratch.as_slice(), &mut *self) {
+            ([], _) => *self = Dexel::Empty,
+            ([s], _) => *self = Dexel::One(*s),
+            // A ray cut often keeps its allocation.
+            (more, Dexel::Many(v)) => {
+                v.clear();
+                v.extend_from_slice(more);
+            }
+            (more, _) => *self = Dexel::Many(more.to_vec()),
+        }
         removed
     }
 }
