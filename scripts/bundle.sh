@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the release pages into dist/ and prints their sizes: each page's HTML + JS + wasm + CSS,
 # gzip -9, summed — what the page loads before its first screen. Each page's wasm is split
-# (scripts/split_pages.py): the functions the first screen does not run are in X_deferred.wasm,
-# fetched after it; its size is printed on its own line ("then").
+# (scripts/split_pages.py) by the lists of web/first_screen/: the functions the first screen does
+# not run are in X_deferred.wasm, fetched after it; its size is printed on its own line ("then").
 # The trainer (index.html) must stay within its budget (BUNDLE_BUDGET_KB, the brief's 240 KB;
 # issue 16 asks for 200); the course page (kurs.html) and the machine editor (maschine.html),
 # each its own bundle, within regression ceilings. Fails above any of them.

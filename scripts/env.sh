@@ -54,8 +54,9 @@ build_pages() {
     cp "target/$page-dist/index.html" "dist/$page.html"
     find "target/$page-dist" -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
   done
-  # Each page's wasm split into what its first screen runs and the rest, loaded after it (with
-  # the read-only data only the rest reads: cargo's linked wasm says which, web/build.rs).
+  # Each page's wasm split into what its first screen runs (web/first_screen/) and the rest,
+  # loaded after it (with the read-only data only the rest reads: cargo's linked wasm says
+  # which, web/build.rs).
   python3 scripts/split_pages.py dist "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release"
   # Each wasm's functions ordered for gzip (the names wasm-opt kept are stripped there).
   python3 scripts/order_functions.py dist

@@ -115,4 +115,5 @@ def main():
         print(f"ordered functions: {wasm.name} {len(b)} -> {wasm.stat().st_size} bytes")
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -5,19 +5,29 @@ Usage: split_pages.py DIST [LINKED_DIR] (cargo's wasm32 release folder: the link
 the data, see wasm_split.plan_data). Run by build_pages (scripts/env.sh) after trunk, before
 scripts/order_functions.py.
 
-1. Profile: each page's wasm gets a profile byte per function; a copy of DIST with those is
-   served on 127.0.0.1 and opened in headless Chromium (scripts/chromium.py) until the page has
-   started and its set of run functions has stayed the same for PROFILE_QUIET_S seconds.
-2. Split: the functions that ran stay in X_bg.wasm (the primary), the rest go to
-   X_deferred.wasm, and the page's glue (X.js) gets the loader (LOADER below), all three named
-   by a hash of the two modules (X = trunk's name with that hash): before the app
-   starts it puts a JS function into the table slot every deferred stub calls first; after the
-   start it fetches and compiles X_deferred.wasm in the background; the first deferred call
-   before that has arrived loads it at once (synchronous request and compile). A page packed
-   into one file (scripts/single_file.py) carries the deferred bytes in
-   globalThis.__schwenkbarDeferredWasm.
-If anything is missing (Chromium, a page, a construct wasm_split.py does not read), the page
-stays whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it).
+The rule: the functions each page's first screen runs are listed in web/first_screen/PAGE.txt
+(committed; a function's name as the wasm's name section gives it, without the `::h…` hash), and
+the split keeps exactly those in the primary. A build needs no browser and the same source gives
+the same bytes. SCHWENKBAR_SPLIT says how the lists are used:
+- unset: the lists split the pages (scripts/serve.sh, scripts/single-file.sh).
+- check (the test command, scripts/bundle.sh): each page is also opened in headless Chromium
+  (PROFILE below) and the build fails if its first screen ran a function its list does not hold
+  (that code would be fetched synchronously during the start); the split still follows the list.
+- record: the lists are written anew from that profile (after a change to what the first screen
+  runs: `SCHWENKBAR_SPLIT=record bash scripts/bundle.sh`, then commit web/first_screen/).
+
+PROFILE: each page's wasm gets a profile byte per function; a copy of DIST with those is served
+on 127.0.0.1 and opened in headless Chromium (scripts/chromium.py) until the page has started and
+its set of run functions has stayed the same for PROFILE_QUIET_S seconds.
+SPLIT: the listed functions stay in X_bg.wasm (the primary), the rest go to X_deferred.wasm, and
+the page's glue (X.js) gets the loader (LOADER below), all three named by a hash of the two
+modules (X = trunk's name with that hash): before the app starts it puts a JS function into the
+table slot every deferred stub calls first; after the start it fetches and compiles
+X_deferred.wasm in the background; the first deferred call before that has arrived loads it at
+once (synchronous request and compile). A page packed into one file (scripts/single_file.py)
+carries the deferred bytes in globalThis.__schwenkbarDeferredWasm.
+If anything is missing (a page, its list, a construct wasm_split.py does not read), the page stays
+whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it).
 SCHWENKBAR_NO_SPLIT=1 leaves every page whole (to compare the two)."""
 import hashlib
 import os
@@ -29,6 +39,7 @@ import sys
 import tempfile
 import time
 
+import order_functions
 import wasm_split
 from chromium import Driver, Failure, free_port, port_open, wait_for
 
@@ -41,6 +52,8 @@ PAGES = {
     "kurs.html": [""] + [f"#kurs/{n}" for n in range(1, 12)] + ["reload"],
     "maschine.html": ["#ac-table"],
 }
+# The committed lists of the functions each page's first screen runs.
+LISTS = pathlib.Path(__file__).resolve().parent.parent / "web" / "first_screen"
 PROFILE_QUIET_S = 1.5
 PROFILE_LIMIT_S = 20.0
 
@@ -227,32 +240,80 @@ def split_with_data(original, run, linked_dir, wasm):
     return wasm_split.split(original, run)
 
 
+def stable(name):
+    """A function's name without the hash rustc's legacy mangling appends (`::h` and 16 hex
+    digits): the same item keeps its name when other code changes."""
+    return re.sub(r"::h[0-9a-f]{16}$", "", name)
+
+
+def names_by_body(data):
+    """The stable name of each defined function (None: the name section has none)."""
+    imports, bodies, names = order_functions.read(data)
+    return [None if imports + k not in names else stable(names[imports + k]) for k in range(len(bodies))]
+
+
+def list_file(page):
+    return LISTS / (page.removesuffix(".html") + ".txt")
+
+
 def main():
     dist = pathlib.Path(sys.argv[1])
     linked_dir = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else None
     if os.environ.get("SCHWENKBAR_NO_SPLIT"):
         print("split: SCHWENKBAR_NO_SPLIT is set, every page stays whole", file=sys.stderr)
         return
-    chromedriver = os.environ.get("CHROMEDRIVER", "/usr/bin/chromedriver")
-    plan = {}
+    mode = os.environ.get("SCHWENKBAR_SPLIT", "")
+    if mode not in ("", "check", "record"):
+        sys.exit(f"split: SCHWENKBAR_SPLIT={mode}: expected check or record")
+    plan, names = {}, {}
     for page in PAGES:
         try:
             glue, wasm = page_files(dist, page)
-            data, addr, count = wasm_split.instrument((dist / wasm).read_bytes())
-            plan[page] = (glue, wasm, data, addr, count)
+            original = (dist / wasm).read_bytes()
+            names[page] = names_by_body(original)
+            if mode:
+                data, addr, count = wasm_split.instrument(original)
+                plan[page] = (glue, wasm, data, addr, count)
+            else:
+                plan[page] = (glue, wasm, None, None, None)
         except (wasm_split.Unsupported, OSError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
     if not plan:
         return
-    try:
-        runs = profiles(dist, plan, chromedriver)
-    except (Failure, OSError, subprocess.SubprocessError) as e:
-        print(f"split: WARNING no page split, the profile run failed: {e}", file=sys.stderr)
-        return
+    if mode:
+        chromedriver = os.environ.get("CHROMEDRIVER", "/usr/bin/chromedriver")
+        try:
+            runs = profiles(dist, plan, chromedriver)
+        except (Failure, OSError, subprocess.SubprocessError) as e:
+            sys.exit(f"split: the profile run failed ({mode} needs Chromium): {e}")
+        failed = False
+        for page, ran in runs.items():
+            have = sorted({n for n, r in zip(names[page], ran) if r and n is not None})
+            if mode == "record":
+                LISTS.mkdir(parents=True, exist_ok=True)
+                list_file(page).write_text("".join(n + "\n" for n in have), encoding="utf-8")
+                print(f"split: {list_file(page)}: {len(have)} functions recorded")
+                continue
+            listed = set(read_list(page) or [])
+            missing = [n for n in have if n not in listed]
+            if missing:
+                failed = True
+                print(f"split: {page}'s first screen ran {len(missing)} functions {list_file(page)} does "
+                      f"not hold, e.g. {missing[:3]}: record the lists anew "
+                      "(SCHWENKBAR_SPLIT=record bash scripts/bundle.sh) and commit them", file=sys.stderr)
+        if failed:
+            sys.exit(1)
     for page, (glue, wasm, _, _, _) in plan.items():
+        listed = read_list(page)
+        if listed is None:
+            print(f"split: WARNING {page} stays whole: no list {list_file(page)}", file=sys.stderr)
+            continue
+        listed = set(listed)
+        # A function without a name stays in the primary: the list cannot say it is not run.
+        run = [n is None or n in listed for n in names[page]]
         try:
             original = (dist / wasm).read_bytes()
-            primary, deferred, facts = split_with_data(original, runs[page], linked_dir, wasm)
+            primary, deferred, facts = split_with_data(original, run, linked_dir, wasm)
         except (wasm_split.Unsupported, KeyError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
             continue
@@ -260,9 +321,8 @@ def main():
         if problem:
             print(f"split: WARNING {page} stays whole: {problem}", file=sys.stderr)
             continue
-        # trunk's names hash the unsplit build, and the profile may differ between two builds of
-        # the same source: the split files are named by their own bytes, so that a browser's
-        # cache never pairs one build's primary with another's deferred module.
+        # trunk's names hash the unsplit build: the split files are named by their own bytes, so
+        # that a browser's cache never pairs one build's primary with another's deferred module.
         old = wasm[: -len("_bg.wasm")]
         new = old.rsplit("-", 1)[0] + "-" + hashlib.sha256(primary + deferred).hexdigest()[:16]
         if not glue == old + ".js":
@@ -281,8 +341,17 @@ def main():
         html = (dist / page).read_text(encoding="utf-8")
         (dist / page).write_text(html.replace(old, new), encoding="utf-8")
         print(f"split: {page}: {facts['functions'] - facts['deferred']} of {facts['functions']} functions "
-              f"ran on the first screen; {len(original)} bytes -> {new}_bg.wasm {len(primary)} bytes, "
-              f"{new}_deferred.wasm {len(deferred)} bytes, with {facts['data']} bytes of read-only data")
+              f"on its first screen ({list_file(page).name}); {len(original)} bytes -> {new}_bg.wasm "
+              f"{len(primary)} bytes, {new}_deferred.wasm {len(deferred)} bytes, with {facts['data']} "
+              "bytes of read-only data")
+
+
+def read_list(page):
+    """The committed names of a page's first screen, or None without a list."""
+    try:
+        return [n for n in list_file(page).read_text(encoding="utf-8").splitlines() if n]
+    except OSError:
+        return None
 
 
 def invalid(data, what):

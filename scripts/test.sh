@@ -40,8 +40,8 @@ wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | t
 phase "the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
 python3 scripts/wasm_split_test.py --log "$log"
 
-phase "release bundle: trunk build --release --offline, each page's wasm split (scripts/split_pages.py)"
-bash scripts/bundle.sh
+phase "release bundle: trunk build --release --offline, each page's wasm split by web/first_screen/, checked in Chromium (scripts/split_pages.py)"
+SCHWENKBAR_SPLIT=check bash scripts/bundle.sh
 
 phase "single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
 bash scripts/single-file.sh --from-dist
