@@ -54,16 +54,25 @@ build_pages() {
     cp "target/$page-dist/index.html" "dist/$page.html"
     find "target/$page-dist" -maxdepth 1 -type f ! -name index.html -exec cp {} dist/ \;
   done
+  # What trunk built, kept to show that the steps after it give the same bytes again
+  # (scripts/same_bytes.sh).
+  rm -rf target/pages-trunk && cp -r dist target/pages-trunk
+  finish_pages dist
+}
+
+# The steps after trunk, on the pages in $1.
+finish_pages() {
+  local dir=$1
   # Each page's wasm split into what its first screen runs (web/first_screen/) and the rest,
   # loaded after it (with the read-only data only the rest reads: cargo's linked wasm says
   # which, web/build.rs).
-  python3 scripts/split_pages.py dist "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release"
+  python3 scripts/split_pages.py "$dir" "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release"
   # Each wasm's functions ordered for gzip (the names wasm-opt kept are stripped there).
-  python3 scripts/order_functions.py dist
+  python3 scripts/order_functions.py "$dir"
   # wasm-bindgen's JS glue, minified with terser (trunk's minifier cannot parse it), and the
   # pages' integrity hashes of it written anew.
-  python3 scripts/minify_glue.py dist
+  python3 scripts/minify_glue.py "$dir"
   # The service worker (offline after one visit): its precache list and cache version come from
-  # the files now in dist/, whose names trunk hashed.
-  python3 scripts/precache.py dist
+  # the files now in the folder, whose names trunk hashed.
+  python3 scripts/precache.py "$dir"
 }

@@ -43,6 +43,9 @@ python3 scripts/wasm_split_test.py --log "$log"
 phase "release bundle: trunk build --release --offline, each page's wasm split by web/first_screen/, checked in Chromium (scripts/split_pages.py)"
 SCHWENKBAR_SPLIT=check bash scripts/bundle.sh
 
+phase "the same bytes again: the steps after trunk rerun on its output (scripts/same_bytes.sh)"
+bash scripts/same_bytes.sh | tee -a "$log"
+
 phase "single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
 bash scripts/single-file.sh --from-dist
 
