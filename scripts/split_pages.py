@@ -6,13 +6,15 @@ the data, see wasm_split.plan_data). Run by build_pages (scripts/env.sh) after t
 scripts/order_functions.py.
 
 The rule: the functions each page's first screen runs are listed in web/first_screen/PAGE.txt
-(committed; a function's name as the wasm's name section gives it, without the `::h…` hash), and
-the split keeps exactly those in the primary. A build needs no browser and the same source gives
+(committed; a function's name as the wasm's name section gives it, without rustc's hashes; the
+first line names the compiler they were recorded with), and the split keeps exactly those in the
+primary. A build needs no browser and the same source gives
 the same bytes. SCHWENKBAR_SPLIT says how the lists are used:
 - unset: the lists split the pages (scripts/serve.sh, scripts/single-file.sh).
 - check (the test command, scripts/bundle.sh): each page is also opened in headless Chromium
   (PROFILE below) and the build fails if its first screen ran a function its list does not hold
   (that code would be fetched synchronously during the start); the split still follows the list.
+  A build by another compiler than the list's only warns: its inlining makes other functions.
 - record: the lists are written anew from that profile (after a change to what the first screen
   runs: `SCHWENKBAR_SPLIT=record bash scripts/bundle.sh`, then commit web/first_screen/).
 
@@ -241,9 +243,10 @@ def split_with_data(original, run, linked_dir, wasm):
 
 
 def stable(name):
-    """A function's name without the hash rustc's legacy mangling appends (`::h` and 16 hex
-    digits): the same item keeps its name when other code changes."""
-    return re.sub(r"::h[0-9a-f]{16}$", "", name)
+    """A function's name without the hashes rustc puts in it (the legacy mangling's `::h` and 16
+    hex digits at the end, the v0 mangling's crate disambiguators `crate[16 hex digits]`): they
+    depend on the build's metadata, not on the item, so the same item keeps its name."""
+    return re.sub(r"\[[0-9a-f]{16}\]", "", re.sub(r"::h[0-9a-f]{16}$", "", name))
 
 
 def names_by_body(data):
@@ -287,16 +290,24 @@ def main():
         except (Failure, OSError, subprocess.SubprocessError) as e:
             sys.exit(f"split: the profile run failed ({mode} needs Chromium): {e}")
         failed = False
+        compiler = subprocess.run(["rustc", "-V"], capture_output=True, text=True).stdout.strip()
         for page, ran in runs.items():
             have = sorted({n for n, r in zip(names[page], ran) if r and n is not None})
             if mode == "record":
                 LISTS.mkdir(parents=True, exist_ok=True)
-                list_file(page).write_text("".join(n + "\n" for n in have), encoding="utf-8")
-                print(f"split: {list_file(page)}: {len(have)} functions recorded")
+                lines = [f"# {compiler}"] + have
+                list_file(page).write_text("".join(n + "\n" for n in lines), encoding="utf-8")
+                print(f"split: {list_file(page)}: {len(have)} functions recorded ({compiler})")
                 continue
-            listed = set(read_list(page) or [])
-            missing = [n for n in have if n not in listed]
-            if missing:
+            listed, recorded = read_list(page) or ([], None)
+            missing = [n for n in have if n not in set(listed)]
+            if missing and recorded != compiler:
+                # Another compiler inlines otherwise: its functions are not the ones listed.
+                print(f"split: WARNING {list_file(page)} was recorded with {recorded}, this build "
+                      f"uses {compiler}: {len(missing)} functions its first screen ran are not "
+                      "listed (fetched after the start); record the lists for this compiler",
+                      file=sys.stderr)
+            elif missing:
                 failed = True
                 print(f"split: {page}'s first screen ran {len(missing)} functions {list_file(page)} does "
                       f"not hold, e.g. {missing[:3]}: record the lists anew "
@@ -304,11 +315,11 @@ def main():
         if failed:
             sys.exit(1)
     for page, (glue, wasm, _, _, _) in plan.items():
-        listed = read_list(page)
-        if listed is None:
+        found = read_list(page)
+        if found is None:
             print(f"split: WARNING {page} stays whole: no list {list_file(page)}", file=sys.stderr)
             continue
-        listed = set(listed)
+        listed = set(found[0])
         # A function without a name stays in the primary: the list cannot say it is not run.
         run = [n is None or n in listed for n in names[page]]
         try:
@@ -347,11 +358,14 @@ def main():
 
 
 def read_list(page):
-    """The committed names of a page's first screen, or None without a list."""
+    """The committed names of a page's first screen and the compiler they were recorded with
+    (its first line, `# rustc …`), or None without a list."""
     try:
-        return [n for n in list_file(page).read_text(encoding="utf-8").splitlines() if n]
+        lines = list_file(page).read_text(encoding="utf-8").splitlines()
     except OSError:
         return None
+    recorded = lines[0][2:] if lines and lines[0].startswith("# ") else None
+    return [n for n in lines if n and not n.startswith("#")], recorded
 
 
 def invalid(data, what):
