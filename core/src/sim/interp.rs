@@ -69,6 +69,15 @@ pub(crate) struct At<'s, 'r> {
     pub positioned: bool,
 }
 
+impl At<'_, '_> {
+    /// The step's message, worded only when a full-detail step records it.
+    pub fn note(&mut self, text: impl FnOnce() -> Text) {
+        if let Some(r) = self.rec.as_deref_mut() {
+            r.message = Some(text());
+        }
+    }
+}
+
 /// What one step did: whether it executed its block (not only listed it) and whether it made a
 /// positioning motion (the material check looks at those steps only).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -185,22 +194,22 @@ pub const STAY_SECONDS: f64 = 1.0;
 
 /// What a block's M functions tell the trainee: TCPM switched on or off, a program stop, M92's
 /// assumed datum, or the functions the simulator does not model.
-fn m_note(rec: &mut Option<&mut Rec>, m: &[u32]) {
+fn m_note(at: &mut At<'_, '_>, m: &[u32]) {
     if let Some(text) = tcpm::m_note(m) {
-        note(rec, || text);
+        at.note(|| text);
     } else if m.contains(&0) {
-        note(rec, || halt_note("M0"));
+        at.note(|| halt_note("M0"));
     } else if m.contains(&1) {
-        note(rec, || {
+        at.note(|| {
             Text::new(
                 "M1: wahlweiser Programmhalt (nur mit Programmiertem Halt); der Trainer läuft weiter",
                 "M1: optional program stop (only with optional stop on); the trainer runs on",
             )
         });
     } else if m.contains(&92) {
-        note(rec, || unconfirmed::Decision::M92Datum.text());
+        at.note(|| unconfirmed::Decision::M92Datum.text());
     } else if m.iter().any(|f| !MODELED_M.contains(f)) {
-        note(rec, || {
+        at.note(|| {
             let words: Vec<String> =
                 m.iter().filter(|f| !MODELED_M.contains(f)).map(|f| format!("M{f}")).collect();
             let words = words.join(", ");
@@ -215,12 +224,6 @@ fn halt_note(word: &str) -> Text {
         format!("{word}: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter"),
         format!("{word}: the control stops here (continue with NC start); the trainer runs on"),
     )
-}
-
-fn note(rec: &mut Option<&mut Rec>, text: impl FnOnce() -> Text) {
-    if let Some(r) = rec.as_deref_mut() {
-        r.message = Some(text());
-    }
 }
 
 fn rotary_of(axis: Axis) -> Option<RotaryAxis> {
@@ -381,7 +384,7 @@ impl Interp {
             if matches!(*body, BlockBody::EndPgm { .. }) {
                 self.pc = cx.program.blocks.len();
             }
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::new(
                     "Nach Programmende (M30/M2): nicht ausgeführt",
                     "After program end (M30/M2): not executed",
@@ -390,7 +393,7 @@ impl Interp {
             return Ok(false);
         }
         if block.skip() && cx.options.block_skip {
-            note(&mut at.rec, || Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
+            at.note(|| Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
             return Ok(false);
         }
         if !matches!(&*body, BlockBody::CycleDefOld(d) if d.number == 7) {
@@ -405,7 +408,7 @@ impl Interp {
                 self.q.insert(113, if *unit == Unit::Inch { 1.0 } else { 0.0 });
                 self.unit = *unit;
                 if *unit == Unit::Inch {
-                    note(&mut at.rec, || {
+                    at.note(|| {
                         Text::new(
                             "Programm in Inch: Längen in Zoll (× 25,4 mm), F in 1/10 inch/min",
                             "Program in inches: lengths × 25.4 mm, F in 1/10 inch/min",
@@ -428,7 +431,7 @@ impl Interp {
                 self.modal_call(at, line)?;
             }
             BlockBody::MFunctions(m, w) => {
-                self.m_functions(&mut at.rec, m);
+                self.m_functions(at, m);
                 if let Some(mb) = w.mb {
                     self.m140(at, mb)?;
                 }
@@ -445,7 +448,7 @@ impl Interp {
                 self.cycle_def(at, d)?;
             }
             BlockBody::CyclCall { m } => {
-                self.m_functions(&mut at.rec, m);
+                self.m_functions(at, m);
                 self.call_cycle(at)?;
                 self.end_m(m);
             }
@@ -476,7 +479,7 @@ impl Interp {
             BlockBody::Cc(m) => {
                 let last = self.geom_start.unwrap_or(self.programmed());
                 self.pole = Some(self.pole_of(&m.axes, last)?);
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::new(
                         "CC: Kreismittelpunkt/Pol (keine Bewegung)",
                         "CC: circle centre/pole (no motion)",
@@ -499,7 +502,7 @@ impl Interp {
             BlockBody::PatternDef(items) => {
                 self.pattern = Some(at.block);
                 let n = items.len();
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
                         format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
@@ -544,7 +547,7 @@ impl Interp {
             }
             BlockBody::CallPgm { path } => {
                 let p = path.clone();
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("CALL PGM {p}: nicht simuliert"),
                         format!("CALL PGM {p}: not simulated"),
@@ -556,7 +559,7 @@ impl Interp {
             BlockBody::FnOther { number, text } => self.fn_other(at, *number, text)?,
             BlockBody::Unknown { text } => {
                 let t = text.clone();
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
                 })
             }
@@ -578,9 +581,9 @@ impl Interp {
     }
 
     /// A block's M functions: their effect on the state, and what they tell the trainee.
-    fn m_functions(&mut self, rec: &mut Option<&mut Rec>, m: &[u32]) {
+    fn m_functions(&mut self, at: &mut At<'_, '_>, m: &[u32]) {
         self.spindle_m(m);
-        m_note(rec, m);
+        m_note(at, m);
     }
 
     /// The M functions' effect on the spindle and the modal switches.

@@ -288,7 +288,7 @@ impl Interp {
     /// point PH to the first contour point PA, switching the compensation on there.
     #[inline(never)]
     pub(super) fn approach(&mut self, at: &mut At<'_, '_>, a: &ApprDep) -> R<()> {
-        self.m_functions(&mut at.rec, &a.m);
+        self.m_functions(at, &a.m);
         let rate = self.rate(a.feed.as_ref())?;
         let kind = a.kind.as_str();
         let fail = |reason| SimErrorCode::ApprDep { word: "APPR", kind, reason };
@@ -356,7 +356,7 @@ impl Interp {
     /// PN; the compensation ends.
     #[inline(never)]
     pub(super) fn depart(&mut self, at: &mut At<'_, '_>, a: &ApprDep) -> R<()> {
-        self.m_functions(&mut at.rec, &a.m);
+        self.m_functions(at, &a.m);
         let rate = self.rate(a.feed.as_ref())?;
         let kind = a.kind.as_str();
         let fail = |reason| SimErrorCode::ApprDep { word: "DEP", kind, reason };

@@ -218,7 +218,7 @@ impl Interp {
     /// Runs `C`, `CR`, `CT`, `LP`, `CP`.
     #[inline(never)]
     pub(super) fn contour(&mut self, at: &mut At<'_, '_>, body: &BlockBody, m: &Motion) -> R<()> {
-        self.m_functions(&mut at.rec, &m.m);
+        self.m_functions(at, &m.m);
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
         let geometric = self.geom_start.take().unwrap_or(here);
@@ -238,7 +238,7 @@ impl Interp {
         };
         let elem = self.before_corner(at.cx, at.block, elem)?;
         if m.axes.iter().any(|w| linear_index(w.axis).is_none()) {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::new(
                     "Drehachse im Kreissatz nicht simuliert",
                     "Rotary axis in an arc block not simulated",

@@ -69,10 +69,10 @@ impl Interp {
                 }
                 self.sync_pos();
             }
-            (11, _) => note(&mut at.rec, || {
+            (11, _) => at.note(|| {
                 Text::new("Zyklus 11 (Maßfaktor) nicht simuliert", "Cycle 11 (scaling) not simulated")
             }),
-            (19, 0) => note(&mut at.rec, || {
+            (19, 0) => at.note(|| {
                 Text::new(
                     "Zyklus 19: die Winkel folgen im Satz 19.1",
                     "Cycle 19: the angles follow in block 19.1",
@@ -81,7 +81,7 @@ impl Interp {
             (19, _) => self.cycle19(at, words)?,
             (n, 0) => {
                 self.cycle = Some(StoredCycle::Old(n));
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("Zyklus {n} (alte Form) definiert"),
                         format!("Cycle {n} (old form) defined"),
@@ -101,7 +101,7 @@ impl Interp {
         }
         self.cycle = Some(StoredCycle::New(at.block));
         let n = d.number;
-        note(&mut at.rec, || {
+        at.note(|| {
             Text::owned(
                 format!("Zyklus {n} definiert, wirkt beim Aufruf"),
                 format!("Cycle {n} defined, acts when called"),
@@ -166,7 +166,7 @@ impl Interp {
         match self.cycle {
             None => Err(SimErrorCode::NoCycle),
             Some(StoredCycle::Old(n)) => {
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
                 });
                 Ok(None)
@@ -188,13 +188,13 @@ impl Interp {
         let n = p.cycle;
         let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)?
         else {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
             });
             return Ok(None);
         };
         if let Some(t) = simplified {
-            note(&mut at.rec, || t);
+            at.note(|| t);
         }
         self.run_moves(at, &moves)?;
         Ok(Some((n, moves.len())))
@@ -205,7 +205,7 @@ impl Interp {
         if let Some((number, n)) = self.run_stored(at, |_| {})?
             && at.rec.as_ref().is_some_and(|r| r.message.is_none())
         {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::owned(
                     format!("Zyklus {number} ausgeführt ({n} Bewegungen in der Bearbeitungsebene)"),
                     format!("Cycle {number} executed ({n} moves in the working plane)"),
@@ -320,7 +320,7 @@ impl Interp {
         feed: Option<&Feed<Value>>,
         m: &[u32],
     ) -> R<()> {
-        self.m_functions(&mut at.rec, m);
+        self.m_functions(at, m);
         let items = match self
             .pattern
             .and_then(|b| at.cx.program.blocks.get(b))
@@ -359,7 +359,7 @@ impl Interp {
         }
         let (number, k) = (p.cycle, points.len());
         if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::owned(
                     format!("CYCL CALL PAT: Zyklus {number} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
                     format!("CYCL CALL PAT: cycle {number} executed at {k} points ({moves} moves)"),
@@ -377,7 +377,7 @@ impl Interp {
     /// with CYCL CALL POS"). The block's feed acts only on these moves.
     #[inline(never)]
     pub(super) fn call_pos(&mut self, at: &mut At<'_, '_>, l: &Line) -> R<()> {
-        self.m_functions(&mut at.rec, &l.m);
+        self.m_functions(at, &l.m);
         let Some(p) = self.stored_params(at)? else {
             self.end_m(&l.m);
             return Ok(());
@@ -410,7 +410,7 @@ impl Interp {
         if let Some((number, n)) = self.run_stored(at, |q| shift_surface(q, shift))?
             && at.rec.as_ref().is_some_and(|r| r.message.is_none())
         {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::owned(
                     format!("CYCL CALL POS: Zyklus {number} ausgeführt ({n} Bewegungen)"),
                     format!("CYCL CALL POS: cycle {number} executed ({n} moves)"),
@@ -474,7 +474,7 @@ impl Interp {
         let (number, k) = (d.number, points.len().min(MAX_PATTERN_POINTS));
         let called = called.map_or_else(String::new, |n| n.to_string());
         if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::owned(
                     format!(
                         "Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"

@@ -95,7 +95,7 @@ impl Interp {
         {
             return self.tabread_assumed(at, first, count);
         }
-        note(&mut at.rec, || {
+        at.note(|| {
             Text::owned(
                 format!("FN {number}: {text} – wird nicht simuliert"),
                 format!("FN {number}: {text} – not simulated"),
@@ -123,7 +123,7 @@ impl Interp {
                 }
             }
         }
-        note(&mut at.rec, || {
+        at.note(|| {
             Text::owned(
                 format!("FN 28: TABREAD – die Tabelle wird nicht simuliert: {}", said.0.join(", ")),
                 format!("FN 28: TABREAD – the table is not simulated: {}", said.1.join(", ")),
@@ -188,7 +188,7 @@ impl Interp {
                     ),
                     None => Default::default(),
                 };
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!(
                             "FN 18: ID{id} gelesen: {target} = {}{de}",
@@ -201,7 +201,7 @@ impl Interp {
                     )
                 });
             }
-            None => note(&mut at.rec, || {
+            None => at.note(|| {
                 Text::owned(
                     format!("FN 18: ID{id} wird nicht simuliert, {target} bleibt unverändert"),
                     format!("FN 18: ID{id} is not simulated, {target} stays as it was"),

@@ -78,7 +78,7 @@ impl Interp {
             self.tool.known = known;
             if self.tool.length != entry.length + dl {
                 let (l, sim) = (entry.length, self.tool.length);
-                note(&mut at.rec, || zero_tool_note(l, sim));
+                at.note(|| zero_tool_note(l, sim));
             }
             if !known {
                 let (l, r) = (self.tool.length, self.tool.radius);
@@ -87,7 +87,7 @@ impl Interp {
                     "" => self.tool.number.to_string(),
                     name => format!("\"{name}\""),
                 };
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
                         format!("Tool {n} not in the tool table: assuming L={l} R={r}"),
@@ -99,7 +99,7 @@ impl Interp {
             self.tool.axis = letter(a);
             if a != Axis::Z {
                 let c = self.tool.axis;
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("Werkzeugachse {c}: simuliert wird mit Werkzeugachse Z"),
                         format!("Tool axis {c}: simulated with tool axis Z"),
@@ -205,7 +205,7 @@ impl Interp {
                 let tool = self.tool_of(tool)?;
                 self.tool_defs.retain(|(t, ..)| *t != tool);
                 self.tool_defs.push((tool, l, r));
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::new(
                         "TOOL DEF: Werkzeug im Programm definiert",
                         "TOOL DEF: tool defined in the program",
@@ -214,12 +214,12 @@ impl Interp {
             }
             BlockBody::Stop { m } => {
                 self.spindle_m(m);
-                note(&mut at.rec, || halt_note("STOP"));
+                at.note(|| halt_note("STOP"));
                 self.end_m(m);
             }
             BlockBody::QsAssign { index, .. } => {
                 let n = *index;
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("QS{n}: String-Parameter werden nicht simuliert"),
                         format!("QS{n}: string parameters are not simulated"),
@@ -228,7 +228,7 @@ impl Interp {
             }
             BlockBody::TouchProbe(d) => {
                 let n = d.number;
-                note(&mut at.rec, || {
+                at.note(|| {
                     Text::owned(
                         format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
                         format!("TCH PROBE {n}: touch-probe cycle not simulated"),
@@ -255,7 +255,7 @@ impl Interp {
         };
         let (x, y, z) = (size.x, size.y, size.z);
         if at.cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::new(
                     "Rohteil des Einrichteblatts: das Programm hat eine BLK FORM, sie gilt",
                     "Blank of the setup sheet: the program has a BLK FORM, which applies",
@@ -269,7 +269,7 @@ impl Interp {
             let n = |v: f64| crate::number::prose(v, None, l);
             (format!("{} × {} × {} mm", n(x), n(y), n(z)), format!("X0…{} Y0…{} Z−{}…0", n(x), n(y), n(z)))
         };
-        note(&mut at.rec, || {
+        at.note(|| {
             let ((de, de_blk), (en, en_blk)) = (sizes(crate::Lang::De), sizes(crate::Lang::En));
             Text::owned(
                 format!("Rohteil des Einrichteblatts {de} als BLK FORM {de_blk}"),

@@ -59,7 +59,7 @@ impl Interp {
     pub(super) fn function_tcpm(&mut self, at: &mut At<'_, '_>, t: Tcpm) {
         self.set_tcpm(true);
         self.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
-        note(&mut at.rec, || match t.axis {
+        at.note(|| match t.axis {
             TcpmAxis::Pos => switched_on("FUNCTION TCPM"),
             TcpmAxis::Spat => {
                 let on = switched_on("FUNCTION TCPM");
@@ -108,7 +108,7 @@ impl Interp {
         let axes = expl.chosen_axes().unwrap_or_default();
         let words = format!("SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c));
         let chosen = axis_words(&axes);
-        note(&mut at.rec, || {
+        at.note(|| {
             if missing > 0 {
                 Text::owned(
                     format!(
@@ -134,7 +134,7 @@ impl Interp {
     /// `FUNCTION RESET TCPM`: off, whichever way it was switched on.
     pub(super) fn function_reset_tcpm(&mut self, at: &mut At<'_, '_>) {
         self.set_tcpm(false);
-        note(&mut at.rec, || Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off"));
+        at.note(|| Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off"));
     }
 
     /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off

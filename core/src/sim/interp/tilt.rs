@@ -95,7 +95,7 @@ impl Interp {
         match pb.positioning {
             None | Some(Positioning::Stay) => {
                 if pb.positioning.is_none() {
-                    note(&mut at.rec, || {
+                    at.note(|| {
                         Text::new(
                             "MOVE/TURN/STAY fehlt: wie STAY behandelt",
                             "MOVE/TURN/STAY missing: treated as STAY",
@@ -269,7 +269,7 @@ impl Interp {
             MoveBack::Max => MoveBack::Max,
         };
         self.retract(at, mb, Rate::Rapid)?;
-        note(&mut at.rec, || {
+        at.note(|| {
             Text::new(
                 "M140: Rückzug in Werkzeugachsrichtung (Eilgang)",
                 "M140: retraction in the tool axis direction (rapid)",
@@ -315,7 +315,7 @@ impl Interp {
             self.plane = None;
             self.stay_segment(at, before, DMat3::IDENTITY);
             self.sync_pos();
-            note(&mut at.rec, || Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
+            at.note(|| Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
             return Ok(());
         }
         let machine = at.cx.machine;
@@ -353,11 +353,9 @@ impl Interp {
         }
         if unconfirmed::CYCLE19_MOVES_AXES {
             // Not the chosen convention; kept so the switch in unconfirmed.rs stays meaningful.
-            note(&mut at.rec, || {
-                Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes")
-            });
+            at.note(|| Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes"));
         } else {
-            note(&mut at.rec, || {
+            at.note(|| {
                 Text::new(
                     "Zyklus 19 aktiv: Drehachsen mit L A+Q120 … positionieren",
                     "Cycle 19 active: position the rotary axes with L A+Q120 …",
