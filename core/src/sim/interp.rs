@@ -127,7 +127,6 @@ pub(crate) struct Interp {
     q: BTreeMap<u32, f64>,
     /// `TOOL DEF n L… R…` of the program: length and radius (each if written) for `TOOL CALL n`.
     tool_defs: Vec<(ToolRef, Option<f64>, Option<f64>)>,
-    cycle: Option<StoredCycle>,
     calls: Vec<usize>,
     reps: Vec<(usize, u32)>,
     kin: Kin,
@@ -136,22 +135,10 @@ pub(crate) struct Interp {
     m126: bool,
     /// The cycle 7 definition being read: the shift before its `7.0` header, the words so far.
     c7: Option<Cycle7>,
-    /// The circle centre / pole of the last `CC` (I-CS).
-    pole: Option<contour::Pole>,
-    /// The last programmed direction of rotation (+1 = DR+).
-    last_dr: Option<f64>,
-    /// Direction of travel (in the working plane, unit) at the end of the last contour element.
-    tangent: Option<DVec3>,
-    /// The rounding/chamfer the element just run prepared for the RND/CHF block after it.
-    corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
-    /// The corner point a RND/CHF cut off: where the next element starts geometrically.
-    geom_start: Option<DVec3>,
-    /// The tool radius compensation RL/RR (`None`: R0).
-    comp: Option<compensation::Comp>,
-    /// The block of the last `PATTERN DEF` (for `CYCL CALL PAT`).
-    pattern: Option<usize>,
-    /// `M89` is active: every positioning block calls the cycle.
-    m89: bool,
+    /// The contour between its elements ([`Contour`]).
+    contour: Contour,
+    /// What calls the stored cycle ([`CycleCalls`]).
+    calls_cycle: CycleCalls,
     /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
     tcpm: bool,
     /// `FUNCTION TCPM … AXIS SPAT` is active: `A`, `B`, `C` in positioning blocks are the spatial
@@ -165,6 +152,35 @@ pub(crate) struct Interp {
     replay: bool,
     /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
     unit: Unit,
+}
+
+/// The contour's state between its elements: what the next `C`/`CP`, `RND`/`CHF` and the
+/// radius compensation take from the blocks before.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct Contour {
+    /// The circle centre / pole of the last `CC` (I-CS).
+    pole: Option<contour::Pole>,
+    /// The last programmed direction of rotation (+1 = DR+).
+    last_dr: Option<f64>,
+    /// Direction of travel (in the working plane, unit) at the end of the last contour element.
+    tangent: Option<DVec3>,
+    /// The rounding/chamfer the element just run prepared for the RND/CHF block after it.
+    corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
+    /// The corner point a RND/CHF cut off: where the next element starts geometrically.
+    geom_start: Option<DVec3>,
+    /// The tool radius compensation RL/RR (`None`: R0).
+    comp: Option<compensation::Comp>,
+}
+
+/// The stored cycle and what calls it.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct CycleCalls {
+    /// The last `CYCL DEF` (with its parameters).
+    cycle: Option<StoredCycle>,
+    /// The block of the last `PATTERN DEF` (for `CYCL CALL PAT`).
+    pattern: Option<usize>,
+    /// `M89` is active: every positioning block calls the cycle.
+    m89: bool,
 }
 
 /// A cycle 7 definition spread over sub-blocks `7.1 X…`, `7.2 Y…`.
@@ -284,21 +300,14 @@ impl Interp {
             plane: None,
             q: BTreeMap::new(),
             tool_defs: Vec::new(),
-            cycle: None,
             calls: Vec::new(),
             reps: Vec::new(),
             kin,
             map: Affine::IDENTITY,
             m126: false,
             c7: None,
-            pole: None,
-            last_dr: None,
-            tangent: None,
-            corner: None,
-            geom_start: None,
-            comp: None,
-            pattern: None,
-            m89: false,
+            contour: Contour::default(),
+            calls_cycle: CycleCalls::default(),
             tcpm: false,
             spat: None,
             bodies: None,
@@ -319,8 +328,8 @@ impl Interp {
     /// Whether a later step may read one of `blocks` through this state without running it:
     /// the stored cycle's definition, the last `PATTERN DEF`.
     pub fn refers_into(&self, blocks: &std::ops::Range<usize>) -> bool {
-        matches!(self.cycle, Some(StoredCycle::New(b)) if blocks.contains(&b))
-            || self.pattern.is_some_and(|b| blocks.contains(&b))
+        matches!(self.calls_cycle.cycle, Some(StoredCycle::New(b)) if blocks.contains(&b))
+            || self.calls_cycle.pattern.is_some_and(|b| blocks.contains(&b))
     }
 
     /// The linear axes follow the rotary axes: with a tilt, and always with TCPM (M128), which
@@ -400,7 +409,7 @@ impl Interp {
             self.c7 = None;
         }
         // A prepared rounding belongs to the block right after the element that prepared it.
-        let pending_corner = self.corner.take();
+        let pending_corner = self.contour.corner.take();
         match &*body {
             BlockBody::BeginPgm { unit, .. } => {
                 // Q113: the unit of the program (preassigned, TNC 410 user's manual "Preassigned
@@ -438,13 +447,13 @@ impl Interp {
                 if m.contains(&99) {
                     self.call_cycle(at)?;
                 }
-                self.m89 = m.contains(&89) || (self.m89 && !m.contains(&99));
+                self.calls_cycle.m89 = m.contains(&89) || (self.calls_cycle.m89 && !m.contains(&99));
                 self.end_m(m);
             }
             // A new cycle definition ends a modal M89 call (iTNC 530 cycle manual: "define a new
             // cycle with CYCL DEF"; DOMAIN.md §11); a CYCL CALL does not (the TNC 306/406 rule).
             BlockBody::CycleDef(d) => {
-                self.m89 = false;
+                self.calls_cycle.m89 = false;
                 self.cycle_def(at, d)?;
             }
             BlockBody::CyclCall { m } => {
@@ -477,8 +486,8 @@ impl Interp {
             | BlockBody::QsAssign { .. }
             | BlockBody::TouchProbe(_) => self.program_data(at, body)?,
             BlockBody::Cc(m) => {
-                let last = self.geom_start.unwrap_or(self.programmed());
-                self.pole = Some(self.pole_of(&m.axes, last)?);
+                let last = self.contour.geom_start.unwrap_or(self.programmed());
+                self.contour.pole = Some(self.pole_of(&m.axes, last)?);
                 at.note(|| {
                     Text::new(
                         "CC: Kreismittelpunkt/Pol (keine Bewegung)",
@@ -500,7 +509,7 @@ impl Interp {
             BlockBody::CyclCallPat { feed, m } => self.call_pattern(at, feed.as_ref(), m)?,
             BlockBody::CyclCallPos(l) => self.call_pos(at, l)?,
             BlockBody::PatternDef(items) => {
-                self.pattern = Some(at.block);
+                self.calls_cycle.pattern = Some(at.block);
                 let n = items.len();
                 at.note(|| {
                     Text::owned(
@@ -512,7 +521,7 @@ impl Interp {
             BlockBody::FnMath(f) => self.fn_math(f)?,
             BlockBody::FnJump(j) => self.fn_jump(at.cx, j)?,
             BlockBody::CycleDefOld(d) => {
-                self.m89 &= d.sub != 0;
+                self.calls_cycle.m89 &= d.sub != 0;
                 self.old_cycle(at, d)?;
             }
             BlockBody::TransDatum { axes } => self.datum(axes)?,

@@ -62,7 +62,7 @@ fn arc_piece(plane: &WorkPlane, start: DVec3, end: DVec3, centre: DVec3, sweep: 
 impl Interp {
     /// The compensation, if the tool still stands where the last compensated block left it.
     pub(super) fn active_comp(&self) -> Option<Comp> {
-        self.comp.filter(|c| c.centre == self.pos_i)
+        self.contour.comp.filter(|c| c.centre == self.pos_i)
     }
 
     /// The programmed position: the contour point while compensating, else the tool centre.
@@ -79,10 +79,10 @@ impl Interp {
         start: DVec3,
         tangent: Option<DVec3>,
     ) -> Option<(Elem, Option<RadiusComp>)> {
-        if let Some(Ok(p)) = &self.corner {
+        if let Some(Ok(p)) = &self.contour.corner {
             return Some((p.piece, None));
         }
-        let mut pole = self.pole;
+        let mut pole = self.contour.pole;
         for b in cx.program.blocks.iter().skip(idx + 1) {
             match &*b.body() {
                 // Blocks that do not move the tool are looked over.
@@ -145,11 +145,11 @@ impl Interp {
                 self.compensated(at, &elem, s, next.as_ref(), rate)?;
             }
         }
-        self.comp = side.map(|s| Comp { side: s, at: elem.end, centre: self.pos_i });
+        self.contour.comp = side.map(|s| Comp { side: s, at: elem.end, centre: self.pos_i });
         // A CT after it continues the contour, not the tool centre path (which may end before
         // the contour's end, at an inside corner).
         if let Some(t) = elem.tangent(&plane, true) {
-            self.tangent = Some(t);
+            self.contour.tangent = Some(t);
         }
         Ok(())
     }
@@ -254,9 +254,9 @@ impl Interp {
                     .then(|| n.tail_from(&plane, n.fraction_of(&plane, piece.end), piece.end))
             });
         self.compensated(at, piece, c.side, next.as_ref(), rate)?;
-        self.comp = Some(Comp { side: c.side, at: piece.end, centre: self.pos_i });
+        self.contour.comp = Some(Comp { side: c.side, at: piece.end, centre: self.pos_i });
         if let Some(t) = piece.tangent(&plane, true) {
-            self.tangent = Some(t);
+            self.contour.tangent = Some(t);
         }
         Ok(true)
     }
@@ -294,7 +294,7 @@ impl Interp {
         let fail = |reason| SimErrorCode::ApprDep { word: "APPR", kind, reason };
         let s = a.comp.and_then(side_of).ok_or(fail(ApprDepReason::NoCompensation))?;
         let plane = self.work_plane();
-        self.geom_start = None;
+        self.contour.geom_start = None;
         let pa = self.target(&a.axes, self.programmed())?;
         let t = self
             .next_element(at.cx, at.block, pa, None)
@@ -347,7 +347,7 @@ impl Interp {
         for p in &pieces {
             self.follow(at, p, rate)?;
         }
-        self.comp = Some(Comp { side: s, at: pa, centre: self.pos_i });
+        self.contour.comp = Some(Comp { side: s, at: pa, centre: self.pos_i });
         self.end_m(&a.m);
         Ok(())
     }
@@ -361,7 +361,7 @@ impl Interp {
         let kind = a.kind.as_str();
         let fail = |reason| SimErrorCode::ApprDep { word: "DEP", kind, reason };
         let c = self.active_comp().ok_or(fail(ApprDepReason::NoCompensation))?;
-        let t = self.tangent.ok_or(fail(ApprDepReason::NoContourBefore))?;
+        let t = self.contour.tangent.ok_or(fail(ApprDepReason::NoContourBefore))?;
         let plane = self.work_plane();
         let s = c.side;
         let left = plane.normal.cross(t);
@@ -399,7 +399,7 @@ impl Interp {
         for p in &pieces {
             self.follow(at, p, rate)?;
         }
-        self.comp = None;
+        self.contour.comp = None;
         self.end_m(&a.m);
         Ok(())
     }

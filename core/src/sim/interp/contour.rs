@@ -100,7 +100,7 @@ impl Interp {
     /// The plane a contour block moves in: its pole's for `C`, `LP` and `CP`, else the working
     /// plane.
     fn plane_of(&self, body: &BlockBody) -> WorkPlane {
-        match (body, self.pole) {
+        match (body, self.contour.pole) {
             (BlockBody::C(_) | BlockBody::Lp(_) | BlockBody::Cp(_), Some(p)) => p.plane,
             _ => self.work_plane(),
         }
@@ -108,7 +108,7 @@ impl Interp {
 
     /// The direction of an arc: DR if written, else the last one ([`unconfirmed::ARC_DIRECTION_WITHOUT_DR`]).
     fn direction(&self, dr: Option<Sign>) -> f64 {
-        dr.map(sign_of).or(self.last_dr).unwrap_or(unconfirmed::ARC_DIRECTION_WITHOUT_DR)
+        dr.map(sign_of).or(self.contour.last_dr).unwrap_or(unconfirmed::ARC_DIRECTION_WITHOUT_DR)
     }
 
     /// The element a contour block describes from the geometric start `start`, with the pole
@@ -221,10 +221,12 @@ impl Interp {
         self.m_functions(at, &m.m);
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
-        let geometric = self.geom_start.take().unwrap_or(here);
-        let Some(elem) = self.element(body, geometric, self.pole, self.tangent)? else { return Ok(()) };
+        let geometric = self.contour.geom_start.take().unwrap_or(here);
+        let Some(elem) = self.element(body, geometric, self.contour.pole, self.contour.tangent)? else {
+            return Ok(());
+        };
         if let Some(d) = m.direction {
-            self.last_dr = Some(sign_of(d));
+            self.contour.last_dr = Some(sign_of(d));
         }
         let plane = self.plane_of(body);
         if plane != self.work_plane() {
@@ -270,7 +272,7 @@ impl Interp {
             return Err(SimErrorCode::CompensationOffPlane);
         }
         self.follow_in(at, &elem, rate, plane)?;
-        self.tangent = None;
+        self.contour.tangent = None;
         if m.m.contains(&99) {
             self.call_cycle(at)?;
         }
@@ -294,7 +296,7 @@ impl Interp {
         let plane = self.work_plane();
         let corner = elem.end;
         // The next contour element, from the corner; a CC in between sets its pole.
-        let (mut pole, mut next) = (self.pole, None);
+        let (mut pole, mut next) = (self.contour.pole, None);
         for b in blocks.iter().skip(idx + 2) {
             match &*b.body() {
                 BlockBody::Empty | BlockBody::Structure { .. } => {}
@@ -314,16 +316,16 @@ impl Interp {
             }
         }
         let Some(next) = next else {
-            self.corner = Some(Err(SimErrorCode::CornerWithoutContour { word }));
+            self.contour.corner = Some(Err(SimErrorCode::CornerWithoutContour { word }));
             return Ok(elem);
         };
         match arc::corner(&plane, &elem, &next, kind) {
             Ok((head, piece, _)) => {
-                self.corner = Some(Ok(PendingCorner { piece, corner }));
+                self.contour.corner = Some(Ok(PendingCorner { piece, corner }));
                 Ok(head)
             }
             Err(e) => {
-                self.corner = Some(Err(geo_error(word, e, value)));
+                self.contour.corner = Some(Err(geo_error(word, e, value)));
                 Ok(elem)
             }
         }
@@ -355,7 +357,7 @@ impl Interp {
         if !self.compensated_piece(at, &p.piece, p.corner, rate)? {
             self.follow(at, &p.piece, rate)?;
         }
-        self.geom_start = Some(p.corner);
+        self.contour.geom_start = Some(p.corner);
         Ok(())
     }
 
@@ -389,7 +391,7 @@ impl Interp {
         self.go_along(at, kind, to, rate, length, path)?;
         self.pos_i = elem.end;
         if let Some(t) = elem.tangent(&plane, true) {
-            self.tangent = Some(t);
+            self.contour.tangent = Some(t);
         }
         Ok(())
     }

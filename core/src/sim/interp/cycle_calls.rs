@@ -80,7 +80,7 @@ impl Interp {
             }),
             (19, _) => self.cycle19(at, words)?,
             (n, 0) => {
-                self.cycle = Some(StoredCycle::Old(n));
+                self.calls_cycle.cycle = Some(StoredCycle::Old(n));
                 at.note(|| {
                     Text::owned(
                         format!("Zyklus {n} (alte Form) definiert"),
@@ -99,7 +99,7 @@ impl Interp {
         if matches!(d.number, 220 | 221) {
             return self.pattern_cycle(at, d);
         }
-        self.cycle = Some(StoredCycle::New(at.block));
+        self.calls_cycle.cycle = Some(StoredCycle::New(at.block));
         let n = d.number;
         at.note(|| {
             Text::owned(
@@ -163,7 +163,7 @@ impl Interp {
     /// The stored machining cycle's parameters; `None` (with a note) for an old-style cycle,
     /// which is not simulated.
     fn stored_params(&self, at: &mut At<'_, '_>) -> R<Option<Params>> {
-        match self.cycle {
+        match self.calls_cycle.cycle {
             None => Err(SimErrorCode::NoCycle),
             Some(StoredCycle::Old(n)) => {
                 at.note(|| {
@@ -222,16 +222,16 @@ impl Interp {
     /// manual, DOMAIN.md §11).
     pub(super) fn modal_call(&mut self, at: &mut At<'_, '_>, line: &Line) -> R<()> {
         if line.m.contains(&99) {
-            self.m89 = false;
+            self.calls_cycle.m89 = false;
             return Ok(());
         }
         if line.m.contains(&89) {
-            self.m89 = true;
+            self.calls_cycle.m89 = true;
             if !unconfirmed::M89_CALLS_AT_ITS_BLOCK {
                 return Ok(());
             }
         }
-        if self.m89 && !self.ended && line.axes.iter().any(|w| linear_index(w.axis).is_some()) {
+        if self.calls_cycle.m89 && !self.ended && line.axes.iter().any(|w| linear_index(w.axis).is_some()) {
             self.call_cycle(at)?;
         }
         Ok(())
@@ -322,6 +322,7 @@ impl Interp {
     ) -> R<()> {
         self.m_functions(at, m);
         let items = match self
+            .calls_cycle
             .pattern
             .and_then(|b| at.cx.program.blocks.get(b))
             .and_then(crate::Block::stored_body)

@@ -212,7 +212,7 @@ impl Interp {
         self.check_rotary(at.cx, rot)?;
         // A straight contour element in the working plane: it ends at the tangent point when a
         // RND/CHF follows, and leaves its direction for a CT.
-        self.geom_start = None;
+        self.contour.geom_start = None;
         if lin_prog && !m91 && !rot_prog {
             let elem = self.before_corner(at.cx, at.block, Elem::line(self.programmed(), p))?;
             if self.active_comp().is_some() || matches!(line.comp, Some(RadiusComp::Rl | RadiusComp::Rr)) {
@@ -226,12 +226,12 @@ impl Interp {
             }
             p = elem.end;
             if let Some(t) = elem.tangent(&self.work_plane(), true) {
-                self.tangent = Some(t);
+                self.contour.tangent = Some(t);
             }
         }
         // Any other move ends the compensation.
         if lin_prog || rot_prog {
-            self.comp = None;
+            self.contour.comp = None;
         }
         // TCPM: the tip keeps the programmed point while the rotary axes move, whether or not
         // the block also programs linear axes.
