@@ -144,12 +144,8 @@ pub(crate) struct Interp {
     /// `FUNCTION TCPM … AXIS SPAT` is active: `A`, `B`, `C` in positioning blocks are the spatial
     /// angles SPA, SPB, SPC (modal; `None` before the first positioning block since it was switched on).
     spat: Option<[Option<f64>; 3]>,
-    /// The bodies every motion is checked against ([`super::collision`]), for this tool and blank.
-    bodies: Option<Arc<Bodies>>,
-    /// What the check knows from the motions before ([`Clearances`]).
-    clearances: Clearances,
-    /// Re-running steps that ran once without a collision ([`Interp::replaying`]): no bodies.
-    replay: bool,
+    /// The collision check's state ([`Checking`]).
+    check: Checking,
     /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
     unit: Unit,
 }
@@ -170,6 +166,17 @@ struct Contour {
     geom_start: Option<DVec3>,
     /// The tool radius compensation RL/RR (`None`: R0).
     comp: Option<compensation::Comp>,
+}
+
+/// What the collision check ([`super::collision`]) carries from block to block.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct Checking {
+    /// The bodies every motion is checked against, for this tool and blank.
+    bodies: Option<Arc<Bodies>>,
+    /// What the check knows from the motions before ([`Clearances`]).
+    clearances: Clearances,
+    /// Re-running steps that ran once without a collision ([`Interp::replaying`]): no bodies.
+    replay: bool,
 }
 
 /// The stored cycle and what calls it.
@@ -310,9 +317,7 @@ impl Interp {
             calls_cycle: CycleCalls::default(),
             tcpm: false,
             spat: None,
-            bodies: None,
-            clearances: Clearances::default(),
-            replay: false,
+            check: Checking::default(),
             unit: Unit::Mm,
         };
         it.rebuild_bodies(machine);

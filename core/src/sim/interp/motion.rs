@@ -84,7 +84,7 @@ impl Interp {
     ) -> R<()> {
         let moves = target.linear != self.axes.linear || rotary_delta != [0.0; 2];
         at.positioned |= moves && kind.is_positioning();
-        if moves && (at.rec.is_some() || self.bodies.is_some()) {
+        if moves && (at.rec.is_some() || self.check.bodies.is_some()) {
             let lin = (target.linear - self.axes.linear).length();
             let rot = rotary_delta[0].abs().max(rotary_delta[1].abs());
             let duration = duration(at.cx, self.unit, rate, lin, rot);
@@ -97,9 +97,9 @@ impl Interp {
 
     /// Checks `seg` for collisions, then records it when a full record is asked for.
     fn record(&mut self, at: &mut At<'_, '_>, seg: Segment) -> R<()> {
-        let mut clear = std::mem::take(&mut self.clearances);
+        let mut clear = std::mem::take(&mut self.check.clearances);
         let collided = self.collided(&seg, &mut clear);
-        self.clearances = clear;
+        self.check.clearances = clear;
         if let Some(c) = collided {
             return Err(SimErrorCode::Collision(Box::new(c)));
         }
@@ -137,7 +137,7 @@ impl Interp {
         path: SegmentPath,
     ) -> R<()> {
         at.positioned |= length > 0.0 && kind.is_positioning();
-        if length > 0.0 && (at.rec.is_some() || self.bodies.is_some()) {
+        if length > 0.0 && (at.rec.is_some() || self.check.bodies.is_some()) {
             let duration = duration(at.cx, self.unit, rate, length, 0.0);
             let seg = self.segment(at.block, kind, target, [0.0; 2], duration, path);
             self.record(at, seg)?;

@@ -8,26 +8,27 @@ use super::*;
 impl Interp {
     /// The collision bodies for the machine, the active tool and the blank.
     pub(super) fn rebuild_bodies(&mut self, machine: &Machine) {
-        if self.replay {
+        if self.check.replay {
             return;
         }
-        self.bodies = Bodies::new(machine, &self.kin, self.tool.radius, self.blank.as_ref()).map(Arc::new);
-        self.clearances.forget();
+        self.check.bodies =
+            Bodies::new(machine, &self.kin, self.tool.radius, self.blank.as_ref()).map(Arc::new);
+        self.check.clearances.forget();
     }
 
     /// This interpreter for re-running steps of a run that executed them (a state, a listing,
     /// the stock's plan): they ran once without a collision and run the same again (the
     /// interpreter is deterministic), so their motions are not checked a second time.
     pub(crate) fn replaying(mut self) -> Interp {
-        self.replay = true;
-        self.bodies = None;
+        self.check.replay = true;
+        self.check.bodies = None;
         self
     }
 
     /// The collision error of `seg` if two bodies touch along it (`clear`: what is known from
     /// the motions before).
     pub(super) fn collided(&self, seg: &Segment, clear: &mut Clearances) -> Option<Collision> {
-        let bodies = self.bodies.as_deref()?;
+        let bodies = self.check.bodies.as_deref()?;
         let c = bodies.first_contact(seg, clear)?;
         Some(Collision {
             a: bodies.name(c.a),
