@@ -127,8 +127,8 @@ pub(crate) struct Interp {
     q: BTreeMap<u32, f64>,
     /// `TOOL DEF n L… R…` of the program: length and radius (each if written) for `TOOL CALL n`.
     tool_defs: Vec<(ToolRef, Option<f64>, Option<f64>)>,
-    calls: Vec<usize>,
-    reps: Vec<(usize, u32)>,
+    /// The label calls under way ([`LabelCalls`]).
+    labels: LabelCalls,
     kin: Kin,
     /// I-CS → linear axes as the control computes it, for the current rotary axes.
     map: Affine,
@@ -139,11 +139,8 @@ pub(crate) struct Interp {
     contour: Contour,
     /// What calls the stored cycle ([`CycleCalls`]).
     calls_cycle: CycleCalls,
-    /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
-    tcpm: bool,
-    /// `FUNCTION TCPM … AXIS SPAT` is active: `A`, `B`, `C` in positioning blocks are the spatial
-    /// angles SPA, SPB, SPC (modal; `None` before the first positioning block since it was switched on).
-    spat: Option<[Option<f64>; 3]>,
+    /// TCPM and how it reads rotary words ([`Tcpm`]).
+    tcpm: Tcpm,
     /// The collision check's state ([`Checking`]).
     check: Checking,
     /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
@@ -177,6 +174,24 @@ struct Checking {
     clearances: Clearances,
     /// Re-running steps that ran once without a collision ([`Interp::replaying`]): no bodies.
     replay: bool,
+}
+
+/// `CALL LBL` under way: where each call returns to, and the repeats (`CALL LBL … REP`) left
+/// per calling block.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct LabelCalls {
+    calls: Vec<usize>,
+    reps: Vec<(usize, u32)>,
+}
+
+/// The tool centre point management.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct Tcpm {
+    /// `M128` is active (TCPM): the tool tip keeps the programmed point while rotary axes move.
+    on: bool,
+    /// `FUNCTION TCPM … AXIS SPAT` is active: `A`, `B`, `C` in positioning blocks are the spatial
+    /// angles SPA, SPB, SPC (modal; `None` before the first positioning block since it was switched on).
+    spat: Option<[Option<f64>; 3]>,
 }
 
 /// The stored cycle and what calls it.
@@ -307,16 +322,14 @@ impl Interp {
             plane: None,
             q: BTreeMap::new(),
             tool_defs: Vec::new(),
-            calls: Vec::new(),
-            reps: Vec::new(),
+            labels: LabelCalls::default(),
             kin,
             map: Affine::IDENTITY,
             m126: false,
             c7: None,
             contour: Contour::default(),
             calls_cycle: CycleCalls::default(),
-            tcpm: false,
-            spat: None,
+            tcpm: Tcpm::default(),
             check: Checking::default(),
             unit: Unit::Mm,
         };
@@ -340,7 +353,7 @@ impl Interp {
     /// The linear axes follow the rotary axes: with a tilt, and always with TCPM (M128), which
     /// is the kinematic transformation itself (DOMAIN.md §6).
     fn compensating(&self) -> bool {
-        self.tcpm || self.tf.tilt.is_some() || !unconfirmed::COMPENSATION_ONLY_WHEN_TILTED
+        self.tcpm.on || self.tf.tilt.is_some() || !unconfirmed::COMPENSATION_ONLY_WHEN_TILTED
     }
 
     /// W-CS → linear axes as the control computes it for rotary axes `rotary`.
@@ -550,7 +563,7 @@ impl Interp {
             BlockBody::FunctionResetTcpm => self.function_reset_tcpm(at),
             BlockBody::Lbl(l) => {
                 if *l == Label::Number(0)
-                    && let Some(ret) = self.calls.pop()
+                    && let Some(ret) = self.labels.calls.pop()
                 {
                     self.pc = ret;
                 }

@@ -30,23 +30,23 @@ impl Interp {
         let target = self.label_index(cx, label)?;
         match rep {
             Some(m) if unconfirmed::REP_IS_SECTION_REPEAT => {
-                if let Some(k) = self.reps.iter().position(|(b, _)| *b == idx) {
-                    if self.reps[k].1 > 0 {
-                        self.reps[k].1 -= 1;
+                if let Some(k) = self.labels.reps.iter().position(|(b, _)| *b == idx) {
+                    if self.labels.reps[k].1 > 0 {
+                        self.labels.reps[k].1 -= 1;
                         self.pc = target;
                     } else {
-                        self.reps.remove(k);
+                        self.labels.reps.remove(k);
                     }
                 } else if m > 0 {
-                    self.reps.push((idx, m - 1));
+                    self.labels.reps.push((idx, m - 1));
                     self.pc = target;
                 }
             }
             _ => {
-                if self.calls.len() >= unconfirmed::MAX_CALL_DEPTH {
+                if self.labels.calls.len() >= unconfirmed::MAX_CALL_DEPTH {
                     return Err(SimErrorCode::CallDepth { depth: unconfirmed::MAX_CALL_DEPTH });
                 }
-                self.calls.push(idx + 1);
+                self.labels.calls.push(idx + 1);
                 self.pc = target;
             }
         }

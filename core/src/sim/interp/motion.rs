@@ -190,7 +190,7 @@ impl Interp {
                 lin_prog = true;
                 let slot = if m91 { &mut l[i] } else { &mut p[i] };
                 *slot = if w.incremental { *slot + v } else { v };
-            } else if let Some(ra) = rotary_of(w.axis).filter(|_| self.spat.is_some()) {
+            } else if let Some(ra) = rotary_of(w.axis).filter(|_| self.tcpm.spat.is_some()) {
                 // A, B, C in declaration order: SPA, SPB, SPC.
                 spatial[ra as usize] = Some((self.value(&w.value)?, w.incremental));
                 rot_prog = true;
@@ -206,7 +206,7 @@ impl Interp {
                 return Err(SimErrorCode::AxisNotOnMachine { axis: letter(w.axis) });
             }
         }
-        if rot_prog && self.spat.is_some() {
+        if rot_prog && self.tcpm.spat.is_some() {
             rot = self.spatial_tool_axis(at, spatial)?;
         }
         self.check_rotary(at.cx, rot)?;
@@ -235,7 +235,7 @@ impl Interp {
         }
         // TCPM: the tip keeps the programmed point while the rotary axes move, whether or not
         // the block also programs linear axes.
-        let tcpm = self.tcpm && rot_prog && !m91;
+        let tcpm = self.tcpm.on && rot_prog && !m91;
         if (lin_prog && !m91) || tcpm {
             l = if rot_prog {
                 self.wcs_to_linear(rot).after(&self.tf.ics_to_wcs()).apply(p)

@@ -35,10 +35,10 @@ impl Interp {
     /// Off also ends `AXIS SPAT`.
     pub(super) fn set_tcpm(&mut self, on: bool) {
         if !on {
-            self.spat = None;
+            self.tcpm.spat = None;
         }
-        if on != self.tcpm {
-            self.tcpm = on;
+        if on != self.tcpm.on {
+            self.tcpm.on = on;
             self.sync_pos();
         }
     }
@@ -58,7 +58,7 @@ impl Interp {
     /// `AXIS SPAT` as spatial angles ([`Self::spatial_tool_axis`]), each block's anew.
     pub(super) fn function_tcpm(&mut self, at: &mut At<'_, '_>, t: Tcpm) {
         self.set_tcpm(true);
-        self.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
+        self.tcpm.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
         at.note(|| match t.axis {
             TcpmAxis::Pos => switched_on("FUNCTION TCPM"),
             TcpmAxis::Spat => {
@@ -84,7 +84,7 @@ impl Interp {
         at: &mut At<'_, '_>,
         written: [Option<(f64, bool)>; 3],
     ) -> R<[f64; 2]> {
-        let Some(modal) = self.spat.as_mut() else { return Ok(self.axes.rotary) };
+        let Some(modal) = self.tcpm.spat.as_mut() else { return Ok(self.axes.rotary) };
         let missing = (0..3).filter(|&k| modal[k].is_none() && written[k].is_none()).count();
         for (slot, w) in modal.iter_mut().zip(written) {
             if let Some((v, incremental)) = w {
@@ -140,7 +140,7 @@ impl Interp {
     /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off
     /// (unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92).
     pub(super) fn tcpm_reset_before(&mut self, word: &'static str) -> R<()> {
-        if self.tcpm && unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92 {
+        if self.tcpm.on && unconfirmed::TCPM_REFUSES_TOOL_CALL_M91_M92 {
             return Err(SimErrorCode::TcpmActive { word });
         }
         self.set_tcpm(false);
