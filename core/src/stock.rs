@@ -209,6 +209,22 @@ pub(crate) struct RowAt {
     j: usize,
 }
 
+/// Which part of a cut [`Stock::cut_part`] makes: from row `start` on, until its work
+/// ([`Removal::work`]) reached `budget`, the tiles it changes stamped `stamp`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Part {
+    pub start: RowAt,
+    pub budget: usize,
+    pub stamp: Stamp,
+}
+
+impl Part {
+    /// The whole cut at once, stamped `stamp`.
+    pub fn whole(stamp: Stamp) -> Part {
+        Part { start: RowAt::default(), budget: usize::MAX, stamp }
+    }
+}
+
 /// Why a blank gives no stock.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StockError {
@@ -495,26 +511,23 @@ impl Stock {
     /// go through [`Cutting`].
     #[cfg(test)]
     pub(crate) fn cut(&mut self, cutter: &Cutter, axis: DVec3, p0: DVec3, p1: DVec3) -> Removal {
-        self.cut_part(cutter, axis, p0, p1, RowAt::default(), usize::MAX, Stamp::fresh()).0
+        self.cut_part(cutter, axis, p0, p1, Part::whole(Stamp::fresh())).0
     }
 
     /// Removes the volume `cutter` sweeps moving straight from tip `p0` to tip `p1` with tool
-    /// axis `axis` (all W-CS), from row `start` on, stopping after the row in which its work
-    /// ([`Removal::work`]) reached `budget`: returns what was removed and the row to go on from
+    /// axis `axis` (all W-CS), the `part` of it from its row on, stopping after the row in which
+    /// its work reached the part's budget: returns what was removed and the row to go on from
     /// (`None`: done). Each ray's result depends only on that ray's material and the sweep, so
-    /// a cut made in parts leaves exactly the stock of the cut made at once. Tiles it changes
-    /// get `stamp`.
-    #[allow(clippy::too_many_arguments)]
+    /// a cut made in parts leaves exactly the stock of the cut made at once.
     pub(crate) fn cut_part(
         &mut self,
         cutter: &Cutter,
         axis: DVec3,
         p0: DVec3,
         p1: DVec3,
-        start: RowAt,
-        budget: usize,
-        stamp: Stamp,
+        part: Part,
     ) -> (Removal, Option<RowAt>) {
+        let Part { start, budget, stamp } = part;
         let mut out = Removal::default();
         if cutter.pieces.is_empty() || !(p0.is_finite() && p1.is_finite() && axis.is_finite()) {
             return (out, None);

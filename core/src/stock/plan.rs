@@ -8,7 +8,7 @@ use crate::Text;
 use crate::ast::Program;
 use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, StepMotion, ToolState};
 
-use super::{Cutter, Removal, RowAt, Stamp, Stock, StockError};
+use super::{Cutter, Part, Removal, RowAt, Stamp, Stock, StockError};
 
 mod collisions;
 
@@ -416,15 +416,8 @@ impl Cutting {
                     // The whole cut's stamp on every part: no one sees the stock before it is
                     // done (the pass's cursor is its own).
                     let start = pass.cursor.partial.take().unwrap_or_default();
-                    let (r, rest) = stock.cut_part(
-                        &self.cutters[*cutter],
-                        *axis,
-                        *from,
-                        *to,
-                        start,
-                        rays - spent,
-                        Stamp::done(self.run, k),
-                    );
+                    let part = Part { start, budget: rays - spent, stamp: Stamp::done(self.run, k) };
+                    let (r, rest) = stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, part);
                     spent += r.work().max(1);
                     if r.depth > 0.0 {
                         pass.cursor.version += 1;
@@ -515,9 +508,8 @@ impl Cutting {
             }
             Action::Cut { cutter, axis, from, to, .. } => {
                 let Some(stock) = cursor.stock.as_mut() else { return Applied::Removed(Removal::default()) };
-                let whole = (RowAt::default(), usize::MAX, Stamp::done(self.run, k));
-                let (r, _) =
-                    stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, whole.0, whole.1, whole.2);
+                let whole = Part::whole(Stamp::done(self.run, k));
+                let (r, _) = stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, whole);
                 if r.depth > 0.0 {
                     cursor.version += 1;
                 }
@@ -579,15 +571,8 @@ impl Cutting {
                     // A part that may not finish the cut stamps afresh; the whole cut's stamp
                     // goes on every tile it changed once it is done.
                     let stamp = Stamp::fresh();
-                    let (r, rest) = stock.cut_part(
-                        &self.cutters[*cutter],
-                        *axis,
-                        *from,
-                        *to,
-                        start,
-                        budget - spent,
-                        stamp,
-                    );
+                    let part = Part { start, budget: budget - spent, stamp };
+                    let (r, rest) = stock.cut_part(&self.cutters[*cutter], *axis, *from, *to, part);
                     spent += r.work().max(1);
                     if r.depth > 0.0 {
                         cursor.version += 1;
