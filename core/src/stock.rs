@@ -666,7 +666,7 @@ impl Core {
             if start.y < y0 - r || start.y > y1 + r {
                 continue;
             }
-            if let Some((lo, hi)) = sweep::capsule_interval(start - from, DVec3::X, along, r) {
+            if let Some((lo, hi)) = sweep::flat_capsule_interval(start - from, DVec3::X, along, r) {
                 out = Some(out.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
             }
         }

@@ -56,7 +56,7 @@ const TOL_QUAD: f64 = 1e-6;
 /// One convex piece of revolution in the tool frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Piece {
-    /// A ball: its sweep is a capsule, cut in closed form ([`capsule_interval`]).
+    /// A ball: its sweep is a capsule, cut in closed form ([`Capsule`]).
     ball: bool,
     /// Quadric `x² + y² + s·z² + 2·g·z + h ≤ 0`.
     s: f64,
@@ -415,7 +415,7 @@ impl Shadow {
     fn new(u: DVec3, w: DVec3, r: f64, min: f64) -> Shadow {
         let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
         let k = flat(u).length();
-        Shadow { capsule: (k > min).then(|| (Capsule::new(flat(u) / k, -flat(w), r), 1.0 / k)), r }
+        Shadow { capsule: (k > min).then(|| (Capsule::flat(flat(u) / k, -flat(w), r), 1.0 / k)), r }
     }
 
     /// The λ range within the radius (`Some(None)`: never; `None`: along the axis).
@@ -428,10 +428,9 @@ impl Shadow {
 }
 
 /// λ range where the line `o + λ·u` (`u` a unit vector) runs within `r` of the segment from the
-/// origin to `m`: a ray against a capsule, the sweep of a ball. In 2D (third components 0) the
-/// same for a disc swept along a segment.
-pub(crate) fn capsule_interval(o: DVec3, u: DVec3, m: DVec3, r: f64) -> Option<(f64, f64)> {
-    Capsule::new(u, m, r).interval(o)
+/// origin to `m`, all in the plane z = 0: a disc swept along a segment ([`Capsule::flat`]).
+pub(crate) fn flat_capsule_interval(o: DVec3, u: DVec3, m: DVec3, r: f64) -> Option<(f64, f64)> {
+    Capsule::flat(u, m, r).interval(o)
 }
 
 /// The points within `r` of the segment from the origin to `m`, met by lines along the unit
@@ -454,6 +453,9 @@ struct Capsule {
     /// 1 / (mm − k²), the line's quadratic coefficient against the infinite cylinder (times
     /// mm); `None`: a line along the segment or a ball standing (the cylinder adds nothing).
     inv_a: Option<f64>,
+    /// In the plane (every vector's third component 0), the square root of that quadratic's
+    /// discriminant: the same for every line (see [`Capsule::flat`]).
+    flat_root: Option<f64>,
 }
 
 impl Capsule {
@@ -461,13 +463,23 @@ impl Capsule {
         let (mm, k) = (m.length_squared(), m.dot(u));
         let a = mm - k * k;
         let inv_a = (mm > 0.0 && a > 1e-12 * mm).then(|| 1.0 / a);
-        Capsule { u, m, r2: r * r, mm, k, a, inv_a }
+        Capsule { u, m, r2: r * r, mm, k, a, inv_a, flat_root: None }
+    }
+
+    /// A disc of radius `r` swept from the origin to `m`, met by lines along `u`, all in the
+    /// plane z = 0 (the lines' points too). There the distance to the segment's line is linear
+    /// along a line: with Lagrange's identity b = (u×m)·(o×m) and mm·|o|² − p² = (o×m)², the
+    /// discriminant b² − a·c is (u×m)²·r²·mm whatever `o`, so its root is worked out once.
+    fn flat(u: DVec3, m: DVec3, r: f64) -> Capsule {
+        let c = Capsule::new(u, m, r);
+        let cross = u.x * m.y - u.y * m.x;
+        Capsule { flat_root: Some(cross.abs() * r * c.mm.sqrt()), ..c }
     }
 
     // Inlined into each caller: a call returning the pair through memory cost a sixth of a cut.
     #[inline(always)]
     fn interval(&self, o: DVec3) -> Option<(f64, f64)> {
-        let Capsule { u, m, r2, mm, k, a, inv_a } = *self;
+        let Capsule { u, m, r2, mm, k, a, inv_a, flat_root } = *self;
         // A ball at centre c: |o − c + λu|² = r², λ² + 2λ·u·(o − c) + |o − c|² − r² = 0.
         let ball = |oc: DVec3| {
             let b = u.dot(oc);
@@ -485,12 +497,17 @@ impl Capsule {
         };
         let p = m.dot(o);
         let b = mm * u.dot(o) - p * k;
-        let c = mm * o.length_squared() - p * p - r2 * mm;
-        let h = b * b - a * c;
-        if h < 0.0 {
-            return None;
-        }
-        let s = h.sqrt();
+        let s = match flat_root {
+            Some(s) => s,
+            None => {
+                let c = mm * o.length_squared() - p * p - r2 * mm;
+                let h = b * b - a * c;
+                if h < 0.0 {
+                    return None;
+                }
+                h.sqrt()
+            }
+        };
         let (from, to) = ((-b - s) * inv_a, (-b + s) * inv_a);
         let (at_from, at_to) = (p + from * k, p + to * k);
         let start = if at_from < 0.0 || at_to < 0.0 { Some(ball(o)?) } else { None };

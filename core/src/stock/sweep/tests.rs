@@ -135,6 +135,26 @@ fn a_swept_ball_in_closed_form_agrees_with_the_general_enumeration() {
     assert!(hits > 3_000, "{hits}");
 }
 
+/// In the plane the disc's sweep with its root worked out once agrees with the capsule's
+/// general quadratic (the same lines, the third components 0).
+#[test]
+fn a_flat_capsule_agrees_with_the_general_one() {
+    let mut rng = Rng(0xF1A7_CA95);
+    let flat = |v: DVec3| DVec3::new(v.x, v.y, 0.0);
+    let mut hits = 0;
+    for _ in 0..20_000 {
+        let o = flat(vector(&mut rng, 12.0));
+        let u = flat(vector(&mut rng, 1.0)).normalize_or(DVec3::X);
+        let size = if rng.below(2) == 0 { 0.05 } else { 8.0 };
+        let m = flat(vector(&mut rng, size));
+        let r = uniform(&mut rng, 0.5, 6.0);
+        let case = format!("{o} {u} {m} {r}");
+        hits +=
+            usize::from(agree(Capsule::flat(u, m, r).interval(o), Capsule::new(u, m, r).interval(o), &case));
+    }
+    assert!(hits > 3_000, "{hits}");
+}
+
 /// A cylinder's sweep away from its ends (the 2D capsule) against the general enumeration.
 #[test]
 fn a_swept_cylinder_away_from_its_ends_agrees_with_the_general_enumeration() {
