@@ -6,7 +6,8 @@
 //! the time of a step back (`seek` from the end to block 13) and of the mesh of the final stock;
 //! then the real 5-axis CAM class (issue 32: `sample::cam_program`, 14,000 blocks, 592 KB, the
 //! tool tilted): the cut at 0.25 mm (budget ≤ 1 s) and the closed mesh `run --stock-stl` writes.
-//! Run: `scripts/bench.sh` or `cargo run --release -p schwenkbar-core --example bench_stock`.
+//! Run: `scripts/bench.sh` or `cargo run --release -p schwenkbar-core --example bench_stock`;
+//! with the argument `cam` only the CAM class (to profile it alone, e.g. under `perf record`).
 
 use std::time::Instant;
 
@@ -16,6 +17,10 @@ use schwenkbar_core::stock::{Cutting, StockCursor, StockMesh, StockOptions, Tile
 use schwenkbar_core::{parse, sample};
 
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("cam") {
+        cam_class();
+        return;
+    }
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../static/programs/musterprogramm1.h");
     let Ok(src) = std::fs::read_to_string(&path) else {
         eprintln!("{}: not readable", path.display());
