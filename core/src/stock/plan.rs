@@ -35,7 +35,8 @@ pub struct StockOptions {
     /// Ray spacing, mm.
     pub resolution: f64,
     /// Stocks kept along the run besides the blank, spaced evenly over the work of the cuts
-    /// (rays computed): stepping back re-cuts at most the work between two of them.
+    /// (rays computed): stepping back re-cuts at most the work between two of them. With any,
+    /// the final stock is kept too.
     pub checkpoints: usize,
 }
 
@@ -471,6 +472,12 @@ impl Cutting {
         let done = pass.cursor.applied >= self.events.len() && self.planning.is_none();
         if !done {
             self.pass = Some(pass);
+        } else if self.options.checkpoints > 0
+            && self.checkpoints.last().is_some_and(|(at, _)| *at < self.events.len())
+        {
+            // The pass's own stock is the final one: kept, the end (the CLI's STL, a jump to
+            // the last block) needs no second cut.
+            self.checkpoints.push((self.events.len(), pass.cursor.stock.take()));
         }
         done
     }
