@@ -12,11 +12,13 @@ primary. A build needs no browser and the same source gives
 the same bytes. SCHWENKBAR_SPLIT says how the lists are used:
 - unset: the lists split the pages (scripts/serve.sh, scripts/single-file.sh).
 - check (the test command, scripts/bundle.sh): each page is also opened in headless Chromium
-  (PROFILE below) and the build fails if its first screen ran a function its list does not hold
-  (that code would be fetched synchronously during the start); the split still follows the list.
+  (PROFILE below) and the build fails if its first screen ran functions its list does not hold
+  (that code would be fetched synchronously during the start), more than PROFILE_SLACK of them;
+  the split still follows the list.
   A build by another compiler than the list's only warns: its inlining makes other functions.
-- record: the lists are written anew from that profile (after a change to what the first screen
-  runs: `SCHWENKBAR_SPLIT=record bash scripts/bundle.sh`, then commit web/first_screen/).
+- record: the lists are written anew from that profile, keeping the names they held that the
+  build still has (after a change to what the first screen runs: `SCHWENKBAR_SPLIT=record bash
+  scripts/bundle.sh`, then commit web/first_screen/).
 
 PROFILE: each page's wasm gets a profile byte per function; a copy of DIST with those is served
 on 127.0.0.1 and opened in headless Chromium (scripts/chromium.py) until the page has started and
@@ -57,6 +59,9 @@ PAGES = {
 # The committed lists of the functions each page's first screen runs.
 LISTS = pathlib.Path(__file__).resolve().parent.parent / "web" / "first_screen"
 PROFILE_QUIET_S = 1.5
+# Two profiles of one build can differ by a function or two (what runs before the page is quiet
+# depends on timing): the check fails above this many functions the lists do not hold.
+PROFILE_SLACK = 3
 PROFILE_LIMIT_S = 20.0
 
 # The helper module: imports "j" "l" ([] -> []) and exports it as "l" (a JS function made a wasm
@@ -293,13 +298,18 @@ def main():
         compiler = subprocess.run(["rustc", "-V"], capture_output=True, text=True).stdout.strip()
         for page, ran in runs.items():
             have = sorted({n for n, r in zip(names[page], ran) if r and n is not None})
-            if mode == "record":
-                LISTS.mkdir(parents=True, exist_ok=True)
-                lines = [f"# {compiler}"] + have
-                list_file(page).write_text("".join(n + "\n" for n in lines), encoding="utf-8")
-                print(f"split: {list_file(page)}: {len(have)} functions recorded ({compiler})")
-                continue
             listed, recorded = read_list(page) or ([], None)
+            if mode == "record":
+                # What ran now, and what the list held before that this build still has: one
+                # profile can miss a function another run takes (its timing), so lists only
+                # drop names the code no longer has.
+                present = {n for n in names[page] if n is not None}
+                kept = set(have) | ({n for n in listed if n in present} if recorded == compiler else set())
+                LISTS.mkdir(parents=True, exist_ok=True)
+                lines = [f"# {compiler}"] + sorted(kept)
+                list_file(page).write_text("".join(n + "\n" for n in lines), encoding="utf-8")
+                print(f"split: {list_file(page)}: {len(kept)} functions recorded ({compiler})")
+                continue
             missing = [n for n in have if n not in set(listed)]
             if missing and recorded != compiler:
                 # Another compiler inlines otherwise: its functions are not the ones listed.
@@ -307,11 +317,15 @@ def main():
                       f"uses {compiler}: {len(missing)} functions its first screen ran are not "
                       "listed (fetched after the start); record the lists for this compiler",
                       file=sys.stderr)
-            elif missing:
+            elif len(missing) > PROFILE_SLACK:
                 failed = True
                 print(f"split: {page}'s first screen ran {len(missing)} functions {list_file(page)} does "
                       f"not hold, e.g. {missing[:3]}: record the lists anew "
                       "(SCHWENKBAR_SPLIT=record bash scripts/bundle.sh) and commit them", file=sys.stderr)
+            elif missing:
+                print(f"split: WARNING {page}'s first screen ran {len(missing)} functions "
+                      f"{list_file(page)} does not hold ({missing}): within the profile's slack of "
+                      f"{PROFILE_SLACK}; recording the lists anew adds them", file=sys.stderr)
         if failed:
             sys.exit(1)
     for page, (glue, wasm, _, _, _) in plan.items():
