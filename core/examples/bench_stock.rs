@@ -72,7 +72,7 @@ fn main() {
     let mb = |b: usize| b as f64 / (1024.0 * 1024.0);
     println!(
         "stock: Musterprogramm 1 cut at {} mm in {:.1} ms (budget ≤ 300 ms); one stock {:.1} MB, \
-         with {} checkpoints {:.1} MB (budget ≤ 64 MB)",
+         with {} checkpoints and the final stock {:.1} MB (budget ≤ 64 MB)",
         options.resolution,
         best * 1e3,
         mb(stock.memory_bytes()),
