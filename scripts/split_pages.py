@@ -310,7 +310,8 @@ def main():
                 list_file(page).write_text("".join(n + "\n" for n in lines), encoding="utf-8")
                 print(f"split: {list_file(page)}: {len(kept)} functions recorded ({compiler})")
                 continue
-            missing = [n for n in have if n not in set(listed)]
+            held = set(listed)
+            missing = [n for n in have if n not in held]
             if missing and recorded != compiler:
                 # Another compiler inlines otherwise: its functions are not the ones listed.
                 print(f"split: WARNING {list_file(page)} was recorded with {recorded}, this build "

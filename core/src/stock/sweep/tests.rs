@@ -226,6 +226,22 @@ fn a_pieces_bound_holds_its_sweep() {
     assert!(checked > 2_000, "{checked}");
 }
 
+/// A random tool of `tools` moving with a random frame, upright as often as tilted (the grids'
+/// rays then run along or square to the axis), short moves as CAM output has them as often as
+/// long ones, and a ray along a grid axis: (tool, frame, p0, p1, ray direction, ray origin).
+fn random_sweep<'t>(
+    rng: &mut Rng,
+    tools: &'t [Cutter],
+) -> (&'t Cutter, [DVec3; 3], DVec3, DVec3, DVec3, DVec3) {
+    let tool = &tools[rng.index(tools.len())];
+    let frame = if rng.below(2) == 0 { Z } else { frame_of(vector(rng, 1.0) + DVec3::new(0.0, 0.0, 1.5)) };
+    let p0 = vector(rng, 10.0);
+    let size = if rng.below(2) == 0 { 0.05 } else { 6.0 };
+    let p1 = p0 + vector(rng, size);
+    let dir = [DVec3::X, DVec3::Y, DVec3::Z][rng.index(3)];
+    (tool, frame, p0, p1, dir, vector(rng, 12.0))
+}
+
 /// Cutting a ray with the pieces that can reach its material removes exactly what cutting it
 /// with the whole sweep removes, for every tool shape, tilted, on random rays and material.
 #[test]
@@ -235,14 +251,7 @@ fn skipping_pieces_without_material_removes_the_same_material() {
     let tools = every_shape();
     let mut removed = 0;
     for _ in 0..20_000 {
-        let tool = &tools[rng.index(tools.len())];
-        // Upright as often as tilted: the grids' rays then run along or square to the axis.
-        let frame =
-            if rng.below(2) == 0 { Z } else { frame_of(vector(&mut rng, 1.0) + DVec3::new(0.0, 0.0, 1.5)) };
-        let p0 = vector(&mut rng, 10.0);
-        let p1 = p0 + vector(&mut rng, 6.0);
-        let dir = [DVec3::X, DVec3::Y, DVec3::Z][rng.index(3)];
-        let r0 = vector(&mut rng, 12.0);
+        let (tool, frame, p0, p1, dir, r0) = random_sweep(&mut rng, &tools);
         // One to three spans along the ray.
         let mut ends: Vec<f64> =
             (0..2 * (1 + rng.index(3))).map(|_| uniform(&mut rng, -30.0, 50.0)).collect();
@@ -280,15 +289,7 @@ fn a_sweeps_interval_agrees_with_every_piece_enumerated() {
     let tools = every_shape();
     let mut hits = 0;
     for _ in 0..20_000 {
-        let tool = &tools[rng.index(tools.len())];
-        let frame =
-            if rng.below(2) == 0 { Z } else { frame_of(vector(&mut rng, 1.0) + DVec3::new(0.0, 0.0, 1.5)) };
-        let p0 = vector(&mut rng, 10.0);
-        // Short moves as CAM output has them, and long ones.
-        let size = if rng.below(2) == 0 { 0.05 } else { 6.0 };
-        let p1 = p0 + vector(&mut rng, size);
-        let dir = [DVec3::X, DVec3::Y, DVec3::Z][rng.index(3)];
-        let r0 = vector(&mut rng, 12.0);
+        let (tool, frame, p0, p1, dir, r0) = random_sweep(&mut rng, &tools);
         let local = |v: DVec3| DVec3::new(frame[0].dot(v), frame[1].dot(v), frame[2].dot(v));
         let (o, u, w) = (local(r0 - p0), local(dir), -local(p1 - p0));
         let general = tool
