@@ -34,17 +34,35 @@ cargo clippy --workspace --all-targets --quiet -- -D warnings
 phase "native tests: cargo test --workspace"
 cargo test --workspace 2>&1 | tee -a "$log"
 
-phase "browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
+phase "browser tests: build (wasm32, $WASM_ROUTE)"
+wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests --no-run
+
+# The release bundle is built while the browser tests run: most of it keeps one core busy (the
+# link-time optimisation with one codegen unit, wasm-opt) and so do the tests (Chromium), so the
+# two together take little longer than the longer of them. It has its own cargo target folder so
+# neither waits on the other's lock; its own process group so a failed test stops it too.
+bundle_target=target/bundle
+rm -f target/bundle.rc
+phase "release bundle, beside the browser tests: trunk build --release --offline, each page's wasm split by web/first_screen/, checked in Chromium (scripts/split_pages.py)"
+CARGO_TARGET_DIR=$bundle_target SCHWENKBAR_SPLIT=check \
+  setsid bash -c 'bash scripts/bundle.sh >target/bundle.out 2>&1; echo $? >target/bundle.rc' &
+bundle_pid=$!
+trap 'kill -- -"$bundle_pid" 2>/dev/null || true' EXIT
+
+phase "browser tests: headless Chromium via wasm-bindgen-test-runner"
 wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | tee -a "$log"
 
 phase "the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
 python3 scripts/wasm_split_test.py --log "$log"
 
-phase "release bundle: trunk build --release --offline, each page's wasm split by web/first_screen/, checked in Chromium (scripts/split_pages.py)"
-SCHWENKBAR_SPLIT=check bash scripts/bundle.sh
+phase "release bundle: waiting for it"
+wait "$bundle_pid" || true
+trap - EXIT
+cat target/bundle.out
+[ "$(cat target/bundle.rc 2>/dev/null)" = 0 ] || { echo "release bundle failed (target/bundle.out)" >&2; exit 1; }
 
 phase "the same bytes again: the steps after trunk rerun on its output (scripts/same_bytes.sh)"
-bash scripts/same_bytes.sh | tee -a "$log"
+CARGO_TARGET_DIR=$bundle_target bash scripts/same_bytes.sh | tee -a "$log"
 
 phase "single-file pages: dist-single/ from dist/ (scripts/single-file.sh --from-dist)"
 bash scripts/single-file.sh --from-dist
