@@ -106,6 +106,9 @@ async fn the_tool_table_is_checked_at_its_cell_and_kept_as_tool_t() {
     assert_eq!(stored(TOOLS_KEY), None, "not kept while wrong");
     type_into(&editor, radius, "6").await;
     assert!(eventually(|| query(&editor, said).is_none()).await, "the message went");
+    // Kept by the effect after the render that took the message away: waited for, not assumed
+    // (it failed once with a release build beside the tests).
+    assert!(eventually(|| stored(TOOLS_KEY).is_some()).await, "kept");
     let kept = stored(TOOLS_KEY).expect("kept");
     assert!(kept.starts_with("BEGIN TOOL") && kept.contains("SCHAFTFRAESER_D10"), "{kept}");
     assert_eq!(own().as_deref(), Some("true"));
