@@ -9,8 +9,8 @@ use std::borrow::Cow;
 use std::rc::Rc;
 
 use schwenkbar_core::machine::{
-    BodyDef, BoxDef, Carrier, CylinderDef, GeometryDef, JointDef, Limits, LinearLimitsDef, Machine,
-    MachineDef, MachineGeometry, MachineIssue,
+    BodyDef, BodyField, BoxDef, Carrier, CylinderDef, GeometryDef, GeometryField, JointDef, JointField,
+    Limits, LinearLimitsDef, Machine, MachineDef, MachineGeometry, MachineIssue, MachinePath,
 };
 use schwenkbar_core::number::parse_input;
 
@@ -192,44 +192,40 @@ pub enum Field {
     BodyHeight(usize),
 }
 
-const XYZ: [char; 3] = ['X', 'Y', 'Z'];
-
 impl Field {
-    /// The path of [`MachineIssue`]s about this field, as [`MachineDef::validate`] writes it.
+    /// The path of [`MachineIssue`]s about this field, as [`MachineDef::validate`] reports it.
     #[must_use]
-    pub fn path(self) -> String {
-        let joint = |i: usize, f: &str| format!("chain[{i}].{f}");
+    pub fn path(self) -> MachinePath {
+        let lang = |l: usize| if l == 0 { Lang::De } else { Lang::En };
+        let joint = |i: usize, f: JointField| MachinePath::Joint(i, f);
+        let body = |i: usize, f: BodyField| MachinePath::BodyField(i, f);
         match self {
-            Field::Id => "id".into(),
-            Field::Name(l) => format!("name.{}", ["de", "en"][l.min(1)]),
-            Field::Description(l) => format!("description.{}", ["de", "en"][l.min(1)]),
-            Field::Axis(i) => joint(i, "axis"),
-            Field::Carrier(i) => joint(i, "carrier"),
-            Field::Direction(i, _) => joint(i, "direction"),
-            Field::Pivot(i, _) => joint(i, "pivot"),
-            Field::Endless(i) => joint(i, "endless"),
-            Field::Min(i) | Field::Max(i) => joint(i, "limits"),
-            Field::Preset(_) => "geometry.preset".into(),
-            Field::Linear(a, _) => format!("geometry.linear_limits.{}", XYZ[a.min(2)]),
-            Field::RapidLinear => "geometry.rapid_linear".into(),
-            Field::RapidRotary => "geometry.rapid_rotary".into(),
-            Field::Start(_) => "geometry.start".into(),
-            Field::TableTop(_) => "geometry.table_top".into(),
-            Field::BodyName(i, l) => body(i, ["name.de", "name.en"][l.min(1)]),
-            Field::BodyCarrier(i) => body(i, "carrier"),
-            Field::BodyShape(i) => format!("collision[{i}]"),
-            Field::BodyCenter(i, _) => body(i, "box.center"),
-            Field::BodySize(i, _) => body(i, "box.size"),
-            Field::BodyBase(i, _) => body(i, "cylinder.base"),
-            Field::BodyDirection(i, _) => body(i, "cylinder.direction"),
-            Field::BodyRadius(i) => body(i, "cylinder.radius"),
-            Field::BodyHeight(i) => body(i, "cylinder.height"),
+            Field::Id => MachinePath::Id,
+            Field::Name(l) => MachinePath::Name(lang(l)),
+            Field::Description(l) => MachinePath::Description(lang(l)),
+            Field::Axis(i) => joint(i, JointField::Axis),
+            Field::Carrier(i) => joint(i, JointField::Carrier),
+            Field::Direction(i, _) => joint(i, JointField::Direction),
+            Field::Pivot(i, _) => joint(i, JointField::Pivot),
+            Field::Endless(i) => joint(i, JointField::Endless),
+            Field::Min(i) | Field::Max(i) => joint(i, JointField::Limits),
+            Field::Preset(_) => MachinePath::Geometry(GeometryField::Preset),
+            Field::Linear(a, _) => MachinePath::Geometry(GeometryField::LinearLimits(a)),
+            Field::RapidLinear => MachinePath::Geometry(GeometryField::RapidLinear),
+            Field::RapidRotary => MachinePath::Geometry(GeometryField::RapidRotary),
+            Field::Start(_) => MachinePath::Geometry(GeometryField::Start),
+            Field::TableTop(_) => MachinePath::Geometry(GeometryField::TableTop),
+            Field::BodyName(i, l) => body(i, BodyField::Name(lang(l))),
+            Field::BodyCarrier(i) => body(i, BodyField::Carrier),
+            Field::BodyShape(i) => MachinePath::Body(i),
+            Field::BodyCenter(i, _) => body(i, BodyField::BoxCenter),
+            Field::BodySize(i, _) => body(i, BodyField::BoxSize),
+            Field::BodyBase(i, _) => body(i, BodyField::CylinderBase),
+            Field::BodyDirection(i, _) => body(i, BodyField::CylinderDirection),
+            Field::BodyRadius(i) => body(i, BodyField::CylinderRadius),
+            Field::BodyHeight(i) => body(i, BodyField::CylinderHeight),
         }
     }
-}
-
-fn body(i: usize, field: &str) -> String {
-    format!("collision[{i}].{field}")
 }
 
 /// A row of the page: its label, its inputs and the issue path whose messages it shows.
@@ -245,8 +241,8 @@ pub struct Row {
 impl Row {
     /// The path of the issues shown at this row.
     #[must_use]
-    pub fn path(&self) -> String {
-        self.fields.first().map(|f| f.path()).unwrap_or_default()
+    pub fn path(&self) -> MachinePath {
+        self.fields.first().map_or(MachinePath::Whole, |f| f.path())
     }
 }
 
@@ -322,7 +318,7 @@ pub fn rows(form: &Form) -> Vec<Row> {
         ),
         (0..3).map(Field::TableTop).collect(),
     ));
-    for (a, letter) in XYZ.iter().enumerate() {
+    for (a, letter) in ['X', 'Y', 'Z'].iter().enumerate() {
         out.push(row(
             3,
             Text::owned(
@@ -633,7 +629,7 @@ impl Form {
 /// A message at a field (or, with an empty path, about the whole description).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FieldIssue {
-    pub path: String,
+    pub path: MachinePath,
     pub message: Text,
 }
 
@@ -652,8 +648,8 @@ pub fn check(form: &Form) -> (Option<Machine>, Vec<FieldIssue>) {
     let validated = def.validate();
     if let Err(found) = &validated {
         for MachineIssue { path, problem } in found {
-            if !issues.iter().any(|i| &i.path == path) {
-                issues.push(FieldIssue { path: path.clone(), message: problem.message() });
+            if !issues.iter().any(|i| i.path == *path) {
+                issues.push(FieldIssue { path: *path, message: problem.message() });
             }
         }
     }
@@ -770,14 +766,14 @@ impl EditorState {
     }
 
     /// The messages at a row's path.
-    pub fn issues_at<'a>(&'a self, path: &'a str) -> impl Iterator<Item = &'a FieldIssue> + 'a {
+    pub fn issues_at(&self, path: MachinePath) -> impl Iterator<Item = &FieldIssue> + '_ {
         self.issues.iter().filter(move |i| i.path == path)
     }
 
     /// Issues whose path no row shows (the page lists them at the top).
     #[must_use]
     pub fn unplaced(&self) -> Vec<&FieldIssue> {
-        let paths: Vec<String> = rows(&self.form).iter().map(Row::path).collect();
+        let paths: Vec<MachinePath> = rows(&self.form).iter().map(Row::path).collect();
         self.issues.iter().filter(|i| !paths.contains(&i.path)).collect()
     }
 

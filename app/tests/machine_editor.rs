@@ -12,7 +12,7 @@ use schwenkbar_app::persist::{self, Stored};
 use schwenkbar_app::saved_machines::{self, LIST_DAMAGED, MACHINES_KEY};
 use schwenkbar_app::softkeys::row;
 use schwenkbar_app::state::{Action, AppState, SoftkeyLevel};
-use schwenkbar_core::machine::Machine;
+use schwenkbar_core::machine::{BodyField, JointField, Machine, MachinePath};
 use schwenkbar_core::plane::{PlaneBlock, RotaryAxis, Value};
 use schwenkbar_core::solve::{self, SolveOptions};
 use schwenkbar_core::{BlockBody, parse};
@@ -255,13 +255,15 @@ fn every_validation_message_reaches_its_field_in_german() {
         ),
     ];
     let good = editor();
-    let paths: Vec<String> = rows(&good.form).iter().map(|r| r.path()).collect();
+    // The paths as written (the schema's JSON paths): what the page's `data-path` says.
+    let paths: Vec<String> = rows(&good.form).iter().map(|r| r.path().to_string()).collect();
     for (name, edit, path, german) in cases {
         let s = edit(&good);
         assert!(!s.valid, "{name}");
         assert!(paths.iter().any(|p| p == path), "{name}: no row shows {path}");
         assert!(s.unplaced().is_empty(), "{name}: {:?}", s.unplaced());
-        let at: Vec<&str> = s.issues_at(path).map(|i| i.message.de.as_ref()).collect();
+        let at: Vec<&str> =
+            s.issues.iter().filter(|i| i.path.to_string() == path).map(|i| i.message.de.as_ref()).collect();
         assert!(at.iter().any(|m| m.contains(german)), "{name}: at {path}: {at:?}, all: {:?}", s.issues);
         // The preview stays on the last valid machine.
         assert!(s.preview.is_some(), "{name}");
@@ -271,7 +273,7 @@ fn every_validation_message_reaches_its_field_in_german() {
 #[test]
 fn fixing_the_field_clears_its_message_and_the_preview_follows() {
     let s = set(&set(&editor(), Field::Direction(0, 2), "0"), Field::Direction(0, 1), "0");
-    assert_eq!(s.issues_at("chain[0].direction").count(), 1);
+    assert_eq!(s.issues_at(MachinePath::Joint(0, JointField::Direction)).count(), 1);
     assert_eq!(s.preview, editor().preview, "the last valid machine is shown");
     let fixed = set(&s, Field::Direction(0, 1), "1");
     assert!(fixed.valid && fixed.issues.is_empty(), "{:?}", fixed.issues);
@@ -360,7 +362,11 @@ fn a_bad_file_is_listed_and_nothing_typed_is_lost() {
     let s = then(&typed, EditorAction::Import(json.into_bytes()));
     assert!(s.import_issues.is_empty());
     assert_eq!(s.form.joints[0].carrier, "tisch");
-    assert!(s.issues_at("chain[0].carrier").any(|i| i.message.de.contains("„tisch“")), "{:?}", s.issues);
+    assert!(
+        s.issues_at(MachinePath::Joint(0, JointField::Carrier)).any(|i| i.message.de.contains("„tisch“")),
+        "{:?}",
+        s.issues
+    );
 }
 
 fn trainer_with(machines: &str) -> AppState {
@@ -553,11 +559,11 @@ fn a_body_is_edited_added_and_removed_and_the_preview_carries_it() {
     assert!(rows(&added.form).iter().any(|r| r.section == 4 + n), "the new body has its rows");
     // A problem of a body moves with it when one before it goes.
     let bad = set(&added, Field::BodySize(n, 1), "-1");
-    assert_eq!(bad.issues_at(&format!("collision[{n}].box.size")).count(), 1);
+    assert_eq!(bad.issues_at(MachinePath::BodyField(n, BodyField::BoxSize)).count(), 1);
     let removed = then(&bad, EditorAction::RemoveBody(0));
     assert_eq!(removed.form.collision.len(), n);
     assert_eq!(
-        removed.issues_at(&format!("collision[{}].box.size", n - 1)).count(),
+        removed.issues_at(MachinePath::BodyField(n - 1, BodyField::BoxSize)).count(),
         1,
         "{:?}",
         removed.issues
@@ -584,7 +590,7 @@ fn switching_a_bodys_shape_derives_the_other_shape() {
     // A shape that is not all numbers switches with empty fields, each reported.
     let broken = set(&set(&editor(), Field::BodySize(0, 0), "x"), Field::BodyShape(0), "cylinder");
     assert!(broken.form.collision[0].radius.is_empty());
-    assert_eq!(broken.issues_at("collision[0].cylinder.radius").count(), 1);
+    assert_eq!(broken.issues_at(MachinePath::BodyField(0, BodyField::CylinderRadius)).count(), 1);
 }
 
 #[test]
@@ -640,7 +646,7 @@ fn an_imported_body_of_both_or_no_shape_opens_as_a_box() {
     let s = then(&editor(), EditorAction::Import(def.to_json().into_bytes()));
     assert!(s.import_issues.is_empty(), "{:?}", s.import_issues);
     assert!(!s.valid && s.form.collision[0].size[0].is_empty());
-    assert_eq!(s.issues_at("collision[0].box.size").count(), 1, "{:?}", s.issues);
+    assert_eq!(s.issues_at(MachinePath::BodyField(0, BodyField::BoxSize)).count(), 1, "{:?}", s.issues);
 }
 
 #[test]
@@ -658,4 +664,34 @@ fn a_rotary_axis_section_names_what_carries_it() {
     assert_eq!(section_title(1, &bc.form).get(Lang::De), "1. Drehachse (Slave, am Tisch)");
     assert_eq!(section_title(2, &bc.form).get(Lang::De), "2. Drehachse (Master, am Kopf)");
     assert_eq!(section_title(4, &bc.form).get(Lang::De), "Kollisionskörper 1");
+}
+
+/// The typed path of every row is where its field is in the machine's JSON (the schema's own
+/// names, `chain[1].direction` → `/chain/1/direction`): the editor, validate and the file agree
+/// on one path, on a form with a box and a cylinder body.
+#[test]
+fn every_rows_path_names_its_field_in_the_machine_file() {
+    let s = set(&editor(), Field::BodyShape(1), "cylinder");
+    let (def, bad) = s.form.to_def();
+    assert!(bad.is_empty(), "{bad:?}");
+    let json: serde_json::Value = serde_json::from_str(&def.to_json()).expect("JSON");
+    let mut checked = 0;
+    for row in rows(&s.form) {
+        let path = row.path();
+        assert_ne!(path, MachinePath::Whole, "{:?}", row.label);
+        let written = path.to_string();
+        let pointer = format!("/{}", written.replace(['.', '['], "/").replace(']', ""));
+        // What the file leaves out when it has its default (an axis that is not endless, an
+        // endless axis's limits, no table top): its parent is there.
+        let optional = [".endless", ".limits", ".table_top"].iter().any(|o| written.ends_with(o));
+        let parent = &pointer[..pointer.rfind('/').expect("a parent")];
+        match json.pointer(&pointer) {
+            Some(_) => checked += 1,
+            None => assert!(
+                optional && json.pointer(parent).is_some_and(serde_json::Value::is_object),
+                "{written}: not in {json}"
+            ),
+        }
+    }
+    assert!(checked > 20, "{checked} rows' fields found in the file");
 }

@@ -32,8 +32,10 @@ use crate::lang::Text;
 use crate::plane::RotaryAxis;
 
 mod body;
+mod path;
 mod validate;
 pub use body::{Body, BodyCarrier, BodyDef, BodyShape, BoxDef, CylinderDef};
+pub use path::{BodyField, GeometryField, JointField, MachinePath};
 pub use validate::{MachineIssue, Problem};
 
 /// Whether a rotary axis turns the workpiece (table) or the tool (head).
@@ -264,7 +266,7 @@ impl MachineDef {
     /// string where a number belongs) is one issue at the top level.
     pub fn from_json(json: &str) -> Result<MachineDef, MachineIssue> {
         serde_json::from_str(json).map_err(|e| MachineIssue {
-            path: String::new(),
+            path: MachinePath::Whole,
             problem: Problem::Json { message: e.to_string(), line: e.line(), column: e.column() },
         })
     }

@@ -37,7 +37,7 @@ fn issues(v: &Value) -> Vec<MachineIssue> {
 /// The one issue of `issues`, at `path`, its message with `de` and `en` in it: the problem.
 fn only(issues: Vec<MachineIssue>, path: &str, de: &str, en: &str) -> Problem {
     let [issue] = <[MachineIssue; 1]>::try_from(issues).unwrap_or_else(|i| panic!("one issue, got {i:#?}"));
-    assert_eq!(issue.path, path);
+    assert_eq!(issue.path.to_string(), path);
     let m = issue.message();
     assert!(m.de.starts_with(&format!("{path}: ")) || path.is_empty(), "{}", m.de);
     assert!(m.de.contains(de), "German {:?} lacks {de:?}", m.de);
@@ -282,7 +282,7 @@ fn all_problems_are_reported_at_once() {
         v["chain"][1]["axis"] = json!("D");
         v["geometry"]["start"] = json!([800, 0, 0]);
     });
-    let paths: Vec<String> = issues(&v).into_iter().map(|i| i.path).collect();
+    let paths: Vec<String> = issues(&v).into_iter().map(|i| i.path.to_string()).collect();
     assert_eq!(paths, ["id", "chain[0].direction", "chain[1].axis", "geometry.start"]);
 }
 

@@ -1,7 +1,8 @@
 //! The one check of a machine description ([`MachineDef`]): every reader (the compiled-in
 //! machines, [`Machine::from_json`], the machine editor and its saved record in `schwenkbar-app`) goes through [`validate`], which
 //! reports every problem it finds, not only the first, each with the path of its field
-//! (`chain[1].direction`, `geometry.linear_limits.X`) so that an editor can show it at the field.
+//! ([`MachinePath`], written `chain[1].direction`, `geometry.linear_limits.X`) so that the editor
+//! shows it at the field that has the same path.
 //!
 //! The rules:
 //! - `id`, `name.de` and `name.en` are not empty (blanks only count as empty);
@@ -25,6 +26,7 @@
 use glam::DVec3;
 use serde::Serialize;
 
+use super::path::{BodyField, GeometryField, JointField, MachinePath};
 use super::{
     Body, BodyCarrier, BodyDef, BodyShape, Carrier, Limits, Machine, MachineDef, MachineGeometry, RotaryJoint,
 };
@@ -40,22 +42,21 @@ const PARALLEL_TOL: f64 = 1e-6;
 /// One problem of a machine description: where it is and what it is.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MachineIssue {
-    /// The field, as `chain[1].direction`; empty for the description as a whole (unreadable
-    /// JSON).
-    pub path: String,
+    /// The field ([`MachinePath::Whole`] for the description as a whole: unreadable JSON).
+    pub path: MachinePath,
     pub problem: Problem,
 }
 
 impl MachineIssue {
-    fn at(path: impl Into<String>, problem: Problem) -> MachineIssue {
-        MachineIssue { path: path.into(), problem }
+    pub(super) fn at(path: MachinePath, problem: Problem) -> MachineIssue {
+        MachineIssue { path, problem }
     }
 
     /// The message in German and English, with the field path in front (when there is one).
     #[must_use]
     pub fn message(&self) -> Text {
         let text = self.problem.message();
-        if self.path.is_empty() {
+        if self.path == MachinePath::Whole {
             return text;
         }
         Text::owned(format!("{}: {}", self.path, text.de), format!("{}: {}", self.path, text.en))
@@ -228,7 +229,11 @@ impl Problem {
 /// limits) are only looked at when that field itself is sound, so each cause is reported once.
 pub(super) fn validate(def: &MachineDef) -> Result<Machine, Vec<MachineIssue>> {
     let mut issues = Vec::new();
-    for (path, text) in [("id", &*def.id), ("name.de", &*def.name.de), ("name.en", &*def.name.en)] {
+    for (path, text) in [
+        (MachinePath::Id, &*def.id),
+        (MachinePath::Name(Lang::De), &*def.name.de),
+        (MachinePath::Name(Lang::En), &*def.name.en),
+    ] {
         if text.trim().is_empty() {
             issues.push(MachineIssue::at(path, Problem::Empty));
         }
@@ -267,37 +272,40 @@ pub(super) fn validate(def: &MachineDef) -> Result<Machine, Vec<MachineIssue>> {
 /// One chain entry, or `None` (with its issues pushed) when a field is wrong.
 fn joint(i: usize, j: &super::JointDef, issues: &mut Vec<MachineIssue>) -> Option<RotaryJoint> {
     let before = issues.len();
-    let at = |field: &str| format!("chain[{i}].{field}");
+    let at = |field: JointField| MachinePath::Joint(i, field);
     let axis = RotaryAxis::from_letter(&j.axis);
     if axis.is_none() {
-        issues.push(MachineIssue::at(at("axis"), Problem::UnknownAxis { letter: j.axis.to_string() }));
+        issues.push(MachineIssue::at(
+            at(JointField::Axis),
+            Problem::UnknownAxis { letter: j.axis.to_string() },
+        ));
     }
     let carrier = Carrier::from_word(&j.carrier);
     if carrier.is_none() {
         issues.push(MachineIssue::at(
-            at("carrier"),
+            at(JointField::Carrier),
             Problem::UnknownCarrier { carrier: j.carrier.to_string() },
         ));
     }
     let direction = DVec3::from_array(j.direction);
     if let Some(value) = not_finite(&j.direction) {
-        issues.push(MachineIssue::at(at("direction"), Problem::NotFinite { value }));
+        issues.push(MachineIssue::at(at(JointField::Direction), Problem::NotFinite { value }));
     } else if direction == DVec3::ZERO {
-        issues.push(MachineIssue::at(at("direction"), Problem::ZeroDirection));
+        issues.push(MachineIssue::at(at(JointField::Direction), Problem::ZeroDirection));
     } else if (direction.length() - 1.0).abs() > UNIT_TOL {
         issues.push(MachineIssue::at(
-            at("direction"),
+            at(JointField::Direction),
             Problem::DirectionNotUnit { length: direction.length() },
         ));
     }
     if let Some(value) = not_finite(&j.pivot) {
-        issues.push(MachineIssue::at(at("pivot"), Problem::NotFinite { value }));
+        issues.push(MachineIssue::at(at(JointField::Pivot), Problem::NotFinite { value }));
     }
     if let Some(l) = j.limits {
         if let Some(problem) = limits_problem(l) {
-            issues.push(MachineIssue::at(at("limits"), problem));
+            issues.push(MachineIssue::at(at(JointField::Limits), problem));
         } else if j.endless {
-            issues.push(MachineIssue::at(at("endless"), Problem::EndlessWithLimits));
+            issues.push(MachineIssue::at(at(JointField::Endless), Problem::EndlessWithLimits));
         }
     }
     match (axis, carrier) {
@@ -335,13 +343,15 @@ fn chain_order(joints: &[Option<RotaryJoint>], issues: &mut Vec<MachineIssue>) {
     for (i, j) in joints.iter().enumerate() {
         let Some(j) = j else { continue };
         if joints[..i].iter().flatten().any(|k| k.axis == j.axis) {
-            issues
-                .push(MachineIssue::at(format!("chain[{i}].axis"), Problem::DuplicateAxis { axis: j.axis }));
+            issues.push(MachineIssue::at(
+                MachinePath::Joint(i, JointField::Axis),
+                Problem::DuplicateAxis { axis: j.axis },
+            ));
         }
         match j.carrier {
             Carrier::Head => head_seen = true,
             Carrier::Table if head_seen => issues.push(MachineIssue::at(
-                format!("chain[{i}].carrier"),
+                MachinePath::Joint(i, JointField::Carrier),
                 Problem::TableAfterHead { axis: j.axis },
             )),
             Carrier::Table => {}
@@ -352,7 +362,7 @@ fn chain_order(joints: &[Option<RotaryJoint>], issues: &mut Vec<MachineIssue>) {
 /// The chain as `[slave, master]` when it has exactly two sound axes that can tilt the tool.
 fn two_axes(joints: Vec<Option<RotaryJoint>>, issues: &mut Vec<MachineIssue>) -> Option<[RotaryJoint; 2]> {
     if joints.len() != 2 {
-        issues.push(MachineIssue::at("chain", Problem::AxisCount { count: joints.len() }));
+        issues.push(MachineIssue::at(MachinePath::Chain, Problem::AxisCount { count: joints.len() }));
         return None;
     }
     let [Some(slave), Some(master)]: [Option<RotaryJoint>; 2] = joints.try_into().ok()? else {
@@ -360,9 +370,12 @@ fn two_axes(joints: Vec<Option<RotaryJoint>>, issues: &mut Vec<MachineIssue>) ->
     };
     if slave.direction.cross(master.direction).length() < PARALLEL_TOL {
         let problem = Problem::ParallelAxes { slave: slave.axis, master: master.axis };
-        issues.push(MachineIssue::at("chain[1].direction", problem));
+        issues.push(MachineIssue::at(MachinePath::Joint(1, JointField::Direction), problem));
     } else if master.direction.cross(DVec3::Z).length() < PARALLEL_TOL {
-        issues.push(MachineIssue::at("chain[1].direction", Problem::MasterAlongTool { axis: master.axis }));
+        issues.push(MachineIssue::at(
+            MachinePath::Joint(1, JointField::Direction),
+            Problem::MasterAlongTool { axis: master.axis },
+        ));
     }
     Some([slave, master])
 }
@@ -371,26 +384,32 @@ fn two_axes(joints: Vec<Option<RotaryJoint>>, issues: &mut Vec<MachineIssue>) ->
 fn geometry(def: Option<&super::GeometryDef>, issues: &mut Vec<MachineIssue>) -> MachineGeometry {
     let mut g = MachineGeometry::default();
     let Some(def) = def else { return g };
-    let mut vec3 = |field: &str, v: Option<[f64; 3]>, slot: &mut DVec3| match v.map(|v| (v, not_finite(&v))) {
-        Some((_, Some(value))) => issues.push(MachineIssue::at(field, Problem::NotFinite { value })),
-        Some((v, None)) => *slot = DVec3::from_array(v),
-        None => {}
-    };
-    vec3("geometry.preset", def.preset, &mut g.preset);
-    vec3("geometry.start", def.start, &mut g.start);
+    let mut vec3 =
+        |field: GeometryField, v: Option<[f64; 3]>, slot: &mut DVec3| match v.map(|v| (v, not_finite(&v))) {
+            Some((_, Some(value))) => {
+                issues.push(MachineIssue::at(MachinePath::Geometry(field), Problem::NotFinite { value }))
+            }
+            Some((v, None)) => *slot = DVec3::from_array(v),
+            None => {}
+        };
+    vec3(GeometryField::Preset, def.preset, &mut g.preset);
+    vec3(GeometryField::Start, def.start, &mut g.start);
     if let Some(top) = def.table_top {
         let mut at = DVec3::ZERO;
-        vec3("geometry.table_top", Some(top), &mut at);
+        vec3(GeometryField::TableTop, Some(top), &mut at);
         g.table_top = not_finite(&top).is_none().then_some(at);
     }
     let start_sound = def.start.is_none_or(|v| not_finite(&v).is_none());
     let mut limits_sound = [true; 3];
     if let Some(l) = def.linear_limits {
-        for (i, (lim, letter)) in [(l.x, 'X'), (l.y, 'Y'), (l.z, 'Z')].into_iter().enumerate() {
+        for (i, lim) in [l.x, l.y, l.z].into_iter().enumerate() {
             let Some(lim) = lim else { continue };
             match limits_problem(lim) {
                 Some(problem) => {
-                    issues.push(MachineIssue::at(format!("geometry.linear_limits.{letter}"), problem));
+                    issues.push(MachineIssue::at(
+                        MachinePath::Geometry(GeometryField::LinearLimits(i)),
+                        problem,
+                    ));
                     limits_sound[i] = false;
                 }
                 None => g.linear_limits[i] = lim,
@@ -398,15 +417,15 @@ fn geometry(def: Option<&super::GeometryDef>, issues: &mut Vec<MachineIssue>) ->
         }
     }
     for (field, v, slot) in [
-        ("geometry.rapid_linear", def.rapid_linear, &mut g.rapid_linear),
-        ("geometry.rapid_rotary", def.rapid_rotary, &mut g.rapid_rotary),
+        (GeometryField::RapidLinear, def.rapid_linear, &mut g.rapid_linear),
+        (GeometryField::RapidRotary, def.rapid_rotary, &mut g.rapid_rotary),
     ] {
         match v {
             Some(value) if !value.is_finite() => {
-                issues.push(MachineIssue::at(field, Problem::NotFinite { value }))
+                issues.push(MachineIssue::at(MachinePath::Geometry(field), Problem::NotFinite { value }))
             }
             Some(value) if value <= 0.0 => {
-                issues.push(MachineIssue::at(field, Problem::NotPositive { value }))
+                issues.push(MachineIssue::at(MachinePath::Geometry(field), Problem::NotPositive { value }))
             }
             Some(value) => *slot = value,
             None => {}
@@ -417,7 +436,7 @@ fn geometry(def: Option<&super::GeometryDef>, issues: &mut Vec<MachineIssue>) ->
             let (value, lim) = (g.start[i], g.linear_limits[i]);
             if limits_sound[i] && !lim.contains(value) {
                 let problem = Problem::StartOutside { axis: letter, value, min: lim.min, max: lim.max };
-                issues.push(MachineIssue::at("geometry.start", problem));
+                issues.push(MachineIssue::at(MachinePath::Geometry(GeometryField::Start), problem));
             }
         }
     }
@@ -433,8 +452,9 @@ fn body(
     issues: &mut Vec<MachineIssue>,
 ) -> Option<Body> {
     let before = issues.len();
-    let at = |field: &str| format!("collision[{i}].{field}");
-    for (field, text) in [("name.de", &*b.name.de), ("name.en", &*b.name.en)] {
+    let at = |field: BodyField| MachinePath::BodyField(i, field);
+    for (field, text) in [(BodyField::Name(Lang::De), &*b.name.de), (BodyField::Name(Lang::En), &*b.name.en)]
+    {
         if text.trim().is_empty() {
             issues.push(MachineIssue::at(at(field), Problem::Empty));
         }
@@ -454,11 +474,11 @@ fn body(
     if carrier.is_none() && chain_sound {
         let table_axes: Vec<&str> = def.chain.iter().filter(|j| table_axis(j)).map(|j| &*j.axis).collect();
         issues.push(MachineIssue::at(
-            at("carrier"),
+            at(BodyField::Carrier),
             Problem::UnknownBodyCarrier { carrier: b.carrier.to_string(), table_axes: table_axes.join(", ") },
         ));
     }
-    let mut positive = |field: &str, values: &[f64]| {
+    let mut positive = |field: BodyField, values: &[f64]| {
         if let Some(value) = not_finite(values) {
             issues.push(MachineIssue::at(at(field), Problem::NotFinite { value }));
         } else if let Some(&value) = values.iter().find(|&&v| v <= 0.0) {
@@ -467,9 +487,9 @@ fn body(
     };
     let shape = match (b.cuboid, b.cylinder) {
         (Some(c), None) => {
-            positive("box.size", &c.size);
+            positive(BodyField::BoxSize, &c.size);
             if let Some(value) = not_finite(&c.center) {
-                issues.push(MachineIssue::at(at("box.center"), Problem::NotFinite { value }));
+                issues.push(MachineIssue::at(at(BodyField::BoxCenter), Problem::NotFinite { value }));
             }
             Some(BodyShape::Box {
                 center: DVec3::from_array(c.center),
@@ -477,19 +497,19 @@ fn body(
             })
         }
         (None, Some(c)) => {
-            positive("cylinder.radius", &[c.radius]);
-            positive("cylinder.height", &[c.height]);
+            positive(BodyField::CylinderRadius, &[c.radius]);
+            positive(BodyField::CylinderHeight, &[c.height]);
             if let Some(value) = not_finite(&c.base) {
-                issues.push(MachineIssue::at(at("cylinder.base"), Problem::NotFinite { value }));
+                issues.push(MachineIssue::at(at(BodyField::CylinderBase), Problem::NotFinite { value }));
             }
             let direction = DVec3::from_array(c.direction);
             if let Some(value) = not_finite(&c.direction) {
-                issues.push(MachineIssue::at(at("cylinder.direction"), Problem::NotFinite { value }));
+                issues.push(MachineIssue::at(at(BodyField::CylinderDirection), Problem::NotFinite { value }));
             } else if direction == DVec3::ZERO {
-                issues.push(MachineIssue::at(at("cylinder.direction"), Problem::ZeroDirection));
+                issues.push(MachineIssue::at(at(BodyField::CylinderDirection), Problem::ZeroDirection));
             } else if (direction.length() - 1.0).abs() > UNIT_TOL {
                 issues.push(MachineIssue::at(
-                    at("cylinder.direction"),
+                    at(BodyField::CylinderDirection),
                     Problem::DirectionNotUnit { length: direction.length() },
                 ));
             }
@@ -502,7 +522,7 @@ fn body(
         }
         (a, c) => {
             let count = usize::from(a.is_some()) + usize::from(c.is_some());
-            issues.push(MachineIssue::at(format!("collision[{i}]"), Problem::BodyShapeCount { count }));
+            issues.push(MachineIssue::at(MachinePath::Body(i), Problem::BodyShapeCount { count }));
             None
         }
     };

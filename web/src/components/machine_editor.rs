@@ -152,12 +152,12 @@ pub fn editor_root() -> Html {
         let rows = all_rows.iter().filter(|r| r.section == s).map(|r| {
             let path = r.path();
             let issues: Vec<Html> = state
-                .issues_at(&path)
+                .issues_at(path)
                 .map(|i| html! { <p class="ed-issue" role="alert">{ i.message.get(l).to_owned() }</p> })
                 .collect();
             let class = classes!("ed-row", (!issues.is_empty()).then_some("bad"));
             html! {
-                <div {class} data-path={path}>
+                <div {class} data-path={path.to_string()}>
                     <span>{ r.label.get(l).to_owned() }</span>
                     <span class="ed-inputs">{ for r.fields.iter().map(|f| input(&state, *f, l)) }</span>
                     { for issues }
