@@ -250,8 +250,12 @@ def split_with_data(original, run, linked_dir, wasm):
 def stable(name):
     """A function's name without the hashes rustc puts in it (the legacy mangling's `::h` and 16
     hex digits at the end, the v0 mangling's crate disambiguators `crate[16 hex digits]`): they
-    depend on the build's metadata, not on the item, so the same item keeps its name."""
-    return re.sub(r"\[[0-9a-f]{16}\]", "", re.sub(r"::h[0-9a-f]{16}$", "", name))
+    depend on the build's metadata, not on the item, so the same item keeps its name. Without
+    the `.N` the name section gives a name it already has (N counts through the module, so any
+    change of the code renumbered them and the lists had to be recorded anew, issue 33): the
+    copies of one name are first-screen functions together, which costs a few copies' bytes."""
+    name = re.sub(r"\[[0-9a-f]{16}\]", "", re.sub(r"::h[0-9a-f]{16}$", "", name))
+    return re.sub(r"(\.[0-9]+)+$", "", name)
 
 
 def names_by_body(data):
