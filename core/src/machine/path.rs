@@ -64,20 +64,13 @@ pub enum BodyField {
     CylinderHeight,
 }
 
-fn lang(l: Lang) -> &'static str {
-    match l {
-        Lang::De => "de",
-        Lang::En => "en",
-    }
-}
-
 impl fmt::Display for MachinePath {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
             MachinePath::Whole => Ok(()),
             MachinePath::Id => f.write_str("id"),
-            MachinePath::Name(l) => write!(f, "name.{}", lang(l)),
-            MachinePath::Description(l) => write!(f, "description.{}", lang(l)),
+            MachinePath::Name(l) => write!(f, "name.{}", l.code()),
+            MachinePath::Description(l) => write!(f, "description.{}", l.code()),
             MachinePath::Chain => f.write_str("chain"),
             MachinePath::Joint(i, field) => {
                 let name = match field {
@@ -107,7 +100,7 @@ impl fmt::Display for MachinePath {
             MachinePath::BodyField(i, field) => {
                 write!(f, "collision[{i}].")?;
                 match field {
-                    BodyField::Name(l) => write!(f, "name.{}", lang(l)),
+                    BodyField::Name(l) => write!(f, "name.{}", l.code()),
                     BodyField::Carrier => f.write_str("carrier"),
                     BodyField::BoxCenter => f.write_str("box.center"),
                     BodyField::BoxSize => f.write_str("box.size"),
