@@ -7,7 +7,8 @@
 use schwenkbar_app::course::lessons::{self, COUNT};
 use schwenkbar_core::course::{Answer, Exercise, Hint};
 use schwenkbar_tests::browser::{
-    clear_storage, click, key_on, mount, mount_at, query, settle, text, type_into, unmount, wait_for,
+    clear_storage, click, eventually, key_on, mount, mount_at, query, settle, text, type_into, unmount,
+    wait_for,
 };
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 use web_sys::Element;
@@ -245,6 +246,16 @@ async fn progress_is_kept_and_a_corrupt_record_is_reported() {
     wait_for(&root, "[data-lesson='1']", 5_000).await.expect("lesson 1");
     let ex = Exercise::generate(lessons::lesson(0).expect("lesson").exercises[0], 0);
     answer(&root, 0, &Answer::Text(ex.solution.de.to_string())).await;
+    assert_eq!(verdict(&root, 0).await.0, "correct");
+    // Kept by the effect after the render with the verdict: waited for, not assumed (it failed
+    // once with the release bundle built beside the tests).
+    let kept = || {
+        web_sys::window()
+            .and_then(|w| w.local_storage().ok().flatten())
+            .and_then(|s| s.get_item(schwenkbar_app::persist::COURSE_KEY).ok().flatten())
+            .is_some()
+    };
+    assert!(eventually(kept).await, "the progress kept");
     unmount(&root);
     let root = mount_at("#kurs").await;
     let status = wait_for(&root, "[data-testid=lesson-status-1]", 3_000).await.expect("overview");
