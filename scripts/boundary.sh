@@ -4,7 +4,8 @@
 #   their dependencies (cargo tree, normal dependencies);
 # - web renders and carries out effects only: it never parses, solves or simulates (those
 #   calls belong to core, driven by app);
-# - no str::parse::<f64> in the wasm crates but number.rs's own test (the tables it pulls in).
+# - no str::parse::<f64> in the wasm crates but number.rs's own test (the tables it pulls in);
+# - the simulator's notes are worded in one place (core/src/sim/note.rs), not where a block runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fail=0
@@ -32,6 +33,15 @@ if [ -n "$floats" ]; then
   echo "$floats"
   fail=1
 fi
+# The simulator records typed notes (core/src/sim/note.rs) and errors (error.rs); it words no
+# sentence where it runs a block, so each wording is in one place.
+words=$(grep -rnE 'Text::(new|owned|same)|Text \{' core/src/sim/interp.rs core/src/sim/interp \
+  core/src/sim/cycles.rs core/src/sim/cycles || true)
+if [ -n "$words" ]; then
+  echo "boundary: the simulator words a sentence where it runs a block (a Note in core/src/sim/note.rs):"
+  echo "$words"
+  fail=1
+fi
 # Every property test runs a fixed number of cases from a fixed seed (testkit's proptest_cases):
 # no test's outcome, time or memory depends on chance.
 configs=$(grep -rnE 'ProptestConfig(::with_cases|::default\(\)| \{)|proptest_config\((ProptestConfig|cases)' \
@@ -41,5 +51,5 @@ if [ -n "$configs" ]; then
   echo "$configs"
   fail=1
 fi
-[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64; property tests from a fixed seed"
+[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64; notes worded in sim/note.rs; property tests from a fixed seed"
 exit "$fail"

@@ -12,7 +12,7 @@ use schwenkbar_core::Lang;
 use schwenkbar_core::machine::Machine;
 use schwenkbar_core::number::{FIXED_MAX, fixed_ascii, tidy, write_fixed};
 use schwenkbar_core::sim::{
-    ListingRow, SimOptions, Simulation, State, pick_machine, simulate, simulate_listed,
+    ListingRow, Note, SimOptions, Simulation, State, pick_machine, simulate, simulate_listed,
     tools::read_tool_table,
 };
 use schwenkbar_core::stock::{Collisions, Cutting, StockMesh, StockNote, StockOptions};
@@ -83,7 +83,7 @@ struct JsonState<'a> {
     tool_tip_wcs: [f64; 3],
     plane: Option<JsonPlane>,
     q: BTreeMap<String, f64>,
-    message: Option<&'a str>,
+    message: Option<String>,
     /// The tool ran into the material (a rapid or a swivel): the collision's message.
     #[serde(skip_serializing_if = "Option::is_none")]
     collision: Option<&'a str>,
@@ -338,7 +338,7 @@ fn json_state<'a>(
             .as_ref()
             .map(|p| JsonPlane { spatial: p.spatial.map(num), tool_axis: p.tool_axis.map(num) }),
         q: s.q.iter().map(|(k, v)| (k.to_string(), num(*v))).collect(),
-        message: s.message.as_ref().map(|m| m.get(lang)),
+        message: s.message().map(|m| m.get(lang).to_owned()),
         collision,
     }
 }
@@ -447,7 +447,7 @@ impl<'a, W: Write> Table<'a, W> {
         }
         // Numbers are ASCII: bytes are columns.
         pad(row, 26usize.saturating_sub(row.len() - start));
-        if let Some(m) = &s.message {
+        if let Some(m) = s.note.as_ref().map(Note::text) {
             row.extend_from_slice(b"  ");
             row.extend_from_slice(m.get(self.lang).as_bytes());
         }

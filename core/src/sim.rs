@@ -83,6 +83,7 @@ mod cycles;
 mod error;
 pub mod geometry;
 mod interp;
+mod note;
 mod pick;
 mod placed;
 pub mod segment;
@@ -103,6 +104,7 @@ use crate::machine::Machine;
 pub use collision::{Collision, SafeAlternative};
 pub use error::{ApprDepReason, SimError, SimErrorCode};
 pub use geometry::{Affine, Kin};
+pub use note::Note;
 pub use pick::{Pick, pick_machine, programmed_rotary_axes};
 pub use placed::{placed, written_blank};
 pub use segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, TcpmPath};
@@ -321,7 +323,7 @@ impl Simulation {
                             line: program.blocks.get(it.last).map_or(0, |b| b.line()),
                             axes: it.axes,
                             spatial: it.plane.as_ref().map(|p| p.spatial),
-                            message: rec.message.take(),
+                            note: rec.note.take(),
                         });
                     }
                     if let Some(slot) = first_step.get_mut(block)

@@ -13,6 +13,7 @@ mod fast_path;
 mod kinematics;
 mod lenient;
 mod machine_def;
+mod notes;
 mod oracles;
 mod plane_oracles;
 mod properties;

@@ -121,7 +121,7 @@ fn musterprogramm1_on_ac_table_runs_all_38_blocks() {
     assert_close!(deepest, -20.0, EXACT, "Q201 = -20 along the tilted tool axis");
     let s35 = after(&p, &sim, 35);
     assert!(s35.ended);
-    assert!(after(&p, &sim, 37).message.is_some(), "listed after M30, not executed");
+    assert!(after(&p, &sim, 37).message().is_some(), "listed after M30, not executed");
 }
 
 fn plane_r(s: &State) -> DMat3 {
@@ -384,7 +384,7 @@ fn cycle_19_tilts_like_spatial_angles_and_cycle_200_drills_along_the_tilted_axis
     let depth = s9.segments.iter().map(|g| (r.transpose() * kin.tip_wcs(&g.end)).z).fold(f64::MAX, f64::min);
     assert_close!(depth, -10.0, EXACT);
     assert!(after(&p, &sim, 11).plane.is_none(), "19.1 with all angles 0 resets");
-    let msg = after(&p, &sim, 14).message.expect("reported");
+    let msg = after(&p, &sim, 14).message().expect("reported");
     assert!(msg.de.contains("nicht simuliert") && msg.en.contains("not simulated"), "{msg:?}");
 }
 
@@ -614,7 +614,7 @@ fn the_listing_shows_what_the_states_say() {
                 assert_eq!((r.step, r.block, r.line), (s.step, s.block, s.line), "{what}");
                 assert_eq!(r.axes, s.axes, "{what}");
                 assert_eq!(r.spatial, s.plane.as_ref().map(|p| p.spatial), "{what}");
-                assert_eq!(r.message, s.message, "{what}");
+                assert_eq!(r.note, s.note, "{what}");
             }
             rows += listed.len();
         }

@@ -199,7 +199,7 @@ fn m128_and_m129_are_said_in_the_run() {
     let m = Machine::builtin("ac-table").expect("shipped");
     let (p, _) = parse("0 BEGIN PGM T MM\n1 M128\n2 L A+10 FMAX\n3 M129\n4 END PGM T MM\n");
     let sim = simulate(&p, &m, &SimOptions::default());
-    let messages: Vec<_> = sim.states(&p).map(|s| s.message).collect();
+    let messages: Vec<_> = sim.states(&p).map(|s| s.message()).collect();
     let on = messages[1].as_ref().expect("M128 said");
     assert!(on.de.contains("TCPM aktiv") && on.en.contains("TCPM on"), "{on:?}");
     let off = messages[3].as_ref().expect("M129 said");
@@ -276,7 +276,7 @@ fn axis_spat_b45_tilts_the_tool_45_degrees_about_y_and_keeps_the_tip() {
         }
         let e = s[4].explanation.as_ref().expect("the why panel gets the choice");
         assert!(e.decisions.contains(&schwenkbar_core::unconfirmed::Decision::TcpmAxisSpat));
-        let note = s[4].message.as_ref().expect("a note");
+        let note = s[4].message().expect("a note");
         assert!(note.de.starts_with("AXIS SPAT: SPA+0 SPB+45 SPC+0 → "), "{}", note.de);
     }
 }
@@ -297,14 +297,14 @@ fn axis_spat_angles_are_relative_to_the_tilted_plane_and_modal() {
     let (s30, c30) = (30f64.to_radians().sin(), 30f64.to_radians().cos());
     assert_close!(tool_axis_wcs(&m, &s[4]), DVec3::new(s30, 0.0, c30), 1e-9, "the plane");
     assert_close!(tool_axis_wcs(&m, &s[6]), DVec3::new(s45, 0.0, c45), 1e-9, "B+15 on SPB+30");
-    let note = s[6].message.as_ref().expect("a note");
+    let note = s[6].message().expect("a note");
     assert!(
         note.de.contains("fehlende gelten als 0°") && note.en.contains("missing ones count as 0°"),
         "{}",
         note.de
     );
     assert_close!(tool_axis_wcs(&m, &s[7]), DVec3::new(s50, 0.0, c50), 1e-9, "IB+5");
-    assert!(!s[7].message.as_ref().expect("a note").de.contains("fehlende"));
+    assert!(!s[7].message().expect("a note").de.contains("fehlende"));
     assert_eq!(s[8].axes.rotary, s[7].axes.rotary, "a block without A, B, C keeps the rotary axes");
     assert_close!(
         tool_axis_wcs(&m, &s[9]),

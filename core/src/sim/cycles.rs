@@ -18,10 +18,10 @@ mod pocket;
 
 use glam::{DVec2, DVec3};
 
-use crate::lang::Text;
 use crate::unconfirmed;
 
 use super::error::SimErrorCode;
+use super::note::Note;
 
 pub(crate) use pattern::{PatternValues, circle_220, grid_221, pattern_points};
 
@@ -46,7 +46,7 @@ pub(crate) struct CycleMove {
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct CycleRun {
     pub moves: Vec<CycleMove>,
-    pub note: Option<Text>,
+    pub note: Option<Note>,
 }
 
 /// Upper bound of moves one cycle call may produce (a tiny stepover must not exhaust memory).
@@ -180,12 +180,8 @@ pub(crate) fn run(p: &Params, pos: DVec3, tool_radius: f64) -> Result<Option<Cyc
         _ => return Ok(None),
     };
     let reciprocating = matches!(p.cycle, 251..=254) && p.or(366, 0.0) == 2.0;
-    let note = (reciprocating && unconfirmed::POCKET_RECIPROCATING_AS_VERTICAL).then(|| {
-        Text::owned(
-            format!("Zyklus {}: pendelndes Eintauchen (Q366=2) senkrecht simuliert", p.cycle),
-            format!("Cycle {}: reciprocating plunge (Q366=2) simulated vertically", p.cycle),
-        )
-    });
+    let note = (reciprocating && unconfirmed::POCKET_RECIPROCATING_AS_VERTICAL)
+        .then_some(Note::ReciprocatingPlunge { cycle: p.cycle });
     Ok(Some(CycleRun { moves, note }))
 }
 

@@ -8,10 +8,9 @@ use glam::{DMat3, DVec3};
 use crate::angle::short_delta;
 use crate::ast::{
     Axis, AxisWord, BinOp, BlkForm, BlockBody, CycleDef, CycleDefOld, Expr, FnJump, FnMath, FnOp, Func,
-    Label, Line, OldCycleData, OldCycleWord, Program, QName, RadiusComp, SysRead, ToolCall, ToolRef, Unit,
+    Label, Line, OldCycleData, OldCycleWord, Program, RadiusComp, SysRead, ToolCall, ToolRef, Unit,
 };
 use crate::axes::AxisValues;
-use crate::lang::Text;
 use crate::machine::{Carrier, Machine};
 use crate::orientation::{self, Context};
 use crate::plane::{Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RotaryAxis, Value};
@@ -22,6 +21,7 @@ use super::collision::{Bodies, Clearances, Collision, SafeAlternative};
 use super::cycles::{self, CycleMove};
 use super::error::SimErrorCode;
 use super::geometry::{Affine, Kin};
+use super::note::Note;
 use super::segment::{ArcPath, MachineAxes, MovePath, Segment, SegmentKind, SegmentPath, move_linear};
 use super::tools;
 use super::transform::{Level, Transforms};
@@ -55,7 +55,7 @@ pub(crate) struct Cx<'a> {
 #[derive(Debug, Default)]
 pub(crate) struct Rec {
     pub segments: Vec<Segment>,
-    pub message: Option<Text>,
+    pub note: Option<Note>,
     pub explanation: Option<Arc<Explanation>>,
 }
 
@@ -70,11 +70,16 @@ pub(crate) struct At<'s, 'r> {
 }
 
 impl At<'_, '_> {
-    /// The step's message, worded only when a full-detail step records it.
-    pub fn note(&mut self, text: impl FnOnce() -> Text) {
+    /// The step's note, made only when a full-detail step records it.
+    pub fn note(&mut self, note: impl FnOnce() -> Note) {
         if let Some(r) = self.rec.as_deref_mut() {
-            r.message = Some(text());
+            r.note = Some(note());
         }
+    }
+
+    /// Whether a full-detail step has no note yet (a cycle call's own note stays).
+    pub fn unnoted(&self) -> bool {
+        self.rec.as_ref().is_some_and(|r| r.note.is_none())
     }
 }
 
@@ -233,35 +238,19 @@ pub const STAY_SECONDS: f64 = 1.0;
 /// What a block's M functions tell the trainee: TCPM switched on or off, a program stop, M92's
 /// assumed datum, or the functions the simulator does not model.
 fn m_note(at: &mut At<'_, '_>, m: &[u32]) {
-    if let Some(text) = tcpm::m_note(m) {
-        at.note(|| text);
+    if m.contains(&128) {
+        at.note(|| Note::TcpmOn { word: "M128", spatial: false });
+    } else if m.contains(&129) {
+        at.note(|| Note::TcpmOff { word: "M129" });
     } else if m.contains(&0) {
-        at.note(|| halt_note("M0"));
+        at.note(|| Note::Halt { word: "M0" });
     } else if m.contains(&1) {
-        at.note(|| {
-            Text::new(
-                "M1: wahlweiser Programmhalt (nur mit Programmiertem Halt); der Trainer läuft weiter",
-                "M1: optional program stop (only with optional stop on); the trainer runs on",
-            )
-        });
+        at.note(|| Note::OptionalStop);
     } else if m.contains(&92) {
-        at.note(|| unconfirmed::Decision::M92Datum.text());
+        at.note(|| Note::Assumed { decision: unconfirmed::Decision::M92Datum });
     } else if m.iter().any(|f| !MODELED_M.contains(f)) {
-        at.note(|| {
-            let words: Vec<String> =
-                m.iter().filter(|f| !MODELED_M.contains(f)).map(|f| format!("M{f}")).collect();
-            let words = words.join(", ");
-            Text::owned(format!("{words} nicht simuliert"), format!("{words} not simulated"))
-        });
+        at.note(|| Note::MNotSimulated { m: m.iter().copied().filter(|f| !MODELED_M.contains(f)).collect() });
     }
-}
-
-/// `STOP` and `M0` (`word`): the control stops the program run there; the trainer does not.
-fn halt_note(word: &str) -> Text {
-    Text::owned(
-        format!("{word}: die Steuerung hält hier an (weiter mit NC-Start); der Trainer läuft weiter"),
-        format!("{word}: the control stops here (continue with NC start); the trainer runs on"),
-    )
 }
 
 fn rotary_of(axis: Axis) -> Option<RotaryAxis> {
@@ -411,16 +400,11 @@ impl Interp {
             if matches!(*body, BlockBody::EndPgm { .. }) {
                 self.pc = cx.program.blocks.len();
             }
-            at.note(|| {
-                Text::new(
-                    "Nach Programmende (M30/M2): nicht ausgeführt",
-                    "After program end (M30/M2): not executed",
-                )
-            });
+            at.note(|| Note::AfterEnd);
             return Ok(false);
         }
         if block.skip() && cx.options.block_skip {
-            at.note(|| Text::new("Satz ausgeblendet (/)", "Block skipped (/)"));
+            at.note(|| Note::BlockSkipped);
             return Ok(false);
         }
         if !matches!(&*body, BlockBody::CycleDefOld(d) if d.number == 7) {
@@ -435,12 +419,7 @@ impl Interp {
                 self.q.insert(113, if *unit == Unit::Inch { 1.0 } else { 0.0 });
                 self.unit = *unit;
                 if *unit == Unit::Inch {
-                    at.note(|| {
-                        Text::new(
-                            "Programm in Inch: Längen in Zoll (× 25,4 mm), F in 1/10 inch/min",
-                            "Program in inches: lengths × 25.4 mm, F in 1/10 inch/min",
-                        )
-                    });
+                    at.note(|| Note::Inch);
                 }
             }
             BlockBody::Empty | BlockBody::Structure { .. } => {}
@@ -506,12 +485,7 @@ impl Interp {
             BlockBody::Cc(m) => {
                 let last = self.contour.geom_start.unwrap_or(self.programmed());
                 self.contour.pole = Some(self.pole_of(&m.axes, last)?);
-                at.note(|| {
-                    Text::new(
-                        "CC: Kreismittelpunkt/Pol (keine Bewegung)",
-                        "CC: circle centre/pole (no motion)",
-                    )
-                });
+                at.note(|| Note::CircleCentre);
             }
             BlockBody::C(m) | BlockBody::Cr(m) | BlockBody::Ct(m) | BlockBody::Lp(m) | BlockBody::Cp(m) => {
                 self.contour(at, body, m)?;
@@ -528,13 +502,7 @@ impl Interp {
             BlockBody::CyclCallPos(l) => self.call_pos(at, l)?,
             BlockBody::PatternDef(items) => {
                 self.calls_cycle.pattern = Some(at.block);
-                let n = items.len();
-                at.note(|| {
-                    Text::owned(
-                        format!("PATTERN DEF: {n} Element(e) für CYCL CALL PAT"),
-                        format!("PATTERN DEF: {n} item(s) for CYCL CALL PAT"),
-                    )
-                });
+                at.note(|| Note::PatternDef { items: items.len() });
             }
             BlockBody::FnMath(f) => self.fn_math(f)?,
             BlockBody::FnJump(j) => self.fn_jump(at.cx, j)?,
@@ -572,24 +540,11 @@ impl Interp {
                 let rep = rep.map(|v| self.repeats(&v)).transpose()?;
                 self.call_lbl(at.cx, at.block, label, rep)?;
             }
-            BlockBody::CallPgm { path } => {
-                let p = path.clone();
-                at.note(|| {
-                    Text::owned(
-                        format!("CALL PGM {p}: nicht simuliert"),
-                        format!("CALL PGM {p}: not simulated"),
-                    )
-                })
-            }
+            BlockBody::CallPgm { path } => at.note(|| Note::CallPgm { path: path.clone() }),
             BlockBody::QAssign { target, expr, .. } => self.q_assign(*target, expr)?,
             BlockBody::SysRead(r) => self.sysread(at, r)?,
             BlockBody::FnOther { number, text } => self.fn_other(at, *number, text)?,
-            BlockBody::Unknown { text } => {
-                let t = text.clone();
-                at.note(|| {
-                    Text::owned(format!("Satz nicht simuliert: {t}"), format!("Block not simulated: {t}"))
-                })
-            }
+            BlockBody::Unknown { text } => at.note(|| Note::BlockNotSimulated { text: text.clone() }),
             // Run by `step` itself; listed so that a new block kind needs a decision here.
             BlockBody::BeginPgm { .. }
             | BlockBody::Empty

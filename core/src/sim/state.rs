@@ -8,7 +8,7 @@ use std::sync::Arc;
 use glam::{DMat3, DVec3};
 use serde::Serialize;
 
-use super::{ActiveTransform, Kin, MachineAxes, Segment};
+use super::{ActiveTransform, Kin, MachineAxes, Note, Segment};
 use crate::lang::Text;
 use crate::machine::Machine;
 use crate::solve::Explanation;
@@ -134,7 +134,8 @@ pub struct State {
     pub plane: Option<Arc<ActivePlane>>,
     /// The solve explanation of this block (PLANE, cycle 19).
     pub explanation: Option<Arc<Explanation>>,
-    pub message: Option<Text>,
+    /// What the block tells the trainee ([`Note::text`] words it).
+    pub note: Option<Note>,
     pub segments: Vec<Segment>,
     /// M30/M2 or END PGM reached.
     pub ended: bool,
@@ -179,10 +180,16 @@ pub struct ListingRow {
     pub axes: MachineAxes,
     /// The active plane's spatial angles SPA, SPB, SPC.
     pub spatial: Option<[f64; 3]>,
-    pub message: Option<Text>,
+    pub note: Option<Note>,
 }
 
 impl State {
+    /// The block's note in words ([`Note::text`]).
+    #[must_use]
+    pub fn message(&self) -> Option<Text> {
+        self.note.as_ref().map(Note::text)
+    }
+
     /// A length in mm as the position display shows it: in the program's unit.
     #[must_use]
     pub fn shown(&self, mm: f64) -> f64 {

@@ -41,7 +41,7 @@ fn a_tool_length_under_30_mm_is_a_difference_to_a_zero_tool() {
     let s = after(&p, &sim, 5);
     assert!((s.tool.length - 44.394).abs() < 1e-9, "{}", s.tool.length);
     assert!((s.q[&114] + 55.606).abs() < 1e-9, "Q114 is the control's L");
-    let said = s.message.expect("said on the TOOL CALL");
+    let said = s.message().expect("said on the TOOL CALL");
     assert!(
         said.de.contains("L=-55.606 gilt als Differenz zum Nullwerkzeug: simuliert mit L=+44.394"),
         "{said:?}"
@@ -77,7 +77,7 @@ fn a_shop_tool_table_gives_the_called_tools() {
     assert_eq!(after(&program, &sim, 2).tool.number, 5, "called by its name");
     let s = after(&program, &sim, 3);
     assert!(!s.tool.known, "tool 1 is in the shipped table, not in the shop's");
-    let said = s.message.expect("said");
+    let said = s.message().expect("said");
     assert_eq!(said.de, "Werkzeug 1 nicht in der Werkzeugtabelle: L=100 R=5 angenommen");
 }
 

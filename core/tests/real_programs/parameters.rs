@@ -49,7 +49,7 @@ fn fn_functions_the_trainer_does_not_compute_are_kept_and_said() {
     same("FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:", "FN 16: F-PRINT TNC:\\MASKE.A/SCREEN:");
     same("FN 28: TABREAD Q80 =0 /\"Stueck\"", "FN 28: TABREAD Q80 =0 /\"Stueck\"");
     let (p, sim) = run("0 BEGIN PGM F MM\n1 FN 18: SYSREAD Q32 = ID990 NR2\n2 END PGM F MM\n");
-    let m = after(&p, &sim, 1).message.expect("said on its block");
+    let m = after(&p, &sim, 1).message().expect("said on its block");
     assert!(m.de.contains("nicht simuliert") && m.en.contains("not simulated"), "{m:?}");
     // FN 14 stops the run with the program's own error.
     let (program, _) = parse("0 BEGIN PGM F MM\n1 FN 14: ERROR = 1000\n2 END PGM F MM\n");
@@ -96,7 +96,7 @@ fn sysread_id50_gives_the_tool_data() {
     let s = after(&p, &sim, 8);
     assert_eq!((s.q[&1], s.q[&2], s.q[&3], s.q[&4]), (80.0, 6.0, 6.0, 0.0));
     assert!(s.q[&5] > 0.0, "the default tool has a length");
-    let m = s.message.expect("said on its block");
+    let m = s.message().expect("said on its block");
     assert!(m.de.contains("Werkzeug 4711 nicht in der Werkzeugtabelle"), "{m:?}");
     assert!(m.en.contains("tool 4711 not in the tool table"), "{m:?}");
 }
@@ -113,7 +113,7 @@ fn tabread_without_the_table_assumes_zero_and_says_so() {
          4 END PGM T MM\n");
     let s = after(&p, &sim, 3);
     assert_eq!((s.q[&10], s.q[&11], s.q[&12]), (1.0, 0.0, 5.0));
-    let m = after(&p, &sim, 2).message.expect("said on its block");
+    let m = after(&p, &sim, 2).message().expect("said on its block");
     assert!(m.de.contains("Q10 = 0 angenommen") && m.de.contains("Q12 bleibt 5"), "{m:?}");
     assert!(m.en.contains("Q11 = 0 assumed") && m.en.contains("Q12 stays 5"), "{m:?}");
 }
@@ -163,7 +163,7 @@ fn a_tool_called_by_a_parameter() {
     assert_eq!((t.number, t.length, t.radius, t.known), (40, 75.0, 6.0, true), "TOOL DEF Q6 defined tool 40");
     let s = after(&p, &sim, 6);
     assert!(!s.tool.known && s.tool.name == "QS1", "{:?}", s.tool);
-    assert!(s.message.is_some_and(|m| m.en.contains("Tool \"QS1\" not in the tool table")));
+    assert!(s.message().is_some_and(|m| m.en.contains("Tool \"QS1\" not in the tool table")));
 
     let (p, _) = parse("0 BEGIN PGM T MM\n1 Q5 = -2\n2 TOOL CALL Q5 Z\n3 END PGM T MM\n");
     let sim = simulate(&p, &Machine::builtin("ac-table").expect("machine"), &SimOptions::default());

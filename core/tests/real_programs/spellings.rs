@@ -29,7 +29,7 @@ fn a_training_simulators_export_opens_and_runs() {
     let cycl_end =
         p.blocks.iter().position(|b| matches!(&*b.body(), BlockBody::Unknown { .. })).expect("kept");
     let state = sim.state_at(&p, sim.first_step[cycl_end].expect("executed") as usize).expect("state");
-    let m = state.message.expect("said on its block");
+    let m = state.message().expect("said on its block");
     assert!(m.de.contains("nicht simuliert: CYCL END"), "{m:?}");
     assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
     // Another name in END PGM (`unconfirmed::END_PGM_NAME_IS_BOOKKEEPING`): said, not refused,
@@ -119,7 +119,7 @@ fn m140_retracts_along_the_tool_axis() {
     assert!((up.tip_wcs - before.tip_wcs - glam::DVec3::new(0.0, 0.0, 50.0)).length() < 1e-9);
     let max = after(&p, &sim, 4);
     assert!(max.tip_wcs.z > up.tip_wcs.z && (max.tip_wcs.x - 10.0).abs() < 1e-9, "{:?}", max.tip_wcs);
-    assert!(max.message.is_some_and(|m| m.de.contains("M140")), "said on its block");
+    assert!(max.message().is_some_and(|m| m.de.contains("M140")), "said on its block");
 }
 
 #[test]
@@ -190,7 +190,7 @@ fn cycle_parameters_with_symbolic_values() {
         3 L X+0 Y+0 Z+50 R0 FMAX M3\n\
         4 CYCL CALL\n\
         5 END PGM C MM\n");
-    let m = after(&p, &sim, 4).message.expect("said on its block");
+    let m = after(&p, &sim, 4).message().expect("said on its block");
     assert!(m.de.contains("Zyklus 22 nicht simuliert"), "{m:?}");
 }
 
@@ -329,7 +329,7 @@ fn m120_with_its_look_ahead_and_the_feed_functions_not_simulated() {
     }
     let (program, sim) = run("0 BEGIN PGM LA MM\n1 TOOL CALL 1 Z S1000\n2 M120 LA5\n3 END PGM LA MM\n");
     let state = after(&program, &sim, 2);
-    let message = state.message.expect("said");
+    let message = state.message().expect("said");
     assert!(message.de.contains("M120 nicht simuliert"), "{message:?}");
     // The feed functions the run does not model say so too.
     for m in [109, 110, 116, 136] {
@@ -338,7 +338,7 @@ fn m120_with_its_look_ahead_and_the_feed_functions_not_simulated() {
         );
         let (program, sim) = run(&src);
         for block in [2, 3] {
-            let message = after(&program, &sim, block).message.expect("said");
+            let message = after(&program, &sim, block).message().expect("said");
             assert!(
                 message.de.contains(&format!("M{m} nicht simuliert")),
                 "M{m} in block {block}: {message:?}"
@@ -360,7 +360,7 @@ fn every_m_function_not_modelled_is_said_and_m13_m14_m0_m6_set_the_spindle() {
                4 L X+10 R0 F100 M90 M25\n5 CC X+0 Y+0\n6 C X-10 Y+0 DR+ M7\n7 M0\n8 M14\n9 M6\n\
                10 M30\n11 END PGM M MM\n";
     let (program, sim) = run(src);
-    let message = |n| after(&program, &sim, n).message.map(|m| m.de).unwrap_or_default();
+    let message = |n| after(&program, &sim, n).message().map(|m| m.de).unwrap_or_default();
     let spindle = |n| after(&program, &sim, n).spindle.dir;
     assert_eq!(message(3), "M8 nicht simuliert");
     assert_eq!(message(4), "M90, M25 nicht simuliert");
@@ -405,7 +405,7 @@ fn m92_moves_in_machine_coordinates_as_m91_does() {
     assert_eq!((xy.x, xy.y), (-5.0, 7.0), "machine X/Y");
     // Block 5 is in workpiece coordinates again: the tip 30 mm above the workpiece datum.
     assert!((after(&p92, &s92, 5).tip_wcs.z - 30.0).abs() < 1e-9);
-    let said = after(&p92, &s92, 3).message.expect("said").de;
+    let said = after(&p92, &s92, 3).message().expect("said").de;
     assert!(said.starts_with("M92:") && said.contains("M91"), "{said}");
 }
 
@@ -450,7 +450,7 @@ fn stop_qs_touch_probe_and_a_setup_header_run_and_are_said() {
     }
     assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
     for n in [2, 3, 4] {
-        assert!(after(&p, &sim, n).message.is_some(), "block {n} says what it does");
+        assert!(after(&p, &sim, n).message().is_some(), "block {n} says what it does");
     }
 }
 
@@ -487,7 +487,7 @@ fn every_block_of_every_family_runs_or_says_why_not() {
                 | BlockBody::TouchProbe(_)
                 | BlockBody::QsAssign { .. }
         ) {
-            assert!(s.message.is_some(), "block {i} not modelled and not said: {:?}", b.body());
+            assert!(s.message().is_some(), "block {i} not modelled and not said: {:?}", b.body());
         }
     }
 }
@@ -597,7 +597,7 @@ fn an_inch_program_moves_the_machine_as_its_millimetre_twin() {
         after(&pm, &sm, 12).segments.iter().map(|s| s.end.linear.z).fold(f64::INFINITY, f64::min);
     close(deepest, deepest_mm, "the deepest point of the drill");
     // The first block says the unit.
-    let first = after(&pi, &si, 0).message.expect("the unit is said");
+    let first = after(&pi, &si, 0).message().expect("the unit is said");
     assert!(first.de.contains("Inch") && first.en.contains("inches"), "{first:?}");
 }
 
@@ -611,7 +611,7 @@ fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
     let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
     let blank = s.blank.expect("the header's blank");
     assert_eq!((blank.min.to_array(), blank.max.to_array()), ([0.0, 0.0, -20.5], [100.0, 90.0, 0.0]));
-    let said = s.message.expect("said on the header line");
+    let said = s.message().expect("said on the header line");
     assert!(said.de.contains("100 × 90 × 20,5") && said.en.contains("100 × 90 × 20.5"), "{said:?}");
     let end = after(&p, &sim, 2);
     assert_eq!(end.blank, Some(blank), "kept to the end");
@@ -621,7 +621,7 @@ fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
     let (p, sim) = run(&format!("{header}{with_blk}"));
     let s = sim.state_at(&p, sim.first_step[1].expect("run") as usize).expect("state");
     assert_eq!(s.blank, None, "the BLK FORM applies, not the header");
-    assert!(s.message.is_some_and(|m| m.en.contains("BLK FORM, which applies")));
+    assert!(s.message().is_some_and(|m| m.en.contains("BLK FORM, which applies")));
     let blank = after(&p, &sim, 3).blank.expect("BLK FORM");
     assert_eq!(blank.max.to_array(), [10.0, 10.0, 0.0]);
 }

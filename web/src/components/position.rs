@@ -122,7 +122,7 @@ pub fn position_display(props: &PositionProps) -> Html {
                 if status.is_empty() { { l.t("keine Transformation aktiv", "no transformation active") } }
                 else { { status.join(" · ") } }
             </p>
-            if let Some(m) = &s.message {
+            if let Some(m) = s.message() {
                 <p class="block-message">{ l.t(&m.de, &m.en) }</p>
             }
         </section>

@@ -4,8 +4,8 @@
 use glam::DVec3;
 
 use super::{CycleMove, CycleRun, MAX_CYCLE_MOVES, Params, feed, rapid};
-use crate::lang::Text;
 use crate::sim::error::SimErrorCode;
+use crate::sim::note::Note;
 use crate::unconfirmed;
 
 /// Cycle 232 PLANFRAESEN, strategy Q389 = 0 (meander), over the rectangle Q225/Q226 (start in
@@ -66,12 +66,8 @@ pub(super) fn face_mill_232(p: &Params, pos: DVec3, tool_radius: f64) -> Result<
     }
     out.push(feed(start(z_top + clear), f_pre));
     let strategy = p.or(389, 0.0);
-    let note = (strategy != 0.0 && unconfirmed::CYCLE232_STRATEGY).then(|| {
-        Text::owned(
-            format!("Zyklus {}: Strategie Q389={strategy} als Mäander simuliert", p.cycle),
-            format!("Cycle {}: strategy Q389={strategy} simulated as a meander", p.cycle),
-        )
-    });
+    let note = (strategy != 0.0 && unconfirmed::CYCLE232_STRATEGY)
+        .then_some(Note::FaceStrategy { cycle: p.cycle, strategy });
     for (n, &(z, f)) in levels.iter().enumerate() {
         if n > 0 {
             out.push(rapid(DVec3::new(last_x(&out), last_y(&out), z_top + clear)));
@@ -130,10 +126,7 @@ pub(super) fn face_mill_233(p: &Params, pos: DVec3, tool_radius: f64) -> Result<
     }
     let limits = [347, 348, 349].iter().any(|&i| p.or(i, 0.0) != 0.0);
     if (limits || p.or(389, 0.0) != 0.0) && unconfirmed::CYCLE233_AS_232 {
-        run.note = Some(Text::new(
-            "Zyklus 233: als Mäander ohne Begrenzungen (Q347–Q349) simuliert",
-            "Cycle 233: simulated as a meander without limits (Q347–Q349)",
-        ));
+        run.note = Some(Note::Cycle233AsMeander);
     }
     Ok(run)
 }

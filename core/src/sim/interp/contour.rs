@@ -240,12 +240,7 @@ impl Interp {
         };
         let elem = self.before_corner(at.cx, at.block, elem)?;
         if m.axes.iter().any(|w| linear_index(w.axis).is_none()) {
-            at.note(|| {
-                Text::new(
-                    "Drehachse im Kreissatz nicht simuliert",
-                    "Rotary axis in an arc block not simulated",
-                )
-            });
+            at.note(|| Note::ArcRotaryAxis);
         }
         self.run_element(at, elem, m.comp, rate)?;
         if m.m.contains(&99) {

@@ -69,24 +69,12 @@ impl Interp {
                 }
                 self.sync_pos();
             }
-            (11, _) => at.note(|| {
-                Text::new("Zyklus 11 (Maßfaktor) nicht simuliert", "Cycle 11 (scaling) not simulated")
-            }),
-            (19, 0) => at.note(|| {
-                Text::new(
-                    "Zyklus 19: die Winkel folgen im Satz 19.1",
-                    "Cycle 19: the angles follow in block 19.1",
-                )
-            }),
+            (11, _) => at.note(|| Note::Cycle11NotSimulated),
+            (19, 0) => at.note(|| Note::Cycle19AnglesFollow),
             (19, _) => self.cycle19(at, words)?,
             (n, 0) => {
                 self.calls_cycle.cycle = Some(StoredCycle::Old(n));
-                at.note(|| {
-                    Text::owned(
-                        format!("Zyklus {n} (alte Form) definiert"),
-                        format!("Cycle {n} (old form) defined"),
-                    )
-                });
+                at.note(|| Note::OldCycleDefined { cycle: n });
             }
             _ => {}
         }
@@ -100,13 +88,7 @@ impl Interp {
             return self.pattern_cycle(at, d);
         }
         self.calls_cycle.cycle = Some(StoredCycle::New(at.block));
-        let n = d.number;
-        at.note(|| {
-            Text::owned(
-                format!("Zyklus {n} definiert, wirkt beim Aufruf"),
-                format!("Cycle {n} defined, acts when called"),
-            )
-        });
+        at.note(|| Note::CycleDefined { cycle: d.number });
         Ok(())
     }
 
@@ -166,9 +148,7 @@ impl Interp {
         match self.calls_cycle.cycle {
             None => Err(SimErrorCode::NoCycle),
             Some(StoredCycle::Old(n)) => {
-                at.note(|| {
-                    Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
-                });
+                at.note(|| Note::CycleNotSimulated { cycle: n });
                 Ok(None)
             }
             Some(StoredCycle::New(b)) => {
@@ -188,13 +168,11 @@ impl Interp {
         let n = p.cycle;
         let Some(CycleRun { moves, note: simplified }) = cycles::run(&p, self.pos_i, self.tool.radius)?
         else {
-            at.note(|| {
-                Text::owned(format!("Zyklus {n} nicht simuliert"), format!("Cycle {n} not simulated"))
-            });
+            at.note(|| Note::CycleNotSimulated { cycle: n });
             return Ok(None);
         };
-        if let Some(t) = simplified {
-            at.note(|| t);
+        if let Some(note) = simplified {
+            at.note(|| note);
         }
         self.run_moves(at, &moves)?;
         Ok(Some((n, moves.len())))
@@ -202,15 +180,10 @@ impl Interp {
 
     /// `M99`, `CYCL CALL` and each block of a modal `M89` call: the stored cycle here.
     pub(super) fn call_cycle(&mut self, at: &mut At<'_, '_>) -> R<()> {
-        if let Some((number, n)) = self.run_stored(at, |_| {})?
-            && at.rec.as_ref().is_some_and(|r| r.message.is_none())
+        if let Some((cycle, moves)) = self.run_stored(at, |_| {})?
+            && at.unnoted()
         {
-            at.note(|| {
-                Text::owned(
-                    format!("Zyklus {number} ausgeführt ({n} Bewegungen in der Bearbeitungsebene)"),
-                    format!("Cycle {number} executed ({n} moves in the working plane)"),
-                )
-            });
+            at.note(|| Note::CycleExecuted { cycle, moves });
         }
         Ok(())
     }
@@ -358,14 +331,8 @@ impl Interp {
             self.run_moves(at, &pre)?;
             moves += pre.len() + self.run_stored(at, |q| shift_surface(q, z))?.map_or(0, |(_, n)| n);
         }
-        let (number, k) = (p.cycle, points.len());
-        if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            at.note(|| {
-                Text::owned(
-                    format!("CYCL CALL PAT: Zyklus {number} an {k} Punkten ausgeführt ({moves} Bewegungen)"),
-                    format!("CYCL CALL PAT: cycle {number} executed at {k} points ({moves} moves)"),
-                )
-            });
+        if at.unnoted() {
+            at.note(|| Note::PatternCall { cycle: p.cycle, points: points.len(), moves });
         }
         self.end_m(m);
         Ok(())
@@ -408,15 +375,10 @@ impl Interp {
         };
         self.run_moves(at, &pre)?;
         let shift = target.z;
-        if let Some((number, n)) = self.run_stored(at, |q| shift_surface(q, shift))?
-            && at.rec.as_ref().is_some_and(|r| r.message.is_none())
+        if let Some((cycle, moves)) = self.run_stored(at, |q| shift_surface(q, shift))?
+            && at.unnoted()
         {
-            at.note(|| {
-                Text::owned(
-                    format!("CYCL CALL POS: Zyklus {number} ausgeführt ({n} Bewegungen)"),
-                    format!("CYCL CALL POS: cycle {number} executed ({n} moves)"),
-                )
-            });
+            at.note(|| Note::PosCall { cycle, moves });
         }
         self.end_m(&l.m);
         Ok(())
@@ -472,17 +434,9 @@ impl Interp {
             moves += 1;
             self.run_moves(at, &[rapid(self.pos_i.truncate().extend(high))])?;
         }
-        let (number, k) = (d.number, points.len().min(MAX_PATTERN_POINTS));
-        let called = called.map_or_else(String::new, |n| n.to_string());
-        if at.rec.as_ref().is_some_and(|r| r.message.is_none()) {
-            at.note(|| {
-                Text::owned(
-                    format!(
-                        "Zyklus {number}: Zyklus {called} an {k} Punkten ausgeführt ({moves} Bewegungen)"
-                    ),
-                    format!("Cycle {number}: cycle {called} executed at {k} points ({moves} moves)"),
-                )
-            });
+        if at.unnoted() {
+            let points = points.len().min(MAX_PATTERN_POINTS);
+            at.note(|| Note::PatternCycle { cycle: d.number, called, points, moves });
         }
         Ok(())
     }

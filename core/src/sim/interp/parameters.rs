@@ -95,40 +95,22 @@ impl Interp {
         {
             return self.tabread_assumed(at, first, count);
         }
-        at.note(|| {
-            Text::owned(
-                format!("FN {number}: {text} – wird nicht simuliert"),
-                format!("FN {number}: {text} – not simulated"),
-            )
-        });
+        at.note(|| Note::FnNotSimulated { number, text: text.to_owned() });
         Ok(())
     }
 
     /// `FN 28: TABREAD` into `count` parameters from `first` without the table
     /// ([`unconfirmed::TABREAD_ASSUMES_ZERO`]): a parameter without a value gets 0.
     pub(super) fn tabread_assumed(&mut self, at: &mut At<'_, '_>, first: u32, count: u32) -> R<()> {
-        let mut said = (Vec::new(), Vec::new());
+        let mut values = Vec::new();
         for index in first..first.saturating_add(count.min(100)) {
-            let name = QName(index);
-            match self.q.get(&index) {
-                Some(&v) => {
-                    let value = |lang| crate::number::prose(v, Some(4), lang);
-                    said.0.push(format!("{name} bleibt {}", value(crate::Lang::De)));
-                    said.1.push(format!("{name} stays {}", value(crate::Lang::En)));
-                }
-                None => {
-                    self.set_q(index, 0.0)?;
-                    said.0.push(format!("{name} = 0 angenommen"));
-                    said.1.push(format!("{name} = 0 assumed"));
-                }
+            let kept = self.q.get(&index).copied();
+            if kept.is_none() {
+                self.set_q(index, 0.0)?;
             }
+            values.push((index, kept));
         }
-        at.note(|| {
-            Text::owned(
-                format!("FN 28: TABREAD – die Tabelle wird nicht simuliert: {}", said.0.join(", ")),
-                format!("FN 28: TABREAD – the table is not simulated: {}", said.1.join(", ")),
-            )
-        });
+        at.note(|| Note::Tabread { values });
         Ok(())
     }
 
@@ -177,36 +159,13 @@ impl Interp {
             }
             _ => None,
         };
-        let (id, target) = (r.id, QName(r.target));
+        let (id, target) = (r.id, r.target);
         match v {
-            Some(v) => {
-                self.set_q(r.target, v)?;
-                let (de, en) = match assumed {
-                    Some(n) => (
-                        format!(" (Werkzeug {n} nicht in der Werkzeugtabelle: Standardwerkzeug)"),
-                        format!(" (tool {n} not in the tool table: the default tool)"),
-                    ),
-                    None => Default::default(),
-                };
-                at.note(|| {
-                    Text::owned(
-                        format!(
-                            "FN 18: ID{id} gelesen: {target} = {}{de}",
-                            crate::number::prose(v, Some(4), crate::Lang::De)
-                        ),
-                        format!(
-                            "FN 18: ID{id} read: {target} = {}{en}",
-                            crate::number::prose(v, Some(4), crate::Lang::En)
-                        ),
-                    )
-                });
+            Some(value) => {
+                self.set_q(target, value)?;
+                at.note(|| Note::SysRead { id, target, value, default_tool: assumed });
             }
-            None => at.note(|| {
-                Text::owned(
-                    format!("FN 18: ID{id} wird nicht simuliert, {target} bleibt unverändert"),
-                    format!("FN 18: ID{id} is not simulated, {target} stays as it was"),
-                )
-            }),
+            None => at.note(|| Note::SysReadNotSimulated { id, target }),
         }
         Ok(())
     }

@@ -78,34 +78,24 @@ impl Interp {
             self.tool.radius = entry.radius + dr;
             self.tool.known = known;
             if self.tool.length != entry.length + dl {
-                let (l, sim) = (entry.length, self.tool.length);
-                at.note(|| zero_tool_note(l, sim));
+                let (written, simulated) = (entry.length, self.tool.length);
+                at.note(|| Note::ZeroToolLength { written, simulated });
             }
             if !known {
-                let (l, r) = (self.tool.length, self.tool.radius);
-                // A tool called by name is named by it, not by the number 0 it gets.
-                let n = match self.tool.name.as_str() {
-                    "" => self.tool.number.to_string(),
-                    name => format!("\"{name}\""),
-                };
-                at.note(|| {
-                    Text::owned(
-                        format!("Werkzeug {n} nicht in der Werkzeugtabelle: L={l} R={r} angenommen"),
-                        format!("Tool {n} not in the tool table: assuming L={l} R={r}"),
-                    )
+                let t = &self.tool;
+                at.note(|| Note::ToolNotInTable {
+                    number: t.number,
+                    name: t.name.to_string(),
+                    length: t.length,
+                    radius: t.radius,
                 });
             }
         }
         if let Some(a) = t.axis {
             self.tool.axis = letter(a);
             if a != Axis::Z {
-                let c = self.tool.axis;
-                at.note(|| {
-                    Text::owned(
-                        format!("Werkzeugachse {c}: simuliert wird mit Werkzeugachse Z"),
-                        format!("Tool axis {c}: simulated with tool axis Z"),
-                    )
-                });
+                let axis = self.tool.axis;
+                at.note(|| Note::ToolAxis { axis });
             }
         }
         if let Some(s) = &t.speed {
@@ -206,35 +196,18 @@ impl Interp {
                 let tool = self.tool_of(tool)?;
                 self.tool_defs.retain(|(t, ..)| *t != tool);
                 self.tool_defs.push((tool, l, r));
-                at.note(|| {
-                    Text::new(
-                        "TOOL DEF: Werkzeug im Programm definiert",
-                        "TOOL DEF: tool defined in the program",
-                    )
-                });
+                at.note(|| Note::ToolDef);
             }
             BlockBody::Stop { m } => {
                 self.spindle_m(m);
-                at.note(|| halt_note("STOP"));
+                at.note(|| Note::Halt { word: "STOP" });
                 self.end_m(m);
             }
             BlockBody::QsAssign { index, .. } => {
-                let n = *index;
-                at.note(|| {
-                    Text::owned(
-                        format!("QS{n}: String-Parameter werden nicht simuliert"),
-                        format!("QS{n}: string parameters are not simulated"),
-                    )
-                });
+                at.note(|| Note::QsNotSimulated { index: *index });
             }
             BlockBody::TouchProbe(d) => {
-                let n = d.number;
-                at.note(|| {
-                    Text::owned(
-                        format!("TCH PROBE {n}: Tastsystemzyklus wird nicht simuliert"),
-                        format!("TCH PROBE {n}: touch-probe cycle not simulated"),
-                    )
-                });
+                at.note(|| Note::TouchProbe { cycle: d.number });
             }
             _ => {}
         }
@@ -256,27 +229,12 @@ impl Interp {
         };
         let (x, y, z) = (size.x, size.y, size.z);
         if at.cx.program.blocks.iter().any(|b| matches!(b.stored_body(), Some(BlockBody::BlkForm(_)))) {
-            at.note(|| {
-                Text::new(
-                    "Rohteil des Einrichteblatts: das Programm hat eine BLK FORM, sie gilt",
-                    "Blank of the setup sheet: the program has a BLK FORM, which applies",
-                )
-            });
+            at.note(|| Note::HeaderBlankIgnored);
             return;
         }
         self.blank = Some(Blank { min: DVec3::new(0.0, 0.0, -z), max: DVec3::new(x, y, 0.0) });
         self.rebuild_bodies(at.cx.machine);
-        let sizes = |l| {
-            let n = |v: f64| crate::number::prose(v, None, l);
-            (format!("{} × {} × {} mm", n(x), n(y), n(z)), format!("X0…{} Y0…{} Z−{}…0", n(x), n(y), n(z)))
-        };
-        at.note(|| {
-            let ((de, de_blk), (en, en_blk)) = (sizes(crate::Lang::De), sizes(crate::Lang::En));
-            Text::owned(
-                format!("Rohteil des Einrichteblatts {de} als BLK FORM {de_blk}"),
-                format!("Blank of the setup sheet {en} as BLK FORM {en_blk}"),
-            )
-        });
+        at.note(|| Note::HeaderBlank { size: [x, y, z] });
     }
 
     #[inline(never)]
@@ -297,24 +255,6 @@ impl Interp {
         self.sync_pos();
         Ok(())
     }
-}
-
-/// The TOOL CALL's note for a length read as the difference to a zero tool
-/// ([`unconfirmed::physical_tool_length`]).
-// Out of line: the page split (scripts/split_pages.py) can leave it, and the exact float
-// formatting it needs, to the wasm loaded after the first screen.
-#[inline(never)]
-fn zero_tool_note(l: f64, sim: f64) -> Text {
-    let num = |v: f64| crate::number::signed(v, 3);
-    let (l, sim, l0) = (num(l), num(sim), num(unconfirmed::ZERO_TOOL_LENGTH));
-    Text::owned(
-        format!(
-            "L={l} gilt als Differenz zum Nullwerkzeug: simuliert mit L={sim} (Nullwerkzeug L={l0} angenommen)"
-        ),
-        format!(
-            "L={l} counts as the difference to a zero tool: simulated with L={sim} (zero tool L={l0} assumed)"
-        ),
-    )
 }
 
 /// The cuboid of a setup-sheet header line: `QX…`, `QY…` and `QZ…` (each a positive number,

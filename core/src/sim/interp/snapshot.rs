@@ -44,7 +44,7 @@ impl Interp {
             q: self.q.clone(),
             plane: self.plane.clone(),
             explanation: rec.explanation,
-            message: rec.message,
+            note: rec.note,
             segments: rec.segments,
             ended: self.ended,
             executed,

@@ -3,32 +3,9 @@
 //! (the motion itself is in `motion.rs`).
 
 use crate::ast::{Tcpm, TcpmAxis};
-use crate::solve::{axis_words, fmt_deg};
+use crate::solve::axis_words;
 
 use super::*;
-
-/// What `M128` or `M129` in a block (`m`) tell the trainee.
-pub(super) fn m_note(m: &[u32]) -> Option<Text> {
-    if m.contains(&128) {
-        Some(switched_on("M128"))
-    } else if m.contains(&129) {
-        Some(Text::new("M129: TCPM aus", "M129: TCPM off"))
-    } else {
-        None
-    }
-}
-
-/// What `M128` and `FUNCTION TCPM` (`word`) tell the trainee.
-fn switched_on(word: &str) -> Text {
-    Text::owned(
-        format!(
-            "{word}: TCPM aktiv – die Werkzeugspitze bleibt auf dem programmierten Punkt, die Linearachsen gleichen die Drehachsen aus"
-        ),
-        format!(
-            "{word}: TCPM on – the tool tip stays on the programmed point, the linear axes compensate the rotary axes"
-        ),
-    )
-}
 
 impl Interp {
     /// TCPM on or off; the programmed position is taken anew from where the tool tip is.
@@ -59,16 +36,7 @@ impl Interp {
     pub(super) fn function_tcpm(&mut self, at: &mut At<'_, '_>, t: Tcpm) {
         self.set_tcpm(true);
         self.tcpm.spat = (t.axis == TcpmAxis::Spat).then_some([None; 3]);
-        at.note(|| match t.axis {
-            TcpmAxis::Pos => switched_on("FUNCTION TCPM"),
-            TcpmAxis::Spat => {
-                let on = switched_on("FUNCTION TCPM");
-                Text::owned(
-                    format!("{}; A, B, C sind Raumwinkel (AXIS SPAT)", on.de),
-                    format!("{}; A, B, C are spatial angles (AXIS SPAT)", on.en),
-                )
-            }
-        });
+        at.note(|| Note::TcpmOn { word: "FUNCTION TCPM", spatial: t.axis == TcpmAxis::Spat });
     }
 
     /// `AXIS SPAT`: the rotary axis positions for the spatial angles `written` in a positioning
@@ -106,25 +74,7 @@ impl Interp {
         expl.decisions.push(unconfirmed::Decision::TcpmAxisSpat);
         let expl = Arc::new(expl);
         let axes = expl.chosen_axes().unwrap_or_default();
-        let words = format!("SPA{} SPB{} SPC{}", fmt_deg(a), fmt_deg(b), fmt_deg(c));
-        let chosen = axis_words(&axes);
-        at.note(|| {
-            if missing > 0 {
-                Text::owned(
-                    format!(
-                        "AXIS SPAT: {words} → {chosen}; im ersten Satz alle drei Raumwinkel programmieren, fehlende gelten als 0°"
-                    ),
-                    format!(
-                        "AXIS SPAT: {words} → {chosen}; program all three spatial angles in the first block, missing ones count as 0°"
-                    ),
-                )
-            } else {
-                Text::owned(
-                    format!("AXIS SPAT: {words} → {chosen}"),
-                    format!("AXIS SPAT: {words} → {chosen}"),
-                )
-            }
-        });
+        at.note(|| Note::AxisSpat { spatial: [a, b, c], chosen: axis_words(&axes), missing: missing > 0 });
         if let Some(r) = at.rec.as_deref_mut() {
             r.explanation = Some(expl);
         }
@@ -134,7 +84,7 @@ impl Interp {
     /// `FUNCTION RESET TCPM`: off, whichever way it was switched on.
     pub(super) fn function_reset_tcpm(&mut self, at: &mut At<'_, '_>) {
         self.set_tcpm(false);
-        at.note(|| Text::new("FUNCTION RESET TCPM: TCPM aus", "FUNCTION RESET TCPM: TCPM off"));
+        at.note(|| Note::TcpmOff { word: "FUNCTION RESET TCPM" });
     }
 
     /// Before `TOOL CALL`, `M91` and `M92` (`word`) TCPM must be off

@@ -95,12 +95,7 @@ impl Interp {
         match pb.positioning {
             None | Some(Positioning::Stay) => {
                 if pb.positioning.is_none() {
-                    at.note(|| {
-                        Text::new(
-                            "MOVE/TURN/STAY fehlt: wie STAY behandelt",
-                            "MOVE/TURN/STAY missing: treated as STAY",
-                        )
-                    });
+                    at.note(|| Note::PositioningMissing);
                 }
                 self.stay_segment(at, before, self.tf.r());
             }
@@ -269,12 +264,7 @@ impl Interp {
             MoveBack::Max => MoveBack::Max,
         };
         self.retract(at, mb, Rate::Rapid)?;
-        at.note(|| {
-            Text::new(
-                "M140: Rückzug in Werkzeugachsrichtung (Eilgang)",
-                "M140: retraction in the tool axis direction (rapid)",
-            )
-        });
+        at.note(|| Note::Retract);
         Ok(())
     }
 
@@ -315,7 +305,7 @@ impl Interp {
             self.plane = None;
             self.stay_segment(at, before, DMat3::IDENTITY);
             self.sync_pos();
-            at.note(|| Text::new("Zyklus 19 zurückgesetzt", "Cycle 19 reset"));
+            at.note(|| Note::Cycle19Reset);
             return Ok(());
         }
         let machine = at.cx.machine;
@@ -353,14 +343,9 @@ impl Interp {
         }
         if unconfirmed::CYCLE19_MOVES_AXES {
             // Not the chosen convention; kept so the switch in unconfirmed.rs stays meaningful.
-            at.note(|| Text::new("Zyklus 19 positioniert die Achsen", "Cycle 19 positions the axes"));
+            at.note(|| Note::Cycle19MovesAxes);
         } else {
-            at.note(|| {
-                Text::new(
-                    "Zyklus 19 aktiv: Drehachsen mit L A+Q120 … positionieren",
-                    "Cycle 19 active: position the rotary axes with L A+Q120 …",
-                )
-            });
+            at.note(|| Note::Cycle19Active);
         }
         self.sync_pos();
         Ok(())
