@@ -333,7 +333,11 @@ async fn the_classroom_slip_never_loses_the_program_and_ctrl_z_brings_it_back() 
     assert!(query(&root, "[data-key=confirm-replace]").is_some());
     key_on(&root, ".tnc", "F1").await;
     assert!(eventually(|| !program_lines(&root)[0].contains("MEIN")).await, "PROGRAMM ERSETZEN");
-    assert_eq!(storage().get_item("schwenkbar.replaced").ok().flatten().as_deref(), Some(own));
+    // The replaced program is kept by an effect after the render: waited for, not read at once.
+    assert!(
+        eventually(|| storage().get_item("schwenkbar.replaced").ok().flatten().as_deref() == Some(own)).await,
+        "the replaced program is kept"
+    );
     key_ctrl(&root, "z").await;
     assert!(eventually(|| program_lines(&root)[0].contains("MEIN")).await, "Ctrl+Z: the own program back");
     key_ctrl(&root, "y").await;
@@ -422,7 +426,7 @@ async fn a_first_visit_follows_the_browsers_language_and_prompts_carry_no_intern
     let lang = query(&root, ".tnc").and_then(|t| t.get_attribute("lang"));
     assert_eq!(lang.as_deref(), Some(want), "navigator.language = {language}");
     // The choice stays once made: the page saved it.
-    assert!(storage().get_item("schwenkbar.prefs").ok().flatten().is_some_and(|p| p.contains(want)));
+    assert!(eventually(|| storage().get_item("schwenkbar.prefs").ok().flatten().is_some_and(|p| p.contains(want))).await);
     unmount(&root);
     clear_storage();
     let root = mount().await;
