@@ -51,9 +51,12 @@ pub async fn mount() -> Element {
     root
 }
 
-/// Gives yew's scheduler and the effects a moment to run.
+/// Waits until yew has rendered what the last event changed and run the effects after it
+/// (`yew::scheduler::flush`: its scheduler works through the microtask queue and wakes this when
+/// the queue is drained). No timer: what takes longer (an animation frame, a worker, WebGL
+/// start-up) is waited for on its DOM condition ([`eventually`], [`wait_for`]).
 pub async fn settle() {
-    yew::platform::time::sleep(Duration::from_millis(20)).await;
+    yew::scheduler::flush().await;
 }
 
 #[must_use]
@@ -283,16 +286,29 @@ pub async fn wait_for(root: &Element, selector: &str, ms: u64) -> Option<Element
     }
 }
 
-/// Waits (up to 3 s) until `check` holds: several apps with WebGL views share the page and a
-/// loaded machine, so a render can take longer than one settle.
+/// Waits (up to 3 s) until `check` holds: for what an effect starts and finishes later (an
+/// animation frame, a timer, a worker), checked after each render and every 20 ms.
 pub async fn eventually(mut check: impl FnMut() -> bool) -> bool {
     for _ in 0..150 {
+        settle().await;
         if check() {
             return true;
         }
-        settle().await;
+        yew::platform::time::sleep(Duration::from_millis(20)).await;
     }
     check()
+}
+
+/// Reads `probe` until `done` holds of what it read (up to 3 s, as [`eventually`]); the last
+/// reading, for the assertion's message.
+pub async fn until<T>(mut probe: impl FnMut() -> T, done: impl Fn(&T) -> bool) -> T {
+    let mut last = probe();
+    let _ = eventually(|| {
+        last = probe();
+        done(&last)
+    })
+    .await;
+    last
 }
 
 /// A key pressed where nothing has the focus (BODY), as after a load or a re-rendered button.

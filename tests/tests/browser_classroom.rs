@@ -9,7 +9,7 @@ use std::rc::Rc;
 use schwenkbar_app::state::{Action, AppState, Reducer};
 use schwenkbar_tests::browser::{
     clear_storage, click, document, eventually, key_on, key_on_body, mount, mount_at, paste_program,
-    program_lines, query, settle, text, unmount, wait_for,
+    program_lines, query, settle, text, unmount, until, wait_for,
 };
 use wasm_bindgen::JsCast;
 use wasm_bindgen::closure::Closure;
@@ -72,14 +72,8 @@ async fn the_files_row_works_by_function_keys() {
         "F2 HERUNTERLADEN"
     );
     key_on(&root, ".tnc", "F3").await;
-    let mut line = String::new();
-    for _ in 0..40 {
-        line = text(&root, ".dialog-line");
-        if line.starts_with("Link") {
-            break;
-        }
-        settle().await;
-    }
+    // The clipboard answers later (a promise): waited for on the dialog line.
+    let line = until(|| text(&root, ".dialog-line"), |l| l.starts_with("Link")).await;
     assert!(
         line == "Link in die Zwischenablage kopiert: einfügen und weitergeben"
             || line == "Link steht in der Adresszeile: kopieren und weitergeben",
@@ -174,14 +168,8 @@ async fn a_binary_file_is_not_imported() {
         query(&root, "input.file-input").expect("file input").dyn_into().expect("input");
     input.set_files(transfer.files().as_ref());
     input.dispatch_event(&web_sys::Event::new("change").expect("event")).expect("dispatch");
-    let mut line = String::new();
-    for _ in 0..40 {
-        settle().await;
-        line = text(&root, ".dialog-line");
-        if line.contains("NC-Programm") {
-            break;
-        }
-    }
+    // The file is read later (a FileReader): waited for on the dialog line.
+    let line = until(|| text(&root, ".dialog-line"), |l| l.contains("NC-Programm")).await;
     assert_eq!(line, "Datei ist kein NC-Programm (Binärdatei): nicht importiert");
     assert_eq!(program_lines(&root), before, "the program stays");
 }
@@ -426,7 +414,14 @@ async fn a_first_visit_follows_the_browsers_language_and_prompts_carry_no_intern
     let lang = query(&root, ".tnc").and_then(|t| t.get_attribute("lang"));
     assert_eq!(lang.as_deref(), Some(want), "navigator.language = {language}");
     // The choice stays once made: the page saved it.
-    assert!(eventually(|| storage().get_item("schwenkbar.prefs").ok().flatten().is_some_and(|p| p.contains(want))).await);
+    assert!(
+        eventually(|| storage()
+            .get_item("schwenkbar.prefs")
+            .ok()
+            .flatten()
+            .is_some_and(|p| p.contains(want)))
+        .await
+    );
     unmount(&root);
     clear_storage();
     let root = mount().await;

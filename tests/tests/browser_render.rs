@@ -19,7 +19,7 @@ use schwenkbar_core::orientation::spatial;
 use schwenkbar_core::plane::RotaryAxis;
 use schwenkbar_core::sim::collision::{Obb, Placed};
 use schwenkbar_core::solve::{SolveOptions, solve};
-use schwenkbar_tests::browser::{settled_attribute, wait_attribute};
+use schwenkbar_tests::browser::{settle, settled_attribute, wait_attribute};
 use schwenkbar_web::components::right_hand_demo::{RightHandDemo, RightHandDemoProps};
 use schwenkbar_web::components::scene_pane::scene_at;
 use schwenkbar_web::components::view3d::{View3d, View3dProps};
@@ -440,7 +440,7 @@ async fn try_it_asks_for_a_signed_turn_and_tells_a_wrong_sign() {
 
 async fn click(root: &Element, selector: &str) {
     query(root, selector).dyn_into::<web_sys::HtmlElement>().expect("an HTML element").click();
-    sleep(50).await;
+    settle().await;
 }
 
 async fn set_slider(root: &Element, value: &str) {
@@ -451,7 +451,7 @@ async fn set_slider(root: &Element, value: &str) {
     init.set_bubbles(true);
     let ev = web_sys::Event::new_with_event_init_dict("input", &init).expect("input event");
     input.dispatch_event(&ev).expect("dispatch");
-    sleep(50).await;
+    settle().await;
 }
 
 /// A fresh element of `style` in the page.
@@ -474,7 +474,7 @@ async fn mount_view(w: u32, h: u32, lang: Lang) -> Element {
         typing: false,
     };
     yew::Renderer::<View3d>::with_root_and_props(root.clone(), props).render();
-    sleep(50).await;
+    settle().await;
     // WebGL start-up (software rendering) can take a while on a loaded machine.
     settled_attribute(&root, "canvas.view3d", "data-webgl", 10_000).await;
     root
@@ -488,7 +488,7 @@ async fn mount_demo() -> Element {
         RightHandDemoProps { lang: Lang::De, block: None },
     )
     .render();
-    sleep(100).await;
+    settle().await;
     root
 }
 
