@@ -42,6 +42,14 @@ if [ -n "$words" ]; then
   echo "$words"
   fail=1
 fi
+# The pages word nothing per language themselves: a sentence with numbers in it is made in app
+# (or core) and tested there; web picks a label with Lang::t at most.
+perlang=$(grep -rnE 'Lang::(De|En) *=>' web/src || true)
+if [ -n "$perlang" ]; then
+  echo "boundary: web words a sentence per language (make it in app, where it is tested):"
+  echo "$perlang"
+  fail=1
+fi
 # Every property test runs a fixed number of cases from a fixed seed (testkit's proptest_cases):
 # no test's outcome, time or memory depends on chance.
 configs=$(grep -rnE 'ProptestConfig(::with_cases|::default\(\)| \{)|proptest_config\((ProptestConfig|cases)' \
@@ -51,5 +59,5 @@ if [ -n "$configs" ]; then
   echo "$configs"
   fail=1
 fi
-[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64; notes worded in sim/note.rs; property tests from a fixed seed"
+[ "$fail" = 0 ] && echo "boundary: core and app without a browser; web without parse, solve, simulate; floats read by number::parse_f64; notes worded in sim/note.rs; no sentence per language in web; property tests from a fixed seed"
 exit "$fail"

@@ -6,6 +6,8 @@ use std::rc::Rc;
 
 use schwenkbar_core::{Diagnostic, Program, parse};
 
+use crate::i18n::Lang;
+
 mod splice;
 mod window;
 
@@ -124,11 +126,71 @@ impl Document {
         let last = self.line_starts.partition_point(|&s| s <= end).saturating_sub(1);
         Some((first, last.max(first)))
     }
+
+    /// "2 Fehler · 1 Warnung": the diagnostics counted, with the word in the right number.
+    #[must_use]
+    pub fn summary(&self, l: Lang) -> String {
+        let count = |n: usize, one: (&str, &str), many: (&str, &str)| {
+            let (de, en) = if n == 1 { one } else { many };
+            format!("{n} {}", l.t(de, en))
+        };
+        let errors = self.error_count();
+        match (errors, self.diagnostics.len() - errors) {
+            (0, 0) => l.t("keine Fehler", "no errors").to_owned(),
+            (e, 0) => count(e, ("Fehler", "error"), ("Fehler", "errors")),
+            (0, w) => count(w, ("Warnung", "warning"), ("Warnungen", "warnings")),
+            (e, w) => format!(
+                "{} · {}",
+                count(e, ("Fehler", "error"), ("Fehler", "errors")),
+                count(w, ("Warnung", "warning"), ("Warnungen", "warnings"))
+            ),
+        }
+    }
+
+    /// Where a diagnostic at `line` (1-based) is, as the control names it: the block number
+    /// written in the program ("Satz 1: "), else the line of a block without a number
+    /// ("Zeile 3: ").
+    #[must_use]
+    pub fn where_label(&self, line: u32, l: Lang) -> String {
+        let number = self
+            .block_at_line((line as usize).saturating_sub(1))
+            .and_then(|b| self.program.blocks.get(b))
+            .and_then(|b| b.number());
+        match number {
+            Some(n) => format!("{} {n}: ", l.t("Satz", "Block")),
+            None => format!("{} {line}: ", l.t("Zeile", "Line")),
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn counts_agree_with_their_number() {
+        let summary = |text: &str, l| Document::new(text.into()).summary(l);
+        assert_eq!(summary("0 BEGIN PGM T MM\n1 END PGM T MM\n", Lang::De), "keine Fehler");
+        // One warning: block numbers that do not ascend (said once per file).
+        let warned = "0 BEGIN PGM T MM\n5 L X+1 FMAX\n3 L X+2 FMAX\n6 END PGM T MM\n";
+        let doc = Document::new(warned.into());
+        assert_eq!((doc.error_count(), doc.diagnostics.len()), (0, 1), "{:?}", doc.diagnostics);
+        assert_eq!(summary(warned, Lang::De), "1 Warnung");
+        let both = "0 BEGIN PGM T MM\n1 PLANE SPATIAL SPA+400 SPB+0 SPC+0 STAY\n5 L X+1 FMAX\n3 L X+2 FMAX\n\
+                    6 END PGM T MM\n";
+        let doc = Document::new(both.into());
+        assert_eq!((doc.error_count(), doc.diagnostics.len()), (1, 2), "{:?}", doc.diagnostics);
+        assert_eq!(summary(both, Lang::De), "1 Fehler · 1 Warnung");
+        assert_eq!(summary(both, Lang::En), "1 error · 1 warning");
+    }
+
+    #[test]
+    fn a_diagnostic_is_placed_by_its_block_number() {
+        let doc = Document::new("0 BEGIN PGM T MM\n1 PLANE SPATIAL SPA+400 SPB+0 SPC+0 STAY\nL X+1\n".into());
+        let error = doc.diagnostics.iter().find(|d| d.is_error()).expect("SPA+400 is refused");
+        assert_eq!(doc.where_label(error.line, Lang::De), "Satz 1: ");
+        assert_eq!(doc.where_label(3, Lang::En), "Line 3: ", "a block without a number");
+    }
 
     #[test]
     fn documents_are_equal_exactly_when_their_texts_are() {

@@ -76,6 +76,20 @@ pub enum EditorAction {
 }
 
 impl EditorState {
+    /// The status line: valid, or how many problems and what the preview shows meanwhile.
+    #[must_use]
+    pub fn status(&self) -> Text {
+        if self.valid {
+            Text::new("Maschine gültig", "Machine valid")
+        } else {
+            let n = self.issues.len();
+            Text::owned(
+                format!("{n} Fehler: die Vorschau zeigt den letzten gültigen Stand"),
+                format!("{n} problem(s): the preview shows the last valid state"),
+            )
+        }
+    }
+
     /// The page with the tool table kept under [`crate::tool_table::TOOLS_KEY`].
     #[must_use]
     pub fn with_tools(mut self, saved: Option<&str>) -> EditorState {

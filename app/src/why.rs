@@ -276,12 +276,47 @@ pub fn describe(body: &BlockBody, l: Lang) -> &'static str {
     }
 }
 
+/// The machine under the why panel: its name and rotary axes, master first, with their limit
+/// switches (`A/C-Schwenktisch · Master zuerst: A (-120…120), C (endlos)`).
+#[must_use]
+pub fn machine_line(m: &Machine, l: Lang) -> String {
+    let axes: Vec<String> = m
+        .joints()
+        .iter()
+        .rev()
+        .map(|j| {
+            let limits = match (j.endless, j.limits) {
+                (true, _) => l.t("endlos", "endless").to_owned(),
+                (false, Some(lim)) => format!("{}…{}", lim.min, lim.max),
+                (false, None) => l.t("ohne Endschalter", "no limits").to_owned(),
+            };
+            format!("{} ({limits})", j.axis.letter())
+        })
+        .collect();
+    format!("{} · {}: {}", l.t(&m.name.de, &m.name.en), l.t("Master zuerst", "master first"), axes.join(", "))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn plane(text: &str) -> PlaneBlock {
         schwenkbar_core::parse::plane_block(text).expect("a PLANE block")
+    }
+
+    #[test]
+    fn the_machine_line_names_the_rotary_axes_master_first_with_their_limits() {
+        // static/machines/ba-table.json: B endless on A −100…180; ac-table has no limits.
+        let m = Machine::builtin("ba-table").expect("shipped");
+        assert_eq!(
+            machine_line(&m, Lang::De),
+            "B-Rundtisch auf A-Schwenktisch · Master zuerst: A (-100…180), B (endlos)"
+        );
+        let m = Machine::builtin("ac-table").expect("shipped");
+        assert_eq!(
+            machine_line(&m, Lang::En),
+            "C rotary table on A tilting table · master first: A (no limits), C (no limits)"
+        );
     }
 
     #[test]

@@ -275,8 +275,11 @@ fn fixing_the_field_clears_its_message_and_the_preview_follows() {
     let s = set(&set(&editor(), Field::Direction(0, 2), "0"), Field::Direction(0, 1), "0");
     assert_eq!(s.issues_at(MachinePath::Joint(0, JointField::Direction)).count(), 1);
     assert_eq!(s.preview, editor().preview, "the last valid machine is shown");
+    assert_eq!(s.status().de, "1 Fehler: die Vorschau zeigt den letzten gültigen Stand");
+    assert_eq!(s.status().en, "1 problem(s): the preview shows the last valid state");
     let fixed = set(&s, Field::Direction(0, 1), "1");
     assert!(fixed.valid && fixed.issues.is_empty(), "{:?}", fixed.issues);
+    assert_eq!(fixed.status().de, "Maschine gültig");
     let joint = &fixed.preview.as_ref().expect("preview").joints()[0];
     assert_eq!(joint.direction, glam::DVec3::Y);
 }

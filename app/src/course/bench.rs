@@ -8,7 +8,7 @@ use schwenkbar_core::course::SeedRow;
 use schwenkbar_core::machine::{Limits, Machine};
 use schwenkbar_core::plane::RotaryAxis;
 use schwenkbar_core::solve::{
-    Exclusion, Explanation, Rule, SolveError, SolveOptions, axis_word, solve_block,
+    Exclusion, Explanation, Rule, SolveError, SolveOptions, axis_word, axis_words, solve_block,
 };
 
 use super::lab::{Bench, LabForm, option_word};
@@ -333,6 +333,18 @@ fn line(a: (f64, f64), b: (f64, f64), class: &str) -> String {
 }
 
 impl Gauge {
+    /// The limit switches under the gauge: `Endschalter A: A-120 … A+120`.
+    #[must_use]
+    pub fn limits_text(&self, l: Lang) -> String {
+        let axis = self.axis;
+        self.limits.as_ref().map_or_else(
+            || format!("{} {axis}", l.t("Keine Endschalter an", "No limit switches on")),
+            |[min, max]| {
+                format!("{} {axis}: {} … {}", l.t("Endschalter", "Limit switches"), min.word, max.word)
+            },
+        )
+    }
+
     /// The gauge as one SVG element: the traverse range along the dial (beyond the limit
     /// switches dashed red), the limit switches as ticks, the mirror line through the symmetry
     /// point, the start, and the candidates (`data-chosen`, `data-out`, `data-word` for the
@@ -392,6 +404,37 @@ impl Gauge {
             );
         }
         s + "</svg>"
+    }
+}
+
+/// The caption under the bench's 3D view (`scene` from [`bench_scene`]): the chosen solution
+/// and the other one shown translucent, or why the machine stays at its start position.
+#[must_use]
+pub fn bench_caption(b: &Bench, scene: &SceneState, l: Lang) -> String {
+    match (b.explanation.as_ref().and_then(Explanation::chosen_axes), &scene.ghost) {
+        (Some(axes), Some(ghost)) => format!(
+            "{} {} · {} {}",
+            l.t("Gewählt:", "Chosen:"),
+            axis_words(&axes),
+            l.t("durchscheinend die andere Lösung", "translucent: the other solution"),
+            axis_words(ghost)
+        ),
+        (Some(axes), None) => format!("{} {}", l.t("Gewählt:", "Chosen:"), axis_words(&axes)),
+        (None, _) => format!(
+            "{} {}",
+            match b.explanation {
+                Some(_) => l.t(
+                    "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
+                    "The control refuses the block – the machine stays at the start position"
+                ),
+                // Q parameters or an orientation the solver cannot take: the message above says.
+                None => l.t(
+                    "Keine Achsstellung berechnet – die Maschine steht in der Startstellung",
+                    "No axis position computed – the machine stands at the start position"
+                ),
+            },
+            axis_words(&scene.axes.rotary)
+        ),
     }
 }
 
@@ -536,6 +579,8 @@ mod tests {
     #[test]
     fn the_gauge_svg_carries_every_mark_and_marks_the_chosen_candidate() {
         let g = a_table_gauge();
+        let limits = g.limits_text(Lang::De);
+        assert!(limits.starts_with("Endschalter A: A-") && limits.contains(" … A+"), "{limits}");
         let svg = g.svg(Lang::De);
         assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>"));
         assert_eq!(svg.matches("data-testid=\"gauge-limit\"").count(), 2);
@@ -554,6 +599,12 @@ mod tests {
         assert!(near(s.axes.rotary.a, -45.0) && near(s.axes.rotary.c, -90.0), "{:?}", s.axes.rotary);
         let g = s.ghost.expect("the other candidate");
         assert!(near(g.a, 45.0) && near(g.c, 90.0), "{g:?}");
+        let caption = bench_caption(&b, &s, Lang::De);
+        assert!(
+            caption.starts_with("Gewählt: A-45")
+                && caption.contains(" · durchscheinend die andere Lösung A+45"),
+            "{caption}"
+        );
         // The working plane, carried by the table, lies flat under the vertical tool.
         let p = poses(&b.machine, &s.axes.rotary, s.axes.linear, s.tool.length);
         let wcs = p.workpiece * DAffine3::from_mat3_translation(s.wcs.rot, s.wcs.origin);
@@ -565,6 +616,12 @@ mod tests {
         assert!(b.explanation.as_ref().is_some_and(|e| e.chosen.is_none()));
         let s = bench_scene(&b.machine, b.explanation.as_ref(), &b.opts.start);
         assert!(near(s.axes.rotary.a, 0.0) && near(s.axes.rotary.c, 0.0) && s.ghost.is_none());
+        let caption = bench_caption(&b, &s, Lang::En);
+        assert!(
+            caption
+                .starts_with("The control refuses the block – the machine stays at the start position A+0"),
+            "{caption}"
+        );
         let g = Gauge::of_bench(&b);
         assert!(g.candidates.iter().any(|c| c.out_of_limits && c.mark.word == "A+45"));
         assert!(g.candidates.iter().all(|c| !c.chosen));

@@ -177,15 +177,10 @@ pub fn editor_root() -> Html {
     let sections = SECTIONS + state.form.collision.len();
     let preview =
         use_memo(state.preview.clone(), |m| m.as_deref().map(|m| Rc::new(SceneState::with_bodies(m))));
-    let n = state.issues.len();
     let status = if state.valid {
-        html! { <p class="status" data-valid="true">{ l.t("Maschine gültig", "Machine valid") }</p> }
+        html! { <p class="status" data-valid="true">{ state.status().get(l).to_owned() }</p> }
     } else {
-        let text = match l {
-            Lang::De => format!("{n} Fehler: die Vorschau zeigt den letzten gültigen Stand"),
-            Lang::En => format!("{n} problem(s): the preview shows the last valid state"),
-        };
-        html! { <p class="status bad" data-valid="false">{ text }</p> }
+        html! { <p class="status bad" data-valid="false">{ state.status().get(l).to_owned() }</p> }
     };
     let top_issues = state
         .import_issues

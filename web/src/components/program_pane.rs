@@ -45,7 +45,7 @@ pub fn program_pane(props: &ProgramPaneProps) -> Html {
     let l = props.lang;
     let doc = &props.doc;
     let title = l.t("NC-Programm", "NC program");
-    let summary = summary(doc.error_count(), doc.diagnostics.len() - doc.error_count(), l);
+    let summary = doc.summary(l);
     let class = classes!("program-pane", props.text_editing.then_some("editing"));
     html! {
         <section {class} aria-label={title}>
@@ -365,37 +365,6 @@ fn reveal_drawn(el: &web_sys::Element, first: usize, last: usize) {
     }
 }
 
-/// "2 Fehler · 1 Warnung": counts with the word in the right number.
-fn summary(errors: usize, warnings: usize, l: Lang) -> String {
-    let count = |n: usize, one: (&str, &str), many: (&str, &str)| {
-        let (de, en) = if n == 1 { one } else { many };
-        format!("{n} {}", l.t(de, en))
-    };
-    match (errors, warnings) {
-        (0, 0) => l.t("keine Fehler", "no errors").to_owned(),
-        (e, 0) => count(e, ("Fehler", "error"), ("Fehler", "errors")),
-        (0, w) => count(w, ("Warnung", "warning"), ("Warnungen", "warnings")),
-        (e, w) => format!(
-            "{} · {}",
-            count(e, ("Fehler", "error"), ("Fehler", "errors")),
-            count(w, ("Warnung", "warning"), ("Warnungen", "warnings"))
-        ),
-    }
-}
-
-/// Where a diagnostic is, as the control names it: the block number written in the program
-/// ("Satz 1: "), else the line of a block without a number ("Zeile 3: ").
-fn where_label(doc: &Document, line: u32, l: Lang) -> String {
-    let number = doc
-        .block_at_line((line as usize).saturating_sub(1))
-        .and_then(|b| doc.program.blocks.get(b))
-        .and_then(|b| b.number());
-    match number {
-        Some(n) => format!("{} {n}: ", l.t("Satz", "Block")),
-        None => format!("{} {line}: ", l.t("Zeile", "Line")),
-    }
-}
-
 /// The diagnostics of lines `from..to` (1-based) as a list under the text area.
 fn diagnostics_list(doc: &Document, from: usize, to: usize, l: Lang) -> Html {
     let items = doc.diagnostics.iter().filter(|d| (from..=to).contains(&(d.line as usize))).take(50);
@@ -404,31 +373,9 @@ fn diagnostics_list(doc: &Document, from: usize, to: usize, l: Lang) -> Html {
             { for items.map(|d| html! {
                 <li class={if d.is_error() { "error" } else { "warning" }}
                     title={format!("{} {}, {} {}", l.t("Zeile", "line"), d.line, l.t("Spalte", "column"), d.column)}>
-                    { where_label(doc, d.line, l) }{ d.message(l) }
+                    { doc.where_label(d.line, l) }{ d.message(l) }
                 </li>
             }) }
         </ul>
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn counts_agree_with_their_number() {
-        assert_eq!(summary(0, 0, Lang::De), "keine Fehler");
-        assert_eq!(summary(0, 1, Lang::De), "1 Warnung");
-        assert_eq!(summary(1, 2, Lang::De), "1 Fehler · 2 Warnungen");
-        assert_eq!(summary(2, 1, Lang::En), "2 errors · 1 warning");
-        assert_eq!(summary(1, 0, Lang::En), "1 error");
-    }
-
-    #[test]
-    fn a_diagnostic_is_placed_by_its_block_number() {
-        let doc = Document::new("0 BEGIN PGM T MM\n1 PLANE SPATIAL SPA+400 SPB+0 SPC+0 STAY\nL X+1\n".into());
-        let error = doc.diagnostics.iter().find(|d| d.is_error()).expect("SPA+400 is refused");
-        assert_eq!(where_label(&doc, error.line, Lang::De), "Satz 1: ");
-        assert_eq!(where_label(&doc, 3, Lang::En), "Line 3: ", "a block without a number");
     }
 }

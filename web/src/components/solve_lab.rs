@@ -7,11 +7,10 @@ use std::rc::Rc;
 
 use schwenkbar_core::course::seed_rows;
 use schwenkbar_core::machine::Machine;
-use schwenkbar_core::solve::axis_words;
 use yew::prelude::*;
 
 use super::view3d::View3d;
-use schwenkbar_app::course::bench::{Gauge, bench_scene, row_name};
+use schwenkbar_app::course::bench::{Gauge, bench_caption, bench_scene, row_name};
 use schwenkbar_app::course::lab::{Bench, LabForm, OPTIONS};
 use schwenkbar_app::i18n::Lang;
 
@@ -158,31 +157,7 @@ pub fn solve_lab(props: &SolveLabProps) -> Html {
 fn figures(b: &Bench, l: Lang) -> Html {
     let scene = bench_scene(&b.machine, b.explanation.as_ref(), &b.opts.start);
     let chosen = b.explanation.as_ref().and_then(|e| e.chosen_axes());
-    let caption = match (&chosen, &scene.ghost) {
-        (Some(axes), Some(ghost)) => format!(
-            "{} {} · {} {}",
-            l.t("Gewählt:", "Chosen:"),
-            axis_words(axes),
-            l.t("durchscheinend die andere Lösung", "translucent: the other solution"),
-            axis_words(ghost)
-        ),
-        (Some(axes), None) => format!("{} {}", l.t("Gewählt:", "Chosen:"), axis_words(axes)),
-        (None, _) => format!(
-            "{} {}",
-            match b.explanation {
-                Some(_) => l.t(
-                    "Die Steuerung verweigert den Satz – die Maschine bleibt in der Startstellung",
-                    "The control refuses the block – the machine stays at the start position"
-                ),
-                // Q parameters or an orientation the solver cannot take: the message above says.
-                None => l.t(
-                    "Keine Achsstellung berechnet – die Maschine steht in der Startstellung",
-                    "No axis position computed – the machine stands at the start position"
-                ),
-            },
-            axis_words(&scene.axes.rotary)
-        ),
-    };
+    let caption = bench_caption(b, &scene, l);
     html! {
         <div class="bench-figures">
             { gauge(&Gauge::of_bench(b), l) }
@@ -196,11 +171,7 @@ fn figures(b: &Bench, l: Lang) -> Html {
 
 /// The master axis gauge ([`Gauge::svg`]) and its key.
 fn gauge(g: &Gauge, l: Lang) -> Html {
-    let axis = g.axis;
-    let limits_text = g.limits.as_ref().map_or_else(
-        || format!("{} {axis}", l.t("Keine Endschalter an", "No limit switches on")),
-        |[min, max]| format!("{} {axis}: {} … {}", l.t("Endschalter", "Limit switches"), min.word, max.word),
-    );
+    let limits_text = g.limits_text(l);
     html! {
         <figure class="bench-gauge" data-testid="gauge">
             { Html::from_html_unchecked(g.svg(l).into()) }

@@ -10,7 +10,7 @@ use yew::prelude::*;
 use schwenkbar_app::document::DocRef;
 use schwenkbar_app::i18n::Lang;
 use schwenkbar_app::run::{SimRef, StateRef};
-use schwenkbar_app::why::{PlaneWhy, describe, for_block};
+use schwenkbar_app::why::{PlaneWhy, describe, for_block, machine_line};
 
 #[derive(Properties, PartialEq)]
 pub struct WhyPanelProps {
@@ -45,27 +45,7 @@ pub fn why_panel(props: &WhyPanelProps) -> Html {
             l,
         )
     });
-    let machine = props.machine.as_ref().map(|m| {
-        let axes: Vec<String> = m
-            .joints()
-            .iter()
-            .rev()
-            .map(|j| {
-                let limits = match (j.endless, j.limits) {
-                    (true, _) => l.t("endlos", "endless").to_owned(),
-                    (false, Some(lim)) => format!("{}…{}", lim.min, lim.max),
-                    (false, None) => l.t("ohne Endschalter", "no limits").to_owned(),
-                };
-                format!("{} ({limits})", j.axis.letter())
-            })
-            .collect();
-        format!(
-            "{} · {}: {}",
-            l.t(&m.name.de, &m.name.en),
-            l.t("Master zuerst", "master first"),
-            axes.join(", ")
-        )
-    });
+    let machine = props.machine.as_ref().map(|m| machine_line(m, l));
     html! {
         <aside class="why-panel" aria-label={l.t("Warum?", "Why?")}>
             <h2>{ l.t("Warum?", "Why?") }</h2>
