@@ -72,6 +72,10 @@ pub enum DiagCode {
     },
     /// Said once per file, at the first block without a number.
     MissingBlockNumber,
+    /// Said once per file: a line of only a data transfer's control characters (ETX, which ends
+    /// a serial transfer of the control, or SUB, an old file system's end of file), kept by the
+    /// program that saved the transfer. Not a block.
+    TransferMark,
     /// Said once per file, at the first block numbered `N…` (as ISO programs and some CAM
     /// systems write it): read as its block number.
     BlockNumberPrefixed {
@@ -268,6 +272,10 @@ impl DiagCode {
                 "Satznummern fehlen (zuerst hier): die Sätze laufen in ihrer Reihenfolge in der Datei",
                 "Block numbers missing (first here): the blocks run in their order in the file",
             ),
+            DiagCode::TransferMark => Text::new(
+                "Steuerzeichen der Datenübertragung (ETX/SUB) überlesen: kein NC-Satz",
+                "Data transfer control character (ETX/SUB) skipped: not an NC block",
+            ),
             DiagCode::BlockNumberPrefixed { number } => t(
                 format!("N-Satznummern gelesen (zuerst N{number}): Klartext schreibt die Nummer ohne N"),
                 format!("N block numbers read (first N{number}): Klartext writes the number without N"),
@@ -313,6 +321,10 @@ impl DiagCode {
                 format!(
                     "Straight-line blocks without L read (first \"{text}\"): Klartext starts a straight line with L"
                 ),
+            ),
+            DiagCode::Lenient { kind: Lenient::UnitIn, text } => t(
+                format!("„{text}“ als INCH gelesen: Klartext schreibt die Einheit MM oder INCH"),
+                format!("\"{text}\" read as INCH: Klartext writes the unit MM or INCH"),
             ),
             DiagCode::Lenient { kind: Lenient::CycleSpeltOut, text } => t(
                 format!("„{text}“ als CYCL DEF gelesen: Klartext schreibt CYCL"),
@@ -370,16 +382,19 @@ pub enum Lenient {
     MissingL,
     /// `CYCLE DEF 9.0 DWELL TIME` for `CYCL DEF 9.0 …` (an old-style cycle with its word spelt out).
     CycleSpeltOut,
+    /// `BEGIN PGM 100 IN` for `BEGIN PGM 100 INCH` (a CAM post's abbreviation of the unit).
+    UnitIn,
 }
 
 impl Lenient {
-    pub const ALL: [Lenient; 6] = [
+    pub const ALL: [Lenient; 7] = [
         Lenient::DecimalComma,
         Lenient::BlankAfterAddress,
         Lenient::PointAfterM,
         Lenient::RadiusInDep,
         Lenient::MissingL,
         Lenient::CycleSpeltOut,
+        Lenient::UnitIn,
     ];
 }
 

@@ -136,7 +136,12 @@ fn ms(out: &mut String, m: &[u32], w: MWords) {
     for &m in m {
         let _ = write!(out, " M{m}");
         match (m, w.mb, w.m128_feed, w.look_ahead) {
-            (140, Some(mb), _, _) => mb_words(out, mb),
+            (140, Some(mb), _, _) => {
+                mb_words(out, mb);
+                if let Some(f) = w.mb_feed {
+                    feed(out, f);
+                }
+            }
             (128, _, Some(f), _) => {
                 out.push_str(" F");
                 plain(out, f);
@@ -529,6 +534,9 @@ fn cycle_def(out: &mut String, key: &str, c: &CycleDef, comment: Option<&str>) {
             }
             CycleValue::Text(text) => {
                 let _ = write!(out, "  QS{}=\"{text}\"", p.index);
+            }
+            CycleValue::TextOf(n) => {
+                let _ = write!(out, "  QS{}=QS{n}", p.index);
             }
             w => {
                 let _ = write!(out, "  Q{}={}", p.index, w.word().unwrap_or_default());

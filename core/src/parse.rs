@@ -253,8 +253,17 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     p.blocks.reserve_exact(count_newlines(src.as_bytes()) + 1);
     let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
     let mut across = AcrossBlocks::default();
+    let mut transfer_mark_said = false;
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
+        if is_transfer_mark(text) {
+            if !std::mem::replace(&mut transfer_mark_said, true) {
+                p.block_lines.clear();
+                p.block_lines.push(first);
+                p.diag_at(Severity::Warning, DiagCode::TransferMark, first.start, first.end, None);
+            }
+            continue;
+        }
         // Tried first: its lines are never blank and never continued (it refuses `~`).
         let fast = if fast_path { fast::straight_line(text) } else { None };
         if fast.is_some() || !text.trim().is_empty() {
@@ -294,6 +303,14 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
         p.diag_at(Severity::Warning, DiagCode::MissingEndPgm, at, at, None);
     }
     (Program { blocks: p.blocks }, p.diags)
+}
+
+/// A line of only a data transfer's control characters and blanks ([`DiagCode::TransferMark`]).
+fn is_transfer_mark(text: &str) -> bool {
+    // The first character decides for almost every line (the parser's speed budget).
+    let t = text.trim_start();
+    t.starts_with(['\u{3}', '\u{1a}'])
+        && t.chars().all(|c| matches!(c, '\u{3}' | '\u{1a}') || c.is_whitespace())
 }
 
 struct Parser<'s> {

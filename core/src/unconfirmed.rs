@@ -203,6 +203,11 @@ pub const MOVE_DEFAULT_DIST: f64 = 0.0;
 /// **UNCONFIRMED** (DOMAIN.md §4 gives no feed for the retract).
 pub const MB_RETRACT_AT_RAPID: bool = true;
 
+/// `M140 MB MAX F5000`: a feed written right after `MB` is the retraction's feed (without one it
+/// runs at rapid). CAM post-processors write it (NX, converters for DMU machines); the manuals
+/// at hand name only `M140 MB…`. **UNCONFIRMED**.
+pub const M140_FEED_AFTER_MB: bool = true;
+
 /// `M92`: the block's coordinates refer to an additional machine datum whose distance from the
 /// machine datum the machine tool builder sets per axis (TNC 426B ISO manual, "Behavior with
 /// M92 — Additional machine datum"). No shipped machine's data gives that distance, so the M92

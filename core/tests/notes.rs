@@ -62,7 +62,7 @@ fn each_block_carries_its_note_by_code() {
     assert_eq!(note(6), Some(Note::CircleCentre));
     assert_eq!(note(7), Some(Note::Halt { word: "STOP" }));
     assert_eq!(note(8), Some(Note::OptionalStop));
-    assert_eq!(note(9), Some(Note::Retract));
+    assert_eq!(note(9), Some(Note::Retract { feed: None }));
     assert_eq!(note(10), Some(Note::CycleDefined { cycle: 200 }));
     // Cycle 200 at 5 mm depth in one 5 mm infeed: down to the set-up clearance, the infeed, out.
     assert!(

@@ -163,6 +163,9 @@ pub enum CycleValue {
     /// The text of a string parameter line `QS500="P2002-B8"` (cycle 225's text to engrave):
     /// only a `QS` parameter takes one, and it takes nothing else.
     Text(String),
+    /// `QS500=QS10`: a string parameter given the text of another (`QS10`), as a shop's
+    /// engraving program sets its text first.
+    TextOf(u32),
     /// `PREDEF`: the value of the global program settings (`GLOBAL DEF`).
     Predef,
     /// `FMAX`: rapid traverse.
@@ -172,11 +175,17 @@ pub enum CycleValue {
 }
 
 impl CycleValue {
+    /// A string parameter's value (`QS…=`): a text or another string parameter's.
+    #[must_use]
+    pub fn is_text(&self) -> bool {
+        matches!(self, CycleValue::Text(_) | CycleValue::TextOf(_))
+    }
+
     /// The word as the control writes it; `None` for a number, a Q parameter or a text.
     #[must_use]
     pub fn word(&self) -> Option<&'static str> {
         match self {
-            CycleValue::Value(_) | CycleValue::Text(_) => None,
+            CycleValue::Value(_) | CycleValue::Text(_) | CycleValue::TextOf(_) => None,
             CycleValue::Predef => Some("PREDEF"),
             CycleValue::Fmax => Some("FMAX"),
             CycleValue::Fauto => Some("FAUTO"),

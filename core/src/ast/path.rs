@@ -29,10 +29,12 @@ pub struct Line {
 /// (`M140 MB MAX`, `M140 MB+50`: "retraction in the tool axis direction", TNC 640 user's
 /// manual), the feed of `M128` (`M128 F1000`: the largest feed of the compensating moves) and
 /// the look-ahead of `M120` (`M120 LA5`: how many blocks a radius-compensated contour is
-/// computed ahead, 0 to 99). Each is written right after its M function.
+/// computed ahead, 0 to 99). Each is written right after its M function; the feed of the
+/// retract right after `MB` (`M140 MB MAX F5000`, [`crate::unconfirmed::M140_FEED_AFTER_MB`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct MWords {
     pub mb: Option<MoveBack>,
+    pub mb_feed: Option<Feed>,
     pub m128_feed: Option<Value>,
     pub look_ahead: Option<Value>,
 }

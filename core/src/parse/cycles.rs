@@ -57,7 +57,10 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
             return cx.invalid(sp(r), Some(Expected::Nc("=")));
         };
         let value = if string {
-            quoted(sp(r)).map(|(r, text)| (r, CycleValue::Text(text.to_owned())))
+            match sp(r).strip_prefix("QS").map(uint) {
+                Some(q) => q.map(|(r, n)| (r, CycleValue::TextOf(n))),
+                None => quoted(sp(r)).map(|(r, text)| (r, CycleValue::Text(text.to_owned()))),
+            }
         } else {
             cycle_value(sp(r))
         };
@@ -68,10 +71,7 @@ pub(super) fn cycle_def(cx: &mut Cx, header: &str, params: &[&str], probe: bool)
         if !sp(r).is_empty() {
             return cx.invalid(sp(r), None);
         }
-        if out
-            .iter()
-            .any(|p: &CycleParam| p.index == index && matches!(p.value, CycleValue::Text(_)) == string)
-        {
+        if out.iter().any(|p: &CycleParam| p.index == index && p.value.is_text() == string) {
             let word = if string { format!("QS{index}") } else { format!("Q{index}") };
             cx.error(body, body.len(), DiagCode::Duplicate { word });
             return None;

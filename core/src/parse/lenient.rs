@@ -36,6 +36,16 @@ pub(crate) fn lacks_l(body: &[u8]) -> bool {
         && body.get(1).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'))
 }
 
+/// Where `IN` stands as the unit of a `BEGIN PGM`/`END PGM` block (`word`: from its first
+/// word on), read as `INCH` by the frame's parser.
+fn unit_in(word: &[u8]) -> Option<usize> {
+    if !(word.starts_with(b"BEGIN PGM") || word.starts_with(b"END PGM")) {
+        return None;
+    }
+    let end = word.iter().rposition(|&c| !is_blank(c))? + 1;
+    (end >= 3 && &word[end - 2..end] == b"IN" && is_blank(word[end - 3])).then_some(end - 2)
+}
+
 /// Where the block's first word starts in a source line: after a skip mark and the block
 /// number (`/`, `N`, digits, blanks).
 fn first_word(line: &[u8]) -> usize {
@@ -79,6 +89,9 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
         if lacks_l(word) {
             let end = w + word.iter().take_while(|&&c| !is_blank(c)).count();
             found(Lenient::MissingL, w, end, w);
+        }
+        if let Some(unit) = unit_in(word) {
+            found(Lenient::UnitIn, w + unit, w + unit + 2, w + unit);
         }
         if let Some(r) = radius_in_dep(word) {
             found(Lenient::RadiusInDep, w + r, w + r + 2, w + r);
@@ -140,7 +153,7 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
 pub(crate) fn normalize(body: &str) -> Option<String> {
     let mut found = Vec::new();
     scan(body.as_bytes(), Some(0), |kind, a, b, at| {
-        if kind != Lenient::MissingL {
+        if !matches!(kind, Lenient::MissingL | Lenient::UnitIn) {
             found.push((kind, a, b, at));
         }
     });
@@ -156,7 +169,7 @@ pub(crate) fn normalize(body: &str) -> Option<String> {
             Lenient::RadiusInDep => bytes[a..b].fill(b' '),
             // `CYCLE DEF` → `CYCL  DEF`.
             Lenient::CycleSpeltOut => bytes[at] = b' ',
-            Lenient::BlankAfterAddress | Lenient::MissingL => {}
+            Lenient::BlankAfterAddress | Lenient::MissingL | Lenient::UnitIn => {}
         }
     }
     for &(kind, a, b, value) in &found {

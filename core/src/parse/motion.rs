@@ -2,7 +2,7 @@
 //!   path := (L|CC|C|CR|CT|LP|CP) { [I]axis±v | [I]PR v | [I]PA v | R v | DR± | R0|RL|RR | feed | Mn | R|F|M }
 //!   (a lone R, F or M is an old control's empty word: see `words::empty_word`)
 //!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
-//!   after M140: [MB (MAX|v)]      after M128: [F v]
+//!   after M140: [MB (MAX|v) [feed]]      after M128: [F v]
 
 use super::Cx;
 use super::words::{
@@ -299,7 +299,7 @@ pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 }
 
 /// The words after M function `m` that belong to it ([`MWords`]): `MB MAX`, `MB+50` or `MB 50`
-/// after `M140`; `F…` after `M128` (so `L X+1 F500 M128 F1000` has both feeds). The rest.
+/// after `M140`, each with an optional feed; `F…` after `M128` (so `L X+1 F500 M128 F1000` has both feeds). The rest.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a>> {
     let t = sp(i);
@@ -307,12 +307,21 @@ fn m_args<'a>(m: u32, i: &'a str, words: &mut MWords) -> Result<&'a str, Stop<'a
         140 => {
             let Some(after) = t.strip_prefix("MB") else { return Ok(i) };
             let v = sp(after);
-            if let Some(r) = keyword(v, "MAX") {
+            let r = if let Some(r) = keyword(v, "MAX") {
                 words.mb = Some(MoveBack::Max);
+                r
+            } else {
+                let (r, d) = word_value(v).map_err(hard)?;
+                words.mb = Some(MoveBack::Dist(d));
+                r
+            };
+            // The retract's own feed, right after MB (unconfirmed::M140_FEED_AFTER_MB).
+            let t = sp(r);
+            if !t.starts_with('F') {
                 return Ok(r);
             }
-            let (r, d) = word_value(v).map_err(hard)?;
-            words.mb = Some(MoveBack::Dist(d));
+            let (r, f) = feed(t)?;
+            words.mb_feed = Some(f);
             Ok(r)
         }
         120 if t.starts_with("LA") => {

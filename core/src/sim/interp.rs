@@ -432,14 +432,14 @@ impl Interp {
             BlockBody::L(line) => {
                 self.line(at, line)?;
                 if let Some(mb) = line.m_words.mb {
-                    self.m140(at, mb)?;
+                    self.m140(at, mb, line.m_words.mb_feed)?;
                 }
                 self.modal_call(at, line)?;
             }
             BlockBody::MFunctions(m, w) => {
                 self.m_functions(at, m);
                 if let Some(mb) = w.mb {
-                    self.m140(at, mb)?;
+                    self.m140(at, mb, w.mb_feed)?;
                 }
                 if m.contains(&99) {
                     self.call_cycle(at)?;

@@ -42,8 +42,8 @@ pub enum Note {
     BlockNotSimulated { text: String },
     /// A PLANE block without MOVE/TURN/STAY.
     PositioningMissing,
-    /// `M140`.
-    Retract,
+    /// `M140`, at rapid or at the feed (mm/min) written after MB.
+    Retract { feed: Option<f64> },
     /// `CYCL DEF 19.0`: the angles follow.
     Cycle19AnglesFollow,
     /// Cycle 19 with all angles 0.
@@ -169,10 +169,25 @@ impl Note {
                 "MOVE/TURN/STAY fehlt: wie STAY behandelt",
                 "MOVE/TURN/STAY missing: treated as STAY",
             ),
-            Note::Retract => Text::new(
+            Note::Retract { feed: None } => Text::new(
                 "M140: Rückzug in Werkzeugachsrichtung (Eilgang)",
                 "M140: retraction in the tool axis direction (rapid)",
             ),
+            Note::Retract { feed: Some(f) } => {
+                let assumed = Decision::M140Feed.text();
+                t(
+                    format!(
+                        "M140: Rückzug in Werkzeugachsrichtung mit {} mm/min – {}",
+                        prose(*f, None, Lang::De),
+                        assumed.de
+                    ),
+                    format!(
+                        "M140: retraction in the tool axis direction at {} mm/min – {}",
+                        prose(*f, None, Lang::En),
+                        assumed.en
+                    ),
+                )
+            }
             Note::Cycle19AnglesFollow => Text::new(
                 "Zyklus 19: die Winkel folgen im Satz 19.1",
                 "Cycle 19: the angles follow in block 19.1",

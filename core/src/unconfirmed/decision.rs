@@ -63,6 +63,8 @@ pub enum Decision {
     TcpmAxisSpat,
     /// Simulator: [`MB_RETRACT_AT_RAPID`](super::MB_RETRACT_AT_RAPID), [`MB_MAX_CLEARANCE`](super::MB_MAX_CLEARANCE).
     MbRetractRapid,
+    /// Simulator: [`M140_FEED_AFTER_MB`](super::M140_FEED_AFTER_MB).
+    M140Feed,
     /// Simulator: [`M92_AT_MACHINE_DATUM`](super::M92_AT_MACHINE_DATUM).
     M92Datum,
     /// Simulator: [`ROTARY_FEED_DEG_PER_MIN`](super::ROTARY_FEED_DEG_PER_MIN).
@@ -124,7 +126,7 @@ pub enum Decision {
 
 impl Decision {
     /// Every decision, for a UI list "what this trainer assumes".
-    pub const ALL: [Decision; 44] = [
+    pub const ALL: [Decision; 45] = [
         Decision::ProjectedSign,
         Decision::VectorGramSchmidt,
         Decision::RelativUntilted,
@@ -150,6 +152,7 @@ impl Decision {
         Decision::TcpmFunction,
         Decision::TcpmAxisSpat,
         Decision::MbRetractRapid,
+        Decision::M140Feed,
         Decision::M92Datum,
         Decision::RotaryFeed,
         Decision::Cycle19Spatial,
@@ -274,6 +277,10 @@ impl Decision {
             Decision::MbRetractRapid => Text::new(
                 "MB/MB MAX: Rückzug im Eilgang vor dem Schwenken; MB MAX endet 1 mm vor dem Software-Endschalter jeder Linearachse.",
                 "MB/MB MAX: retract at rapid traverse before the swivel; MB MAX ends 1 mm before each linear axis's software limit switch.",
+            ),
+            Decision::M140Feed => Text::new(
+                "M140 MB … F: der Vorschub nach MB gilt als Rückzugsvorschub (ohne F Eilgang).",
+                "M140 MB … F: the feed after MB is taken as the retraction's feed (without F rapid).",
             ),
             Decision::M92Datum => Text::new(
                 "M92: der zusätzliche Maschinen-Nullpunkt des Herstellers wird auf dem Maschinen-Nullpunkt angenommen (M92 wie M91).",

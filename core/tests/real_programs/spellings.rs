@@ -625,3 +625,52 @@ fn a_setup_sheet_header_gives_its_blank_when_the_program_has_none() {
     let blank = after(&p, &sim, 3).blank.expect("BLK FORM");
     assert_eq!(blank.max.to_array(), [10.0, 10.0, 0.0]);
 }
+
+/// Three readings found in public programs (measured, not committed): the retract's own feed
+/// after `M140 MB` (CAM posts write `M140 MB MAX F5000`; unconfirmed::M140_FEED_AFTER_MB), a
+/// string parameter given another's text in a cycle (`QS500=QS10`, an engraving program), and
+/// the ETX a serial transfer ends with, kept after END PGM by the program that saved it.
+/// Oracle: 50 mm retracted at 500 mm/min take 6 s; the ETX line is no block and said once.
+#[test]
+fn m140_with_a_feed_a_string_parameter_from_another_and_a_transfer_mark_are_read() {
+    let b = body("M140 MB MAX F5000");
+    let BlockBody::MFunctions(m, w) = &b else { panic!("{b:?}") };
+    assert_eq!((&**m, w.mb), (&[140][..], Some(MoveBack::Max)));
+    assert!(matches!(w.mb_feed, Some(schwenkbar_core::plane::Feed::Value(_))), "{w:?}");
+    same("L Z+10 FMAX M140 MB 50 F500", "L Z+10 FMAX M140 MB+50 F500");
+    // A CAM post's `IN` for the unit: read as INCH, said once per file.
+    let unit_in = DiagCode::Lenient { kind: Lenient::UnitIn, text: "IN".into() };
+    let (p, d) = parse("0010 BEGIN PGM T IN\n0020 L X+1 R0 FMAX\n0030 END PGM T IN\n");
+    assert_eq!(d.iter().map(|d| d.code.clone()).collect::<Vec<_>>(), [unit_in], "once per file");
+    let (inch, d) = parse("10 BEGIN PGM T INCH\n20 L X+1 R0 FMAX\n30 END PGM T INCH\n");
+    assert!(d.is_empty(), "{d:?}");
+    let bodies = |p: &Program| p.blocks.iter().map(|b| b.body().into_owned()).collect::<Vec<_>>();
+    assert_eq!(bodies(&p), bodies(&inch), "IN reads as INCH");
+    assert_eq!(format_program(&p), format_program(&inch), "fmt writes INCH");
+    let src = "0 BEGIN PGM R MM\n1 TOOL CALL 1 Z S1000\n2 L Z+10 R0 FMAX\n3 M140 MB 50 F500\n\
+               4 M140 MB 20\n5 END PGM R MM\n\u{3}\n\u{3}\n";
+    let (p, d) = parse(src);
+    let marks: Vec<_> = d.iter().filter(|d| d.code == DiagCode::TransferMark).collect();
+    assert_eq!(marks.len(), 1, "said once: {d:?}");
+    assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+    assert_eq!(p.blocks.len(), 6, "the ETX lines are no blocks");
+    let (p, sim) = run(src);
+    let retract = after(&p, &sim, 3);
+    let seg = retract.segments.last().expect("the retract");
+    assert!((seg.end.linear.z - seg.start.linear.z - 50.0).abs() < 1e-9, "{seg:?}");
+    assert!((seg.duration - 6.0).abs() < 1e-9, "50 mm at 500 mm/min: {}", seg.duration);
+    assert_eq!(retract.note, Some(schwenkbar_core::sim::Note::Retract { feed: Some(500.0) }));
+    assert!(retract.message().expect("said").de.contains("500 mm/min"));
+    let rapid = after(&p, &sim, 4);
+    assert_eq!(rapid.note, Some(schwenkbar_core::sim::Note::Retract { feed: None }));
+    let cycle = "0 BEGIN PGM G MM\n1 CYCL DEF 225 GRAVIEREN ~\n  QS500=QS10 ;GRAVIERTEXT ~\n  Q513=+10 ;ZEICHENHOEHE\n\
+                 2 END PGM G MM\n";
+    let (p, d) = parse(cycle);
+    assert!(d.is_empty(), "{d:?}");
+    match &*p.blocks[1].body() {
+        BlockBody::CycleDef(c) => assert_eq!(c.params[0].value, CycleValue::TextOf(10)),
+        other => panic!("{other:?}"),
+    }
+    assert!(format_program(&p).contains("QS500=QS10"), "{}", format_program(&p));
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+}

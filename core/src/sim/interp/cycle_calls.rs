@@ -134,7 +134,7 @@ impl Interp {
                     },
                     CycleValue::Predef => unconfirmed::predef(p.index).ok_or_else(|| word(p)),
                     // A string parameter (cycle 225's text) is no number: no simulated cycle reads one.
-                    CycleValue::Text(_) => return None,
+                    CycleValue::Text(_) | CycleValue::TextOf(_) => return None,
                 };
                 Some(v.map(|v| (p.index, v)))
             })

@@ -255,16 +255,21 @@ impl Interp {
         self.go(at, SegmentKind::Retract, target, [0.0; 2], rate, || SegmentPath::Linear)
     }
 
-    /// `M140 MB…` ("retraction in the tool axis direction", TNC 640 user's manual), at rapid,
-    /// after the block's own move. Out of line: rare, so the page split defers it.
+    /// `M140 MB…` ("retraction in the tool axis direction", TNC 640 user's manual), after the
+    /// block's own move: at rapid, or at the feed written after MB
+    /// ([`unconfirmed::M140_FEED_AFTER_MB`]). Out of line: rare, so the page split defers it.
     #[inline(never)]
-    pub(super) fn m140(&mut self, at: &mut At<'_, '_>, mb: MoveBack) -> R<()> {
+    pub(super) fn m140(&mut self, at: &mut At<'_, '_>, mb: MoveBack, feed: Option<Feed>) -> R<()> {
         let mb = match mb {
             MoveBack::Dist(v) => MoveBack::Dist(self.length(&v)?),
             MoveBack::Max => MoveBack::Max,
         };
-        self.retract(at, mb, Rate::Rapid)?;
-        at.note(|| Note::Retract);
+        let feed = match feed {
+            Some(Feed::Value(v)) if unconfirmed::M140_FEED_AFTER_MB => Some(self.feed_rate(&v)?),
+            _ => None,
+        };
+        self.retract(at, mb, feed.map_or(Rate::Rapid, |f| self.swivel_rate(Some(Feed::Value(f)))))?;
+        at.note(|| Note::Retract { feed });
         Ok(())
     }
 
