@@ -130,15 +130,32 @@ def service_worker_tests(driver, dist, work, run):
             driver.go(base)
             rendered(driver, TRAINER, ["Schwenkbar"])
 
+            asked = [0.0]
+
             def replaced():
-                # Browsers look for a new sw.js on navigation; update() makes it certain.
-                driver.js_async("const done = arguments[arguments.length - 1];"
-                                "navigator.serviceWorker.getRegistration().then((r) => r && r.update())"
-                                ".then(() => done(), () => done());")
+                # Browsers look for a new sw.js on navigation; update() makes it certain. Asked
+                # again only every 10 s: an update() while the new worker installs starts its
+                # check anew (once, on a loaded machine, the cache was not replaced in 30 s).
+                if time.monotonic() - asked[0] > 10:
+                    asked[0] = time.monotonic()
+                    driver.js_async("const done = arguments[arguments.length - 1];"
+                                    "navigator.serviceWorker.getRegistration().then((r) => r && r.update())"
+                                    ".then(() => done(), () => done());")
                 keys = driver.js_async(CACHES).get("keys")
                 return keys if keys and len(keys) == 1 and keys != old else None
 
-            keys = wait_for("the new build's cache replacing the old one", replaced, 30, step=0.5)
+            try:
+                keys = wait_for("the new build's cache replacing the old one", replaced, 60, step=0.5)
+            except Failure as e:
+                # What the browser had: the workers' states and the caches, to tell why.
+                state = driver.js_async(
+                    "const done = arguments[arguments.length - 1];"
+                    "navigator.serviceWorker.getRegistration().then(async (r) => done({"
+                    "installing: r && r.installing && r.installing.state,"
+                    "waiting: r && r.waiting && r.waiting.state,"
+                    "active: r && r.active && r.active.state,"
+                    "caches: await caches.keys()}), (x) => done(String(x)));")
+                raise Failure(f"{e}; service worker and caches then: {state}") from e
             wait_for("the new service worker controlling the page", lambda: controlled(driver), 10)
             return f"{old[0]} replaced by {keys[0]}, the old cache deleted"
 
