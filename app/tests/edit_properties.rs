@@ -228,3 +228,22 @@ fn every_small_edit_of_wrapped_comments_equals_a_fresh_parse() {
         }
     }
 }
+
+/// Every one-character edit of a program whose transfer ended with ETX and SUB lines (a
+/// character cut, an ETX or a line break put in at each place): the spliced document equals a
+/// fresh parse, the transfer marks' warnings included (each is said on its own line).
+#[test]
+fn every_small_edit_around_transfer_marks_equals_a_fresh_parse() {
+    let text = "0 BEGIN PGM T MM\n1 L X+1 R0 FMAX\n\u{3}\n2 L Y+2\n3 END PGM T MM\n\u{3}\n\u{1a}\n";
+    let doc = Document::new(text.to_owned());
+    let marks =
+        doc.diagnostics.iter().filter(|d| d.code == schwenkbar_core::diag::DiagCode::TransferMark).count();
+    assert_eq!(marks, 3, "{:?}", doc.diagnostics);
+    for at in 0..=text.len() {
+        for (cut, piece) in [(1, ""), (0, "\u{3}"), (0, "\n")] {
+            let t = edit(text, at, cut, piece);
+            let (next, _) = doc.edited(t.clone());
+            assert_same(&next, &Document::new(t));
+        }
+    }
+}

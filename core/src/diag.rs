@@ -72,9 +72,9 @@ pub enum DiagCode {
     },
     /// Said once per file, at the first block without a number.
     MissingBlockNumber,
-    /// Said once per file: a line of only a data transfer's control characters (ETX, which ends
-    /// a serial transfer of the control, or SUB, an old file system's end of file), kept by the
-    /// program that saved the transfer. Not a block.
+    /// A line of only a data transfer's control characters (ETX, which ends a serial transfer of
+    /// the control, or SUB, an old file system's end of file), kept by the program that saved
+    /// the transfer: not a block, said on the line.
     TransferMark,
     /// Said once per file, at the first block numbered `N…` (as ISO programs and some CAM
     /// systems write it): read as its block number.

@@ -253,15 +253,15 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     p.blocks.reserve_exact(count_newlines(src.as_bytes()) + 1);
     let mut lines = Lines { src, pos: 0, number: 0 }.peekable();
     let mut across = AcrossBlocks::default();
-    let mut transfer_mark_said = false;
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
+        // Said on each such line (a line's own finding, so a text parsed again in part says
+        // the same as parsed whole: app/src/document/splice.rs).
+        // The last block's lines stay (a missing END PGM is placed after them).
         if is_transfer_mark(text) {
-            if !std::mem::replace(&mut transfer_mark_said, true) {
-                p.block_lines.clear();
-                p.block_lines.push(first);
-                p.diag_at(Severity::Warning, DiagCode::TransferMark, first.start, first.end, None);
-            }
+            let block_lines = std::mem::replace(&mut p.block_lines, vec![first]);
+            p.diag_at(Severity::Warning, DiagCode::TransferMark, first.start, first.end, None);
+            p.block_lines = block_lines;
             continue;
         }
         // Tried first: its lines are never blank and never continued (it refuses `~`).

@@ -180,7 +180,10 @@ impl Document {
         let mut across = AcrossBlocks::default();
         for (i, b) in blocks.iter().enumerate() {
             let next_start = blocks.get(i + 1).map_or(usize::MAX, |n| n.span().start);
-            while let Some(d) = own.next_if(|d| d.span.start < next_start) {
+            // The block's own findings (up to its end, a missing word there included), then the
+            // checks across blocks, then a finding on a line between it and the next block (a
+            // transfer mark): the parser's order.
+            while let Some(d) = own.next_if(|d| d.span.start <= b.span().end) {
                 out.push(d);
             }
             across.check(&self.text, b, |severity, code, span| {
@@ -191,6 +194,9 @@ impl Document {
                 let column = self.text.get(from..span.start).map_or(0, |s| s.chars().count()) as u32 + 1;
                 out.push(Diagnostic::new(severity, code, span, line as u32 + 1, column));
             });
+            while let Some(d) = own.next_if(|d| d.span.start < next_start) {
+                out.push(d);
+            }
         }
         out.extend(own);
         if across.end_missing() {
