@@ -255,9 +255,9 @@ fn parse_with(src: &str, fast_path: bool) -> (Program, Vec<Diagnostic>) {
     let mut across = AcrossBlocks::default();
     while let Some(first) = lines.next() {
         let text = &src[first.start..first.end];
-        // Said on each such line (a line's own finding, so a text parsed again in part says
-        // the same as parsed whole: app/src/document/splice.rs).
-        // The last block's lines stay (a missing END PGM is placed after them).
+        // A transfer mark is said on its own line (so a text parsed again in part says what a
+        // whole parse says: app/src/document/splice.rs); the last block's lines stay, a missing
+        // END PGM is placed after them.
         if is_transfer_mark(text) {
             let block_lines = std::mem::replace(&mut p.block_lines, vec![first]);
             p.diag_at(Severity::Warning, DiagCode::TransferMark, first.start, first.end, None);

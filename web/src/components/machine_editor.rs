@@ -177,10 +177,10 @@ pub fn editor_root() -> Html {
     let sections = SECTIONS + state.form.collision.len();
     let preview =
         use_memo(state.preview.clone(), |m| m.as_deref().map(|m| Rc::new(SceneState::with_bodies(m))));
-    let status = if state.valid {
-        html! { <p class="status" data-valid="true">{ state.status().get(l).to_owned() }</p> }
-    } else {
-        html! { <p class="status bad" data-valid="false">{ state.status().get(l).to_owned() }</p> }
+    let status = html! {
+        <p class={classes!("status", (!state.valid).then_some("bad"))} data-valid={state.valid.to_string()}>
+            { state.status().get(l).to_owned() }
+        </p>
     };
     let top_issues = state
         .import_issues

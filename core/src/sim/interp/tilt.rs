@@ -265,10 +265,12 @@ impl Interp {
             MoveBack::Max => MoveBack::Max,
         };
         let feed = match feed {
-            Some(Feed::Value(v)) if unconfirmed::M140_FEED_AFTER_MB => Some(self.feed_rate(&v)?),
+            Some(Feed::Value(v)) if unconfirmed::M140_FEED_AFTER_MB => {
+                Some(self.feed_rate(&v)?).filter(|&f| f > 0.0)
+            }
             _ => None,
         };
-        self.retract(at, mb, feed.map_or(Rate::Rapid, |f| self.swivel_rate(Some(Feed::Value(f)))))?;
+        self.retract(at, mb, feed.map_or(Rate::Rapid, Rate::Feed))?;
         at.note(|| Note::Retract { feed });
         Ok(())
     }
