@@ -116,7 +116,7 @@ impl CompactLine {
         } else {
             None
         };
-        Line { axes, comp: self.comp, feed, m: Box::default(), m_words: MWords::default() }
+        Line { axes, comp: self.comp, feed, speed: None, m: Box::default(), m_words: MWords::default() }
     }
 }
 

@@ -326,6 +326,14 @@ impl DiagCode {
                 format!("„{text}“ als INCH gelesen: Klartext schreibt die Einheit MM oder INCH"),
                 format!("\"{text}\" read as INCH: Klartext writes the unit MM or INCH"),
             ),
+            DiagCode::Lenient { kind: Lenient::SpeedInPath, text } => t(
+                format!(
+                    "Drehzahl im Verfahrsatz gelesen (zuerst „{text}“): Klartext programmiert die Drehzahl mit TOOL CALL S…"
+                ),
+                format!(
+                    "Spindle speed in a path block read (first \"{text}\"): Klartext programs the speed with TOOL CALL S…"
+                ),
+            ),
             DiagCode::Lenient { kind: Lenient::CycleSpeltOut, text } => t(
                 format!("„{text}“ als CYCL DEF gelesen: Klartext schreibt CYCL"),
                 format!("\"{text}\" read as CYCL DEF: Klartext writes CYCL"),
@@ -384,10 +392,13 @@ pub enum Lenient {
     CycleSpeltOut,
     /// `BEGIN PGM 100 IN` for `BEGIN PGM 100 INCH` (a CAM post's abbreviation of the unit).
     UnitIn,
+    /// `L Z-45. F1000. S6000` (a CAM post's or simulator's speed change in a path block; the
+    /// control changes the speed with `TOOL CALL S…`): the spindle turns at it from that block on.
+    SpeedInPath,
 }
 
 impl Lenient {
-    pub const ALL: [Lenient; 7] = [
+    pub const ALL: [Lenient; 8] = [
         Lenient::DecimalComma,
         Lenient::BlankAfterAddress,
         Lenient::PointAfterM,
@@ -395,6 +406,7 @@ impl Lenient {
         Lenient::MissingL,
         Lenient::CycleSpeltOut,
         Lenient::UnitIn,
+        Lenient::SpeedInPath,
     ];
 }
 

@@ -114,10 +114,19 @@ fn axes(out: &mut String, words: &[AxisWord]) {
 }
 
 fn tail(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32]) {
-    tail_with(out, comp, f, m, MWords::default());
+    tail_with(out, comp, f, None, m, MWords::default());
 }
 
-fn tail_with(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u32], w: MWords) {
+/// The words after a path block's target: compensation, feed, a spindle speed read leniently
+/// (after the feed, where CAM posts write it) and the M functions.
+fn tail_with(
+    out: &mut String,
+    comp: Option<RadiusComp>,
+    f: Option<Feed>,
+    speed: Option<Value>,
+    m: &[u32],
+    w: MWords,
+) {
     if let Some(c) = comp {
         out.push_str(match c {
             RadiusComp::R0 => " R0",
@@ -127,6 +136,10 @@ fn tail_with(out: &mut String, comp: Option<RadiusComp>, f: Option<Feed>, m: &[u
     }
     if let Some(f) = f {
         feed(out, f);
+    }
+    if let Some(s) = speed {
+        out.push_str(" S");
+        plain(out, s);
     }
     ms(out, m, w);
 }
@@ -204,10 +217,10 @@ fn body(out: &mut String, b: &BlockBody) {
         }
         BlockBody::BlkForm(f) => blk_form(out, f),
         BlockBody::ToolCall(t) => tool_call(out, t),
-        BlockBody::L(Line { axes: a, comp, feed: f, m, m_words }) => {
+        BlockBody::L(Line { axes: a, comp, feed: f, speed: s, m, m_words }) => {
             out.push('L');
             axes(out, a);
-            tail_with(out, *comp, *f, m, *m_words);
+            tail_with(out, *comp, *f, *s, m, *m_words);
         }
         BlockBody::Cc(m) => motion(out, "CC", m),
         BlockBody::C(m) => motion(out, "C", m),
@@ -470,7 +483,7 @@ fn motion(out: &mut String, kw: &str, m: &Motion) {
     if let Some(d) = m.direction {
         let _ = write!(out, " DR{}", sign(d));
     }
-    tail(out, m.comp, m.feed, &m.m);
+    tail_with(out, m.comp, m.feed, m.speed, &m.m, MWords::default());
 }
 
 fn appr_dep(out: &mut String, kw: &str, a: &ApprDep) {

@@ -39,12 +39,14 @@ fn line() -> impl Strategy<Value = BlockBody> {
             .collect::<Vec<_>>()
     });
     let comp = prop::option::of(prop::sample::select(vec![RadiusComp::R0, RadiusComp::Rl, RadiusComp::Rr]));
-    (axes, comp, prop::option::of(feed()), prop::collection::vec(0u32..200, 0..3)).prop_map(
-        |(a, comp, feed, m)| {
+    let speed = prop::option::of(value(0, 99999));
+    (axes, comp, prop::option::of(feed()), speed, prop::collection::vec(0u32..200, 0..3)).prop_map(
+        |(a, comp, feed, speed, m)| {
             BlockBody::L(Line {
                 axes: a.into(),
                 comp,
                 feed,
+                speed,
                 m: m.into_boxed_slice(),
                 m_words: MWords::default(),
             })

@@ -21,6 +21,9 @@ pub struct Line {
     pub axes: AxisWords,
     pub comp: Option<RadiusComp>,
     pub feed: Option<Feed>,
+    /// `S…`: a spindle speed in the block, as CAM posts and simulators write it (Klartext
+    /// changes it with `TOOL CALL S…`; read leniently, [`crate::diag::Lenient::SpeedInPath`]).
+    pub speed: Option<Value>,
     pub m: Box<[u32]>,
     pub m_words: MWords,
 }
@@ -59,6 +62,8 @@ pub struct Motion {
     pub direction: Option<Sign>,
     pub comp: Option<RadiusComp>,
     pub feed: Option<Feed>,
+    /// `S…`, as [`Line::speed`].
+    pub speed: Option<Value>,
     pub m: Box<[u32]>,
 }
 

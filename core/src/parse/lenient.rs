@@ -2,10 +2,11 @@
 //! comma (`X-49,000`), a blank between an address letter and its value (`L Z 25.000 FMAX`,
 //! `S 5000`), a point after an M function (`M128.`), `R0` in a straight departure
 //! (`DEP LT LEN10 R0`), an old-style cycle spelt `CYCLE DEF` and a straight line without its
-//! `L` (`Z0.0 B0.0 C0.0 FMAX M91`). The
-//! parser reads the block as if it were written canonically, rewriting the text in place with
+//! `L` (`Z0.0 B0.0 C0.0 FMAX M91`), a spindle speed in a path block (`L Z-45. F1000. S6000`).
+//! The parser reads the block as if it were written canonically, rewriting the text in place with
 //! the same length, so every offset of a diagnostic stays where it was (a missing `L` is read by
-//! the dispatcher instead, `parse_body`); [`super::AcrossBlocks`] says each kind once per file,
+//! the dispatcher instead, `parse_body`; a path block's `S` by its own parser, which keeps it as
+//! the block's speed: Klartext has no other spelling for it); [`super::AcrossBlocks`] says each kind once per file,
 //! at its first block (`unconfirmed::IMPORT_LENIENT_SPELLINGS`).
 pub use crate::diag::Lenient;
 
@@ -60,6 +61,20 @@ fn first_word(line: &[u8]) -> usize {
     i + digits + line[i + digits..].iter().take_while(|&&c| is_blank(c)).count()
 }
 
+/// Where an `S…` word stands in a path block (`L`, `C`, `CR`, `CT`, `LP`, `CP`, or a straight
+/// line without its `L`): the parser reads it as the spindle speed ([`Lenient::SpeedInPath`]).
+fn speed_in_path(word: &[u8]) -> Option<usize> {
+    let kw = word.iter().take_while(|&&c| !is_blank(c)).count();
+    if !(matches!(&word[..kw], b"L" | b"C" | b"CR" | b"CT" | b"LP" | b"CP") || lacks_l(word)) {
+        return None;
+    }
+    (kw + 1..word.len()).find(|&i| {
+        is_blank(word[i - 1])
+            && word[i] == b'S'
+            && word.get(i + 1).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.' | b'Q'))
+    })
+}
+
 /// The word `R0` in a straight departure (`DEP LT`, `DEP LN`; the arcs' `R` is their radius):
 /// its start.
 fn radius_in_dep(body: &[u8]) -> Option<usize> {
@@ -92,6 +107,10 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
         }
         if let Some(unit) = unit_in(word) {
             found(Lenient::UnitIn, w + unit, w + unit + 2, w + unit);
+        }
+        if let Some(s) = speed_in_path(word) {
+            let end = s + word[s..].iter().take_while(|&&c| !is_blank(c)).count();
+            found(Lenient::SpeedInPath, w + s, w + end, w + s);
         }
         if let Some(r) = radius_in_dep(word) {
             found(Lenient::RadiusInDep, w + r, w + r + 2, w + r);
@@ -153,7 +172,7 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
 pub(crate) fn normalize(body: &str) -> Option<String> {
     let mut found = Vec::new();
     scan(body.as_bytes(), Some(0), |kind, a, b, at| {
-        if !matches!(kind, Lenient::MissingL | Lenient::UnitIn) {
+        if !matches!(kind, Lenient::MissingL | Lenient::UnitIn | Lenient::SpeedInPath) {
             found.push((kind, a, b, at));
         }
     });
@@ -169,7 +188,7 @@ pub(crate) fn normalize(body: &str) -> Option<String> {
             Lenient::RadiusInDep => bytes[a..b].fill(b' '),
             // `CYCLE DEF` → `CYCL  DEF`.
             Lenient::CycleSpeltOut => bytes[at] = b' ',
-            Lenient::BlankAfterAddress | Lenient::MissingL | Lenient::UnitIn => {}
+            Lenient::BlankAfterAddress | Lenient::MissingL | Lenient::UnitIn | Lenient::SpeedInPath => {}
         }
     }
     for &(kind, a, b, value) in &found {

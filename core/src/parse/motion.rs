@@ -23,6 +23,7 @@ struct Words<'a> {
     direction: Option<(Sign, &'a str)>,
     comp: Option<(RadiusComp, &'a str)>,
     feed: Option<(Feed, &'a str)>,
+    speed: Option<(Value, &'a str)>,
     first_m: Option<&'a str>,
     m_words: MWords,
 }
@@ -152,6 +153,11 @@ fn path_words(cx: &mut Cx, kw: &str, mut i: &str) -> Option<BlockBody> {
                 Ok((r, v)) => (r, once(cx, &mut w.radius, v, at, i.len() - r.len())),
                 Err(e) => return cx.fail(e),
             }
+        } else if let Some(after) = i.strip_prefix('S') {
+            match word_value(after) {
+                Ok((r, v)) => (r, once(cx, &mut w.speed, v, at, i.len() - r.len())),
+                Err(e) => return cx.fail(e),
+            }
         } else {
             return cx.invalid(at, Some(Expected::Nc(EXPECTED)));
         };
@@ -167,22 +173,23 @@ fn path_words(cx: &mut Cx, kw: &str, mut i: &str) -> Option<BlockBody> {
 fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
     let allowed = |word: &str| -> bool {
         match kw {
-            "L" | "CT" => matches!(word, "comp" | "feed" | "m"),
+            "L" | "CT" => matches!(word, "comp" | "feed" | "speed" | "m"),
             "CC" => false,
-            "C" => matches!(word, "dir" | "comp" | "feed" | "m"),
-            "CR" => matches!(word, "radius" | "dir" | "comp" | "feed" | "m"),
-            "LP" => matches!(word, "pr" | "pa" | "comp" | "feed" | "m"),
-            "CP" => matches!(word, "pa" | "dir" | "comp" | "feed" | "m"),
+            "C" => matches!(word, "dir" | "comp" | "feed" | "speed" | "m"),
+            "CR" => matches!(word, "radius" | "dir" | "comp" | "feed" | "speed" | "m"),
+            "LP" => matches!(word, "pr" | "pa" | "comp" | "feed" | "speed" | "m"),
+            "CP" => matches!(word, "pa" | "dir" | "comp" | "feed" | "speed" | "m"),
             _ => false,
         }
     };
-    let present: [(&str, Option<&str>); 7] = [
+    let present: [(&str, Option<&str>); 8] = [
         ("pr", w.polar_radius.map(|p| p.1)),
         ("pa", w.polar_angle.map(|p| p.1)),
         ("radius", w.radius.map(|p| p.1)),
         ("dir", w.direction.map(|p| p.1)),
         ("comp", w.comp.map(|p| p.1)),
         ("feed", w.feed.map(|p| p.1)),
+        ("speed", w.speed.map(|p| p.1)),
         ("m", w.first_m),
     ];
     for (word, at) in present {
@@ -207,9 +214,11 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
     }
     let comp = w.comp.map(|c| c.0);
     let feed = w.feed.map(|f| f.0);
+    let speed = w.speed.map(|s| s.0);
     if kw == "L" {
         let m_words = w.m_words;
-        return Some(BlockBody::L(Line { axes: cx.take_line_axes(), comp, feed, m: cx.take_m(), m_words }));
+        let axes = cx.take_line_axes();
+        return Some(BlockBody::L(Line { axes, comp, feed, speed, m: cx.take_m(), m_words }));
     }
     let motion = Box::new(Motion {
         axes: cx.take_axes(),
@@ -219,6 +228,7 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
         direction: w.direction.map(|p| p.0),
         comp,
         feed,
+        speed,
         m: cx.take_m(),
     });
     Some(match kw {

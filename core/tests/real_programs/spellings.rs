@@ -349,6 +349,39 @@ fn m120_with_its_look_ahead_and_the_feed_functions_not_simulated() {
     assert!(parse("1 M120 LA\n").1.iter().any(|d| d.is_error()));
 }
 
+/// A spindle speed in a path block, as CAM posts and a simulator's examples write it
+/// (`L Z-45. F1000. S6000`, `C Y-31.391 Z47.513 F1000. S5000 DR+`): Klartext changes the speed
+/// only with `TOOL CALL S…`, so it is read leniently, said once per file, kept in the block
+/// (`fmt` writes it after the feed: there is no other spelling) and the spindle turns at it
+/// from that block on.
+#[test]
+fn a_spindle_speed_in_a_path_block_is_read_and_sets_the_speed() {
+    let (p, d) = parse(
+        "0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S1000\n2 L Z-45. F1000. S6000 M3\n\
+         3 C X+1 Y+0 DR+ S7000\n4 L X+1 Y+0 FMAX\n5 LP PR+1 PA+90 S+Q1\n6 END PGM S MM\n",
+    );
+    let said: Vec<_> = d.iter().map(|d| d.code.clone()).collect();
+    let speed = DiagCode::Lenient { kind: Lenient::SpeedInPath, text: "S6000".into() };
+    assert_eq!(said, [speed], "said once, at its first block");
+    assert_eq!(
+        format_program(&p).lines().nth(2),
+        Some("2 L Z-45 F1000 S6000 M3"),
+        "kept in the block, written after the feed"
+    );
+    let BlockBody::C(m) = &*p.blocks[3].body() else { panic!("an arc") };
+    assert_eq!(m.speed, Some(Value::Number(7000.0)));
+    let BlockBody::Lp(m) = &*p.blocks[5].body() else { panic!("a polar line") };
+    assert_eq!(m.speed, Some(Value::Param { index: 1, negate: false }));
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+    let (program, sim) = run("0 BEGIN PGM S MM\n1 TOOL CALL 1 Z S1000\n2 L X+0 Y+0 Z+10 R0 FMAX M3\n\
+         3 L Z+5 F1000 S6000\n4 CC X+5 Y+0\n5 C X+10 Y+0 DR+ S7000\n6 L Z+20 FMAX\n7 END PGM S MM\n");
+    let speed = |n| after(&program, &sim, n).spindle.speed;
+    assert_eq!([speed(2), speed(3), speed(5), speed(6)], [1000.0, 6000.0, 7000.0, 7000.0]);
+    // Not a speed: the circle centre `CC` takes none, and a second one is programmed twice.
+    assert!(parse("1 CC X+0 Y+0 S500\n").1.iter().any(|d| d.is_error()));
+    assert!(parse("1 L X+0 S500 S600\n").1.iter().any(|d| d.is_error()));
+}
+
 /// No M function passes silently: each the run does not model is said on its block, in every
 /// block that carries M functions (a line, an arc, a block of its own), and a machine maker's own
 /// number too. M13/M14 turn the spindle on with the coolant, M0 and M6 stop it (HEIDENHAIN's M

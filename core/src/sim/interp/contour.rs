@@ -219,6 +219,7 @@ impl Interp {
     #[inline(never)]
     pub(super) fn contour(&mut self, at: &mut At<'_, '_>, body: &BlockBody, m: &Motion) -> R<()> {
         self.m_functions(at, &m.m);
+        self.speed_word(m.speed.as_ref())?;
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
         let geometric = self.contour.geom_start.take().unwrap_or(here);

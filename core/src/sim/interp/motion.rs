@@ -173,6 +173,7 @@ impl Interp {
 
     pub(super) fn line(&mut self, at: &mut At<'_, '_>, line: &Line) -> R<()> {
         self.m_functions(at, &line.m);
+        self.speed_word(line.speed.as_ref())?;
         if let Some(&m) = line.m.iter().find(|&&m| m == 91 || m == 92) {
             self.tcpm_reset_before(if m == 91 { "M91" } else { "M92" })?;
         }

@@ -59,6 +59,15 @@ impl Interp {
         Ok(())
     }
 
+    /// The spindle speed of `TOOL CALL … S…`, or of an `S…` in a path block (read leniently,
+    /// `diag::Lenient::SpeedInPath`): the spindle turns at it from this block on.
+    pub(super) fn speed_word(&mut self, s: Option<&Value>) -> R<()> {
+        if let Some(s) = s {
+            self.spindle.speed = self.value(s)?;
+        }
+        Ok(())
+    }
+
     pub(super) fn tool_call(&mut self, at: &mut At<'_, '_>, t: &ToolCall) -> R<()> {
         self.tcpm_reset_before("TOOL CALL")?;
         let mut dl = t.dl.as_ref().map(|v| self.length(v)).transpose()?.unwrap_or(0.0);
@@ -98,9 +107,7 @@ impl Interp {
                 at.note(|| Note::ToolAxis { axis });
             }
         }
-        if let Some(s) = &t.speed {
-            self.spindle.speed = self.value(s)?;
-        }
+        self.speed_word(t.speed.as_ref())?;
         if let Some(f) = &t.feed {
             let f = self.feed_rate(f)?;
             self.tool.feed = f;
