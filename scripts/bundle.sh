@@ -3,14 +3,14 @@
 # gzip -9, summed — what the page loads before its first screen. Each page's wasm is split
 # (scripts/split_pages.py) by the lists of web/first_screen/: the functions the first screen does
 # not run are in X_deferred.wasm, fetched after it; its size is printed on its own line ("then").
-# The trainer (index.html) must stay within its budget (BUNDLE_BUDGET_KB, the brief's 240 KB;
-# issue 16 asks for 200); the course page (kurs.html) and the machine editor (maschine.html),
+# The trainer (index.html) must stay within its budget (BUNDLE_BUDGET_KB: the brief's 200 KB for
+# the trainer's first screen); the course page (kurs.html) and the machine editor (maschine.html),
 # each its own bundle, within regression ceilings. Fails above any of them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/env.sh
 source scripts/env.sh
-BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
+BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-200}"
 # Unsplit, the trainer was 316.7 KB, the course 391.0 KB and the editor 176.2 KB; split, with
 # the read-only data only the deferred code reads, 197, 309 (its lessons' first screens run most
 # of the trainer too) and 123 KB. The ceilings stop a
@@ -18,7 +18,8 @@ BUNDLE_BUDGET_KB="${BUNDLE_BUDGET_KB:-240}"
 # check's swept test and the stock's light replay (issue 32) and the old controls' empty words
 # (issue 30): core code every page carries (330.7 KB measured with them). It rose to 338 with
 # SYSREAD ID50, TABREAD and the nameless program frame (issue 30) and the depth under the
-# pointer in the 3D view (issue 32): 334.3 KB measured.
+# pointer in the 3D view (issue 32): 334.3 KB measured. The trainer's went down from 216 to
+# 172.9 KB when its start stopped simulating before the first screen (AppState::start_unsimulated).
 COURSE_LIMIT_KB="${COURSE_LIMIT_KB:-338}"
 EDITOR_LIMIT_KB="${EDITOR_LIMIT_KB:-160}"
 build_pages
@@ -50,11 +51,6 @@ if [ "$total" -le $((BUNDLE_BUDGET_KB * 1024)) ]; then
   echo "bundle within the budget of $BUNDLE_BUDGET_KB KB"
 else
   echo "bundle OVER the budget of $BUNDLE_BUDGET_KB KB by $(( (total - BUNDLE_BUDGET_KB * 1024 + 1023) / 1024 )) KB"
-fi
-if [ "$total" -le $((200 * 1024)) ]; then
-  echo "bundle within issue 16's 200 KB"
-else
-  echo "bundle above issue 16's 200 KB by $(( (total - 200 * 1024 + 1023) / 1024 )) KB (the budget that fails is $BUNDLE_BUDGET_KB KB)"
 fi
 echo "  then, after the first screen: $(deferred_size index.html)"
 course=$(page_size kurs.html)

@@ -268,8 +268,17 @@ def split_tests(driver, dist, run):
             # The deferred wasm also carries the read-only data (texts, tables) only its functions
             # read: a first screen must read none of it (scripts/wasm_split.py, plan_data). Each
             # page, with the state the loads before saved, once whole (the deferred part loaded)
-            # and once with it blocked: the same HTML.
+            # and once with it blocked: the same HTML. What waits for the deferred code (the
+            # trainer's simulation of its start program, AppState::sim_pending) waits in both.
             sizes = []
+            waits = driver.cdp("Page.addScriptToEvaluateOnNewDocument", {
+                "source": "globalThis.__schwenkbarSplitReady = new Promise(() => {});"})["identifier"]
+            try:
+                return same_html(sizes)
+            finally:
+                driver.cdp("Page.removeScriptToEvaluateOnNewDocument", {"identifier": waits})
+
+        def same_html(sizes):
             for page, probe, words in (("", TRAINER, ["Schwenkbar"]), ("kurs.html", COURSE, ["Schwenkbar"]),
                                        ("maschine.html#ac-table", EDITOR, ["ac-table"])):
                 path, _, fragment = page.partition("#")

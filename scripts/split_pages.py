@@ -73,8 +73,16 @@ HELPER = ("0,97,115,109,1,0,0,0,1,4,1,96,0,0,2,7,1,1,106,1,108,0,0,3,2,1,0,"
 LOADER = """
 // Added by scripts/split_pages.py: the functions the first screen does not run are in
 // __DEFERRED__; each of their stubs in this page's wasm first calls table slot __SLOT__.
-const __split = { state: 0, sync: 0, ex: null, noop: null, bytes: null };
+const __split = { state: 0, sync: 0, ex: null, noop: null, bytes: null, ready: null };
 globalThis.__schwenkbarSplit = __split;
+// Resolves when the deferred code is there: the trainer simulates its start program then
+// (web/src/browser.rs, deferred_code), not during the first screen. Without it (the background
+// load failed) the first key loads it (the reducer simulates before any action).
+globalThis.__schwenkbarSplitReady = globalThis.__schwenkbarSplitReady
+    || new Promise((resolve) => { __split.ready = resolve; });
+function __split_settled() {
+    if (__split.ready) __split.ready();
+}
 function __split_attach(instance) {
     const helper = new WebAssembly.Instance(new WebAssembly.Module(new Uint8Array([__HELPER__])),
         { j: { l: __split_now } });
@@ -88,6 +96,7 @@ function __split_use(module) {
     __split.ex.__TABLE__.set(__SLOT__, __split.noop);
     __split.state = 2;
     __split.bytes = null;
+    __split_settled();
 }
 function __split_url() {
     return new URL('__DEFERRED__', import.meta.url);
@@ -171,8 +180,11 @@ def profiles(dist, plan, chromedriver):
     work = tempfile.mkdtemp(prefix="schwenkbar-split-")
     site = os.path.join(work, "site")
     shutil.copytree(dist, site)
+    # The profile is of the first screen: what waits for the deferred code (the trainer's
+    # simulation of its start program) waits for ever here.
     hook = ('<script>addEventListener("TrunkApplicationStarted",'
-            '(e)=>{window.__schwenkbarExports=e.detail.wasm})</script>')
+            '(e)=>{window.__schwenkbarExports=e.detail.wasm});'
+            'window.__schwenkbarSplitReady=new Promise(()=>{})</script>')
     for page, (_, wasm, data, addr, count) in plan.items():
         pathlib.Path(site, wasm).write_bytes(data)
         path = pathlib.Path(site, page)

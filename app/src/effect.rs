@@ -33,6 +33,9 @@ pub enum Effect {
     /// Send `PassStock` once the screen is painted again: the stock's first pass goes on by a
     /// share ([`crate::stock::PASS_RAYS`]) until every note of the run is known.
     PassStock,
+    /// Send `Simulate` once the simulator's code is there: the trainer's first screen is shown
+    /// before it (`AppState::sim_pending`; the page loads that code after its first screen).
+    Simulate,
     /// A lesson's trainer tells the course which PLANE block its cursor is on (`None`: none).
     TellCourse(Option<String>),
 }

@@ -89,6 +89,10 @@ pub struct AppState {
     pub text_editing: bool,
     /// The program simulated on the machine (recomputed when either changes).
     pub sim: Option<SimRef>,
+    /// The trainer's own start shows its first screen before it simulates (the simulator's code
+    /// is loaded after the first screen, `scripts/split_pages.py`): `sim` is made by
+    /// [`Action::Simulate`], or before any other action.
+    pub sim_pending: bool,
     /// Program run mode, when active.
     pub run: Option<Run>,
     /// The right-hand-rule demonstration in place of the machine view.
@@ -151,6 +155,13 @@ pub struct Replacement {
 
 impl Default for AppState {
     fn default() -> Self {
+        AppState::unsimulated().simulated(None)
+    }
+}
+
+impl AppState {
+    /// The default state before its simulation.
+    fn unsimulated() -> AppState {
         AppState {
             lang: Lang::default(),
             projector: false,
@@ -163,6 +174,7 @@ impl Default for AppState {
             message: None,
             text_editing: false,
             sim: None,
+            sim_pending: false,
             run: None,
             right_hand: false,
             link: None,
@@ -177,7 +189,6 @@ impl Default for AppState {
             machine_offer: None,
             tools: None,
         }
-        .simulated(None)
     }
 }
 
@@ -255,6 +266,9 @@ pub enum Action {
     RunToStart,
     /// The Satzfolge timer fired while step `.0` was shown.
     RunTick(usize),
+    /// Simulate the program the start left unsimulated ([`AppState::sim_pending`]; sent by the
+    /// shell once the simulator's code is there).
+    Simulate,
     /// The right-hand rule on a plane you rotate, in place of the machine view.
     ToggleRightHand,
     ToggleLang,
@@ -274,7 +288,15 @@ impl Reducer for AppState {
     /// changed, downloads, the Satzfolge timer, …), which the web shell carries out.
     fn apply(&self, action: Action) -> (AppState, Vec<Effect>) {
         let mut effects = Vec::new();
-        let next = self.transition(action, &mut effects);
+        let next = match (action, self.sim_pending) {
+            // Keeps the start's message (a link opened, a damaged record) and comes in a link
+            // preview or a question as well.
+            (Action::Simulate, true) => self.clone().simulated(None),
+            (Action::Simulate, false) => self.clone(),
+            // Whatever a key does, it does on the simulated program.
+            (action, true) => self.clone().simulated(None).transition(action, &mut effects),
+            (action, false) => self.transition(action, &mut effects),
+        };
         next.follow_ups(Some(self), &mut effects);
         (next, effects)
     }
@@ -482,6 +504,8 @@ impl AppState {
             }
             Action::RunFaster => next.run_step(|run, _, _| run.speed = (run.speed + 1).min(SPEEDS.len() - 1)),
             Action::RunSlower => next.run_step(|run, _, _| run.speed = run.speed.saturating_sub(1)),
+            // Done by `apply`, before any transition.
+            Action::Simulate => {}
             Action::ToggleRightHand => next.right_hand = !self.right_hand,
             Action::ToggleLang => next.lang = self.lang.other(),
             Action::ToggleProjector => next.projector = !self.projector,
@@ -529,6 +553,7 @@ impl AppState {
     /// reaches a changed block) and keeps an open run at the same step where it still exists.
     #[must_use]
     fn simulated(mut self, changed: Option<std::ops::Range<usize>>) -> AppState {
+        self.sim_pending = false;
         let resumed = changed.zip(self.sim.as_ref()).map(|(c, sim)| sim.resumed(&self.doc.program, c));
         self.sim = resumed.or_else(|| {
             self.machine.as_ref().map(|m| SimRef::with_tools(&self.doc.program, m, self.tools.clone()))

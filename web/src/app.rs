@@ -47,7 +47,7 @@ pub fn app(props: &AppProps) -> Html {
     let state = use_reducer(|| {
         Trainer::new(match &embed {
             Some(e) => AppState::embedded(&e.program, e.machine, e.lang, e.classroom),
-            None => AppState::start(browser::load_stored(), browser::fragment().as_deref()),
+            None => AppState::start_unsimulated(browser::load_stored(), browser::fragment().as_deref()),
         })
     });
     let root = use_node_ref();
@@ -64,6 +64,7 @@ pub fn app(props: &AppProps) -> Html {
             tick: on_action.reform(Action::RunTick),
             build_stock: on_action.reform(|()| Action::BuildStock),
             pass_stock: on_action.reform(|()| Action::PassStock),
+            simulate: on_action.reform(|()| Action::Simulate),
             root: root.clone(),
             tell_course: props.embed.as_ref().map(|e| e.on_plane_block.clone()),
         },

@@ -233,6 +233,17 @@ pub async fn copy_to_clipboard(text: &str) -> Result<(), ()> {
     JsFuture::from(navigator.clipboard().write_text(text)).await.map(|_| ()).map_err(|_| ())
 }
 
+/// Resolves once the code the page loads after its first screen is there: the split page's
+/// loader (`scripts/split_pages.py`) sets `__schwenkbarSplitReady` to a promise that resolves
+/// when that code has arrived (never when its load failed: the first key then loads it, as any
+/// action simulates first). A page built whole has no such promise: at once.
+pub async fn deferred_code() {
+    let ready = js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("__schwenkbarSplitReady"));
+    if let Ok(promise) = ready.and_then(|r| r.dyn_into::<js_sys::Promise>()) {
+        let _ = JsFuture::from(promise).await;
+    }
+}
+
 /// Takes the fragment out of the address bar without a reload or a new history entry.
 pub fn consume_fragment() {
     let Some(window) = web_sys::window() else { return };

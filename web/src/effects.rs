@@ -85,6 +85,8 @@ pub struct Shell {
     pub build_stock: Callback<()>,
     /// The stock's first pass on by a share (`PassStock`), after the next paint.
     pub pass_stock: Callback<()>,
+    /// Simulate the start's program (`Simulate`) once the simulator's code is there.
+    pub simulate: Callback<()>,
     /// The app's root element (file input, text area).
     pub root: NodeRef,
     /// A lesson's trainer: the course wants the cursor's PLANE block.
@@ -101,6 +103,7 @@ impl Shell {
             tick: Callback::noop(),
             build_stock: Callback::noop(),
             pass_stock: Callback::noop(),
+            simulate: Callback::noop(),
             root,
             tell_course: None,
         }
@@ -237,6 +240,13 @@ fn run(list: &Rc<[Effect]>, at: usize, shell: &Shell) {
                 // A frame: the browser paints (and the view cuts its own share) between two.
                 yew::platform::time::sleep(std::time::Duration::from_millis(16)).await;
                 pass.emit(());
+            });
+        }
+        Effect::Simulate => {
+            let simulate = shell.simulate.clone();
+            yew::platform::spawn_local(async move {
+                browser::deferred_code().await;
+                simulate.emit(());
             });
         }
         Effect::TellCourse(block) => {

@@ -134,8 +134,22 @@ impl AppState {
     /// and replaced by the default.
     #[must_use]
     pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
+        let (state, mut fx) = AppState::start_unsimulated(stored, fragment);
+        if !state.sim_pending {
+            return (state, fx);
+        }
+        let next = state.clone().simulated(None);
+        next.follow_ups(Some(&state), &mut fx);
+        (next, fx)
+    }
+
+    /// [`AppState::start`] without the simulation, which [`Action::Simulate`] (or any other
+    /// action) makes ([`AppState::sim_pending`]): the trainer's first screen shows the program
+    /// before the simulator's code has loaded. A share link that opens a run simulates at once.
+    #[must_use]
+    pub fn start_unsimulated(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
         let Stored { state: saved, prefs, program, machines, replaced, tools } = stored;
-        let mut state = AppState::default();
+        let mut state = AppState::unsimulated();
         let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
         state.lang = prefs.lang;
         state.projector = prefs.classroom;
@@ -236,15 +250,18 @@ impl AppState {
                 None => Text::new("Programm aus dem Link geöffnet", "Program opened from the link"),
             });
         }
-        // The default's simulation is of the default program: simulate what was restored.
-        state = state.simulated(None);
         if run {
+            state = state.simulated(None);
             state.start_run();
             // A link that runs into the control's stop shows the stop's message, not "opened"
             // (a preview over the trainee's own program keeps its question).
             if state.link.is_none() && state.run.as_ref().is_some_and(|r| r.stopped_by_error) {
                 state.message = None;
             }
+        }
+        state.sim_pending = state.sim.is_none();
+        if state.sim_pending {
+            fx.push(Effect::Simulate);
         }
         state.follow_ups(None, &mut fx);
         (state, fx)

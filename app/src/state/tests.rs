@@ -127,6 +127,42 @@ fn share_link_opens_the_same_program_at_the_same_block_and_machine() {
     assert_eq!(shown, Some(10), "the link opens the run at block 10");
 }
 
+/// The trainer's own start shows the program before it simulates (the simulator's code comes
+/// after the first screen): SIMULATE, or any key before it, makes the same run a start that
+/// simulates at once makes; the start's message and a link preview stay; a link that opens a
+/// run simulates at once.
+#[test]
+fn the_first_screen_waits_for_its_simulation_and_any_key_makes_it() {
+    let (eager, _) = AppState::start(Stored::default(), None);
+    let (lazy, fx) = AppState::start_unsimulated(Stored::default(), None);
+    assert!(lazy.sim_pending && lazy.sim.is_none() && !eager.sim_pending);
+    assert!(!fx.contains(&Effect::BuildStock) && fx.contains(&Effect::Simulate));
+    let (simulated, _) = lazy.apply(Action::Simulate);
+    assert!(!simulated.sim_pending);
+    let (a, b) = (simulated.sim.as_ref().expect("run"), eager.sim.as_ref().expect("run"));
+    assert_eq!((a.0.len(), a.0.error.clone()), (b.0.len(), b.0.error.clone()));
+    assert!(a.0.len() > 30, "Musterprogramm 1 runs");
+    // Twice is once.
+    assert_eq!(simulated.apply(Action::Simulate).0.sim, simulated.sim);
+    // A key first: it acts on the simulated program.
+    let started = lazy.then(Action::StartRun);
+    assert!(!started.sim_pending && started.run.as_ref().is_some_and(|r| r.state.is_some()));
+
+    // A link over own work: SIMULATE keeps the preview and its question.
+    let own = "0 BEGIN PGM MEIN MM\n1 L Z+0 R0 FMAX M91\n2 END PGM MEIN MM\n".to_owned();
+    let link = AppState::default().then(Action::LoadSample("winkel_nicht_erlaubt".into())).share_fragment();
+    let stored = Stored { program: Some(own), ..Stored::default() };
+    let (preview, _) = AppState::start_unsimulated(stored, Some(&link));
+    let question = preview.message.clone();
+    let (preview, _) = preview.apply(Action::Simulate);
+    assert!(preview.link.is_some() && preview.sim.is_some());
+    assert_eq!(preview.message, question);
+    // A link that opens a run: simulated at once.
+    let running = AppState::default().then(Action::CursorTo(10)).then(Action::StartRun);
+    let (opened, _) = AppState::start_unsimulated(Stored::default(), Some(&running.share_fragment()));
+    assert!(!opened.sim_pending && opened.run.is_some());
+}
+
 #[test]
 fn run_steps_to_the_swivel_and_stops_on_the_refused_block() {
     let mut s = AppState::default().then(Action::StartRun);

@@ -195,11 +195,12 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
         <div class="scene-pane">
             <View3d lang={l} machine={props.machine.clone()} state={scene} toolpath={path.0.clone()} in_run={props.in_run}
                 typing={props.typing} />
-            if props.state.is_some() {
+            // Also before the start's simulation is there (disabled): the view keeps its size.
+            if props.machine.is_some() {
                 <label class="scrub">
                     { l.t("Satz-Bewegung", "Block motion") }
                     <input type="range" min="0" max="1000" value={((*fraction * 1000.0).round() as i64).to_string()}
-                        oninput={scrub} data-testid="scrub" />
+                        oninput={scrub} data-testid="scrub" disabled={props.state.is_none()} />
                 </label>
             }
         </div>
