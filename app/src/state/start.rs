@@ -139,6 +139,7 @@ impl AppState {
             return (state, fx);
         }
         let next = state.clone().simulated(None);
+        fx.retain(|e| *e != Effect::Simulate);
         next.follow_ups(Some(&state), &mut fx);
         (next, fx)
     }

@@ -133,7 +133,8 @@ fn share_link_opens_the_same_program_at_the_same_block_and_machine() {
 /// run simulates at once.
 #[test]
 fn the_first_screen_waits_for_its_simulation_and_any_key_makes_it() {
-    let (eager, _) = AppState::start(Stored::default(), None);
+    let (eager, eager_fx) = AppState::start(Stored::default(), None);
+    assert!(!eager_fx.contains(&Effect::Simulate));
     let (lazy, fx) = AppState::start_unsimulated(Stored::default(), None);
     assert!(lazy.sim_pending && lazy.sim.is_none() && !eager.sim_pending);
     assert!(!fx.contains(&Effect::BuildStock) && fx.contains(&Effect::Simulate));
