@@ -11,8 +11,6 @@ use schwenkbar_core::machine::Machine;
 use schwenkbar_core::sim::tools::ToolEntry;
 use schwenkbar_core::{BlockBody, edit};
 
-use schwenkbar_core::plane::PlaneKind;
-
 use crate::dialog::{Dialog, Key, Outcome};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
@@ -21,7 +19,9 @@ use crate::run::{Run, SPEEDS, SimRef};
 use crate::samples;
 use crate::stock::StockRef;
 
+mod action;
 mod history;
+mod replace;
 mod run_mode;
 mod start;
 #[cfg(test)]
@@ -42,8 +42,10 @@ impl Then for AppState {
 }
 
 pub use crate::effect::{Effect, Reducer};
+pub use action::Action;
 use history::Change;
 pub use history::History;
+pub use replace::{MachineOffer, Replacement};
 use run_mode::next_or_ask;
 pub use start::LinkPreview;
 
@@ -122,14 +124,6 @@ pub struct AppState {
     pub tools: Option<Arc<[ToolEntry]>>,
 }
 
-/// The machine offered for an imported program ([`AppState::machine_offer`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct MachineOffer {
-    pub id: &'static str,
-    /// The rotary axes the program moves, as letters (`B, C`).
-    pub axes: String,
-}
-
 /// What an action does to the program, for the history and the "unexported" mark.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum ProgramChange {
@@ -141,16 +135,6 @@ enum ProgramChange {
     Travel,
     /// Anything else.
     Aside,
-}
-
-/// A program that would replace the trainee's unexported work, held until they answer.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Replacement {
-    pub doc: Rc<Document>,
-    /// A sample's machine.
-    pub machine: Option<&'static str>,
-    /// What it is, for the question and the message after.
-    pub what: Text,
 }
 
 impl Default for AppState {
@@ -198,89 +182,6 @@ pub const DEFAULT_MACHINE: &str = "ac-table";
 /// The machine editor's page (its own bundle, beside `index.html`).
 pub const EDITOR_PAGE: &str = "maschine.html";
 
-#[derive(Debug, Clone, PartialEq)]
-pub enum Action {
-    /// The `SPEC FCT` key.
-    SpecFct,
-    /// Softkey `BEARB.-EBENE SCHWENKEN`.
-    TiltPlane,
-    /// A PLANE function softkey: opens its dialog.
-    Function(PlaneKind),
-    /// A key while the dialog is open (ENT, NO ENT, END, digits, dialog softkeys).
-    DialogKey(Key),
-    /// `DEL`/Esc: aborts the dialog without inserting anything.
-    Abort,
-    /// The `END` key or the back softkey outside a dialog: one softkey level up.
-    Back,
-    /// ENT outside a dialog: reopens the PLANE block under the cursor.
-    Open,
-    CursorUp,
-    CursorDown,
-    /// A click on a block.
-    CursorTo(usize),
-    /// The program text changed (typed or pasted in the editor).
-    SetText(String),
-    /// The text editor's window, bytes `at` of the program text, now reads `text`.
-    EditText {
-        at: std::ops::Range<usize>,
-        text: String,
-    },
-    ToggleTextEditing,
-    ShowMachines,
-    /// MASCHINE WÄHLEN → EIGENE MASCHINEN.
-    ShowOwnMachines,
-    SelectMachine(String),
-    /// MASCHINE WÄHLEN → EDITIEREN: the machine editor page on the current machine.
-    EditMachine,
-    ShowSamples,
-    LoadSample(String),
-    ShowFiles,
-    /// IMPORT by key: opens the file picker ([`Effect::PickFile`]).
-    PickFile,
-    /// A file was read: its bytes (Latin-1 or UTF-8).
-    Import(Vec<u8>),
-    /// HERUNTERLADEN and LINK TEILEN: carried out by the shell ([`Effect`]).
-    Download,
-    Share,
-    /// The opened share link: take its program as the own one, or keep the own one (also the
-    /// answer "keep mine" to a sample or an import over unexported edits).
-    TakeLink,
-    KeepOwn,
-    /// The answer "replace" to a sample or an import over unexported edits.
-    ConfirmReplace,
-    /// The machine offered for an imported program: take it, or keep the machine.
-    TakeMachineOffer,
-    KeepMachine,
-    /// RÜCKGÄNGIG (Ctrl+Z) and WIEDERHERSTELLEN (Ctrl+Y): the program one step back or forward.
-    Undo,
-    Redo,
-    /// The app shell reports the outcome of a side effect in the dialog line.
-    Notice(Text),
-    /// Program run: enter (single block), step, play/pause (Satzfolge), speed, back to start.
-    StartRun,
-    RunNext,
-    RunPrev,
-    RunPlay,
-    RunFaster,
-    RunSlower,
-    RunToStart,
-    /// The Satzfolge timer fired while step `.0` was shown.
-    RunTick(usize),
-    /// Simulate the program the start left unsimulated ([`AppState::sim_pending`]; sent by the
-    /// shell once the simulator's code is there).
-    Simulate,
-    /// The right-hand rule on a plane you rotate, in place of the machine view.
-    ToggleRightHand,
-    ToggleLang,
-    ToggleProjector,
-    /// The ROHTEIL switch: show or hide the stock.
-    ToggleStock,
-    /// Cut the run's stock now (sent by the shell for [`Effect::BuildStock`], after a render).
-    BuildStock,
-    /// The stock's first pass one share on ([`Effect::PassStock`]).
-    PassStock,
-}
-
 impl Reducer for AppState {
     type Action = Action;
 
@@ -299,23 +200,6 @@ impl Reducer for AppState {
         };
         next.follow_ups(Some(self), &mut effects);
         (next, effects)
-    }
-}
-
-impl Replacement {
-    /// The question in the dialog line.
-    #[must_use]
-    pub fn question(&self) -> Text {
-        Text::owned(
-            format!(
-                "Ihr Programm hat Änderungen, die nicht exportiert wurden. Durch „{}“ ersetzen? F1 = ERSETZEN, F2/END = BEHALTEN",
-                self.what.get(Lang::De)
-            ),
-            format!(
-                "Your program has edits that were never exported. Replace it with “{}”? F1 = REPLACE, F2/END = KEEP",
-                self.what.get(Lang::En)
-            ),
-        )
     }
 }
 
@@ -566,93 +450,6 @@ impl AppState {
         }
         self.sync_cursor_to_run();
         self
-    }
-
-    /// IMPORT: a text file becomes the program; a binary file (an image, a CAD model, a zip)
-    /// is refused and the program stays.
-    fn import(&mut self, bytes: Vec<u8>, fx: &mut Vec<Effect>) {
-        if schwenkbar_core::text::looks_binary(&bytes) {
-            self.message = Some(Text::new(
-                "Datei ist kein NC-Programm (Binärdatei): nicht importiert",
-                "The file is not an NC program (binary file): not imported",
-            ));
-            return;
-        }
-        self.level = SoftkeyLevel::Main;
-        self.replace_with(
-            Replacement {
-                doc: Rc::new(Document::new(schwenkbar_core::text::decode(bytes))),
-                machine: None,
-                what: Text::new("Importierte Datei", "Imported file"),
-            },
-            fx,
-        );
-    }
-
-    /// A sample or an import: at once over a program without unexported edits, else asked.
-    fn replace_with(&mut self, r: Replacement, fx: &mut Vec<Effect>) {
-        if self.unexported && !self.embedded {
-            self.message = Some(r.question());
-            self.replace = Some(r);
-        } else {
-            self.replace_now(r, fx);
-        }
-    }
-
-    /// The program becomes `r`'s; the one it replaces stays one undo step back (and in the
-    /// browser, for an undo after a reload).
-    fn replace_now(&mut self, r: Replacement, fx: &mut Vec<Effect>) {
-        let before = std::mem::replace(&mut self.doc, r.doc);
-        self.keep_replaced(&before, fx);
-        self.history.record(before, Change::Whole);
-        self.unexported = false;
-        self.cursor = 0;
-        self.machine_offer = None;
-        if let Some(m) = r.machine {
-            self.select_machine(m);
-        }
-        self.message = Some(Text::owned(
-            format!("{} geöffnet – Ihr bisheriges Programm: RÜCKGÄNGIG (Strg+Z)", r.what.get(Lang::De)),
-            format!("{} opened – your previous program: UNDO (Ctrl+Z)", r.what.get(Lang::En)),
-        ));
-        if r.machine.is_none() {
-            self.offer_machine();
-        }
-    }
-
-    /// After an import: when the program moves a rotary axis the machine does not have, the
-    /// first shipped machine that has every one it moves is offered (issue 31: one key to
-    /// accept, the choice stays with the trainee).
-    fn offer_machine(&mut self) {
-        let axes = schwenkbar_core::sim::programmed_rotary_axes(&self.doc.program);
-        let has_all = |m: &Machine| axes.iter().all(|a| m.joints().iter().any(|j| j.axis == *a));
-        if axes.is_empty() || self.machine.as_deref().is_some_and(has_all) {
-            return;
-        }
-        let Some(id) =
-            Machine::builtin_ids().into_iter().find(|id| Machine::builtin(id).is_ok_and(|m| has_all(&m)))
-        else {
-            return;
-        };
-        let letters = axes.iter().map(|a| a.letter().to_string()).collect::<Vec<_>>().join(", ");
-        let name = Machine::builtin(id).map(|m| m.name).ok();
-        let (de, en) = name.map_or((id.to_owned(), id.to_owned()), |n| (n.de.to_string(), n.en.to_string()));
-        self.message = Some(Text::owned(
-            format!(
-                "Das Programm bewegt die Drehachsen {letters}, die Maschine hat sie nicht: „{de}“ übernehmen? F1 = ÜBERNEHMEN, F2/END = BEHALTEN"
-            ),
-            format!(
-                "The program moves the rotary axes {letters}, which the machine lacks: take “{en}”? F1 = TAKE, F2/END = KEEP"
-            ),
-        ));
-        self.machine_offer = Some(MachineOffer { id, axes: letters });
-    }
-
-    /// Keeps a replaced program in the browser beside the shown one (not a lesson's trainer).
-    fn keep_replaced(&self, before: &Document, fx: &mut Vec<Effect>) {
-        if !self.embedded {
-            fx.push(Effect::Save { key: persist::REPLACED_KEY, value: before.text.clone() });
-        }
     }
 
     /// One step back (`back`) or forward in the program's history.

@@ -6,7 +6,7 @@ use std::rc::Rc;
 use schwenkbar_core::BlockBody;
 use schwenkbar_core::machine::Machine;
 
-use super::{Action, AppState, DEFAULT_MACHINE, Effect};
+use super::{AppState, DEFAULT_MACHINE, Effect};
 use crate::document::Document;
 use crate::i18n::{Lang, Text};
 use crate::persist::{self, Prefs, Saved, Shared, Stored};
@@ -21,59 +21,6 @@ pub struct LinkPreview {
     pub own: Rc<Document>,
     pub own_cursor: usize,
     pub own_machine: Option<Rc<Machine>>,
-}
-
-impl Action {
-    /// While a share link is previewed: looking at it and running it is allowed, changing a
-    /// program is not until the trainee took the link or kept the own program.
-    pub(super) fn allowed_in_link_preview(&self) -> bool {
-        matches!(
-            self,
-            Action::TakeLink
-                | Action::KeepOwn
-                | Action::CursorUp
-                | Action::CursorDown
-                | Action::CursorTo(_)
-                | Action::Notice(_)
-                | Action::Back
-                | Action::StartRun
-                | Action::RunNext
-                | Action::RunPrev
-                | Action::RunPlay
-                | Action::RunFaster
-                | Action::RunSlower
-                | Action::RunToStart
-                | Action::RunTick(_)
-                | Action::ToggleRightHand
-                | Action::ToggleLang
-                | Action::ToggleProjector
-                | Action::ToggleStock
-                | Action::BuildStock
-                | Action::PassStock
-        )
-    }
-}
-
-impl Action {
-    /// While "replace the own program?" is asked: the answers, and what only looks or
-    /// switches the screen.
-    pub(super) fn allowed_while_asked(&self) -> bool {
-        matches!(
-            self,
-            Action::ConfirmReplace
-                | Action::KeepOwn
-                | Action::Back
-                | Action::Abort
-                | Action::CursorUp
-                | Action::CursorDown
-                | Action::CursorTo(_)
-                | Action::Notice(_)
-                | Action::ToggleLang
-                | Action::ToggleProjector
-                | Action::ToggleRightHand
-                | Action::PassStock
-        )
-    }
 }
 
 impl AppState {
@@ -134,21 +81,18 @@ impl AppState {
     /// and replaced by the default.
     #[must_use]
     pub fn start(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
-        let (state, mut fx) = AppState::start_unsimulated(stored, fragment);
-        if !state.sim_pending {
-            return (state, fx);
-        }
-        let next = state.clone().simulated(None);
-        fx.retain(|e| *e != Effect::Simulate);
-        next.follow_ups(Some(&state), &mut fx);
-        (next, fx)
+        AppState::started(stored, fragment, false)
     }
 
-    /// [`AppState::start`] without the simulation, which [`Action::Simulate`] (or any other
+    /// [`AppState::start`] without the simulation, which [`super::Action::Simulate`] (or any other
     /// action) makes ([`AppState::sim_pending`]): the trainer's first screen shows the program
     /// before the simulator's code has loaded. A share link that opens a run simulates at once.
     #[must_use]
     pub fn start_unsimulated(stored: Stored, fragment: Option<&str>) -> (AppState, Vec<Effect>) {
+        AppState::started(stored, fragment, true)
+    }
+
+    fn started(stored: Stored, fragment: Option<&str>, lazily: bool) -> (AppState, Vec<Effect>) {
         let Stored { state: saved, prefs, program, machines, replaced, tools } = stored;
         let mut state = AppState::unsimulated();
         let (prefs, prefs_notice) = Prefs::load(prefs.as_deref());
@@ -251,8 +195,10 @@ impl AppState {
                 None => Text::new("Programm aus dem Link geöffnet", "Program opened from the link"),
             });
         }
-        if run {
+        if run || !lazily {
             state = state.simulated(None);
+        }
+        if run {
             state.start_run();
             // A link that runs into the control's stop shows the stop's message, not "opened"
             // (a preview over the trainee's own program keeps its question).

@@ -3,6 +3,7 @@
 use super::*;
 use crate::dialog::PosKind;
 use crate::persist::{self, Prefs, Stored};
+use schwenkbar_core::plane::PlaneKind;
 
 fn keys(mut s: AppState, text: &str) -> AppState {
     for c in text.chars() {
