@@ -3,7 +3,8 @@
 //! said once per file, and every block runs: executed, or said on its block, never skipped.
 //! Oracles: closed forms worked by hand (sin 30° = 0.5, 3–4–5, a retract of 50 mm along an
 //! untilted Z axis, the cycle's set-up clearance above the surface). A file per idea: the
-//! parameters and FN functions, the spellings and blocks, the tools and machines.
+//! parameters and FN functions, the spellings, the M functions, the other blocks, the tools and
+//! machines.
 
 use schwenkbar_core::ast::{BlockBody, CycleValue, QL_BASE, QR_BASE};
 use schwenkbar_core::diag::{DiagCode, Severity};
@@ -53,6 +54,8 @@ fn after(program: &Program, sim: &Simulation, number: u32) -> State {
     sim.state_at(program, step).expect("state")
 }
 
+mod blocks;
+mod m_functions;
 mod machines;
 mod parameters;
 mod spellings;
