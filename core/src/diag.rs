@@ -334,6 +334,20 @@ impl DiagCode {
                     "Spindle speed in a path block read (first \"{text}\"): Klartext programs the speed with TOOL CALL S…"
                 ),
             ),
+            DiagCode::Lenient { kind: Lenient::FeedInToolDef, text } => t(
+                format!(
+                    "„{text}“ im TOOL DEF überlesen: Klartext definiert im TOOL DEF nur Länge und Radius (L, R), den Vorschub im Verfahrsatz"
+                ),
+                format!(
+                    "\"{text}\" in TOOL DEF skipped: Klartext's TOOL DEF defines only the length and radius (L, R), the feed goes in a path block"
+                ),
+            ),
+            DiagCode::Lenient { kind: Lenient::ParenComment, text } => t(
+                format!(
+                    "Kommentar in Klammern gelesen (zuerst „{text}“): Klartext schreibt einen Kommentar nach ;"
+                ),
+                format!("Comment in parentheses read (first \"{text}\"): Klartext writes a comment after ;"),
+            ),
             DiagCode::Lenient { kind: Lenient::CycleSpeltOut, text } => t(
                 format!("„{text}“ als CYCL DEF gelesen: Klartext schreibt CYCL"),
                 format!("\"{text}\" read as CYCL DEF: Klartext writes CYCL"),
@@ -395,10 +409,16 @@ pub enum Lenient {
     /// `L Z-45. F1000. S6000` (a CAM post's or simulator's speed change in a path block; the
     /// control changes the speed with `TOOL CALL S…`): the spindle turns at it from that block on.
     SpeedInPath,
+    /// `TOOL DEF1 L+30,000 F300` (a training simulator's tool feed; Klartext's TOOL DEF has
+    /// only the length and radius): read without the feed.
+    FeedInToolDef,
+    /// `L IX-80 (MODAL DRILL POINT)` for `L IX-80 ;MODAL DRILL POINT` (a training simulator's
+    /// comment after the words): read as the block's comment.
+    ParenComment,
 }
 
 impl Lenient {
-    pub const ALL: [Lenient; 8] = [
+    pub const ALL: [Lenient; 10] = [
         Lenient::DecimalComma,
         Lenient::BlankAfterAddress,
         Lenient::PointAfterM,
@@ -407,6 +427,8 @@ impl Lenient {
         Lenient::CycleSpeltOut,
         Lenient::UnitIn,
         Lenient::SpeedInPath,
+        Lenient::FeedInToolDef,
+        Lenient::ParenComment,
     ];
 }
 

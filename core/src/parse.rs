@@ -405,6 +405,15 @@ impl Parser<'_> {
         }
 
         let (body_text, comment) = split_comment(rest);
+        // `L IX-80 (MODAL DRILL POINT)`: the parentheses are the block's comment (AcrossBlocks
+        // says it once per file).
+        let (body_text, comment) = match lenient::paren_comment(body_text.as_bytes()) {
+            Some(p) if comment.is_none() && crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => {
+                let inner = body_text[p + 1..].trim_end();
+                (&body_text[..p], Some(&inner[..inner.len() - 1]))
+            }
+            _ => (body_text, comment),
+        };
         let mut body_text = body_text.trim();
         let mut comment = comment.map(|c| c.trim().to_owned());
         let continued = self.block_lines.len() > 1;

@@ -447,7 +447,9 @@ pub const APPR_DEP_RADIUS_OF_CENTRE_PATH: bool = true;
 
 /// A decimal comma (`X-49,000`), a blank between an address letter and its value
 /// (`L Z 25.000`), a point after an M function (`M128.`), `R0` in `DEP LT`/`DEP LN`,
-/// `CYCLE DEF` for an old-style cycle and a straight line without its `L` (`Z0.0 B0.0 FMAX`),
+/// `CYCLE DEF` for an old-style cycle, a straight line without its `L` (`Z0.0 B0.0 FMAX`), a
+/// speed in a path block (`L Z-45 S6000`), a feed in a tool definition (`TOOL DEF1 L+30 F300`)
+/// and a comment in parentheses after the words (`L IX-80 (MODAL DRILL POINT)`),
 /// as some CAM posts and exporting
 /// simulators write: read as the canonical spelling, said once per kind and file
 /// (`parse::Lenient`). **UNCONFIRMED** whether the control reads them on import.

@@ -310,3 +310,41 @@ fn the_cycles_errors_stop_the_run_at_the_calling_block() {
     let src = "0 BEGIN PGM E MM\n1 CYCL DEF 221 MUSTER LINIEN ~\n  Q225=+0 ~\n  Q226=+0 ~\n  Q237=+10 ~\n  Q238=+10 ~\n  Q242=+2 ~\n  Q243=+1 ~\n  Q224=+0 ~\n  Q200=+2 ~\n  Q203=+0 ~\n  Q204=+10 ~\n  Q301=+1\n2 END PGM E MM\n";
     assert_eq!(error_of(src).1, SimErrorCode::NoCycle);
 }
+
+/// A cycle defined without its parameter lines, its parameters set as blocks of their own
+/// (`Q201 = -5`, as a training simulator's examples write it): the call reads them from the
+/// global Q parameters Q200… (the cycles' range in the user's manuals), so it drills exactly as
+/// the same values written in the definition; a parameter changed before the next call changes
+/// that call; with none set the parameters were left out and the run stops at the call.
+#[test]
+fn a_cycle_without_parameter_lines_takes_them_from_q200_at_its_call() {
+    let inline = holes(&drilling("4 L X+10 Y+10 Z+20 R0 FMAX M99\n5 L X+20 M99\n"));
+    let split = "0 BEGIN PGM D MM\n1 TOOL CALL 8 Z S4000 F150\n2 L Z+0 R0 FMAX M91\n3 CYCL DEF 200 BOHREN\n\
+        31 Q200 = 2\n32 Q201 = -5\n33 Q206 = 150\n34 Q202 = 5\n35 Q210 = 0\n36 Q203 = +0\n37 Q204 = 10\n38 Q211 = 0\n\
+        40 L X+10 Y+10 Z+20 R0 FMAX M99\n50 L X+20 M99\n99 END PGM D MM\n";
+    let got = holes(split);
+    let calls = |h: &Holes| {
+        h.iter().filter(|(_, b, _)| !b.is_empty()).map(|(_, b, z)| (b.clone(), *z)).collect::<Vec<_>>()
+    };
+    assert_eq!(calls(&got), calls(&inline), "the same holes at the same depth");
+    assert_eq!(calls(&got).iter().map(|(_, z)| *z).collect::<Vec<_>>(), [-5.0, -5.0]);
+    let (p, _, sim) = run_on(split, "ac-table");
+    let m = after(&p, &sim, 3).message().expect("said on the definition");
+    assert!(m.de.contains("ohne Parameterzeilen") && m.en.contains("Q200"), "{m:?}");
+    // Deeper for the second call only.
+    let deeper = split.replace("50 L X+20 M99", "45 Q201 = -8\n50 L X+20 M99");
+    let depths: Vec<f64> =
+        holes(&deeper).iter().filter(|(_, b, _)| !b.is_empty()).map(|(_, _, z)| *z).collect();
+    assert_eq!(depths, [-5.0, -8.0]);
+    // Nothing set: left out, the stop at the call.
+    let none = "0 BEGIN PGM D MM\n1 TOOL CALL 8 Z S4000 F150\n2 CYCL DEF 200 BOHREN\n3 L X+10 Y+10 Z+20 R0 FMAX M99\n4 END PGM D MM\n";
+    assert_eq!(error_of(none).0, 3);
+    assert_eq!(error_of(none).1, SimErrorCode::CycleParamsMissing { cycle: 200 });
+    // Only some set: the first one missing is named.
+    let some = none.replace("3 L X", "21 Q200 = 2\n22 Q201 = -5\n3 L X");
+    assert!(
+        matches!(error_of(&some).1, SimErrorCode::CycleParamMissing { cycle: 200, .. }),
+        "{:?}",
+        error_of(&some)
+    );
+}

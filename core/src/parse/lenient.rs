@@ -75,6 +75,46 @@ fn speed_in_path(word: &[u8]) -> Option<usize> {
     })
 }
 
+/// Where an `F…` word stands in a tool definition (`TOOL DEF1 L+30,000 F300`, a training
+/// simulator's tool feed): the parser reads the block without it ([`Lenient::FeedInToolDef`]).
+fn feed_in_tool_def(word: &[u8]) -> Option<usize> {
+    if !word.starts_with(b"TOOL DEF") {
+        return None;
+    }
+    (9..word.len()).find(|&i| {
+        is_blank(word[i - 1])
+            && word[i] == b'F'
+            && word.get(i + 1).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.' | b'Q'))
+    })
+}
+
+/// Where a comment in parentheses after a block's words starts (`L IX-80 (MODAL DRILL POINT)`:
+/// the `(` after a blank, outside quotes, the block's text ending with `)`), read as the
+/// block's comment ([`Lenient::ParenComment`]). `word`: the block's text from its first word.
+/// Not in the blocks whose parentheses are Klartext's own: a parameter block
+/// (`Q1 = Q2 * (Q3 + 1)`, `FN 0: …`), a pattern (`PATTERN DEF ROW1 (X+25 … NUM5)`), an SQL
+/// statement; nor in a structure block or a header line.
+pub(crate) fn paren_comment(word: &[u8]) -> Option<usize> {
+    if matches!(word.first(), None | Some(b'Q' | b'*' | b'('))
+        || [&b"FN"[..], b"PATTERN", b"SQL"].iter().any(|k| word.starts_with(k))
+    {
+        return None;
+    }
+    let last = word.iter().rposition(|&c| !is_blank(c))?;
+    if word[last] != b')' {
+        return None;
+    }
+    let mut quoted = false;
+    for i in 1..last {
+        match word[i] {
+            b'"' => quoted = !quoted,
+            b'(' if !quoted && is_blank(word[i - 1]) => return Some(i),
+            _ => {}
+        }
+    }
+    None
+}
+
 /// The word `R0` in a straight departure (`DEP LT`, `DEP LN`; the arcs' `R` is their radius):
 /// its start.
 fn radius_in_dep(body: &[u8]) -> Option<usize> {
@@ -99,6 +139,16 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
     if body.first() == Some(&b'(') {
         return;
     }
+    // A comment in parentheses is the block's comment: nothing in it is a word.
+    let paren = start.filter(|&w| w <= body.len()).and_then(|w| Some(w + paren_comment(&body[w..])?));
+    let body = match paren {
+        Some(p) => {
+            let end = body.iter().rposition(|&c| c == b')').map_or(body.len(), |e| e + 1);
+            found(Lenient::ParenComment, p, end, p);
+            &body[..p]
+        }
+        None => body,
+    };
     if let Some(w) = start.filter(|&w| w <= body.len()) {
         let word = &body[w..];
         if lacks_l(word) {
@@ -111,6 +161,10 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
         if let Some(s) = speed_in_path(word) {
             let end = s + word[s..].iter().take_while(|&&c| !is_blank(c)).count();
             found(Lenient::SpeedInPath, w + s, w + end, w + s);
+        }
+        if let Some(f) = feed_in_tool_def(word) {
+            let end = f + word[f..].iter().take_while(|&&c| !is_blank(c)).count();
+            found(Lenient::FeedInToolDef, w + f, w + end, w + f);
         }
         if let Some(r) = radius_in_dep(word) {
             found(Lenient::RadiusInDep, w + r, w + r + 2, w + r);
@@ -167,12 +221,13 @@ fn scan(body: &[u8], start: Option<usize>, mut found: impl FnMut(Lenient, usize,
 
 /// `body` (a block's text after its number) read canonically, or `None` when it has no lenient
 /// spelling to rewrite: each decimal comma a point, each value moved next to its address letter
-/// (`Z  25.0` → `Z25.0  `), the point after an M function and the `R0` of a straight departure
-/// blanked.
+/// (`Z  25.0` → `Z25.0  `), the point after an M function, the `R0` of a straight departure and
+/// the feed of a tool definition blanked.
 pub(crate) fn normalize(body: &str) -> Option<String> {
     let mut found = Vec::new();
     scan(body.as_bytes(), Some(0), |kind, a, b, at| {
-        if !matches!(kind, Lenient::MissingL | Lenient::UnitIn | Lenient::SpeedInPath) {
+        if !matches!(kind, Lenient::MissingL | Lenient::UnitIn | Lenient::SpeedInPath | Lenient::ParenComment)
+        {
             found.push((kind, a, b, at));
         }
     });
@@ -185,10 +240,14 @@ pub(crate) fn normalize(body: &str) -> Option<String> {
         match kind {
             Lenient::DecimalComma => bytes[at] = b'.',
             Lenient::PointAfterM => bytes[at] = b' ',
-            Lenient::RadiusInDep => bytes[a..b].fill(b' '),
+            Lenient::RadiusInDep | Lenient::FeedInToolDef => bytes[a..b].fill(b' '),
             // `CYCLE DEF` → `CYCL  DEF`.
             Lenient::CycleSpeltOut => bytes[at] = b' ',
-            Lenient::BlankAfterAddress | Lenient::MissingL | Lenient::UnitIn | Lenient::SpeedInPath => {}
+            Lenient::BlankAfterAddress
+            | Lenient::MissingL
+            | Lenient::UnitIn
+            | Lenient::SpeedInPath
+            | Lenient::ParenComment => {}
         }
     }
     for &(kind, a, b, value) in &found {
@@ -230,6 +289,7 @@ mod tests {
             ("DEP LT LEN10 R0", "DEP LT LEN10   "),
             ("DEP LN LEN5 R0 F200", "DEP LN LEN5    F200"),
             ("CYCLE DEF 9.0 DWELL TIME", "CYCL  DEF 9.0 DWELL TIME"),
+            ("TOOL DEF1 L+30,000 F300", "TOOL DEF1 L+30.000     "),
         ] {
             let got = normalize(text).unwrap_or_else(|| panic!("{text}"));
             assert_eq!(got, want);
@@ -252,6 +312,7 @@ mod tests {
             "L M128.5",
             "Z0.0 B0.0",
             "CYCLE DEF 200 BOHREN",
+            "TOOL CALL 1 Z S500 F300",
         ] {
             assert_eq!(normalize(text), None, "{text}");
         }

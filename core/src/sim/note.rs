@@ -63,6 +63,8 @@ pub enum Note {
     OldCycleDefined { cycle: u32 },
     /// `CYCL DEF n …` stored for its call.
     CycleDefined { cycle: u32 },
+    /// `CYCL DEF n` without its parameter lines: its call reads Q200… as set then.
+    CycleDefinedParamsFromQ { cycle: u32 },
     /// A called cycle the simulator does not model.
     CycleNotSimulated { cycle: u32 },
     /// `M99`/`CYCL CALL`: the cycle ran with `moves` moves.
@@ -231,6 +233,14 @@ impl Note {
             Note::CycleDefined { cycle } => t(
                 format!("Zyklus {cycle} definiert, wirkt beim Aufruf"),
                 format!("Cycle {cycle} defined, acts when called"),
+            ),
+            Note::CycleDefinedParamsFromQ { cycle } => t(
+                format!(
+                    "Zyklus {cycle} ohne Parameterzeilen definiert: beim Aufruf gelten die Q-Parameter Q200 … wie dann gesetzt"
+                ),
+                format!(
+                    "Cycle {cycle} defined without parameter lines: its call uses the Q parameters Q200 … as set then"
+                ),
             ),
             Note::CycleNotSimulated { cycle } => {
                 t(format!("Zyklus {cycle} nicht simuliert"), format!("Cycle {cycle} not simulated"))

@@ -174,6 +174,53 @@ fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
     assert!(tip.distance(glam::DVec3::new(40.0, 5.0, -1.0)) < 1e-9, "{tip}");
 }
 
+/// The same simulator writes a feed in its tool definition (`TOOL DEF1 L+30,000 F300`) and a
+/// comment in parentheses after a block's words (`L IX-80 (MODAL DRILL POINT)`): read without
+/// the feed and with the parentheses as the block's comment, each said once per file; the
+/// parentheses of a formula stay the formula's, and the run uses the tool's length and radius.
+#[test]
+fn a_training_simulators_tool_feed_and_comments_in_parentheses() {
+    let feed = |t: &str| DiagCode::Lenient { kind: Lenient::FeedInToolDef, text: t.into() };
+    let paren = |t: &str| DiagCode::Lenient { kind: Lenient::ParenComment, text: t.into() };
+    same_said("TOOL DEF 1 L+30 F300", "TOOL DEF 1 L+30", &[feed("F300")]);
+    same_said("TOOL DEF 2 L+30 F+Q5 R+4", "TOOL DEF 2 L+30 R+4", &[feed("F+Q5")]);
+    same_said("L IX-80 (MODAL DRILL POINT)", "L IX-80 ;MODAL DRILL POINT", &[paren("(MODAL DRILL POINT)")]);
+    same_said(
+        "L X+90 Y+90 M89 (M89 (MODAL) START)  ",
+        "L X+90 Y+90 M89 ;M89 (MODAL) START",
+        &[paren("(M89 (MODAL) START)")],
+    );
+    // Words inside the parentheses are the comment's: no other spelling is said for them.
+    same_said("CC X+50 Y+50 (POS X 5,5 M3.)", "CC X+50 Y+50 ;POS X 5,5 M3.", &[paren("(POS X 5,5 M3.)")]);
+    // A formula's parentheses, a quoted name and a `;` comment are not a comment in parentheses.
+    assert!(matches!(body("Q1 = Q2 * (Q3 + 1)"), BlockBody::QAssign { .. }));
+    assert!(matches!(body("FN 0: Q1 = (Q3 + 1)"), BlockBody::QAssign { .. }));
+    assert!(matches!(body("PATTERN DEF ROW1 (X+25 Y+33.5 D+8 NUM5 ROT+0 Z+0)"), BlockBody::PatternDef(_)));
+    assert!(parse("1 L X+1 (A) ;B\n").1.iter().any(|d| d.is_error()), "the comment is the one after ;");
+    assert!(parse("1 TOOL CALL 1 Z S500 F300\n").1.is_empty(), "a TOOL CALL's feed is its own");
+
+    let src = "0 BEGIN PGM SIM MM\n\
+        1 TOOL DEF1 L+30,000 R+4,000 F300\n\
+        2 TOOL DEF 2 L+20 F100\n\
+        3 TOOL CALL 1 Z S1500\n\
+        4 L X+0 Y+0 Z+50 R0 FMAX M3 (START)\n\
+        5 L X+40 Y+5 (POSITION)\n\
+        6 L Z-1 F200 (PLUNGE)\n\
+        7 END PGM SIM MM\n";
+    let (p, d) = parse(src);
+    let codes: Vec<_> = d.iter().map(|d| d.code.clone()).collect();
+    assert_eq!(codes.iter().filter(|c| **c == feed("F300")).count(), 1, "once per file: {codes:?}");
+    assert_eq!(codes.iter().filter(|c| **c == paren("(START)")).count(), 1, "once per file: {codes:?}");
+    assert!(d.iter().all(|d| !d.is_error()), "{d:?}");
+    assert_eq!(p.blocks[5].comment(), Some("POSITION"));
+    assert!(format_program(&p).contains("5 L X+40 Y+5 ; POSITION\n"), "{}", format_program(&p));
+    assert_eq!(format_program(&parse(&format_program(&p)).0), format_program(&p), "fmt is stable");
+    let (program, sim) = run(src);
+    let state = after(&program, &sim, 6);
+    assert_eq!(state.tool.length, 30.0, "the defined tool's length");
+    assert_eq!(state.tool.radius, 4.0, "and radius");
+}
+
 /// A spindle speed in a path block, as CAM posts and a simulator's examples write it
 /// (`L Z-45. F1000. S6000`, `C Y-31.391 Z47.513 F1000. S5000 DR+`): Klartext changes the speed
 /// only with `TOOL CALL S…`, so it is read leniently, said once per file, kept in the block

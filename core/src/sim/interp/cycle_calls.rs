@@ -88,14 +88,35 @@ impl Interp {
             return self.pattern_cycle(at, d);
         }
         self.calls_cycle.cycle = Some(StoredCycle::New(at.block));
-        at.note(|| Note::CycleDefined { cycle: d.number });
+        if d.params.is_empty() {
+            at.note(|| Note::CycleDefinedParamsFromQ { cycle: d.number });
+        } else {
+            at.note(|| Note::CycleDefined { cycle: d.number });
+        }
         Ok(())
     }
 
-    /// The evaluated parameters of a definition.
+    /// The evaluated parameters of a definition. A definition without its parameter lines
+    /// (`CYCL DEF 200 BOHREN`, then `Q200 = 2`, `Q201 = -15` as blocks of their own, as a
+    /// training simulator's examples write it) takes them from the Q parameters Q200…Q1199 at
+    /// the call: the range the cycles' parameters live in, "globally effective" (TNC 320/620,
+    /// iTNC 530 user's manuals, Q parameters: principle and overview). None of them set: the
+    /// parameters were left out (a textbook's elision), the "parameter missing" stop.
     fn params_of(&self, d: &CycleDef) -> R<Params> {
         if d.params.is_empty() {
-            return Err(SimErrorCode::CycleParamsMissing { cycle: d.number });
+            let set: Vec<CycleParam> = self
+                .q
+                .range(200..1200)
+                .map(|(&index, _)| CycleParam {
+                    index,
+                    value: CycleValue::Value(Value::Param { index, negate: false }),
+                    label: None,
+                })
+                .collect();
+            if set.is_empty() {
+                return Err(SimErrorCode::CycleParamsMissing { cycle: d.number });
+            }
+            return self.params_of(&CycleDef { number: d.number, name: String::new(), params: set });
         }
         let word = |p: &CycleParam| SimErrorCode::CycleWordUnknown {
             cycle: d.number,
