@@ -462,6 +462,13 @@ pub const IMPORT_LENIENT_SPELLINGS: bool = true;
 /// header does not say where its datum is.
 pub const HEADER_BLANK_AT_DATUM: bool = true;
 
+/// A cycle defined without its parameter lines (`CYCL DEF 200 BOHREN`, then `Q200 = 2`,
+/// `Q201 = -15` as blocks of their own, as a training simulator's examples write it) takes its
+/// parameters from the Q parameters Q200…Q1199 at its call: the user's manuals name that range
+/// the cycles' parameters, "globally effective". **UNCONFIRMED** whether the control calls such
+/// a definition at all; `false` stops at the call ("parameters left out").
+pub const CYCLE_PARAMS_FROM_GLOBAL_Q: bool = true;
+
 /// `CALL LBL n REP Q…`: the number of repeats from a parameter, as some shop programs write
 /// it; read, and the parameter must hold a whole number 0…65534 when the block runs.
 /// **UNCONFIRMED** whether the control's dialog takes a parameter there.

@@ -100,10 +100,14 @@ impl Interp {
     /// (`CYCL DEF 200 BOHREN`, then `Q200 = 2`, `Q201 = -15` as blocks of their own, as a
     /// training simulator's examples write it) takes them from the Q parameters Q200…Q1199 at
     /// the call: the range the cycles' parameters live in, "globally effective" (TNC 320/620,
-    /// iTNC 530 user's manuals, Q parameters: principle and overview). None of them set: the
-    /// parameters were left out (a textbook's elision), the "parameter missing" stop.
+    /// iTNC 530 user's manuals, Q parameters: principle and overview;
+    /// `unconfirmed::CYCLE_PARAMS_FROM_GLOBAL_Q`). None of them set: the parameters were left
+    /// out (a textbook's elision), the "parameter missing" stop.
     fn params_of(&self, d: &CycleDef) -> R<Params> {
         if d.params.is_empty() {
+            if !unconfirmed::CYCLE_PARAMS_FROM_GLOBAL_Q {
+                return Err(SimErrorCode::CycleParamsMissing { cycle: d.number });
+            }
             let set: Vec<CycleParam> = self
                 .q
                 .range(200..1200)
