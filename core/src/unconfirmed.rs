@@ -371,6 +371,12 @@ pub fn advanced_stop_distance(upper: f64, lower: f64, reached: f64, total: f64) 
 /// 203 state. **UNCONFIRMED** for 205.
 pub const CYCLE205_Q208_ZERO_IS_Q206: bool = true;
 
+/// Cycle 205 defined without Q208 (the parameter list of older software, as CAM posts for it
+/// still write it: Q200 … Q211, Q379, Q253): retracts at this feed, rapid traverse, as the old
+/// pecking cycle does ("the tool is then retracted at rapid traverse (FMAX)", TNC 370 manual,
+/// cycle 1 PECKING) and as PREDEF sets Q208. **UNCONFIRMED** what the older cycle 205 did.
+pub const CYCLE205_WITHOUT_Q208_FEED: f64 = CYCLE_FMAX_FEED;
+
 /// Cycle 208 with a pre-drilled diameter Q342: the helices widen the hole by at most this many
 /// tool radii each ("the control calculates the lateral infeed itself"). **UNCONFIRMED**.
 pub const BORE_MILL_STEPOVER: f64 = 1.0;

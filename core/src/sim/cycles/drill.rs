@@ -164,7 +164,7 @@ fn chip_break(hole: &Hole, reached: f64, lift: f64, back: f64) -> CycleMove {
 /// after every Q257 by retracting Q256. After an infeed it retracts at Q208 to Q200 and returns at
 /// FMAX to the advanced stop distance above the depth reached: Q258 at the first, Q259 at the
 /// last, in between in proportion ([`unconfirmed::advanced_stop_distance`]). At depth (dwell Q211)
-/// at Q208 to Q200, then FMAX to Q204.
+/// at Q208 to Q200, then FMAX to Q204. Without Q208 (older software) the retraction is rapid.
 #[inline(never)]
 pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let hole = Hole::new(p, pos)?;
@@ -172,8 +172,9 @@ pub(super) fn peck_205(p: &Params, pos: DVec3) -> R<Vec<CycleMove>> {
     let (first, decrement, min) = (p.get(202)?, p.get(212)?, p.get(205)?);
     let (upper, lower) = (p.get(258)?, p.get(259)?);
     let (break_every, lift) = (p.get(257)?, p.get(256)?);
-    let back =
-        if unconfirmed::CYCLE205_Q208_ZERO_IS_Q206 { retract_feed(p.get(208)?, f) } else { p.get(208)? };
+    // An older definition has no Q208 (`unconfirmed::CYCLE205_WITHOUT_Q208_FEED`).
+    let q208 = p.or(208, unconfirmed::CYCLE205_WITHOUT_Q208_FEED);
+    let back = if unconfirmed::CYCLE205_Q208_ZERO_IS_Q206 { retract_feed(q208, f) } else { q208 };
     let total = depth(p)?;
     let mut out = vec![rapid(hole.safe())];
     if total == 0.0 {
@@ -413,6 +414,28 @@ mod tests {
         p.set(257, 0.0);
         let got = path(&peck_205(&p, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
         assert_eq!(&got[..3], &[at(2.0, FMAX), at(-4.0, Some(750.0)), at(-16.0, F)]);
+    }
+
+    #[test]
+    fn cycle_205_of_older_software_without_q208_retracts_at_rapid() {
+        // Q202 10 to −20 without chip breaking; Q208 not written: both retractions to Q200 at
+        // the rapid feed of a cycle (`unconfirmed::CYCLE205_WITHOUT_Q208_FEED`, as `Q208=FMAX`),
+        // the moves otherwise as with Q208.
+        const RAPID_FEED: Option<f64> = Some(crate::unconfirmed::CYCLE205_WITHOUT_Q208_FEED);
+        let p = drilling(
+            205,
+            &[(202, 10.0), (212, 0.0), (205, 0.0), (258, 1.0), (259, 1.0), (257, 0.0), (256, 0.2)],
+        );
+        let got = path(&peck_205(&p, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
+        #[rustfmt::skip]
+        let want = vec![
+            at(2.0, FMAX), at(-10.0, F), at(2.0, RAPID_FEED), at(-9.0, FMAX), at(-20.0, F), at(2.0, RAPID_FEED), at(50.0, FMAX),
+        ];
+        assert_eq!(got, want);
+        let mut with = p.clone();
+        with.set(208, 500.0);
+        let slow = path(&peck_205(&with, DVec3::new(0.0, 0.0, 20.0)).expect("cycle"));
+        assert_eq!(slow[2], at(2.0, Some(500.0)), "with Q208 its feed");
     }
 
     /// Cycle 208 from 2 above the surface to −5 at pitch 2, not pre-drilled, DR+ (Q351 = +1);
