@@ -405,15 +405,6 @@ impl Parser<'_> {
         }
 
         let (body_text, comment) = split_comment(rest);
-        // `L IX-80 (MODAL DRILL POINT)`: the parentheses are the block's comment (AcrossBlocks
-        // says it once per file).
-        let (body_text, comment) = match lenient::paren_comment(body_text.as_bytes()) {
-            Some(p) if comment.is_none() && crate::unconfirmed::IMPORT_LENIENT_SPELLINGS => {
-                let inner = body_text[p + 1..].trim_end();
-                (&body_text[..p], Some(&inner[..inner.len() - 1]))
-            }
-            _ => (body_text, comment),
-        };
         let mut body_text = body_text.trim();
         let mut comment = comment.map(|c| c.trim().to_owned());
         let continued = self.block_lines.len() > 1;
@@ -428,6 +419,19 @@ impl Parser<'_> {
             && c.ends_with('~')
         {
             *c = strip_tilde(c).to_owned();
+        }
+        // `L IX-80 (MODAL DRILL POINT)`: the parentheses are the block's comment (AcrossBlocks
+        // says it once per file); a block that stays invalid or unknown keeps them as written.
+        let mut paren = None;
+        if comment.is_none()
+            && !continued
+            && crate::unconfirmed::IMPORT_LENIENT_SPELLINGS
+            && let Some(p) = lenient::paren_comment(body_text.as_bytes())
+        {
+            let inner = body_text[p + 1..].trim_end();
+            comment = Some(inner[..inner.len() - 1].trim().to_owned());
+            paren = Some(body_text);
+            body_text = body_text[..p].trim_end();
         }
         let body_start = first.start + (body_text.as_ptr() as usize - line_text.as_ptr() as usize);
 
@@ -491,7 +495,22 @@ impl Parser<'_> {
         } else {
             parse_body(&mut self.cx, &text)
         };
-        let body = body.unwrap_or_else(|| invalid(written.as_deref().unwrap_or(&text).trim_end()));
+        let body = match (body, paren) {
+            (Some(BlockBody::Unknown { .. }), Some(as_written)) => {
+                comment = None;
+                BlockBody::Unknown { text: as_written.to_owned() }
+            }
+            // Not read, so not rewritten either: kept as written.
+            (Some(BlockBody::Unknown { .. }), None) if written.is_some() => {
+                BlockBody::Unknown { text: written.as_deref().unwrap_or(&text).trim_end().to_owned() }
+            }
+            (Some(body), _) => body,
+            (None, Some(as_written)) => {
+                comment = None;
+                invalid(as_written)
+            }
+            (None, None) => invalid(written.as_deref().unwrap_or(&text).trim_end()),
+        };
         if dangling_tilde && !continued {
             let code = match &body {
                 BlockBody::CycleDef(c) => DiagCode::CycleParamsElided { cycle: c.number },

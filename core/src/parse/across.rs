@@ -62,7 +62,8 @@ impl AcrossBlocks {
             && !matches!(body, BlockBody::CycleDef(_) | BlockBody::TouchProbe(_))
             && self.lenient_said.contains(&false)
         {
-            self.lenient(src, span, &mut found);
+            let invalid = matches!(body, BlockBody::Invalid { .. } | BlockBody::Unknown { .. });
+            self.lenient(src, span, invalid, &mut found);
         }
         match block.stored_body() {
             Some(BlockBody::BeginPgm { name, .. }) if self.begin.is_none() => self.begin = Some(name.clone()),
@@ -85,17 +86,29 @@ impl AcrossBlocks {
         }
     }
 
-    /// The lenient spellings of the block at `span` not yet said in this file.
-    fn lenient(&mut self, src: &str, span: Span, found: &mut impl FnMut(Severity, DiagCode, Span)) {
+    /// The lenient spellings of the block at `span` not yet said in this file; a comment in
+    /// parentheses only when the parser read it (not in an `invalid` or unknown block, which
+    /// keeps it as written, nor in a block continued over lines).
+    fn lenient(
+        &mut self,
+        src: &str,
+        span: Span,
+        invalid: bool,
+        found: &mut impl FnMut(Severity, DiagCode, Span),
+    ) {
         // Without the lenient reading the block is refused as written: nothing to say here.
         if !crate::unconfirmed::IMPORT_LENIENT_SPELLINGS {
             return;
         }
         let mut at = span.start;
-        for (k, line) in src.get(span.start..span.end).unwrap_or("").split('\n').enumerate() {
+        let text = src.get(span.start..span.end).unwrap_or("");
+        // The parser reads a comment in parentheses only in a block of one line.
+        let invalid = invalid || text.contains('\n');
+        for (k, line) in text.split('\n').enumerate() {
             let (body, _) = split_comment(line);
             lenient::first_of_each(body, k == 0, |kind, a, b| {
-                if !std::mem::replace(&mut self.lenient_said[kind as usize], true) {
+                let kept_as_written = invalid && kind == Lenient::ParenComment;
+                if !kept_as_written && !std::mem::replace(&mut self.lenient_said[kind as usize], true) {
                     let text = body[a..b].to_owned();
                     found(Severity::Warning, DiagCode::Lenient { kind, text }, Span::new(at + a, at + b));
                 }

@@ -100,7 +100,8 @@ pub(crate) fn paren_comment(word: &[u8]) -> Option<usize> {
     {
         return None;
     }
-    let last = word.iter().rposition(|&c| !is_blank(c))?;
+    // A continuation mark after it is the line's, not the comment's.
+    let last = word.iter().rposition(|&c| !is_blank(c) && c != b'~')?;
     if word[last] != b')' {
         return None;
     }

@@ -198,6 +198,30 @@ fn a_training_simulators_tool_feed_and_comments_in_parentheses() {
     assert!(matches!(body("PATTERN DEF ROW1 (X+25 Y+33.5 D+8 NUM5 ROT+0 Z+0)"), BlockBody::PatternDef(_)));
     assert!(parse("1 L X+1 (A) ;B\n").1.iter().any(|d| d.is_error()), "the comment is the one after ;");
     assert!(parse("1 TOOL CALL 1 Z S500 F300\n").1.is_empty(), "a TOOL CALL's feed is its own");
+    // A block that stays unknown or invalid keeps its parentheses as written and says nothing
+    // of them.
+    for (src, unknown) in [("POS1 (X+25 Y+33.5 Z+0) ~", true), ("L X+ (A)", false)] {
+        let (p, d) = parse(&format!("1 {src}\n"));
+        let written = src.trim_end_matches(" ~");
+        match &*p.blocks[0].body() {
+            BlockBody::Unknown { text } => assert!(unknown && text == written, "{text}"),
+            BlockBody::Invalid { text } => assert!(!unknown && text == written, "{text}"),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(p.blocks[0].comment(), None);
+        assert!(!d.iter().any(|d| matches!(d.code, DiagCode::Lenient { .. })), "{d:?}");
+    }
+    // An unknown block is not read, so none of its spellings is rewritten either.
+    let (p, _) = parse("1 BLK FORM CYLINDER Z R5,5 L20 F300\n");
+    assert!(
+        matches!(&*p.blocks[0].body(), BlockBody::Unknown { text } if text == "BLK FORM CYLINDER Z R5,5 L20 F300"),
+        "{:?}",
+        p.blocks[0].body()
+    );
+    let (p, _) = parse("1 TOOL DEFL R0 F30\n");
+    assert!(format_program(&p).contains("F30"), "{}", format_program(&p));
+    // A continuation mark after the parentheses is the line's.
+    same_said("L IX-80 (A) ~", "L IX-80 ;A", &[DiagCode::ContinuationMissing, paren("(A)")]);
 
     let src = "0 BEGIN PGM SIM MM\n\
         1 TOOL DEF1 L+30,000 R+4,000 F300\n\
