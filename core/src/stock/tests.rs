@@ -183,3 +183,29 @@ fn the_first_material_along_a_ray_is_the_floor_the_face_or_the_wall() {
     assert!(!s.material_at(DVec3::new(100.1, 50.0, -1.0)));
     assert!(s.material_at(DVec3::new(99.9, 50.0, -1.0)));
 }
+
+/// A ray of one span cut without the scratch list gives what the general cut gives the same
+/// span held as a list (the second method): the length removed and the pieces left, for a cut
+/// missing it, touching it, inside it, over either end, over all of it and leaving a sliver
+/// shorter than `MIN_SPAN`.
+#[test]
+fn a_one_span_ray_is_cut_as_the_general_cut_cuts_it() {
+    let span = Span { lo: -10.0, hi: 5.0 };
+    let mut scratch = Vec::new();
+    for (lo, hi) in [
+        (6.0, 8.0),
+        (5.0, 8.0),
+        (-12.0, -10.0),
+        (-2.0, 1.0),
+        (-12.0, 0.0),
+        (0.0, 9.0),
+        (-11.0, 6.0),
+        (-10.0 + 5e-8, 5.0 - 5e-8),
+        (-10.0, 5.0),
+    ] {
+        let (mut one, mut many) = (Dexel::One(span), Dexel::Many(vec![span]));
+        let (a, b) = (one.subtract(lo, hi, &mut scratch), many.subtract(lo, hi, &mut scratch));
+        assert_eq!(a, b, "removed by [{lo}, {hi}]");
+        assert_eq!(one.spans(), many.spans(), "left by [{lo}, {hi}]");
+    }
+}
