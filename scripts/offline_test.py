@@ -266,7 +266,7 @@ def split_tests(driver, dist, run):
 
         def first_screen_same_without_deferred_data():
             # The deferred wasm also carries the read-only data (texts, tables) only its functions
-            # read: a first screen must read none of it (scripts/wasm_split.py, plan_data). Each
+            # read: a first screen must read none of it (tools/wasm-split/src/data.rs). Each
             # page, with the state the loads before saved, once whole (the deferred part loaded)
             # and once with it blocked: the same HTML. What waits for the deferred code (the
             # trainer's simulation of its start program, AppState::sim_pending) waits in both.

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Splits each built page's wasm (DIST/index.html, kurs.html, maschine.html) into what its first
-screen runs and the rest (scripts/wasm_split.py), so that a page loads less before it shows.
+screen runs and the rest (tools/wasm-split through scripts/wasm_tool.py), so that a page loads less before it shows.
 Usage: split_pages.py DIST [LINKED_DIR] (cargo's wasm32 release folder: the linked binaries, for
-the data, see wasm_split.plan_data). Run by build_pages (scripts/env.sh) after trunk, before
+the data, see tools/wasm-split/src/data.rs). Run by build_pages (scripts/env.sh) after trunk, before
 scripts/order_functions.py.
 
 The rule: the functions each page's first screen runs are listed in web/first_screen/PAGE.txt
@@ -30,7 +30,7 @@ table slot every deferred stub calls first; after the start it fetches and compi
 X_deferred.wasm in the background; the first deferred call before that has arrived loads it at
 once (synchronous request and compile). A page packed into one file (scripts/single_file.py)
 carries the deferred bytes in globalThis.__schwenkbarDeferredWasm.
-If anything is missing (a page, its list, a construct wasm_split.py does not read), the page stays
+If anything is missing (a page, its list, a construct the splitter does not read), the page stays
 whole and a warning says why: the app works, only bigger (scripts/bundle.sh reports it).
 SCHWENKBAR_NO_SPLIT=1 leaves every page whole (to compare the two)."""
 import hashlib
@@ -43,8 +43,7 @@ import sys
 import tempfile
 import time
 
-import order_functions
-import wasm_split
+import wasm_tool
 from chromium import Driver, Failure, free_port, port_open, wait_for
 
 # Each page and the screens it is opened at ("reload": opened again, with what the visit before
@@ -170,7 +169,7 @@ def page_files(dist, page):
     glue = re.search(r"""import\s+init\s*,\s*\*\s*as\s+\w+\s+from\s*['"]/([^'"]+\.js)['"]""", html)
     wasm = re.search(r"""module_or_path\s*:\s*['"]/([^'"]+_bg\.wasm)['"]""", html)
     if not glue or not wasm:
-        raise wasm_split.Unsupported(f"{page}: trunk's start script not found")
+        raise wasm_tool.Unsupported(f"{page}: trunk's start script not found")
     return glue.group(1), wasm.group(1)
 
 
@@ -234,7 +233,7 @@ def profiles(dist, plan, chromedriver):
 
 def patch_glue(text, deferred, facts):
     if text.count(START) != 1 or text.count(LOAD) != 1 or "__split_" in text:
-        raise wasm_split.Unsupported("the glue's load and start calls not found once (or already split)")
+        raise wasm_tool.Unsupported("the glue's load and start calls not found once (or already split)")
     text = text.replace(START, "    __split_attach(instance);\n" + START
                         + "    setTimeout(__split_prefetch, 0);\n")
     text = text.replace(LOAD, "    const early = __split_early();\n" + LOAD + "    await early;\n")
@@ -245,18 +244,18 @@ def patch_glue(text, deferred, facts):
 
 
 def split_with_data(original, run, linked_dir, wasm):
-    """wasm_split.split with the read-only data only deferred functions read, when cargo's linked
+    """The split with the read-only data only deferred functions read, when cargo's linked
     binary of this page (trunk's name without its hash) is there and fits; else the code alone."""
     linked = None if linked_dir is None else linked_dir / (wasm.rsplit("-", 1)[0] + ".wasm")
     if linked is not None and linked.is_file():
         try:
-            return wasm_split.split(original, run, linked.read_bytes())
-        except wasm_split.Unsupported as e:
+            return wasm_tool.split(original, run, linked.read_bytes())
+        except wasm_tool.Unsupported as e:
             print(f"split: WARNING {wasm}: its data stays in the primary: {e}", file=sys.stderr)
     else:
         print(f"split: WARNING {wasm}: its data stays in the primary: no linked binary {linked}",
               file=sys.stderr)
-    return wasm_split.split(original, run)
+    return wasm_tool.split(original, run)
 
 
 def stable(name):
@@ -272,8 +271,8 @@ def stable(name):
 
 def names_by_body(data):
     """The stable name of each defined function (None: the name section has none)."""
-    imports, bodies, names = order_functions.read(data)
-    return [None if imports + k not in names else stable(names[imports + k]) for k in range(len(bodies))]
+    imports, count, names = wasm_tool.names(data)
+    return [None if imports + k not in names else stable(names[imports + k]) for k in range(count)]
 
 
 def list_file(page):
@@ -296,11 +295,11 @@ def main():
             original = (dist / wasm).read_bytes()
             names[page] = names_by_body(original)
             if mode:
-                data, addr, count = wasm_split.instrument(original)
+                data, addr, count = wasm_tool.instrument(original)
                 plan[page] = (glue, wasm, data, addr, count)
             else:
                 plan[page] = (glue, wasm, None, None, None)
-        except (wasm_split.Unsupported, OSError) as e:
+        except (wasm_tool.Unsupported, OSError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
     if not plan:
         return
@@ -356,7 +355,7 @@ def main():
         try:
             original = (dist / wasm).read_bytes()
             primary, deferred, facts = split_with_data(original, run, linked_dir, wasm)
-        except (wasm_split.Unsupported, KeyError) as e:
+        except (wasm_tool.Unsupported, KeyError) as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
             continue
         problem = invalid(primary, "primary") or invalid(deferred, "deferred")
@@ -372,7 +371,7 @@ def main():
             continue
         try:
             text = patch_glue((dist / glue).read_text(encoding="utf-8"), new + "_deferred.wasm", facts)
-        except wasm_split.Unsupported as e:
+        except wasm_tool.Unsupported as e:
             print(f"split: WARNING {page} stays whole: {e}", file=sys.stderr)
             continue
         (dist / (new + "_bg.wasm")).write_bytes(primary)

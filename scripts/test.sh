@@ -51,7 +51,7 @@ trap 'kill -- -"$bundle_pid" 2>/dev/null || true' EXIT
 phase "browser tests: headless Chromium via wasm-bindgen-test-runner ($WASM_ROUTE)"
 wasm_env cargo test --target wasm32-unknown-unknown -p schwenkbar-tests 2>&1 | tee -a "$log"
 
-phase "the wasm splitter (scripts/wasm_split_test.py: a module run whole and split in node)"
+phase "the wasm splitter (tools/wasm-split, by scripts/wasm_split_test.py: a module run whole and split in node)"
 python3 scripts/wasm_split_test.py --log "$log"
 
 phase "release bundle: waiting for it"

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Tests of scripts/wasm_split.py against an oracle it does not share: the same module run whole.
+"""Tests of the wasm splitter (tools/wasm-split, through scripts/wasm_tool.py) against an oracle
+it does not share: the same module run whole.
 A small module (assembled by binaryen's wasm-as from the text below) is run in node unsplit and
 split, with the loader wired as the pages' glue wires it (split_pages.HELPER): every export must
 give the same results and make the same calls to its import, the deferred module must load once,
 at the first deferred call, and never when only primary functions run. Also: the profile bytes
 of an instrumented module name exactly the functions that ran, and bodies the decoder does not
-know leave the module whole. Read-only data: what only deferred code reads moves to the deferred
+know (SIMD) leave the module whole. Read-only data: what only deferred code reads moves to the deferred
 module, what the primary reads (through an address outside the object, through a pointer in
 data, inside it with no relocation, in half an i64) stays, and memory after the load is the whole module's.
 
@@ -19,7 +20,7 @@ import sys
 import tempfile
 
 import split_pages
-import wasm_split
+import wasm_tool
 
 # Functions in index order after the import: sq 1, add3 2, fact 3, twice 4, run 5, only_sq 6,
 # fill 7, via_table 8, init4 9 (passive data: stays in the primary though it did not run).
@@ -171,42 +172,68 @@ console.log(JSON.stringify(out));
 """
 
 
+def enc_u(n):
+    """LEB128 of an unsigned number: this test writes what wasm-ld --emit-relocs would."""
+    out = bytearray()
+    while True:
+        x, n = n & 0x7F, n >> 7
+        out.append(x | 0x80 if n else x)
+        if not n:
+            return bytes(out)
+
+
+def enc_s(n):
+    """LEB128 of a signed number."""
+    out = bytearray()
+    while True:
+        x, n = n & 0x7F, n >> 7
+        done = (n == 0 and not x & 0x40) or (n == -1 and x & 0x40)
+        out.append(x if done else x | 0x80)
+        if done:
+            return bytes(out)
+
+
+def enc_name(s):
+    s = s.encode()
+    return enc_u(len(s)) + s
+
+
 def linked(module):
     """`module` with the custom sections wasm-ld --emit-relocs writes: linking (segment info,
-    symbol table: the data symbols of DATA and F) and reloc.CODE / reloc.DATA."""
-    m = wasm_split.Module(module)
-    segs = wasm_split.data_segments(m)
+    symbol table: the data symbols of DATA and F) and reloc.CODE / reloc.DATA. Where the code
+    section and the data segments lie comes from the tool's layout."""
+    sections, segs = wasm_tool.layout(module)
     names = list(DATA) + ["F"]
-    symtab = wasm_split.enc_u(len(names))
+    symtab = enc_u(len(names))
     for n in names:
         seg, (addr, size) = (1, (340, 4)) if n == "F" else (0, DATA[n])
-        symtab += (b"\x01\x00" + wasm_split.enc_name(n) + wasm_split.enc_u(seg)
-                   + wasm_split.enc_u(addr - segs[seg][0]) + wasm_split.enc_u(size))
-    info = wasm_split.enc_u(2) + b"".join(wasm_split.enc_name(n) + b"\x02\x00" for n in (".rodata", ".data"))
-    link = (wasm_split.enc_name("linking") + wasm_split.enc_u(2) + b"\x05" + wasm_split.enc_u(len(info)) + info
-            + b"\x08" + wasm_split.enc_u(len(symtab)) + symtab)
-    code = m.section(10)
+        symtab += b"\x01\x00" + enc_name(n) + enc_u(seg) + enc_u(addr - segs[seg][0]) + enc_u(size)
+    info = enc_u(2) + b"".join(enc_name(n) + b"\x02\x00" for n in (".rodata", ".data"))
+    link = (enc_name("linking") + enc_u(2) + b"\x05" + enc_u(len(info)) + info
+            + b"\x08" + enc_u(len(symtab)) + symtab)
+    start, length = next((s, n) for sid, s, n in sections if sid == 10)
+    code = module[start:start + length]
     rc = b""
     for value, (sym, addend) in CODE_RELOCS.items():
-        at = code.index(b"\x41" + wasm_split.enc_s(value)) + 1
-        rc += b"\x04" + wasm_split.enc_u(at) + wasm_split.enc_u(names.index(sym)) + wasm_split.enc_s(addend)
+        at = code.index(b"\x41" + enc_s(value)) + 1
+        rc += b"\x04" + enc_u(at) + enc_u(names.index(sym)) + enc_s(addend)
     rd = b""
     for site, target in DATA_RELOCS.items():
         seg = segs[0] if site < 336 else segs[1]
         at = seg[1] + site - seg[0]
-        rd += b"\x05" + wasm_split.enc_u(at) + wasm_split.enc_u(names.index(target)) + wasm_split.enc_s(0)
+        rd += b"\x05" + enc_u(at) + enc_u(names.index(target)) + enc_s(0)
     out = bytearray(module)
     for body in (link,
-                 wasm_split.enc_name("reloc.CODE") + b"\x0a" + wasm_split.enc_u(len(CODE_RELOCS)) + rc,
-                 wasm_split.enc_name("reloc.DATA") + b"\x0b" + wasm_split.enc_u(len(DATA_RELOCS)) + rd):
-        out += b"\x00" + wasm_split.enc_u(len(body)) + body
+                 enc_name("reloc.CODE") + b"\x0a" + enc_u(len(CODE_RELOCS)) + rc,
+                 enc_name("reloc.DATA") + b"\x0b" + enc_u(len(DATA_RELOCS)) + rd):
+        out += b"\x00" + enc_u(len(body)) + body
     return bytes(out)
 
 
 def split_data_and_run(tmp):
     whole = assemble(tmp, DATA_WAT, "d")
     data = open(whole, "rb").read()
-    primary, deferred, facts = wasm_split.split(data, DATA_RUN, linked(data))
+    primary, deferred, facts = wasm_tool.split(data, DATA_RUN, linked(data))
     for name, b in (("dp.wasm", primary), ("dd.wasm", deferred)):
         with open(os.path.join(tmp, name), "wb") as f:
             f.write(b)
@@ -220,20 +247,20 @@ def split_data_and_run(tmp):
     return got, facts
 
 
-def assemble(tmp, text=WAT, name="m"):
+def assemble(tmp, text=WAT, name="m", *features):
     wat = os.path.join(tmp, name + ".wat")
     wasm = os.path.join(tmp, name + ".wasm")
     with open(wat, "w", encoding="utf-8") as f:
         f.write(text)
-    subprocess.run(["wasm-as", wat, "-o", wasm, "--enable-bulk-memory"], check=True)
+    subprocess.run(["wasm-as", wat, "-o", wasm, "--enable-bulk-memory", *features], check=True)
     return wasm
 
 
 def split_and_run(tmp):
     whole = assemble(tmp)
     data = open(whole, "rb").read()
-    primary, deferred, facts = wasm_split.split(data, RUN)
-    instr, addr, count = wasm_split.instrument(data)
+    primary, deferred, facts = wasm_tool.split(data, RUN)
+    instr, addr, count = wasm_tool.instrument(data)
     for name, b in (("p.wasm", primary), ("d.wasm", deferred), ("m.wasm.instr", instr)):
         with open(os.path.join(tmp, name), "wb") as f:
             f.write(b)
@@ -258,7 +285,7 @@ def main():
     def run(name, test):
         try:
             detail, ok = test(), True
-        except (AssertionError, wasm_split.Unsupported, subprocess.CalledProcessError, ValueError) as e:
+        except (AssertionError, wasm_tool.Unsupported, subprocess.CalledProcessError, ValueError) as e:
             detail, ok = f"{type(e).__name__}: {e}", False
         results.append(ok)
         print(f"test {name} ... {'ok' if ok else 'FAILED'} {detail}", flush=True)
@@ -266,7 +293,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         try:
             got, facts, addr, count, data = split_and_run(tmp)
-        except (wasm_split.Unsupported, subprocess.CalledProcessError, ValueError, OSError) as e:
+        except (wasm_tool.Unsupported, subprocess.CalledProcessError, ValueError, OSError) as e:
             print(f"wasm_split tests: {type(e).__name__}: {e}", flush=True)
             got = None
 
@@ -286,17 +313,19 @@ def main():
             return f"{count} bytes at {addr}"
 
         def unknown_code_stays_whole():
-            body = bytes([0, 0xFD, 0x0C]) + bytes(16) + bytes([0x1A, 0x0B])  # v128.const, drop
+            simd = WAT.replace("(func $sq (param i32) (result i32)",
+                               "(func $sq (param i32) (result i32) (drop (v128.const i64x2 0 0))")
+            module = open(assemble(tmp, simd, "simd", "--enable-simd"), "rb").read()
             try:
-                wasm_split.scan(body)
-            except wasm_split.Unsupported as e:
-                assert "0xfd" in str(e), e
+                wasm_tool.split(module, RUN)
+            except wasm_tool.Unsupported as e:
+                assert "SIMD" in str(e) or "simd" in str(e), e
                 return f"refused: {e}"
             raise AssertionError("a SIMD body was read")
 
         try:
             dgot, dfacts = split_data_and_run(tmp)
-        except (wasm_split.Unsupported, subprocess.CalledProcessError, ValueError, OSError) as e:
+        except (wasm_tool.Unsupported, subprocess.CalledProcessError, ValueError, OSError) as e:
             print(f"wasm_split data tests: {type(e).__name__}: {e}", flush=True)
             dgot = None
 
