@@ -9,7 +9,7 @@
 //!   wasm-split names IN                 the imported and defined function counts, then
 //!                                       `index<TAB>name` per named function
 //!   wasm-split instrument IN OUT        the profile build; prints `address count`
-//!   wasm-split split IN RUN PRIMARY DEFERRED [LINKED]
+//!   wasm-split split IN RUN PRIMARY DEFERRED \[LINKED\]
 //!                                       RUN: one `1`/`0` per defined function (ran on the first
 //!                                       screen); prints `loader deferred functions data`
 //!   wasm-split order IN OUT             the functions named in the order for gzip
