@@ -112,7 +112,7 @@ pub fn solve_tool_axis(machine: &Machine, t: DVec3) -> ToolAxisSolution {
     }
 }
 
-/// The two symmetry positions of the master axis, 180° apart (DOMAIN.md §3.3, [S2]), with "the"
+/// The two symmetry positions of the master axis, 180° apart (DOMAIN.md §3.3, \[S2\]), with "the"
 /// symmetry point first ([`crate::unconfirmed::SYMMETRY_POINT_CODIRECTIONAL`]). Computed once per
 /// machine by [`Machine::from_json`]; see [`symmetry_positions_of`].
 #[must_use]

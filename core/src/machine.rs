@@ -20,7 +20,7 @@
 //! the head at home. `geometry` (optional, every field defaulted, [`MachineGeometry`]) places the
 //! preset, the linear travel and the rapid rates for the simulator ([`crate::sim`]), and with
 //! `table_top` puts each program's blank on the table ([`crate::sim::placed`]); `collision`
-//! (optional) lists the collision bodies ([`body`]).
+//! (optional) lists the collision bodies (`body`).
 
 use std::borrow::Cow;
 
@@ -110,7 +110,7 @@ pub struct Machine {
     /// Where things are in the machine: preset, linear travel, rapid rates (the simulator's
     /// model, [`crate::sim`]); defaults when the JSON has no `geometry`.
     pub geometry: MachineGeometry,
-    /// The collision bodies of bed, table and head ([`body`]); none when the JSON has none.
+    /// The collision bodies of bed, table and head (`body`); none when the JSON has none.
     pub bodies: Vec<Body>,
 }
 
@@ -205,7 +205,7 @@ pub struct MachineDef {
     pub chain: Cow<'static, [JointDef]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub geometry: Option<GeometryDef>,
-    /// The collision bodies ([`body`]).
+    /// The collision bodies (`body`).
     #[serde(default, skip_serializing_if = "no_bodies")]
     pub collision: Cow<'static, [BodyDef]>,
 }
@@ -279,7 +279,7 @@ impl MachineDef {
     }
 
     /// Checks the description and builds the machine, or lists every problem found
-    /// ([`validate`]).
+    /// (`validate`).
     pub fn validate(&self) -> Result<Machine, Vec<MachineIssue>> {
         validate::validate(self)
     }
@@ -371,7 +371,7 @@ impl Machine {
         &self.chain
     }
 
-    /// The master axis: first rotary axis seen from the tool (DOMAIN.md §3.1, [S2]).
+    /// The master axis: first rotary axis seen from the tool (DOMAIN.md §3.1, \[S2\]).
     #[must_use]
     pub fn master(&self) -> &RotaryJoint {
         &self.chain[1]

@@ -61,7 +61,7 @@ pub enum PlaneError {
 
 impl PlaneError {
     /// The message with the numbers. A range error on an angle says what the control says,
-    /// "Winkel nicht erlaubt" / "Entered angle not permitted" [S2]; on other values
+    /// "Winkel nicht erlaubt" / "Entered angle not permitted" \[S2\]; on other values
     /// "Eingabewert falsch" / "Invalid input" (the parser's wording for the same check).
     #[must_use]
     pub fn message(&self) -> Text {
@@ -148,7 +148,7 @@ impl Default for Context<'_> {
 // Elementary rotations and the PLANE functions
 // ---------------------------------------------------------------------------------------------
 
-/// PLANE SPATIAL: R = Rz(SPC)·Ry(SPB)·Rx(SPA) (DOMAIN.md §2.1, extrinsic X-Y-Z, [S0]).
+/// PLANE SPATIAL: R = Rz(SPC)·Ry(SPB)·Rx(SPA) (DOMAIN.md §2.1, extrinsic X-Y-Z, \[S0\]).
 #[must_use]
 pub fn spatial(spa: f64, spb: f64, spc: f64) -> DMat3 {
     DMat3::from_rotation_z(spc.to_radians())
@@ -156,7 +156,7 @@ pub fn spatial(spa: f64, spb: f64, spc: f64) -> DMat3 {
         * DMat3::from_rotation_x(spa.to_radians())
 }
 
-/// PLANE EULER: R = Rz(EULPR)·Rx(EULNU)·Rz(EULROT) (DOMAIN.md §2.2, intrinsic Z-X'-Z'', [S1]).
+/// PLANE EULER: R = Rz(EULPR)·Rx(EULNU)·Rz(EULROT) (DOMAIN.md §2.2, intrinsic Z-X'-Z'', \[S1\]).
 #[must_use]
 pub fn euler(eulpr: f64, eulnu: f64, eulrot: f64) -> DMat3 {
     DMat3::from_rotation_z(eulpr.to_radians())

@@ -5,7 +5,7 @@
 //! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
 //! continuation lines): the driver splits lines and block headers by hand, the block families
 //! below read their keyword ladders with the word readers of `words.rs`, nom parsers with the
-//! parser's own error ([`words::Step`], [`words::NcError`]: where, and the words expected
+//! parser's own error (`words::Step`, `words::NcError`: where, and the words expected
 //! there). No backtracking across lines, so time is linear in the input.
 //!
 //! nom's `Err::Error` means "the word is not there, try another", `Err::Failure` (nom's `cut`,

@@ -2,7 +2,7 @@
 //! produces it), the orientation maths and the solver (which consume it).
 //!
 //! Grammar sketch (DOMAIN.md §5, seeds S0/S1):
-//!   PLANE <def> [MOVE [DIST d] [F…] | TURN [MB d|MB MAX] [F…|F AUTO|FMAX] | STAY]
+//!   PLANE \<def> [MOVE [DIST d] [F…] | TURN [MB d|MB MAX] [F…|F AUTO|FMAX] | STAY]
 //!         [SEQ±|SYM±] [COORD ROT|TABLE ROT]
 //!
 //! Every type is generic over the value `V`: the parser writes [`crate::plane::Value`]

@@ -16,11 +16,11 @@
 //! # Cutting
 //! A motion removes, on every ray that can meet its sweep (in its bounding box, within the
 //! tool's radius of the parallelogram its axis sweeps), the interval where the ray
-//! meets the volume the tool sweeps ([`sweep`]: closed form for a straight move with a fixed
+//! meets the volume the tool sweeps (`sweep`: closed form for a straight move with a fixed
 //! tool orientation). A motion that turns the tool relative to the workpiece (rotary axes
 //! moving, PLANE … MOVE) is cut as straight sub-moves with the orientation of each sub-move's
 //! middle, so many that no point of the tool strays more than a quarter of the resolution from
-//! its true path ([`plan`]). The result after a step is the same however one got there:
+//! its true path (`plan`). The result after a step is the same however one got there:
 //! [`Cutting`] applies the same cuts in the same order from the blank or from a checkpoint.
 
 mod closed;

@@ -67,7 +67,7 @@ pub fn tie_prefers(master_a: f64, master_b: f64) -> bool {
 }
 
 /// COORD ROT in the singular case: value of the free axis, given its current value.
-/// DOMAIN.md §3.4: "the table is not moved" [S0]; whether TNC7 sends it to 0 is **UNCONFIRMED**.
+/// DOMAIN.md §3.4: "the table is not moved" \[S0\]; whether TNC7 sends it to 0 is **UNCONFIRMED**.
 #[must_use]
 pub fn coord_rot_free_axis(current_deg: f64) -> f64 {
     current_deg
@@ -80,7 +80,7 @@ pub fn coord_rot_free_axis(current_deg: f64) -> f64 {
 pub const TABLE_ROT_SIGN: f64 = 1.0;
 
 /// TABLE ROT when the free axis is a head axis (e.g. C of a C/A fork head at A0): the seed
-/// says TABLE ROT "turns the C rotary axis" [S0], i.e. a table. **UNCONFIRMED**: a free head
+/// says TABLE ROT "turns the C rotary axis" \[S0\], i.e. a table. **UNCONFIRMED**: a free head
 /// axis is not turned; the rotation is done mathematically as with COORD ROT.
 pub const TABLE_ROT_ON_HEAD_AXIS: bool = false;
 
@@ -92,13 +92,13 @@ pub const DEFAULT_TABLE_ROT: bool = false;
 /// SYM) counts as the `+` side. **UNCONFIRMED** (DOMAIN.md §3.3 only says "positive range").
 pub const ZERO_COUNTS_AS_PLUS: bool = true;
 
-/// SEQ± with both solutions on the requested side: the control "takes the nearer one" [S2].
+/// SEQ± with both solutions on the requested side: the control "takes the nearer one" \[S2\].
 /// **UNCONFIRMED** order: `true` = pick the nearer one among all on that side and then check
-/// its limits (an out-of-limit pick is "Winkel nicht erlaubt", like any selected solution [S2]);
+/// its limits (an out-of-limit pick is "Winkel nicht erlaubt", like any selected solution \[S2\]);
 /// `false` would drop out-of-limit ones first.
 pub const SEQ_NEAREST_BEFORE_LIMITS: bool = true;
 
-/// Every master axis has two symmetry positions 180° apart [S2]; the seed's B/A example calls
+/// Every master axis has two symmetry positions 180° apart \[S2\]; the seed's B/A example calls
 /// A = −90 "the" symmetry point. **UNCONFIRMED** rule that gives −90 (and 0 for A/C): the
 /// position where the tool axis points along the **+** direction of the slave axis.
 pub const SYMMETRY_POINT_CODIRECTIONAL: bool = true;
@@ -113,7 +113,7 @@ pub const PREFER_CANONICAL_VALUE: bool = true;
 /// **UNCONFIRMED** (DOMAIN.md §2.7 is silent).
 pub const AXIAL_MISSING_AXIS_KEEPS_POSITION: bool = true;
 
-/// PLANE RESET MOVE/TURN: "the rotary axes also return" [S0] — to 0° (**UNCONFIRMED**).
+/// PLANE RESET MOVE/TURN: "the rotary axes also return" \[S0\] — to 0° (**UNCONFIRMED**).
 pub const RESET_TARGET_DEG: f64 = 0.0;
 
 /// A tool axis the kinematics cannot reach: the iTNC says "Angle cannot be calculated"
@@ -121,14 +121,14 @@ pub const RESET_TARGET_DEG: f64 = 0.0;
 /// translation). `false` would report it as "Winkel nicht erlaubt" instead.
 pub const UNREACHABLE_IS_SEPARATE_ERROR: bool = true;
 
-/// EULPR range: seed S1's syntax table and the manual say −180…+180 [S1][M:iTNC-p498], but
+/// EULPR range: seed S1's syntax table and the manual say −180…+180 \[S1\]\[M:iTNC-p498\], but
 /// S1's chamfer tip programs `EULPR+270`. **UNCONFIRMED** how the control treats 270: we follow
 /// the stated input range, so `EULPR+270` is refused ("Winkel nicht erlaubt") and the shipped
 /// chamfer sample writes the same orientation as `EULPR-90`.
 pub const EULPR_LIMIT: f64 = 180.0;
 
 /// PLANE VECTOR component limit: ±9.9999999 (TNC 320/620/640) or ±99.9999999 (later iTNC 530)
-/// [M:320-p352][M:iTNC-p500]. **UNCONFIRMED** which control we mimic: the larger one.
+/// [M:320-p352]\[M:iTNC-p500\]. **UNCONFIRMED** which control we mimic: the larger one.
 pub const VECTOR_COMPONENT_LIMIT: f64 = 99.9999999;
 
 /// PLANE POINTS coordinate limit in mm. **UNCONFIRMED** (DOMAIN.md §5): the usual Klartext
@@ -152,7 +152,7 @@ pub const AXIAL_LIMIT: f64 = 99_999.999_9;
 // ---------------------------------------------------------------------------------------------
 
 /// The simulator's error wordings other than "Winkel nicht erlaubt"/"Entered angle not permitted"
-/// [S2] are **UNCONFIRMED** (our wording in the control's style): "Q-Parameter nicht definiert",
+/// \[S2\] are **UNCONFIRMED** (our wording in the control's style): "Q-Parameter nicht definiert",
 /// "Zyklus nicht definiert", "Zyklusparameter fehlt", "Endschalter X+", "Achse nicht vorhanden",
 /// "Label-Nummer nicht vorhanden", "Verschachtelung zu tief", "Rechenfehler", "Satz fehlerhaft",
 /// "Vorzeichen Tiefe falsch", and for the contour (issue 15) "Kreismittelpunkt undefiniert",
@@ -161,7 +161,7 @@ pub const AXIAL_LIMIT: f64 = 99_999.999_9;
 pub const SIM_MESSAGES_UNCONFIRMED: bool = true;
 
 /// Datum shift and mirror act in the W-CS when programmed with no tilt active (they move and
-/// mirror the tilt origin, DOMAIN.md §6 [S3]) and in the WPL-CS when a tilt is active; TRANS
+/// mirror the tilt origin, DOMAIN.md §6 \[S3\]) and in the WPL-CS when a tilt is active; TRANS
 /// ROTATION / cycle 10 always acts in the WPL-CS. Within a level the order is fixed: shift,
 /// then mirror, then rotation, all about the shifted datum. TRANS DATUM RESET and TRANS MIRROR
 /// RESET clear both levels; a WPL-CS shift survives PLANE RESET with its numbers. DOMAIN.md §6
@@ -272,7 +272,7 @@ pub struct Holder {
 pub const ROTARY_FEED_DEG_PER_MIN: bool = true;
 
 /// Cycle 19 inputs are spatial angles (the OEM parameter `planeOrientation` (201202) decides on
-/// a real control [S3]); `false` would treat them as axis angles (forward kinematics, no mirror
+/// a real control \[S3\]); `false` would treat them as axis angles (forward kinematics, no mirror
 /// effect). **UNCONFIRMED** which one a given machine uses.
 pub const CYCLE19_INPUT_SPATIAL: bool = true;
 

@@ -1,5 +1,5 @@
 //! Schwenkbar's browser shell: a thin Yew UI over `schwenkbar-core`.
-//! State lives in one reducer ([`state::AppState`]); components only render.
+//! State lives in one reducer ([`schwenkbar_app::state::AppState`]); components only render.
 
 pub mod app;
 pub mod browser;

@@ -30,7 +30,7 @@ impl Document {
     }
 
     /// The bytes of the text the text area holds with the caret on line `line`: all of it up to
-    /// [`WHOLE_UP_TO`] lines, else the whole lines from [`HALF`] above to [`HALF`] below.
+    /// [`WHOLE_UP_TO`] lines, else the whole lines from `HALF` above to `HALF` below.
     #[must_use]
     pub fn window_at(&self, line: usize) -> Range<usize> {
         if self.line_starts.len() <= WHOLE_UP_TO + 1 {

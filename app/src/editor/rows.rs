@@ -43,7 +43,7 @@ pub enum Field {
 }
 
 impl Field {
-    /// The path of [`MachineIssue`]s about this field, as [`MachineDef::validate`] reports it.
+    /// The path of `MachineIssue`s about this field, as `MachineDef::validate` reports it.
     #[must_use]
     pub fn path(self) -> MachinePath {
         let lang = |l: usize| if l == 0 { Lang::De } else { Lang::En };

@@ -14,7 +14,7 @@ use crate::plane::{Feed, Value};
 ///
 /// Kept to 40 bytes, because CAM programs are millions of blocks (issue 16: the AST within the
 /// file's size): offsets and line as `u32`, and the common straight line `L X… Y… Z… F…` in a
-/// compact inline form ([`CompactLine`]); every other block is boxed ([`GeneralBlock`]). The
+/// compact inline form (`CompactLine`); every other block is boxed (`GeneralBlock`). The
 /// accessors give the same view of either.
 #[derive(Clone)]
 pub struct Block {

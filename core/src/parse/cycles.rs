@@ -1,5 +1,5 @@
 //! Cycle definitions and calls.
-//!   def  := CYCL DEF n name [~] { NL (Q<n>=(value|PREDEF|FMAX|MAX|FAUTO|AUTO) | QS<n>="text") [;label] [~] }
+//!   def  := CYCL DEF n name [~] { NL (Q\<n>=(value|PREDEF|FMAX|MAX|FAUTO|AUTO) | QS\<n>="text") [;label] [~] }
 //!           (continuation lines, DOMAIN.md §8)
 //!   old  := CYCL DEF n.0 name | CYCL DEF n.s words
 //!   call := CYCL CALL { Mn } | CYCL CALL PAT [F…] { Mn } | CYCL CALL POS X… Y… Z… [F…|FMAX] { Mn }

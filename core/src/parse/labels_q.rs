@@ -1,10 +1,10 @@
 //! Labels, calls and Q parameters with a small formula language.
 //!   lbl := LBL (n|"name")    call := CALL LBL (n|"name") [REP m[/m]] | CALL PGM path
-//!   q   := [FN 0:] Q<n> = expr      expr := term {(+|-) term}   term := unary {(*|/) unary}
-//!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q<n> | PI | ( expr )
-//!   fn  := FN (1|2|3|4|8): Q<n> = value (+|-|*|DIV|LEN) value | FN (5|6|7): Q<n> = (SQRT|SIN|COS) value
+//!   q   := [FN 0:] Q\<n> = expr      expr := term {(+|-) term}   term := unary {(*|/) unary}
+//!   unary := (+|-|FUNC) unary | atom [^ unary]      atom := number | Q\<n> | PI | ( expr )
+//!   fn  := FN (1|2|3|4|8): Q\<n> = value (+|-|*|DIV|LEN) value | FN (5|6|7): Q\<n> = (SQRT|SIN|COS) value
 //!        | FN (9|10|11|12): IF value (EQU|NE|GT|LT) value GOTO LBL (n|"name")
-//!        | FN 18: SYSREAD Q<n> = ID n NR value [IDX value]
+//!        | FN 18: SYSREAD Q\<n> = ID n NR value [IDX value]
 //!        | FN n: text    (every other FN function, kept verbatim)
 //! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
 //! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)

@@ -4,7 +4,7 @@
 //! words of `PAT`, `CIRC1 (X+25 Y+33 D80 START+45 NUM8 Z+0)`,
 //! `PITCHCIRC1 (X+25 Y+33 D80 START+45 STEP30 NUM8 Z+0)`). Written over `~` lines, which the
 //! driver joins.
-//!   def  := PATTERN DEF item { item }      item := KIND<n> ( { KEY value } )
+//!   def  := PATTERN DEF item { item }      item := KIND\<n> ( { KEY value } )
 
 use super::Cx;
 use super::words::{keyword, sp, uint, word_value};

@@ -1,5 +1,5 @@
 //! The words every block family shares: blanks, numbers, values, feeds, M functions.
-//!   value  := [+|-] ( (Q|QL|QR)<digits> | <digits>[.<digits>] | .<digits> )
+//!   value  := [+|-] ( (Q|QL|QR)\<digits> | \<digits>[.\<digits>] | .\<digits> )
 //!   feed   := FMAX | F MAX | F AUTO | F value
 
 use nom::bytes::complete::{tag, take_till1, take_until, take_while1};

@@ -27,9 +27,9 @@
 //!
 //! # Along the motion: the guarantee
 //! Between two fractions f₀ < f₁ of a segment no point of a body moves more than
-//! `(f₁ − f₀)·(S_L + Σⱼ ρⱼ·|Δθⱼ|)` ([`Solid::rate`]): `S_L` bounds the speed of the linear
+//! `(f₁ − f₀)·(S_L + Σⱼ ρⱼ·|Δθⱼ|)` (`Solid::rate`): `S_L` bounds the speed of the linear
 //! axes per unit fraction (linear move: the chord; arc: radius·sweep + lead; MOVE and TCPM: the
-//! tool tip's and the workpiece point's travel, see [`linear_rate`]), `Δθⱼ` is the travel of
+//! tool tip's and the workpiece point's travel, see `linear_rate`), `Δθⱼ` is the travel of
 //! rotary axis j (radians) and `ρⱼ` bounds the distance of the body from that axis
 //! (derived: a point at distance d from an axis moves at most d·|Δθ| when turned by Δθ; a joint
 //! carried by another is at most the distance between their pivots further out). Each pair is

@@ -170,7 +170,7 @@ fn duration(segments: &[Segment]) -> f64 {
     segments.iter().map(|s| s.duration).sum()
 }
 
-/// One executed step as a listing shows it ([`simulate_listed`]): the same values as the
+/// One executed step as a listing shows it (`simulate_listed`): the same values as the
 /// step's [`State`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct ListingRow {

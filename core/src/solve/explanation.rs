@@ -19,9 +19,9 @@ pub struct SolveOptions {
     pub start: AxisValues,
     /// Limit overrides for this call (the seed's "−90 < A < +10"); the last one per axis wins.
     pub limits: Vec<(RotaryAxis, Limits)>,
-    /// `SEQ±`/`SYM±`; [`solve_block`] takes the block's own if it has one.
+    /// `SEQ±`/`SYM±`; `solve_block` takes the block's own if it has one.
     pub selection: Option<Selection>,
-    /// `COORD ROT`/`TABLE ROT`; [`solve_block`] takes the block's own if it has one.
+    /// `COORD ROT`/`TABLE ROT`; `solve_block` takes the block's own if it has one.
     pub transform: Option<TransformMode>,
 }
 
@@ -205,7 +205,7 @@ pub enum SolveError {
 }
 
 impl SolveError {
-    /// The control's message: "Winkel nicht erlaubt" [S2] /
+    /// The control's message: "Winkel nicht erlaubt" \[S2\] /
     /// "Entered angle not permitted" [M:TNC7basic-SYM].
     #[must_use]
     pub fn message(&self) -> Text {
@@ -255,7 +255,7 @@ impl SolveError {
 }
 
 /// A [`Rule`] that serialises as its text, `{"de": …, "en": …}`. The text is only formatted
-/// when asked for, which keeps [`solve`] free of string formatting (benchmark budget).
+/// when asked for, which keeps `solve` free of string formatting (benchmark budget).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reason(pub Rule);
 
@@ -313,7 +313,7 @@ pub struct Explanation {
     pub tool_axis: [f64; 3],
     pub master: RotaryAxis,
     pub slave: RotaryAxis,
-    /// Master value where the two solutions mirror ([`kinematics::symmetry_point`]).
+    /// Master value where the two solutions mirror (`kinematics::symmetry_point`).
     pub symmetry_point: f64,
     pub case: KinematicCase,
     pub selection: Option<Selection>,

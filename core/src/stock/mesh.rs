@@ -31,7 +31,7 @@ const MERGE: f64 = 1e-4;
 
 /// Triangles of the stock, W-CS: `positions` three per triangle, `flags` and `normals` one per
 /// vertex (the same for the three vertices of a triangle, so the view can pass them as vertex
-/// attributes). A normal is the surface's the ends sample ([`surface_normal`]), not only its
+/// attributes). A normal is the surface's the ends sample (`surface_normal`), not only its
 /// face's axis.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StockMesh {

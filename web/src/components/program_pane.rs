@@ -32,7 +32,7 @@ pub struct ProgramPaneProps {
     pub cursor: usize,
     pub lang: Lang,
     pub text_editing: bool,
-    /// Long lines wrap (projector mode): a short program is drawn whole ([`WHOLE_LINES`]).
+    /// Long lines wrap (projector mode): a short program is drawn whole (`WHOLE_LINES`).
     #[prop_or_default]
     pub wrap: bool,
     pub on_select: Callback<usize>,

@@ -1,7 +1,7 @@
 //! The shop's tool table on the machine editor page: one row per tool with the control's
 //! columns (T, NAME, L, R, R2, DL, DR, TYP, T-ANGLE), each cell's problem under its row, and
 //! the table's commands (new row, import and export of `TOOL.T`, back to the shipped table).
-//! State and checks in [`ToolTableState`]; this only renders and dispatches.
+//! State and checks in [`schwenkbar_app::tool_table::ToolTableState`]; this only renders and dispatches.
 
 use web_sys::HtmlInputElement;
 use yew::prelude::*;

@@ -46,7 +46,7 @@ pub struct View3dProps {
     #[prop_or_default]
     pub in_run: bool,
     /// The trainee is typing in the text editor: a changed scene is painted once typing pauses
-    /// ([`TYPING_PAUSE_FRAMES`]).
+    /// (`TYPING_PAUSE_FRAMES`).
     #[prop_or_default]
     pub typing: bool,
 }

@@ -34,7 +34,7 @@ impl Collisions {
 impl Cutting {
     /// The collisions of positioning motions with the material (a rapid into it, a swivel with
     /// the tool in it), whether or not the stock is shown, cutting about `work` rays at most
-    /// ([`Removal::work`]). Only the cuts up to the last positioning sweep that reaches into a
+    /// (`Removal::work`). Only the cuts up to the last positioning sweep that reaches into a
     /// blank are made, and none when no such sweep exists, as in a run that rapids above its
     /// blank: most runs cost only the plan.
     #[must_use]
