@@ -495,21 +495,19 @@ impl Parser<'_> {
         } else {
             parse_body(&mut self.cx, &text)
         };
-        let body = match (body, paren) {
-            (Some(BlockBody::Unknown { .. }), Some(as_written)) => {
-                comment = None;
-                BlockBody::Unknown { text: as_written.to_owned() }
+        let body = match body {
+            Some(body) if !matches!(body, BlockBody::Unknown { .. }) => body,
+            // Not read, so not rewritten either: kept as written, its parentheses included.
+            unread => {
+                if paren.is_some() {
+                    comment = None;
+                }
+                let as_written = paren.unwrap_or_else(|| written.as_deref().unwrap_or(&text).trim_end());
+                match unread {
+                    Some(_) => BlockBody::Unknown { text: as_written.to_owned() },
+                    None => invalid(as_written),
+                }
             }
-            // Not read, so not rewritten either: kept as written.
-            (Some(BlockBody::Unknown { .. }), None) if written.is_some() => {
-                BlockBody::Unknown { text: written.as_deref().unwrap_or(&text).trim_end().to_owned() }
-            }
-            (Some(body), _) => body,
-            (None, Some(as_written)) => {
-                comment = None;
-                invalid(as_written)
-            }
-            (None, None) => invalid(written.as_deref().unwrap_or(&text).trim_end()),
         };
         if dangling_tilde && !continued {
             let code = match &body {

@@ -21,7 +21,7 @@ use std::collections::{BTreeSet, HashMap};
 
 use wasm_encoder::reencode::{Reencode, RoundtripReencoder};
 use wasm_encoder::{
-    CodeSection, ConstExpr, DataCountSection, DataSection, ElementSection, Elements, EntityType, ExportKind,
+    CodeSection, ConstExpr, DataCountSection, DataSection, ElementSection, Elements, EntityType,
     ExportSection, Function, FunctionSection, ImportSection, Instruction, MemArg, MemorySection, MemoryType,
     RawSection, TableSection, TableType, TypeSection,
 };
@@ -56,28 +56,12 @@ fn types_section(types: &[FuncType]) -> Res<TypeSection> {
     Ok(s)
 }
 
-fn export_kind(k: ExternalKind) -> Res<ExportKind> {
-    Ok(match k {
-        ExternalKind::Func => ExportKind::Func,
-        ExternalKind::Table => ExportKind::Table,
-        ExternalKind::Memory => ExportKind::Memory,
-        ExternalKind::Global => ExportKind::Global,
-        _ => return Err(Unsupported("an export kind other than function, table, memory, global".into())),
-    })
+fn memory_type(m: wasmparser::MemoryType) -> Res<MemoryType> {
+    RoundtripReencoder.memory_type(m).map_err(|e| Unsupported(format!("a memory type: {e:?}")))
 }
 
 fn table_type(t: &wasmparser::TableType) -> Res<TableType> {
     RoundtripReencoder.table_type(*t).map_err(|e| Unsupported(format!("a table type: {e:?}")))
-}
-
-fn memory_type(m: &wasmparser::MemoryType) -> MemoryType {
-    MemoryType {
-        minimum: m.initial,
-        maximum: m.maximum,
-        memory64: false,
-        shared: false,
-        page_size_log2: m.page_size_log2,
-    }
 }
 
 /// `prefix` and `n` in base 36 (lower case digits and letters).
@@ -257,7 +241,11 @@ pub fn split(data: &[u8], run: &[bool], linked: Option<&[u8]>) -> Res<(Vec<u8>, 
         needed.iter().map(|&f| (f, export(ExternalKind::Func, f, short_name("~", f as usize)))).collect();
     let mut exports = ExportSection::new();
     for (name, kind, idx) in m.exports.iter().chain(&new_exports) {
-        exports.export(name, export_kind(*kind)?, *idx);
+        exports.export(
+            name,
+            RoundtripReencoder.export_kind(*kind).map_err(|e| Unsupported(format!("{e:?}")))?,
+            *idx,
+        );
     }
 
     let mut replace: HashMap<u8, Vec<u8>> = HashMap::new();
@@ -292,7 +280,7 @@ pub fn split(data: &[u8], run: &[bool], linked: Option<&[u8]>) -> Res<(Vec<u8>, 
         let ty = if t == 0 { grown } else { table_type(table)? };
         imports.import("p", &table_names[t], EntityType::Table(ty));
     }
-    imports.import("p", &memory_name, EntityType::Memory(memory_type(&m.memories[0])));
+    imports.import("p", &memory_name, EntityType::Memory(memory_type(m.memories[0])?));
     for (g, ty) in all_globals.iter().enumerate() {
         let ty =
             RoundtripReencoder.global_type(*ty).map_err(|e| Unsupported(format!("a global type: {e:?}")))?;
@@ -367,7 +355,7 @@ pub fn instrument(data: &[u8]) -> Res<(Vec<u8>, u32, usize)> {
     memories.memory(MemoryType {
         minimum: mem.initial + 1,
         maximum: mem.maximum.map(|hi| hi.max(mem.initial + 1)),
-        ..memory_type(&mem)
+        ..memory_type(mem)?
     });
     let mut code = CodeSection::new();
     for (k, body) in m.bodies.iter().enumerate() {
