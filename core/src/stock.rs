@@ -20,7 +20,10 @@
 //! tool orientation). A motion that turns the tool relative to the workpiece (rotary axes
 //! moving, PLANE … MOVE) is cut as straight sub-moves with the orientation of each sub-move's
 //! middle, so many that no point of the tool strays more than a quarter of the resolution from
-//! its true path (`plan`). The result after a step is the same however one got there:
+//! its true path (`plan`). Consecutive cuts on one short straight line (CAM output's moves of a
+//! few hundredths of a millimetre) are one sweep of their chord, belonging to their last step
+//! (`plan`: at most half the resolution long, every point within 1/64 of it from the chord).
+//! The result after a step is the same however one got there:
 //! [`Cutting`] applies the same cuts in the same order from the blank or from a checkpoint.
 
 mod closed;

@@ -626,3 +626,70 @@ fn the_ends_on_a_tilted_face_carry_the_faces_normal() {
     assert!(on_face > 100, "{on_face} triangles on the face");
     assert!(along * 100 >= on_face * 95, "{along} of {on_face} along the face's normal");
 }
+
+/// Issue 32 item 4: CAM output moves a few hundredths of a millimetre per block; consecutive cuts
+/// on one short straight line are cut as one sweep (`plan.rs`, `MERGE_LENGTH`). A flat Ø10 mill
+/// going round a circle of radius 20 at 4 mm depth in 0.03 mm moves (4 decimals, as a post
+/// writes them) cuts the annulus 15 ≤ ρ ≤ 25 (closed form): every Z ray's top and every X ray's
+/// span ends at z = −2 lie where the annulus says, within 5 µm (the merge's 1/64 of the
+/// resolution, the moves' rounding and their sagitta). Planning in shares merges the same cuts.
+#[test]
+fn tiny_cam_moves_cut_the_closed_form_groove_however_they_are_planned() {
+    let (centre, rp, r, depth) = (50.0, 20.0, 5.0, 4.0);
+    let n = (std::f64::consts::TAU * rp / 0.03).round() as usize;
+    let mut src = format!(
+        "{BLANK}TOOL CALL 1 Z S4000 F500\nL X+{:.4} Y+{centre:.4} Z+10 R0 FMAX\nL Z-{depth} F500\n",
+        centre + rp
+    );
+    for k in 1..=n {
+        let a = std::f64::consts::TAU * k as f64 / n as f64;
+        src.push_str(&format!("L X{:+.4} Y{:+.4}\n", centre + rp * a.cos(), centre + rp * a.sin()));
+    }
+    src.push_str("L Z+10 FMAX\nM30\n");
+    let options = StockOptions { resolution: 0.25, checkpoints: 2 };
+    let (program, sim, whole) = run(&src, options);
+    let stock = whole.final_stock().expect("stock");
+    let tol = 0.005;
+    let rho = |x: f64, y: f64| (x - centre).hypot(y - centre);
+    let [nx, ny, nz] = stock.cells();
+    let mut checked = 0;
+    for j in 0..ny {
+        for i in 0..nx {
+            let (x, y) = stock.ray_position(2, i, j);
+            let top = stock.spans(2, i, j).last().map_or(f64::NAN, |s| s.hi);
+            let d = rho(x, y);
+            if d > rp - r + tol && d < rp + r - tol {
+                assert!(
+                    (top + depth).abs() < 1e-9,
+                    "Z ray at ({x}, {y}), ρ = {d}: top {top}, floor −{depth}"
+                );
+            } else if d < rp - r - tol || d > rp + r + tol {
+                assert!(top.abs() < 1e-9, "Z ray at ({x}, {y}), ρ = {d}: top {top}, uncut 0");
+            }
+        }
+    }
+    // X rays at z = −2: every span end inside the blank lies on ρ = 15 or ρ = 25.
+    let k = (0..nz).min_by(|&a, &b| {
+        let z = |k: usize| (stock.ray_position(0, 0, k).1 + 2.0).abs();
+        z(a).total_cmp(&z(b))
+    });
+    let k = k.expect("rows");
+    for j in 0..ny {
+        let (y, _) = stock.ray_position(0, j, k);
+        for s in stock.spans(0, j, k) {
+            for x in [s.lo, s.hi].into_iter().filter(|x| *x > 1e-9 && *x < 100.0 - 1e-9) {
+                let off = (rho(x, y) - (rp - r)).abs().min((rho(x, y) - (rp + r)).abs());
+                assert!(off < tol, "X ray y = {y}: span end x = {x} is {off} mm off the annulus");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "{checked} span ends on the groove's walls");
+    // Planned in shares (the browser's way), the same cuts merge: the same stock at the end and
+    // halfway round.
+    let mut parts = Cutting::unplanned(options);
+    while !parts.plan_on(&program, &sim, 5) {}
+    assert_eq!(parts.final_stock().map(|s| s.digest()), Some(stock.digest()));
+    let half = sim.len() / 2;
+    assert_eq!(parts.stock_at(half).map(|s| s.digest()), whole.stock_at(half).map(|s| s.digest()));
+}

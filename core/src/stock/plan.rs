@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use crate::Text;
 use crate::ast::Program;
+use crate::sim::collision::segment_segment_distance;
 use crate::sim::{Blank, Kin, Segment, SegmentKind, SegmentPath, Simulation, StepMotion, ToolState};
 
 use super::{Cutter, Part, Removal, RowAt, Stamp, Stock, StockError};
@@ -24,6 +25,25 @@ const FIRST_CHECKPOINT_RAYS: usize = 200_000;
 /// Copying a checkpoint (a few MB) costs about as much as computing this many rays: a cursor
 /// behind a checkpoint by less work cuts its way there instead.
 const CHECKPOINT_COPY_RAYS: usize = 50_000;
+
+/// Consecutive cuts with the same cutter and tool axis along one straight line are cut as one
+/// sweep while it is at most this share of the resolution long: a CAM program's moves of a few
+/// hundredths of a millimetre each cost a whole cut of the tool's footprint (the 592 KB CAM class:
+/// 48.5 million rays for 14,000 moves, issue 32), while their union is the sweep of the chord.
+/// The stock after a step then lags its tool by less than half the ray spacing (the merged cut
+/// belongs to its last step), which the grid does not show.
+const MERGE_LENGTH: f64 = 0.5;
+
+/// Merged cuts never cross a multiple of this many steps, and the plan goes in shares of
+/// multiples of it ([`Cutting::plan_on`]): which cuts merge depends on the run alone, not on how
+/// its planning was shared out (a merge across two shares would grow a cut a cursor may have
+/// made already).
+const MERGE_STEPS: usize = 8;
+
+/// The points of merged cuts lie within this share of the resolution of their chord: the sweep
+/// of the chord and the sweeps of the pieces differ by at most that (a Hausdorff distance of
+/// 1/64 of the spacing, far inside the quarter the arcs' chords allow).
+const MERGE_DEVIATION: f64 = 1.0 / 64.0;
 
 /// Most sub-moves of one turning motion (a swivel of 180° of a 100 mm tool at 0.25 mm needs
 /// about 5,000): bounds the work of absurd programs.
@@ -188,6 +208,9 @@ pub struct Cutting {
     pass: Option<FirstPass>,
     /// Where planning stands (`None` once every step is planned).
     planning: Option<Planning>,
+    /// The last event's index and the points of the cuts merged into it ([`MERGE_LENGTH`]), while
+    /// more may join it.
+    chain: Option<(usize, Vec<DVec3>)>,
 }
 
 /// The next step to plan and what the steps before it left in effect.
@@ -250,17 +273,22 @@ impl Cutting {
             run: Stamp::run(),
             pass: Some(FirstPass { budget: FIRST_CHECKPOINT_RAYS, ..FirstPass::default() }),
             planning: Some(Planning::default()),
+            chain: None,
         }
     }
 
-    /// Plans up to `steps` more steps of `sim` (the run of `program`); returns whether every
-    /// step is planned. A share that starts on a multiple of the simulation's checkpoint
+    /// Plans `steps` more steps of `sim` (the run of `program`), up to the next multiple of
+    /// [`MERGE_STEPS`]; returns whether every step is planned. A share that starts on a multiple of the simulation's checkpoint
     /// interval re-simulates nothing twice ([`Simulation::states_from`]).
     pub fn plan_on(&mut self, program: &Program, sim: &Simulation, steps: usize) -> bool {
         let Some(mut p) = self.planning.take() else { return true };
+        // Events planned before may have been cut already: none of them grows (a share ends on
+        // a multiple of MERGE_STEPS, where no merge goes on anyway).
+        self.chain = None;
         // The entry after the last planned step goes and comes back at the end.
         self.step_events.pop();
-        let wanted = steps.min(sim.len().saturating_sub(p.next));
+        let end = p.next.saturating_add(steps).checked_next_multiple_of(MERGE_STEPS).unwrap_or(usize::MAX);
+        let wanted = (end - p.next).min(sim.len().saturating_sub(p.next));
         let mut got = 0;
         for state in sim.motions_from(program, p.next).take(wanted) {
             got += 1;
@@ -268,7 +296,7 @@ impl Cutting {
             if state.blank != p.blank {
                 p.blank = state.blank;
                 if let Some(b) = p.blank {
-                    self.events.push(Event {
+                    self.push_event(Event {
                         step: state.step,
                         block: state.block,
                         end: 0.0,
@@ -326,13 +354,11 @@ impl Cutting {
                 }
             };
             let motion = Motion::of(seg.kind);
-            let push = |events: &mut Vec<Event>, f: f64, axis: DVec3, from: DVec3, to: DVec3| {
-                events.push(Event {
-                    step,
-                    block,
-                    end: frac(f),
-                    action: Action::Cut { cutter, axis, from, to, motion },
-                });
+            let cut = |f: f64, axis: DVec3, from: DVec3, to: DVec3| Event {
+                step,
+                block,
+                end: frac(f),
+                action: Action::Cut { cutter, axis, from, to, motion },
             };
             match &seg.path {
                 SegmentPath::Stay { .. } => {}
@@ -347,7 +373,7 @@ impl Cutting {
                     let n = ((from.distance(to) / piece).ceil() as usize).clamp(1, 64);
                     for i in 0..n {
                         let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
-                        push(&mut self.events, fb, axis, from.lerp(to, fa), from.lerp(to, fb));
+                        self.push_event(cut(fb, axis, from.lerp(to, fa), from.lerp(to, fb)));
                     }
                 }
                 SegmentPath::Arc(arc) => {
@@ -363,7 +389,7 @@ impl Cutting {
                     for i in 0..n {
                         let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
                         let (from, to) = (kin.tip_wcs(&seg.axes_at(fa)), kin.tip_wcs(&seg.axes_at(fb)));
-                        push(&mut self.events, fb, axis, from, to);
+                        self.push_event(cut(fb, axis, from, to));
                     }
                 }
                 _ => {
@@ -372,11 +398,64 @@ impl Cutting {
                         let (fa, fb) = (i as f64 / n as f64, (i + 1) as f64 / n as f64);
                         let axis = kin.tool_axis_wcs(seg.axes_at(0.5 * (fa + fb)).rotary);
                         let (from, to) = (kin.tip_wcs(&seg.axes_at(fa)), kin.tip_wcs(&seg.axes_at(fb)));
-                        push(&mut self.events, fb, axis, from, to);
+                        self.push_event(cut(fb, axis, from, to));
                     }
                 }
             }
             elapsed += seg.duration;
+        }
+    }
+
+    /// Appends `event`, or merges a cut into the last event when both are cuts of the same
+    /// cutter and tool axis whose points stay on one short straight line ([`MERGE_LENGTH`],
+    /// [`MERGE_DEVIATION`]): the merged cut belongs to the step of its last piece.
+    fn push_event(&mut self, event: Event) {
+        let index = self.events.len();
+        let Action::Cut { cutter, axis, from, to, motion: Motion::Cut } = event.action else {
+            self.chain = None;
+            self.events.push(event);
+            return;
+        };
+        let res = self.options.resolution;
+        let merged = match (&mut self.chain, self.events.last()) {
+            (
+                Some((at, points)),
+                Some(Event {
+                    step: s,
+                    action: Action::Cut { cutter: c, axis: a, from: start, to: end, .. },
+                    ..
+                }),
+            ) if *at + 1 == index
+                && *s / MERGE_STEPS == event.step / MERGE_STEPS
+                && *c == cutter
+                && *a == axis
+                && *end == from
+                && start.distance(to) <= MERGE_LENGTH * res
+                && points
+                    .iter()
+                    .all(|&q| segment_segment_distance(q, q, *start, to) <= MERGE_DEVIATION * res) =>
+            {
+                points.push(to);
+                Some(*start)
+            }
+            _ => None,
+        };
+        match merged {
+            Some(start) => {
+                // The last event moves to this step: the steps after its own start behind it.
+                let last = index - 1;
+                for e in self.step_events.iter_mut().rev().take_while(|e| **e > last) {
+                    *e = last;
+                }
+                self.events[last] = Event {
+                    action: Action::Cut { cutter, axis, from: start, to, motion: Motion::Cut },
+                    ..event
+                };
+            }
+            None => {
+                self.chain = Some((index, vec![from, to]));
+                self.events.push(event);
+            }
         }
     }
 
@@ -658,3 +737,6 @@ fn sub_moves(kin: &Kin, seg: &Segment, reach: f64, resolution: f64) -> usize {
     let n = (turn * reach / (0.5 * resolution)).ceil();
     if n.is_finite() { (n as usize).clamp(1, MAX_SUB_MOVES) } else { 1 }
 }
+
+#[cfg(test)]
+mod tests;
