@@ -21,24 +21,39 @@ pub struct Pane {
     pub state: Option<Rc<State>>,
 }
 
-/// The three panes for `programs` (MOVE, TURN, STAY) at the block numbered `block`.
+/// The three panes for `programs` (MOVE, TURN, STAY) before their simulation: the programs
+/// read, the machine standing at home (the lesson's first screen, shown before the
+/// simulator's code has loaded).
 #[must_use]
-pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>) {
+pub fn unsimulated(programs: [&str; 3]) -> (Option<Rc<Machine>>, Vec<Pane>) {
     let machine = Machine::builtin(MACHINE).ok().map(Rc::new);
     let panes = programs
         .iter()
         .zip(["MOVE", "TURN", "STAY"])
-        .map(|(text, name)| {
-            let doc = Rc::new(Document::new((*text).to_owned()));
-            let sim = machine.as_ref().map(|m| SimRef::of(&doc.program, m));
-            let index = doc.program.blocks.iter().position(|b| b.number() == Some(block));
-            let state = sim
-                .as_ref()
-                .zip(index)
-                .and_then(|(s, i)| s.0.state_at(&doc.program, s.0.step_of_block(i)?).map(Rc::new));
-            Pane { name, doc, sim, state }
+        .map(|(text, name)| Pane {
+            name,
+            doc: Rc::new(Document::new((*text).to_owned())),
+            sim: None,
+            state: None,
         })
         .collect();
+    (machine, panes)
+}
+
+/// The three panes for `programs` (MOVE, TURN, STAY) at the block numbered `block`.
+#[must_use]
+pub fn panes(programs: [&str; 3], block: u32) -> (Option<Rc<Machine>>, Vec<Pane>) {
+    let (machine, mut panes) = unsimulated(programs);
+    for pane in &mut panes {
+        let program = &pane.doc.program;
+        pane.sim = machine.as_ref().map(|m| SimRef::of(program, m));
+        let index = program.blocks.iter().position(|b| b.number() == Some(block));
+        pane.state = pane
+            .sim
+            .as_ref()
+            .zip(index)
+            .and_then(|(s, i)| s.0.state_at(program, s.0.step_of_block(i)?).map(Rc::new));
+    }
     (machine, panes)
 }
 
@@ -61,5 +76,8 @@ mod tests {
         assert_eq!(rotary(&panes[0]), rotary(&panes[1]), "MOVE and TURN end on the same axes");
         assert_ne!(rotary(&panes[0]), [0.0, 0.0], "MOVE swivels");
         assert_eq!(rotary(&panes[2]), [0.0, 0.0], "STAY does not swivel");
+        let (_, first) = unsimulated(programs);
+        assert!(first.iter().all(|p| p.sim.is_none() && p.state.is_none()));
+        assert!(first.iter().zip(&panes).all(|(a, b)| a.doc == b.doc && a.name == b.name));
     }
 }

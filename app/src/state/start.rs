@@ -216,10 +216,12 @@ impl AppState {
 
     /// A lesson's trainer: its own program and machine, the cursor on the first PLANE block,
     /// in projector mode in the instructor view (`classroom`); nothing of the trainee's saved
-    /// work is read or written.
+    /// work is read or written. Simulated lazily like the trainer's start
+    /// ([`AppState::start_unsimulated`]): every lesson is a deep link, and its first screen
+    /// shows the program before the simulator's code has loaded.
     #[must_use]
     pub fn embedded(program: &str, machine: &str, lang: Lang, classroom: bool) -> (AppState, Vec<Effect>) {
-        let mut state = AppState { lang, projector: classroom, embedded: true, ..AppState::default() };
+        let mut state = AppState { lang, projector: classroom, embedded: true, ..AppState::unsimulated() };
         state.doc = Rc::new(Document::new(program.to_owned()));
         state.cursor = state
             .doc
@@ -229,8 +231,8 @@ impl AppState {
             .position(|b| matches!(b.stored_body(), Some(BlockBody::Plane(_))))
             .unwrap_or(0);
         state.select_machine(machine);
-        let state = state.simulated(None);
-        let mut fx = Vec::new();
+        state.sim_pending = true;
+        let mut fx = vec![Effect::Simulate];
         state.follow_ups(None, &mut fx);
         (state, fx)
     }

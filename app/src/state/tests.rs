@@ -322,7 +322,10 @@ fn what_changed_is_saved_and_a_lessons_trainer_saves_nothing() {
     assert!(s.apply(Action::ShowFiles).1.is_empty(), "a softkey level is not saved");
 
     let (lesson, fx) = AppState::embedded(samples::DEFAULT.text, "ac-table", Lang::De, false);
-    assert_eq!(fx, [Effect::TellCourse(lesson.cursor_plane_text())]);
+    // Shown first, simulated once the simulator's code is there (or at the first key).
+    assert_eq!(fx, [Effect::Simulate, Effect::TellCourse(lesson.cursor_plane_text())]);
+    assert!(lesson.sim_pending && lesson.sim.is_none());
+    assert!(lesson.apply(Action::Simulate).0.sim.is_some());
     assert!(lesson.cursor_plane_text().is_some_and(|t| t.contains("PLANE")));
     let (_, fx) = lesson.apply(Action::CursorTo(0));
     assert_eq!(fx, [Effect::TellCourse(None)], "a lesson's trainer saves nothing");
