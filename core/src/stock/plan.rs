@@ -278,7 +278,7 @@ impl Cutting {
     }
 
     /// Plans `steps` more steps of `sim` (the run of `program`), up to the next multiple of
-    /// [`MERGE_STEPS`]; returns whether every step is planned. A share that starts on a multiple of the simulation's checkpoint
+    /// `MERGE_STEPS`; returns whether every step is planned. A share that starts on a multiple of the simulation's checkpoint
     /// interval re-simulates nothing twice ([`Simulation::states_from`]).
     pub fn plan_on(&mut self, program: &Program, sim: &Simulation, steps: usize) -> bool {
         let Some(mut p) = self.planning.take() else { return true };
