@@ -385,6 +385,10 @@ impl Bodies {
         // goes from translation to translation: most motions place no body at all.
         let d = seg.end.linear - seg.start.linear;
         let mut start_boxes: Option<Vec<(DVec3, DVec3)>> = None;
+        // The head side's boxes together, swept along the translation: a table-side body apart
+        // from it is apart from each of them by at least as much (a test per table-side body
+        // instead of one per pair; inside a blank most pairs are near enough to be tested).
+        let mut head_sweep: Option<(DVec3, DVec3)> = None;
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
             let rate = rate_of(a) + rate_of(b);
             if known && rate < clear.gaps[k] - RESOLUTION {
@@ -396,8 +400,23 @@ impl Bodies {
                     Some((at, boxes)) if at == seg.start => boxes,
                     _ => self.boxes(at_end.get_or_insert_with(|| self.place_all(&seg.axes_at(1.0))), -d),
                 });
+                let (lh, hh) = *head_sweep.get_or_insert_with(|| {
+                    let mut sweep = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+                    for (solid, (lo, hi)) in self.solids.iter().zip(boxes.iter()) {
+                        if solid.role.head_side() {
+                            sweep = (sweep.0.min(lo.min(*lo + d)), sweep.1.max(hi.max(*hi + d)));
+                        }
+                    }
+                    sweep
+                });
+                let (lb, hb) = boxes[b];
+                let apart = (lb - hh).max(lh - hb).max_element();
+                if apart > RESOLUTION {
+                    clear.gaps[k] = apart;
+                    continue;
+                }
                 // `a` (head side) swept along the translation, `b` (table side) standing.
-                let ((la, ha), (lb, hb)) = (boxes[a], boxes[b]);
+                let (la, ha) = boxes[a];
                 let apart = (lb - ha.max(ha + d)).max(la.min(la + d) - hb).max_element();
                 if apart > RESOLUTION {
                     clear.gaps[k] = apart;

@@ -36,14 +36,12 @@ impl MachineAxes {
     }
 
     /// `[("X", x), ("Y", y), ("Z", z), (rotary letters…)]` in the order the control displays
-    /// them (linear, then rotary alphabetically).
+    /// them (linear, then rotary alphabetically). An array: a run's listing calls it per row.
     #[must_use]
-    pub fn named(&self) -> Vec<(char, f64)> {
-        let mut out = vec![('X', self.linear.x), ('Y', self.linear.y), ('Z', self.linear.z)];
-        let mut r: Vec<(char, f64)> = self.letters.iter().map(|l| l.letter()).zip(self.rotary).collect();
-        r.sort_by_key(|(c, _)| *c);
-        out.extend(r);
-        out
+    pub fn named(&self) -> [(char, f64); 5] {
+        let [(l0, r0), (l1, r1)] = [0, 1].map(|i| (self.letters[i].letter(), self.rotary[i]));
+        let (first, second) = if l1 < l0 { ((l1, r1), (l0, r0)) } else { ((l0, r0), (l1, r1)) };
+        [('X', self.linear.x), ('Y', self.linear.y), ('Z', self.linear.z), first, second]
     }
 }
 
