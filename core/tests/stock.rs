@@ -627,6 +627,61 @@ fn the_ends_on_a_tilted_face_carry_the_faces_normal() {
     assert!(along * 100 >= on_face * 95, "{along} of {on_face} along the face's normal");
 }
 
+/// Issue 32's machined look, the face closed: the SPB+15 face (as above) is drawn by the Z grid
+/// alone, one layer of squares laid on the plane. The X grid's ends on it (its rays meet the face
+/// at 15°) crossed those squares and showed as a dotted moiré; and flat squares at stepped
+/// heights left slits between them. Away from its edges no square of another grid lies on the
+/// face, every corner lies on the plane (within 0.005 mm; a flat square's corners stray by up
+/// to half a cell times tan 15° = 0.033 mm), and each point of the face is under exactly one
+/// square.
+#[test]
+fn a_tilted_face_is_one_layer_of_squares_on_its_plane() {
+    let src = face_mill_15();
+    let (_, _, c) = run(&src, StockOptions::default());
+    let mesh = StockMesh::of(&c.final_stock().expect("stock"));
+    let plane = tilt();
+    let inside = |p: DVec3| (p.y - 50.0).abs() < 15.0 && (20.0..80.0).contains(&p.x);
+    // A quad is two triangles, six positions (`push_quad`); a Z grid's quad spans cells in x, y.
+    let mut squares = Vec::new();
+    let mut others = 0;
+    for (quad, flags) in mesh.positions.chunks_exact(6).zip(mesh.flags.chunks_exact(6)) {
+        let p: Vec<DVec3> = quad.iter().map(|v| DVec3::from_array(v.map(f64::from))).collect();
+        let (lo, hi) =
+            p.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
+        let centre = 0.5 * (lo + hi);
+        if (centre.dot(plane) + 2.0).abs() > 0.3 {
+            continue;
+        }
+        // The low two bits: the grid (the face's axis, `mesh::flag::AXIS`).
+        if flags[0] & 0b11 != 2 {
+            others += usize::from(inside(centre));
+            continue;
+        }
+        for v in &p {
+            if inside(*v) {
+                assert!(
+                    (v.dot(plane) + 2.0).abs() < 0.005,
+                    "corner {v} off the plane by {}",
+                    v.dot(plane) + 2.0
+                );
+            }
+        }
+        squares.push((lo, hi));
+    }
+    assert_eq!(others, 0, "squares of the X or Y grid on the face");
+    // Points off the cells' boundaries (multiples of 0.25 mm), 0.61 mm apart.
+    for k in 0..90 {
+        for l in 0..45 {
+            let (x, y) = (20.113 + 0.61 * f64::from(k), 36.07 + 0.61 * f64::from(l));
+            let over = squares
+                .iter()
+                .filter(|(lo, hi)| (lo.x..hi.x).contains(&x) && (lo.y..hi.y).contains(&y))
+                .count();
+            assert_eq!(over, 1, "squares over x {x} y {y}");
+        }
+    }
+}
+
 /// Issue 32 item 4: CAM output moves a few hundredths of a millimetre per block; consecutive cuts
 /// on one short straight line are cut as one sweep (`plan.rs`, `MERGE_LENGTH`). A flat Ø10 mill
 /// going round a circle of radius 20 at 4 mm depth in 0.03 mm moves (4 decimals, as a post

@@ -1,11 +1,15 @@
-//! The stock as triangles for the 3D view and STL: every dexel end is a small square facing
-//! along its ray, as large as its ray's cell (the dexel-end rendering of Van Hook 1986, with
-//! three grids so that walls along each axis are covered). Neighbouring equal ends merge into
+//! The stock as triangles for the 3D view: every dexel end is a small square, as large
+//! as its ray's cell (the dexel-end rendering of Van Hook 1986, with three grids so that walls
+//! along each axis are covered), laid on the plane of the surface its grid's ends sample there
+//! and lit with that surface's normal. A smooth surface is drawn by the grid whose rays meet it
+//! closest to head-on (the others' ends on it would cross its squares at a steep angle: a dotted
+//! moiré), so a tilted face is one closed layer of squares. Neighbouring equal ends merge into
 //! rectangles (greedy meshing, within [`MERGE`]), so the raw blank's faces, flat cuts and faces
 //! tilted about one axis cost few triangles. The view meshes the stock in tiles and after a cut
 //! only the tiles it changed ([`TiledMesh`]).
-//! The mesh is not watertight (tilted faces are sampled by the ends, like a heightfield of
-//! tiles); it is meant for looking at, not for volume computations ([`super::Stock::volume`]).
+//! The mesh is not watertight (an edge between surfaces drawn by different grids may leave a gap
+//! of part of a cell); it is meant for looking at, not for volume computations
+//! ([`super::Stock::volume`]); the STL is the closed mesh of `closed.rs`.
 //!
 //! Positions are `f32` because the GPU takes them so (WebGL2 has no double attributes).
 
@@ -31,7 +35,7 @@ const MERGE: f64 = 1e-4;
 
 /// Triangles of the stock, W-CS: `positions` three per triangle, `flags` and `normals` one per
 /// vertex (the same for the three vertices of a triangle, so the view can pass them as vertex
-/// attributes). A normal is the surface's the ends sample (`surface_normal`), not only its
+/// attributes). A normal is the surface's the ends sample (`surface`), not only its
 /// face's axis.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StockMesh {
@@ -172,9 +176,11 @@ impl StockMesh {
         }
     }
 
-    /// Emits `rect` of grid `d`, closed before row `end_row`; lit with the surface's normal
-    /// from the rays of its tile (`tile`: cells `i0..i1` × rows `j0..j1`), or with its axis'
-    /// for the uncut blank.
+    /// Emits `rect` of grid `d`, closed before row `end_row`: for a cut tile on the plane of
+    /// the surface its ends sample and lit with that surface's normal, from the rays of its tile
+    /// (`tile`: cells `i0..i1` × rows `j0..j1`); for the uncut blank flat and lit with its axis'.
+    /// An end on a smooth surface that faces more along another grid's axis is left to that
+    /// grid ([`Surface::facing_away`]).
     fn quad(&mut self, stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: Option<[usize; 4]>) {
         let (a, b) = others(d);
         let raw = if rect.negative { stock.min[d] } else { stock.max[d] };
@@ -184,18 +190,28 @@ impl StockMesh {
         let cell = |k: usize, i: usize| stock.min[k] + i as f64 * stock.h[k];
         let (a0, a1) = (cell(a, rect.start), cell(a, rect.end));
         let (b0, b1) = (cell(b, rect.row), cell(b, end_row));
+        let surface = match tile {
+            Some(tile) => surface(stock, d, rect, end_row, tile),
+            None => Surface { slope: [0.0; 2], normal: Self::normal(flags), facing_away: false },
+        };
+        if surface.facing_away {
+            return;
+        }
+        // The rect's ends lie on its middle; its corners on the plane through them.
+        let (am, bm) = (0.5 * (a0 + a1), 0.5 * (b0 + b1));
         let at = |u: f64, v: f64| {
             let mut p = [0.0_f32; 3];
-            p[d] = rect.value as f32;
+            p[d] = (rect.value + surface.slope[0] * (u - am) + surface.slope[1] * (v - bm)) as f32;
             p[a] = u as f32;
             p[b] = v as f32;
             p
         };
-        let normal = match tile {
-            Some(tile) => surface_normal(stock, d, rect, end_row, tile),
-            None => Self::normal(flags),
-        };
-        self.push_quad([at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1)], rect.negative, flags, normal);
+        self.push_quad(
+            [at(a0, b0), at(a1, b0), at(a1, b1), at(a0, b1)],
+            rect.negative,
+            flags,
+            surface.normal,
+        );
     }
 
     /// The two triangles of the quad `p00 p10 p11 p01` of a face normal to axis `d`, its corners
@@ -249,14 +265,33 @@ impl StockMesh {
     }
 }
 
-/// The outward normal of the surface the ends of `rect` (grid `d`, rows `rect.row..end_row`)
-/// sample, from the ends of the neighbouring rays at its middle cell, within its tile (so that
-/// a tile's mesh depends on its own rays only, [`TiledMesh`]). The ends of grid `d` lie on a
-/// surface x_d = f(x_a, x_b) whose outward normal is ±(e_d − ∂f/∂x_a·e_a − ∂f/∂x_b·e_b), + at a
-/// ray's upper end: lit with it, a face tilted against the grid shades evenly instead of in the
-/// terraces of its stepped ends (issue 32's moiré). Where the two one-sided slopes disagree (an
-/// edge of the surface), the flatter is taken: the end belongs to the face it continues.
-fn surface_normal(stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: [usize; 4]) -> [f32; 3] {
+/// What the ends of a rect sample ([`surface`]).
+struct Surface {
+    /// ∂f/∂x_a and ∂f/∂x_b of the ends' surface x_d = f(x_a, x_b).
+    slope: [f64; 2],
+    /// Its outward unit normal.
+    normal: [f32; 3],
+    /// A smooth surface (both neighbours agree) steeper than [`STEEP`] against the grid's axis:
+    /// another grid's ends sample it more densely and draw it. Drawn by both grids, the two sets
+    /// of small faces crossed each other at a steep angle and showed as a dotted moiré on a
+    /// tilted face (issue 32's machined look).
+    facing_away: bool,
+}
+
+/// The slope (tan of the angle against the grid's plane) above which an end on a smooth surface
+/// is left to another grid: a little over 1 (45°), so that around 45° both grids draw it and no
+/// gap opens where their estimates of the slope differ.
+const STEEP: f64 = 1.25;
+
+/// The surface the ends of `rect` (grid `d`, rows `rect.row..end_row`) sample, from the ends
+/// of the neighbouring rays at its middle cell, within its tile (so that a tile's mesh depends
+/// on its own rays only, [`TiledMesh`]). The ends of grid `d` lie on a surface
+/// x_d = f(x_a, x_b) whose outward normal is ±(e_d − ∂f/∂x_a·e_a − ∂f/∂x_b·e_b), + at a ray's
+/// upper end: lit with it and laid on its plane, a face tilted against the grid shades evenly
+/// and closes instead of showing the terraces of its stepped ends (issue 32's moiré). Where the
+/// two one-sided slopes disagree (an edge of the surface), the flatter is taken: the end
+/// belongs to the face it continues.
+fn surface(stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: [usize; 4]) -> Surface {
     let (a, b) = others(d);
     let [i0, i1, j0, j1] = tile;
     let (i, j) =
@@ -269,38 +304,40 @@ fn surface_normal(stock: &Stock, d: usize, rect: &Rect, end_row: usize, tile: [u
             .map(|s| if rect.negative { s.lo } else { s.hi })
             .min_by(|x, y| (x - rect.value).abs().total_cmp(&(y - rect.value).abs()))
     };
+    // The slope, and whether it is a smooth surface's (not an edge's).
     let slope = |back: Option<f64>, ahead: Option<f64>, h: f64| {
         let (p, q) = (back.map(|v| (rect.value - v) / h), ahead.map(|v| (v - rect.value) / h));
         match (p, q) {
-            (Some(p), Some(q)) if (p - q).abs() <= 0.5 * p.abs().max(q.abs()).max(1.0) => 0.5 * (p + q),
-            (Some(p), Some(q)) => {
-                if p.abs() <= q.abs() {
-                    p
-                } else {
-                    q
-                }
+            (Some(p), Some(q)) if (p - q).abs() <= 0.5 * p.abs().max(q.abs()).max(1.0) => {
+                (0.5 * (p + q), true)
             }
-            (Some(p), None) | (None, Some(p)) => p,
-            (None, None) => 0.0,
+            (Some(p), Some(q)) => (if p.abs() <= q.abs() { p } else { q }, false),
+            (Some(p), None) | (None, Some(p)) => (p, true),
+            (None, None) => (0.0, false),
         }
     };
-    let ga = slope(
+    let (ga, smooth_a) = slope(
         (i > i0).then(|| end_at(i - 1, j)).flatten(),
         (i + 1 < i1).then(|| end_at(i + 1, j)).flatten(),
         stock.h[a],
     );
-    let gb = slope(
+    let (gb, smooth_b) = slope(
         (j > j0).then(|| end_at(i, j - 1)).flatten(),
         (j + 1 < j1).then(|| end_at(i, j + 1)).flatten(),
         stock.h[b],
     );
+    let facing_away = (smooth_a && ga.abs() > STEEP) || (smooth_b && gb.abs() > STEEP);
     let mut n = glam::DVec3::ZERO;
     (n[d], n[a], n[b]) = (1.0, -ga, -gb);
     let n = if rect.negative { -n.normalize() } else { n.normalize() };
     if n.is_finite() {
-        n.as_vec3().to_array()
+        // Laid on its plane only within the steepness it is drawn at: an edge's end stays
+        // within its cell.
+        let slope = [ga.clamp(-STEEP, STEEP), gb.clamp(-STEEP, STEEP)];
+        Surface { slope, normal: n.as_vec3().to_array(), facing_away }
     } else {
-        StockMesh::normal(d as u8 | if rect.negative { flag::NEGATIVE } else { 0 })
+        let normal = StockMesh::normal(d as u8 | if rect.negative { flag::NEGATIVE } else { 0 });
+        Surface { slope: [0.0; 2], normal, facing_away: false }
     }
 }
 
