@@ -370,7 +370,15 @@ impl Renderer {
         gl.enable(Gl::BLEND);
         gl.blend_func(Gl::SRC_ALPHA, Gl::ONE_MINUS_SRC_ALPHA);
         gl.depth_mask(false);
+        // Pulled towards the eye (a fraction of a millimetre at the usual distance): a
+        // translucent surface that lies in an opaque one (the working plane in the blank's top
+        // face whenever the preset is on it; the other candidate's ghost where its part turned
+        // into itself) drew over part of it only, in stripes where the two depths happened to
+        // round apart.
+        gl.enable(Gl::POLYGON_OFFSET_FILL);
+        gl.polygon_offset(-4.0, -256.0);
         draw_pass(gl, gpu, list, Pass::Translucent, &view);
+        gl.disable(Gl::POLYGON_OFFSET_FILL);
         gl.disable(Gl::DEPTH_TEST);
         draw_pass(gl, gpu, list, Pass::XRay, &view);
         gl.enable(Gl::DEPTH_TEST);
