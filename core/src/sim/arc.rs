@@ -195,6 +195,17 @@ impl Elem {
         (t.length() > LENGTH_EPS).then(|| t.normalize())
     }
 
+    /// A straight element's travel in the plane, unnormalised, where [`Elem::tangent`] has a
+    /// direction (its length over [`LENGTH_EPS`]); `None` for an arc. The same direction
+    /// without its square root and division: a straight line ends almost every block, and its
+    /// direction is asked for by few.
+    #[must_use]
+    pub fn line_travel(&self, plane: &WorkPlane) -> Option<DVec3> {
+        let Shape::Line = self.shape else { return None };
+        let t = plane.planar(self.end - self.start);
+        (t.length_squared() > LENGTH_EPS * LENGTH_EPS).then_some(t)
+    }
+
     /// Where `p` (a point on the element) lies, as a fraction of the element (line: along the
     /// line; arc: the turned angle over the sweep).
     #[must_use]

@@ -160,14 +160,32 @@ struct Contour {
     pole: Option<contour::Pole>,
     /// The last programmed direction of rotation (+1 = DR+).
     last_dr: Option<f64>,
-    /// Direction of travel (in the working plane, unit) at the end of the last contour element.
-    tangent: Option<DVec3>,
+    /// Direction of travel (in the working plane) at the end of the last contour element.
+    tangent: Option<Travel>,
     /// The rounding/chamfer the element just run prepared for the RND/CHF block after it.
     corner: Option<Result<contour::PendingCorner, SimErrorCode>>,
     /// The corner point a RND/CHF cut off: where the next element starts geometrically.
     geom_start: Option<DVec3>,
     /// The tool radius compensation RL/RR (`None`: R0).
     comp: Option<compensation::Comp>,
+}
+
+/// A direction of travel in the working plane ([`Contour::tangent`]): a unit vector, or a
+/// straight line's travel, made one when a `CT` or a `DEP` asks (a straight line ends almost
+/// every block of a program; its direction is asked for by few).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Travel {
+    Unit(DVec3),
+    Line(DVec3),
+}
+
+impl Travel {
+    fn unit(self) -> DVec3 {
+        match self {
+            Travel::Unit(t) => t,
+            Travel::Line(t) => t.normalize(),
+        }
+    }
 }
 
 /// What the collision check ([`super::collision`]) carries from block to block.

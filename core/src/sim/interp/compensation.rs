@@ -149,7 +149,7 @@ impl Interp {
         // A CT after it continues the contour, not the tool centre path (which may end before
         // the contour's end, at an inside corner).
         if let Some(t) = elem.tangent(&plane, true) {
-            self.contour.tangent = Some(t);
+            self.contour.tangent = Some(Travel::Unit(t));
         }
         Ok(())
     }
@@ -256,7 +256,7 @@ impl Interp {
         self.compensated(at, piece, c.side, next.as_ref(), rate)?;
         self.contour.comp = Some(Comp { side: c.side, at: piece.end, centre: self.pos_i });
         if let Some(t) = piece.tangent(&plane, true) {
-            self.contour.tangent = Some(t);
+            self.contour.tangent = Some(Travel::Unit(t));
         }
         Ok(true)
     }
@@ -361,7 +361,7 @@ impl Interp {
         let kind = a.kind.as_str();
         let fail = |reason| SimErrorCode::ApprDep { word: "DEP", kind, reason };
         let c = self.active_comp().ok_or(fail(ApprDepReason::NoCompensation))?;
-        let t = self.contour.tangent.ok_or(fail(ApprDepReason::NoContourBefore))?;
+        let t = self.contour.tangent.ok_or(fail(ApprDepReason::NoContourBefore))?.unit();
         let plane = self.work_plane();
         let s = c.side;
         let left = plane.normal.cross(t);

@@ -223,7 +223,8 @@ impl Interp {
         let rate = self.rate(m.feed.as_ref())?;
         let here = self.programmed();
         let geometric = self.contour.geom_start.take().unwrap_or(here);
-        let Some(elem) = self.element(body, geometric, self.contour.pole, self.contour.tangent)? else {
+        let tangent = self.contour.tangent.map(Travel::unit);
+        let Some(elem) = self.element(body, geometric, self.contour.pole, tangent)? else {
             return Ok(());
         };
         if let Some(d) = m.direction {
@@ -387,7 +388,7 @@ impl Interp {
         self.go_along(at, kind, to, rate, length, path)?;
         self.pos_i = elem.end;
         if let Some(t) = elem.tangent(&plane, true) {
-            self.contour.tangent = Some(t);
+            self.contour.tangent = Some(Travel::Unit(t));
         }
         Ok(())
     }

@@ -226,8 +226,8 @@ impl Interp {
                 return Ok(());
             }
             p = elem.end;
-            if let Some(t) = elem.tangent(&self.work_plane(), true) {
-                self.contour.tangent = Some(t);
+            if let Some(t) = elem.line_travel(&self.work_plane()) {
+                self.contour.tangent = Some(Travel::Line(t));
             }
         }
         // Any other move ends the compensation.
@@ -249,15 +249,13 @@ impl Interp {
             let delta = self.rotary_delta(at.cx, rot, self.m126);
             let kind = if rate == Rate::Rapid { SegmentKind::Rapid } else { SegmentKind::Feed };
             let target = MachineAxes { linear: l, rotary: rot, letters: self.axes.letters };
-            let (ics_to_wcs, from) = (self.tf.ics_to_wcs(), self.programmed());
-            let kin = tcpm.then_some(self.kin);
-            self.go(at, kind, target, delta, rate, || match kin {
-                // The tip on the straight line between the programmed points (W-CS).
-                Some(kin) => SegmentPath::Tcpm(Box::new(TcpmPath {
-                    kin,
-                    from: ics_to_wcs.apply(from),
-                    to: ics_to_wcs.apply(p),
-                })),
+            // Under TCPM: the tip on the straight line between the programmed points (W-CS).
+            let tcpm_path = tcpm.then(|| {
+                let ics_to_wcs = self.tf.ics_to_wcs();
+                (self.kin, ics_to_wcs.apply(self.programmed()), ics_to_wcs.apply(p))
+            });
+            self.go(at, kind, target, delta, rate, || match tcpm_path {
+                Some((kin, from, to)) => SegmentPath::Tcpm(Box::new(TcpmPath { kin, from, to })),
                 None => SegmentPath::Linear,
             })?;
             if rot_prog {
