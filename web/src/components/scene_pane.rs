@@ -78,15 +78,15 @@ pub fn scene_at(machine: &Machine, state: &State, fraction: f64) -> SceneState {
     }
 }
 
-#[function_component(ScenePane)]
-pub fn scene_pane(props: &ScenePaneProps) -> Html {
-    // The run's toolpath, once per simulation, made in parts between frames (a run of
-    // 1,000,000 steps takes seconds) and shown when all in; a new simulation ends the old work.
-    let sim_ptr = props.sim.as_ref().map_or(0, |s| std::sync::Arc::as_ptr(&s.0) as usize);
+/// The run's toolpath, once per simulation, made in parts between frames (a run of
+/// 1,000,000 steps takes seconds) and shown when all in; a new simulation ends the old work.
+#[hook]
+fn use_run_path(sim: Option<SimRef>, doc: DocRef) -> UseStateHandle<(SharedPath, Rc<RunPath>)> {
+    let sim_ptr = sim.as_ref().map_or(0, |s| std::sync::Arc::as_ptr(&s.0) as usize);
     let path = use_state(|| (SharedPath::default(), Rc::new(RunPath::default())));
     let path_gen = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
     {
-        let (sim, doc, path) = (props.sim.clone(), props.doc.clone(), path.clone());
+        let path = path.clone();
         let generation = path_gen.borrow().clone();
         use_effect_with(sim_ptr, move |_| {
             let gen_now = generation.get() + 1;
@@ -126,15 +126,23 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             });
         });
     }
+    path
+}
+
+/// Where in the shown block's motion the view stands, 0…1: with `animate`, run from 0 to 1 in
+/// the motion's time at `speed`; else its end. Each new block ends the previous animation loop;
+/// so does a scrub, which moves the generation (the second value) on.
+#[hook]
+fn use_motion(state: Option<StateRef>, animate: bool, speed: f64) -> (UseStateHandle<f64>, Rc<Cell<u64>>) {
     let fraction = use_state(|| 1.0_f64);
-    // Each new block (or a scrub) ends the previous animation loop.
     let generation = use_mut_ref(|| Rc::new(Cell::new(0_u64)));
+    let handle = generation.borrow().clone();
     {
         let fraction = fraction.clone();
-        let generation = generation.borrow().clone();
-        let deps = (props.state.as_ref().map(|s| (s.step, Rc::as_ptr(&s.0) as usize)), props.animate);
-        let duration = props.state.as_ref().map_or(0.0, |s| s.duration());
-        let speed = props.speed.max(0.01);
+        let generation = handle.clone();
+        let deps = (state.as_ref().map(|s| (s.step, Rc::as_ptr(&s.0) as usize)), animate);
+        let duration = state.as_ref().map_or(0.0, |s| s.duration());
+        let speed = speed.max(0.01);
         use_effect_with(deps, move |(_, animate)| {
             let gen_now = generation.get() + 1;
             generation.set(gen_now);
@@ -157,6 +165,13 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
             });
         });
     }
+    (fraction, handle)
+}
+
+#[function_component(ScenePane)]
+pub fn scene_pane(props: &ScenePaneProps) -> Html {
+    let path = use_run_path(props.sim.clone(), props.doc.clone());
+    let (fraction, generation) = use_motion(props.state.clone(), props.animate, props.speed);
     {
         let on_fraction = props.on_fraction.clone();
         use_effect_with(*fraction, move |f| on_fraction.emit(*f));
@@ -183,7 +198,6 @@ pub fn scene_pane(props: &ScenePaneProps) -> Html {
     let l = props.lang;
     let scrub = {
         let fraction = fraction.clone();
-        let generation = generation.borrow().clone();
         Callback::from(move |e: InputEvent| {
             if let Some(input) = e.target_dyn_into::<web_sys::HtmlInputElement>() {
                 generation.set(generation.get() + 1);
