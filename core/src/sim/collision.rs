@@ -385,9 +385,10 @@ impl Bodies {
         // goes from translation to translation: most motions place no body at all.
         let d = seg.end.linear - seg.start.linear;
         let mut start_boxes: Option<Vec<(DVec3, DVec3)>> = None;
-        // The head side's boxes together, swept along the translation: a table-side body apart
-        // from it is apart from each of them by at least as much (a test per table-side body
-        // instead of one per pair; inside a blank most pairs are near enough to be tested).
+        // The head side's boxes together, swept along the translation (made once per motion):
+        // a table-side body apart from it is apart from each of them by at least as much, so a
+        // pair passes on that one comparison before its own sweep is made (inside a blank most
+        // pairs are near enough to be tested, and most pass this way).
         let mut head_sweep: Option<(DVec3, DVec3)> = None;
         for (k, &(a, b)) in self.pairs.iter().enumerate() {
             let rate = rate_of(a) + rate_of(b);
