@@ -196,7 +196,7 @@ impl Elem {
     }
 
     /// A straight element's travel in the plane, unnormalised, where [`Elem::tangent`] has a
-    /// direction (its length over [`LENGTH_EPS`]); `None` for an arc. The same direction
+    /// direction (its length over `LENGTH_EPS`); `None` for an arc. The same direction
     /// without its square root and division: a straight line ends almost every block, and its
     /// direction is asked for by few.
     #[must_use]
