@@ -348,6 +348,11 @@ impl Renderer {
             }
             gl.uniform4f(gpu.lit_u.inside.as_ref(), CUT[0], CUT[1], CUT[2], 1.0);
             gl.uniform4f(gpu.lit_u.colour.as_ref(), BLANK[0], BLANK[1], BLANK[2], 1.0);
+            // A hundredth of a millimetre or so towards the eye: the tool tip's path lies in the
+            // face it cut, and drawn after it the line showed in dashes where the two depths
+            // happened to round apart; now the face hides it (the path above the part stays).
+            gl.enable(Gl::POLYGON_OFFSET_FILL);
+            gl.polygon_offset(-1.0, -32.0);
             for t in &gpu.stock {
                 t.tris.draw(0, t.raw);
             }
@@ -355,6 +360,7 @@ impl Renderer {
             for t in &gpu.stock {
                 t.tris.draw(t.raw, t.all - t.raw);
             }
+            gl.disable(Gl::POLYGON_OFFSET_FILL);
             gl.uniform4f(gpu.lit_u.clip.as_ref(), 0.0, 0.0, 0.0, 0.0);
             gl.uniform4f(gpu.lit_u.inside.as_ref(), 0.0, 0.0, 0.0, 0.0);
         }
