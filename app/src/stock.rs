@@ -22,6 +22,12 @@ use crate::run::SimRef;
 /// 8 ms frame (`scripts/bench.sh`).
 pub const FRAME_RAYS: usize = 4_000;
 
+/// Cut tiles of the stock's mesh made again in one frame at most ([`TiledMesh::update_within`]):
+/// about 3.5 ms natively. A frame's own cut changes a few; when frames are slow, several of
+/// the first pass's lent shares land between two of them and changed up to about 80 tiles
+/// (11 ms natively), meshed in one frame. The rest follow in the next frames.
+pub const FRAME_TILES: usize = 24;
+
 /// The first pass's share of one [`crate::state::Action::PassStock`] (it cuts the whole run
 /// once for the notes): about 10 ms in a release wasm build, a paint between two of them.
 pub const PASS_RAYS: usize = 3 * FRAME_RAYS;
@@ -189,8 +195,9 @@ impl StockRef {
     }
 
     /// The stock's mesh (W-CS, in tiles) on its way to the stock after `fraction` (0…1) of step
-    /// `step`'s motion, cutting about `budget` rays at most ([`FRAME_RAYS`] per frame,
-    /// `usize::MAX` to get there at once); the same `Rc` as long as nothing changed. Also says
+    /// `step`'s motion, cutting about `budget` rays at most ([`FRAME_RAYS`] per frame, then
+    /// meshing at most [`FRAME_TILES`] cut tiles; `usize::MAX` to get there at once); the same
+    /// `Rc` as long as nothing changed. Also says
     /// whether the mesh shows that stock (`false`: call again next frame). `None` before a
     /// `BLK FORM`.
     pub fn mesh_toward(&self, step: usize, fraction: f64, budget: usize) -> (Option<Rc<TiledMesh>>, bool) {
@@ -204,10 +211,12 @@ impl StockRef {
             at.mesh = None;
             return (None, done);
         };
-        if at.tiles.update(stock) > 0 || at.mesh.is_none() {
+        let limit = if budget == usize::MAX { usize::MAX } else { FRAME_TILES };
+        let (made, meshed) = at.tiles.update_within(stock, limit);
+        if made > 0 || at.mesh.is_none() {
             at.mesh = Some(Rc::new(at.tiles.clone()));
         }
-        (at.mesh.clone(), done)
+        (at.mesh.clone(), done && meshed)
     }
 
     /// The figures of the stock the view shows now (`None` before a `BLK FORM`), worked out
@@ -321,6 +330,50 @@ mod tests {
         while !stock.pass_on(PASS_RAYS) {
             shares += 1;
             assert!(shares < 100_000, "the pass never ends");
+        }
+    }
+
+    /// Slow frames: several of the first pass's lent shares land between two frames and change
+    /// more tiles than one frame meshes. Each frame meshes at most [`FRAME_TILES`] cut tiles,
+    /// the view says it is not there yet while tiles are stale, and it ends with the mesh the
+    /// stock has at once.
+    #[test]
+    fn a_frame_meshes_at_most_its_share_of_tiles() {
+        let (doc, sim) = musterprogramm1();
+        let last = sim.0.len() - 1;
+        let stock = StockRef::of(&sim, &doc);
+        let (mut shown, _) = stock.mesh_toward(last, 1.0, FRAME_RAYS);
+        let (mut frames, mut most) = (0, 0);
+        loop {
+            for _ in 0..8 {
+                stock.pass_on(PASS_RAYS);
+            }
+            let (mesh, done) = stock.mesh_toward(last, 1.0, FRAME_RAYS);
+            let (before, after) = (shown.as_deref(), mesh.as_deref().expect("a blank"));
+            let remade = after
+                .tiles()
+                .iter()
+                .enumerate()
+                .filter(|(k, t)| {
+                    before.and_then(|b| b.tiles().get(*k)).is_none_or(|b| !Rc::ptr_eq(&b.1, &t.1))
+                })
+                .filter(|(_, t)| t.1.flags.iter().any(|f| f & 0b1000 != 0))
+                .count();
+            assert!(remade <= FRAME_TILES, "{remade} cut tiles meshed in one frame");
+            most = most.max(remade);
+            shown = mesh;
+            frames += 1;
+            assert!(frames < 10_000, "the view never gets there");
+            if done {
+                break;
+            }
+        }
+        assert_eq!(most, FRAME_TILES, "some frame had more tiles to mesh than its share");
+        let at_once = mesh_at(&StockRef::of(&sim, &doc), last, 1.0).expect("a blank");
+        let shown = shown.expect("a blank");
+        assert_eq!(shown.tiles().len(), at_once.tiles().len());
+        for (a, b) in shown.tiles().iter().zip(at_once.tiles()) {
+            assert_eq!(*a.1, *b.1, "the same mesh in the end");
         }
     }
 

@@ -352,7 +352,14 @@ pub struct TiledMesh {
 impl TiledMesh {
     /// Brings every tile up to `stock`; returns how many tiles were meshed again.
     pub fn update(&mut self, stock: &Stock) -> usize {
-        let mut made = 0;
+        self.update_within(stock, usize::MAX).0
+    }
+
+    /// Brings the tiles up to `stock` in their order, meshing at most `limit` cut tiles again
+    /// (an uncut tile is two squares and not counted); returns how many tiles were meshed and
+    /// whether every tile is up to date (else the next call goes on where this one stopped).
+    pub fn update_within(&mut self, stock: &Stock, limit: usize) -> (usize, bool) {
+        let (mut made, mut cut) = (0, 0);
         let mut scratch = Scratch::default();
         let count = stock.tiles().count();
         self.tiles.truncate(count);
@@ -368,6 +375,10 @@ impl TiledMesh {
             if stock.is_pristine(k) {
                 mesh.add_blank_tile(stock, d, ti, tj);
             } else {
+                if cut == limit {
+                    return (made, false);
+                }
+                cut += 1;
                 mesh.add_tile(stock, d, ti, tj, &mut scratch);
             }
             let entry = (stamp, Rc::new(mesh));
@@ -377,7 +388,7 @@ impl TiledMesh {
             }
             made += 1;
         }
-        made
+        (made, true)
     }
 
     /// `(stamp, mesh)` per tile: a tile with an unchanged stamp has the same mesh.
