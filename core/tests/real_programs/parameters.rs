@@ -78,6 +78,26 @@ fn sysread_gives_the_positions_the_simulator_knows() {
     assert_eq!((s.q[&5], s.q[&6]), (2000.0, 0.0));
 }
 
+/// The values programmed in TOOL CALL (group 60: NR1 T, NR2 the tool axis as 0 = X, 1 = Y,
+/// 2 = Z, NR3 S) and the active compensation (group 200: NR1 the radius, NR2 the length, the
+/// oversizes included), as the technical manuals' data-transfer tables list them: tool 7 of
+/// L+80 R+6 called with DL+0.5 DR-0.2 about Y at S3000.
+#[test]
+fn sysread_gives_the_tool_call_and_the_active_compensation() {
+    let (p, sim) = run("0 BEGIN PGM S MM\n\
+         1 TOOL DEF 7 L+80 R+6\n\
+         2 TOOL CALL 7 Y S3000 DL+0.5 DR-0.2\n\
+         3 FN 18: SYSREAD Q1 = ID60 NR1\n\
+         4 FN 18: SYSREAD Q2 = ID60 NR2\n\
+         5 FN 18: SYSREAD Q3 = ID60 NR3\n\
+         6 FN 18: SYSREAD Q4 = ID200 NR1\n\
+         7 FN 18: SYSREAD Q5 = ID200 NR2\n\
+         8 END PGM S MM\n");
+    let s = after(&p, &sim, 7);
+    assert_eq!((s.q[&1], s.q[&2], s.q[&3]), (7.0, 1.0, 3000.0));
+    assert!((s.q[&4] - 5.8).abs() < 1e-12 && (s.q[&5] - 80.5).abs() < 1e-12, "{} {}", s.q[&4], s.q[&5]);
+}
+
 /// `FN 18: SYSREAD … ID50` reads the tool table (iTNC 530 technical manual, "FN18: SYSREAD",
 /// group 50: NR1 L, NR2 R, NR4 DL, IDX the tool number): of a tool the program defines, of the
 /// active tool without IDX, and of a tool nobody defined the stated default tool, said.

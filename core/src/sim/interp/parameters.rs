@@ -119,7 +119,11 @@ impl Interp {
     /// ID240 NR1 IDX1…9 nominal position of axis X, Y, Z, A, B, C, U, V, W in the REF system
     /// (the machine axes); ID270 NR1 IDX1…9 position in the active coordinate system (the
     /// I-CS for X, Y, Z); ID50 NR1…5 IDX tool number: L, R, R2, DL, DR of the tool as a TOOL CALL
-    /// would load it (the tool table's group 50, same page), of the active tool without IDX.
+    /// would load it (the tool table's group 50, same page), of the active tool without IDX;
+    /// ID60 NR1…3 tool number, tool axis and spindle speed of the TOOL CALL; ID200 NR1 the
+    /// active radius and NR2 the active length, oversizes included (the values the TOOL CALL
+    /// gave Q108 and Q114) (iTNC 530 HSCI and TNC 426/430 technical manuals, data transfer NC →
+    /// PLC: "Values programmed in TOOL CALL", "Tool compensation").
     /// Anything else is said on the block and leaves the parameter as it was.
     #[inline(never)]
     pub(super) fn sysread(&mut self, at: &mut At<'_, '_>, r: &SysRead) -> R<()> {
@@ -140,13 +144,15 @@ impl Interp {
         let mut assumed = None;
         let v = match (r.id, nr, idx) {
             (10, 1.0, _) => self.q.get(&113).copied(),
-            (20, 1.0, _) => Some(f64::from(self.tool.number)),
-            (20, 3.0, _) => Some(match self.tool.axis {
+            (20 | 60, 1.0, _) => Some(f64::from(self.tool.number)),
+            (20, 3.0, _) | (60, 2.0, _) => Some(match self.tool.axis {
                 'X' => 0.0,
                 'Y' => 1.0,
                 _ => 2.0,
             }),
-            (20, 4.0, _) => Some(self.spindle.speed),
+            (20, 4.0, _) | (60, 3.0, _) => Some(self.spindle.speed),
+            (200, 1.0, _) => self.q.get(&108).copied(),
+            (200, 2.0, _) => self.q.get(&114).copied(),
             (240, 1.0, Some(i)) => axis(i, self.axes.linear),
             (270, 1.0, Some(i)) => axis(i, self.programmed()),
             (50, 1.0..=5.0, _) if nr.fract() == 0.0 => {
