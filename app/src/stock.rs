@@ -197,9 +197,8 @@ impl StockRef {
     /// The stock's mesh (W-CS, in tiles) on its way to the stock after `fraction` (0…1) of step
     /// `step`'s motion, cutting about `budget` rays at most ([`FRAME_RAYS`] per frame, then
     /// meshing at most [`FRAME_TILES`] cut tiles; `usize::MAX` to get there at once); the same
-    /// `Rc` as long as nothing changed. Also says
-    /// whether the mesh shows that stock (`false`: call again next frame). `None` before a
-    /// `BLK FORM`.
+    /// `Rc` as long as nothing changed. Also says whether the mesh shows that stock (`false`:
+    /// call again next frame). `None` before a `BLK FORM`.
     pub fn mesh_toward(&self, step: usize, fraction: f64, budget: usize) -> (Option<Rc<TiledMesh>>, bool) {
         // The steps up to the shown one planned first: all at once without a budget, else a
         // share per frame.
