@@ -3,19 +3,23 @@
 //! carries on with the next line.
 //!
 //! Line-oriented on purpose (DOMAIN.md §8: one block per line, a cycle definition owns its `~`
-//! continuation lines): the driver splits lines and block headers by hand, the block families
-//! below read their keyword ladders with the word readers of `words.rs`, nom parsers with the
-//! parser's own error (`words::Step`, `words::NcError`: where, and the words expected
-//! there). No backtracking across lines, so time is linear in the input.
+//! continuation lines): the driver splits lines and block headers by hand and recovers at the
+//! next line, so time is linear in the input. Each block family is a nom 8 parser over the
+//! block's text (`plane.rs`, `motion.rs`, …): `alt` of its kinds and words, `cut` once a
+//! keyword has begun a word, with the parser's own error (`words::NcError`: where, the words
+//! expected there, or a diagnostic of its own such as a missing or doubled word). A family's
+//! recoverable stop (`Err::Error`) means "not one of my blocks" and the block is kept as an
+//! unknown one; a hard stop (`Err::Failure`) is the block's error. Findings that do not stop a
+//! block (a value out of range, a warning) go to the shared [`Cx`] while the parser runs.
 //!
-//! nom's `Err::Error` means "the word is not there, try another", `Err::Failure` (nom's `cut`,
-//! `words::hard`) "it began but is malformed". Every nom parser runs through `words::run`:
-//! complete mode, and the rest given back as the suffix of the input (nom 8.0 hands back an
-//! empty rest at the wrong address; diagnostics are placed by address). `Cx::fail` is the one
-//! conversion of a stop into the block's [`Diagnostic`] (the word labelled, what was expected
-//! as help). Spellings the control's editor never writes (a decimal comma, a blank after an
-//! address letter: `lenient.rs`) are rewritten in place with the same length before the block
-//! is read. The checks across blocks (BEGIN/END PGM names, block numbers, each lenient
+//! nom 8.0 hands back an all-matching `space0`'s or `digit0`'s empty rest at the wrong address
+//! (the start of the input), and diagnostics are placed by address: blanks are skipped with
+//! `words::blanks`/`words::lex`, never with `space0` inside a combinator, and `words::run`
+//! gives a word reader's rest as the suffix of its input. `Cx::fail` is the one conversion of a
+//! stop into the block's [`Diagnostic`] (the word labelled, what was expected as help, or the
+//! stop's own diagnostic). Spellings the control's editor never writes (a decimal comma, a
+//! blank after an address letter: `lenient.rs`) are rewritten in place with the same length
+//! before the block is read. The checks across blocks (BEGIN/END PGM names, block numbers, each lenient
 //! spelling: a warning once per file) are [`AcrossBlocks`], made block by block here and again
 //! by an edit's splice. The common straight line is read in one pass over its bytes by
 //! `fast.rs` before the general parser is asked, into a compact [`Block`] (40 bytes, numbers
@@ -38,6 +42,7 @@ mod transforms;
 mod words;
 
 use std::borrow::Cow;
+use std::cell::RefCell;
 
 use crate::ast::{AxisWord, AxisWords, Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
@@ -46,7 +51,7 @@ use crate::plane::Value;
 pub use across::AcrossBlocks;
 pub(crate) use labels_q::tabread_targets;
 pub use lenient::Lenient;
-pub(crate) use words::Stop;
+pub(crate) use words::{Step, Stop};
 
 /// A finding inside one block, with offsets relative to the block text being read.
 #[derive(Debug)]
@@ -58,19 +63,27 @@ pub(crate) struct Issue {
     expected: Option<Expected>,
 }
 
-/// Per-block context handed to the family parsers: collects issues and lends scratch buffers
-/// so that collecting axis words does not allocate per word.
+/// Per-block context handed to the family parsers: collects the findings that do not stop a
+/// block (a value out of range, a warning) while its grammar runs, and lends scratch buffers so
+/// that collecting axis words does not allocate per word. Shared (`&Cx`) by the nom parsers of
+/// one block, so its parts are cells.
 pub(crate) struct Cx {
     base: usize,
     len: usize,
-    issues: Vec<Issue>,
-    pub(crate) axes: Vec<AxisWord>,
-    pub(crate) m: Vec<u32>,
+    issues: RefCell<Vec<Issue>>,
+    axes: RefCell<Vec<AxisWord>>,
+    m: RefCell<Vec<u32>>,
 }
 
 impl Cx {
     fn new() -> Self {
-        Cx { base: 0, len: 0, issues: Vec::new(), axes: Vec::with_capacity(9), m: Vec::with_capacity(4) }
+        Cx {
+            base: 0,
+            len: 0,
+            issues: RefCell::new(Vec::new()),
+            axes: RefCell::new(Vec::with_capacity(9)),
+            m: RefCell::new(Vec::with_capacity(4)),
+        }
     }
 
     /// Offset of `s` (a sub-slice of the block text) from the start of the block text.
@@ -78,57 +91,93 @@ impl Cx {
         (s.as_ptr() as usize).saturating_sub(self.base).min(self.len)
     }
 
-    pub(crate) fn push(&mut self, at: &str, len: usize, severity: Severity, code: DiagCode) {
-        let start = self.off(at);
-        self.issues.push(Issue { start, end: (start + len).min(self.len), severity, code, expected: None });
+    fn record(
+        &self,
+        start: usize,
+        len: usize,
+        severity: Severity,
+        code: DiagCode,
+        expected: Option<Expected>,
+    ) {
+        let end = (start + len).min(self.len);
+        self.issues.borrow_mut().push(Issue { start, end, severity, code, expected });
     }
 
-    pub(crate) fn error(&mut self, at: &str, len: usize, code: DiagCode) {
-        self.push(at, len, Severity::Error, code);
+    pub(crate) fn error(&self, at: &str, len: usize, code: DiagCode) {
+        self.record(self.off(at), len, Severity::Error, code, None);
     }
 
-    pub(crate) fn warn(&mut self, at: &str, len: usize, code: DiagCode) {
-        self.push(at, len, Severity::Warning, code);
+    pub(crate) fn warn(&self, at: &str, len: usize, code: DiagCode) {
+        self.record(self.off(at), len, Severity::Warning, code, None);
     }
 
-    /// Records a syntax error at `at` and returns `None` so a family parser can `return cx.fail(..)`.
-    pub(crate) fn invalid<T>(&mut self, at: &str, expected: Option<Expected>) -> Option<T> {
-        let start = self.off(at);
-        let word = at.find([' ', '\t']).unwrap_or(at.len()).max(1);
-        self.issues.push(Issue {
-            start,
-            end: (start + word).min(self.len),
-            severity: Severity::Error,
-            code: DiagCode::InvalidInput,
-            expected,
-        });
+    /// Records a syntax error on the word at `at` and returns `None`.
+    pub(crate) fn invalid<T>(&self, at: &str, expected: Option<Expected>) -> Option<T> {
+        let word = words::word_len(at).max(1);
+        self.record(self.off(at), word, Severity::Error, DiagCode::InvalidInput, expected);
         None
     }
 
-    /// The one conversion of a word reader's stop into the block's diagnostic: the word at
-    /// the stop is labelled, what was expected there becomes the help.
-    pub(crate) fn fail<T>(&mut self, stop: Stop<'_>) -> Option<T> {
+    /// The one conversion of a stop into the block's diagnostic: a coded stop says its own
+    /// (a missing word, a duplicate), any other labels the word at the stop with what was
+    /// expected there as the help.
+    pub(crate) fn fail<T>(&self, stop: Stop<'_>) -> Option<T> {
         let e = words::stopped_at(stop);
-        self.invalid(e.at, e.what)
+        match e.code() {
+            Some(code) => {
+                self.record(self.off(e.at), e.at.len(), Severity::Error, code, None);
+                None
+            }
+            None => self.invalid(e.at, e.expected()),
+        }
+    }
+
+    /// Adds an axis word to the block's collection; a hard stop if its axis is there already
+    /// (`at`: the word, `rest`: after it).
+    pub(crate) fn push_axis<'a>(&self, at: &'a str, rest: &'a str, word: AxisWord) -> Step<'a, ()> {
+        let mut axes = self.axes.borrow_mut();
+        if axes.iter().any(|a| a.axis == word.axis) {
+            return words::duplicate(at, at.len() - rest.len(), words::Named::Given(word.axis.as_str()));
+        }
+        axes.push(word);
+        Ok((rest, ()))
+    }
+
+    /// How many axis words are collected.
+    pub(crate) fn axis_count(&self) -> usize {
+        self.axes.borrow().len()
+    }
+
+    pub(crate) fn push_m(&self, m: u32) {
+        self.m.borrow_mut().push(m);
+    }
+
+    /// Empties the scratch buffers at the start of a block family that uses them.
+    pub(crate) fn clear_words(&self) {
+        self.axes.borrow_mut().clear();
+        self.m.borrow_mut().clear();
     }
 
     /// Takes the collected axis words as an exactly sized slice.
-    pub(crate) fn take_axes(&mut self) -> Box<[AxisWord]> {
-        let b = Box::from(&self.axes[..]);
-        self.axes.clear();
+    pub(crate) fn take_axes(&self) -> Box<[AxisWord]> {
+        let mut axes = self.axes.borrow_mut();
+        let b = Box::from(&axes[..]);
+        axes.clear();
         b
     }
 
     /// Takes the collected axis words of a straight line.
-    pub(crate) fn take_line_axes(&mut self) -> AxisWords {
-        let words = AxisWords::from(&self.axes[..]);
-        self.axes.clear();
+    pub(crate) fn take_line_axes(&self) -> AxisWords {
+        let mut axes = self.axes.borrow_mut();
+        let words = AxisWords::from(&axes[..]);
+        axes.clear();
         words
     }
 
-    pub(crate) fn take_m(&mut self) -> Box<[u32]> {
-        let b = Box::from(&self.m[..]);
-        self.m.clear();
+    pub(crate) fn take_m(&self) -> Box<[u32]> {
+        let mut m = self.m.borrow_mut();
+        let b = Box::from(&m[..]);
+        m.clear();
         b
     }
 }
@@ -488,12 +537,15 @@ impl Parser<'_> {
         self.cx.base = text.as_ptr() as usize;
         // A cycle's parameter lines follow its header in the source: offsets reach up to there.
         self.cx.len = if is_cycle { last.end - body_start } else { text.len() };
-        self.cx.issues.clear();
+        self.cx.issues.get_mut().clear();
         let body = if is_cycle {
             let params: Vec<&str> = self.block_lines[1..].iter().map(|l| &src[l.start..l.end]).collect();
-            cycles::cycle_def(&mut self.cx, &text, &params, probe)
+            match cycles::cycle_def(&self.cx, &text, &params, probe) {
+                Ok((_, block)) => Some(block),
+                Err(stop) => self.cx.fail(stop),
+            }
         } else {
-            parse_body(&mut self.cx, &text)
+            parse_body(&self.cx, &text)
         };
         let body = match body {
             Some(body) if !matches!(body, BlockBody::Unknown { .. }) => body,
@@ -518,7 +570,7 @@ impl Parser<'_> {
             self.diag_at(Severity::Warning, code, at, at + 1, None);
         }
         // Map issue offsets back to the source.
-        let issues = std::mem::take(&mut self.cx.issues);
+        let issues = std::mem::take(self.cx.issues.get_mut());
         for issue in &issues {
             let to_src = |off: usize| -> usize {
                 match segments.iter().rev().find(|(j, _)| *j <= off) {
@@ -529,8 +581,8 @@ impl Parser<'_> {
             let (start, end) = (to_src(issue.start), to_src(issue.end));
             self.diag_at(issue.severity, issue.code.clone(), start, end.max(start), issue.expected);
         }
-        self.cx.issues = issues;
-        self.cx.issues.clear();
+        *self.cx.issues.get_mut() = issues;
+        self.cx.issues.get_mut().clear();
         Block::new(number, skip, body, comment, span, line, column)
     }
 }
@@ -552,8 +604,10 @@ fn is_old_cycle(after: &str) -> bool {
     rest.as_bytes().get(digits) == Some(&b'.')
 }
 
-/// Dispatches on the first word to the block family.
-fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+/// Dispatches on the first word to the block family. A family's recoverable stop says the
+/// block is not one of its kinds (`TRANS SCALE`, `FUNCTION PROG PATH`): kept as an unknown
+/// block; a hard stop is the block's error.
+fn parse_body(cx: &Cx, body: &str) -> Option<BlockBody> {
     if body.is_empty() {
         return Some(BlockBody::Empty);
     }
@@ -567,38 +621,47 @@ fn parse_body(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         return cx.invalid(body, None);
     };
     let digit_follows = rest.as_bytes().first().is_some_and(u8::is_ascii_digit);
-    match kw {
+    let read = match kw {
         "BEGIN" | "END" => frame::pgm(cx, body),
         "BLK" => tool::blk_form(cx, body),
-        "TOOL" if words::keyword(words::sp(rest), "CALL").is_some() => tool::tool_call(cx, body),
-        "TOOL" if words::def_keyword(words::sp(rest)).is_some() => tool::tool_def(cx, body),
-        "STOP" if !digit_follows => motion::stop(cx, rest),
-        "QS" if digit_follows => labels_q::qs_assign(cx, body),
+        "TOOL" if words::keyword(words::sp(rest), "CALL").is_some() => tool::tool_call(body),
+        "TOOL" if words::def_keyword(words::sp(rest)).is_some() => tool::tool_def(body),
+        "STOP" if !digit_follows => motion::stop(cx, body),
+        "QS" if digit_follows => labels_q::qs_assign(body),
         "L" | "CC" | "C" | "CR" | "CT" | "LP" | "CP" | "RND" | "CHF" if !digit_follows => {
-            motion::path(cx, kw, rest)
+            motion::path(cx, body)
         }
         "M" if digit_follows => motion::m_only(cx, body),
         // A CAM post for another control leaves out the `L`; said once per file (`lenient`).
         _ if crate::unconfirmed::IMPORT_LENIENT_SPELLINGS && lenient::lacks_l(body.as_bytes()) => {
             motion::line_without_l(cx, body)
         }
-        "APPR" => approach::appr_dep(cx, true, rest),
-        "DEP" => approach::appr_dep(cx, false, rest),
-        "PATTERN" => pattern::pattern_def(cx, body),
+        "APPR" | "DEP" => approach::appr_dep(cx, body),
+        "PATTERN" => pattern::pattern_def(body),
         "CYCL" => cycles::cycle_other(cx, body),
-        "PLANE" => plane::plane(cx, rest),
+        "PLANE" => plane::plane(cx, body),
         "TRANS" => transforms::trans(cx, body),
-        "FUNCTION" => function::function(cx, body),
-        "LBL" | "CALL" => labels_q::label_or_call(cx, body),
-        "FN" => labels_q::fn_block(cx, body),
-        "Q" if digit_follows => labels_q::assign(cx, body, false),
-        "QL" | "QR" if digit_follows => labels_q::assign(cx, body, false),
-        _ => unknown(cx, body),
+        "FUNCTION" => function::function(body),
+        "LBL" | "CALL" => labels_q::label_or_call(body),
+        "FN" => labels_q::fn_block(body),
+        "Q" | "QL" | "QR" if digit_follows => labels_q::assign(body),
+        _ => return unknown(cx, body),
+    };
+    read_family(cx, body, read)
+}
+
+/// What a family's read gives the block: its node, an unknown block (a recoverable stop: not
+/// one of its kinds) or nothing with the stop's diagnostic.
+fn read_family(cx: &Cx, body: &str, read: Step<'_, BlockBody>) -> Option<BlockBody> {
+    match read {
+        Ok((_, block)) => Some(block),
+        Err(nom::Err::Error(_)) => unknown(cx, body),
+        Err(stop) => cx.fail(stop),
     }
 }
 
 /// A block of a kind we do not model: kept with a warning if it looks like NC text.
-pub(crate) fn unknown(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+pub(crate) fn unknown(cx: &Cx, body: &str) -> Option<BlockBody> {
     let first_word = body.split([' ', '\t']).next().unwrap_or("");
     let well_formed = first_word.bytes().all(|b| b.is_ascii_uppercase() || b.is_ascii_digit())
         && first_word.as_bytes().first().is_some_and(u8::is_ascii_uppercase)

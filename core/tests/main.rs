@@ -15,6 +15,7 @@ mod lenient;
 mod machine_def;
 mod notes;
 mod oracles;
+mod parse_stops;
 mod plane_oracles;
 mod properties;
 mod proptest_parse;

@@ -6,11 +6,20 @@
 //! Which words each kind takes, and which it needs, is checked here; what they do is the
 //! simulator's.
 
+use nom::Parser;
+use nom::branch::alt;
+use nom::bytes::complete::tag;
+use nom::combinator::{cut, map};
+use nom::sequence::preceded;
+
 use super::Cx;
-use super::motion::{feed_or_comp, once};
-use super::words::{at_boundary, axis_word, keyword, m_function, sp, word_value};
-use crate::ast::{ApprDep, ApprKind, BlockBody, RadiusComp};
-use crate::diag::{DiagCode, Expected};
+use super::motion::{comp, once};
+use super::words::{
+    Step, axis_word, boundary, expected, feed, hard, keyword, letters, lex, m_function, missing, not_allowed,
+    or_expected, soft, sp, word_value,
+};
+use crate::ast::{ApprDep, ApprKind, AxisWord, BlockBody, RadiusComp};
+use crate::diag::Expected;
 use crate::plane::{Feed, Value};
 
 /// A word and where it stood.
@@ -26,83 +35,74 @@ struct Words<'a> {
     first_axis: Option<&'a str>,
 }
 
-/// `APPR …` (`approach`) or `DEP …`; `rest` follows the keyword.
+/// One word of an approach or departure.
+#[derive(Clone, Copy)]
+enum ApprWord {
+    M(u32),
+    Axis(AxisWord),
+    Feed(Feed),
+    Comp(RadiusComp),
+    Len(Value),
+    Cca(Value),
+    Radius(Value),
+}
+
+fn appr_word(i: &str) -> Step<'_, ApprWord> {
+    // An `M` that is not a whole M function is not one: the other words are tried.
+    let m = map(|i| m_function(i).map_err(soft), ApprWord::M);
+    alt((
+        m,
+        map(axis_word, ApprWord::Axis),
+        map(feed, ApprWord::Feed),
+        map(comp, ApprWord::Comp),
+        map(preceded(tag("LEN"), cut(lex(word_value))), ApprWord::Len),
+        map(preceded(tag("CCA"), cut(lex(word_value))), ApprWord::Cca),
+        map(preceded(tag("R"), cut(word_value)), ApprWord::Radius),
+    ))
+    .parse(i)
+}
+
+/// `APPR …` (`approach`) or `DEP …`: the whole block `body`.
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn appr_dep(cx: &mut Cx, approach: bool, rest: &str) -> Option<BlockBody> {
-    cx.axes.clear();
-    cx.m.clear();
-    if !at_boundary(rest) {
-        return cx.invalid(rest, Some(Expected::Blank));
-    }
-    let i = sp(rest);
-    let Some((mut i, kind)) = [ApprKind::Lct, ApprKind::Lt, ApprKind::Ln, ApprKind::Ct]
-        .into_iter()
-        .find_map(|k| keyword(i, k.as_str()).map(|r| (sp(r), k)))
-    else {
-        return cx.invalid(i, Some(Expected::Nc("LT|LN|CT|LCT")));
+pub(super) fn appr_dep<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    let (rest, head) = letters(body)?;
+    let approach = head == "APPR";
+    cx.clear_words();
+    let (rest, ()) = cut(boundary).parse(rest)?;
+    let kind = |i| {
+        [ApprKind::Lct, ApprKind::Lt, ApprKind::Ln, ApprKind::Ct]
+            .into_iter()
+            .find_map(|k| keyword(i, k.as_str()).map(|r| (r, k)))
+            .map_or_else(|| expected(i, Expected::Nc("LT|LN|CT|LCT")), Ok)
     };
+    let (i, kind) = cut(lex(kind)).parse(rest)?;
+    let mut i = sp(i);
     let mut w = Words::default();
     while !i.is_empty() {
         let at = i;
-        if let Ok((r, m)) = m_function(i) {
-            cx.m.push(m);
-            i = sp(r);
-            continue;
-        }
-        match axis_word(i) {
-            Ok((r, word)) => {
-                if cx.axes.iter().any(|a| a.axis == word.axis) {
-                    cx.error(
-                        at,
-                        at.len() - r.len(),
-                        DiagCode::Duplicate { word: word.axis.as_str().to_owned() },
-                    );
-                    return None;
-                }
+        let (r, word) =
+            or_expected(appr_word, Expected::Nc("X|Y|Z|LEN|CCA|R|RL|RR|F|M")).parse(i).map_err(hard)?;
+        match word {
+            ApprWord::M(m) => cx.push_m(m),
+            ApprWord::Axis(word) => {
+                cx.push_axis(at, r, word)?;
                 w.first_axis.get_or_insert(at);
-                cx.axes.push(word);
-                i = sp(r);
-                continue;
             }
-            Err(nom::Err::Error(_)) => {}
-            Err(e) => return cx.fail(e),
-        }
-        let valued = |key: &str| -> Option<&str> { i.strip_prefix(key).map(sp) };
-        let (r, ok) = if let Some(read) = feed_or_comp(cx, i, &mut w.feed, &mut w.comp) {
-            match read {
-                Ok(read) => read,
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(v) = valued("LEN") {
-            match word_value(v) {
-                Ok((r, v)) => (r, once(cx, &mut w.len, v, at, 3)),
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(v) = valued("CCA") {
-            match word_value(v) {
-                Ok((r, v)) => (r, once(cx, &mut w.cca, v, at, 3)),
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(v) = i.strip_prefix('R') {
-            match word_value(v) {
-                Ok((r, v)) => (r, once(cx, &mut w.radius, v, at, 1)),
-                Err(e) => return cx.fail(e),
-            }
-        } else {
-            return cx.invalid(at, Some(Expected::Nc("X|Y|Z|LEN|CCA|R|RL|RR|F|M")));
-        };
-        if !ok {
-            return None;
+            ApprWord::Feed(f) => once(&mut w.feed, f, at, at.len() - r.len())?,
+            ApprWord::Comp(c) => once(&mut w.comp, c, at, 2)?,
+            ApprWord::Len(v) => once(&mut w.len, v, at, 3)?,
+            ApprWord::Cca(v) => once(&mut w.cca, v, at, 3)?,
+            ApprWord::Radius(v) => once(&mut w.radius, v, at, 1)?,
         }
         i = sp(r);
     }
     build(cx, approach, kind, w, i)
 }
 
-fn build(cx: &mut Cx, approach: bool, kind: ApprKind, w: Words<'_>, end: &str) -> Option<BlockBody> {
+fn build<'a>(cx: &Cx, approach: bool, kind: ApprKind, w: Words<'a>, end: &'a str) -> Step<'a, BlockBody> {
     // The words of each kind, from the manual's dialog (DEP LT/LN/CT end away from the contour
     // by LEN or the arc, only DEP LCT names an end point; DEP switches the compensation off).
     let (takes_len, takes_arc, takes_axes) = match kind {
@@ -118,16 +118,10 @@ fn build(cx: &mut Cx, approach: bool, kind: ApprKind, w: Words<'_>, end: &str) -
         (w.comp.map(|x| x.1), approach),
         (w.first_axis, takes_axes),
     ];
-    for (at, allowed) in present {
-        if let Some(at) = at
-            && !allowed
-        {
-            let len = at.find([' ', '\t']).unwrap_or(at.len());
-            cx.error(at, len, DiagCode::NotAllowed { word: at[..len].to_owned() });
-            return None;
-        }
+    if let Some(at) = present.into_iter().find_map(|(at, allowed)| at.filter(|_| !allowed)) {
+        return not_allowed(at);
     }
-    let missing = if takes_len && w.len.is_none() {
+    let absent = if takes_len && w.len.is_none() {
         Some("LEN")
     } else if takes_arc && w.cca.is_none() {
         Some("CCA")
@@ -136,9 +130,8 @@ fn build(cx: &mut Cx, approach: bool, kind: ApprKind, w: Words<'_>, end: &str) -
     } else {
         None
     };
-    if let Some(word) = missing {
-        cx.error(end, 0, DiagCode::MissingWord { word });
-        return None;
+    if let Some(word) = absent {
+        return missing(end, word);
     }
     let node = Box::new(ApprDep {
         kind,
@@ -150,5 +143,5 @@ fn build(cx: &mut Cx, approach: bool, kind: ApprKind, w: Words<'_>, end: &str) -
         feed: w.feed.map(|x| x.0),
         m: cx.take_m(),
     });
-    Some(if approach { BlockBody::Appr(node) } else { BlockBody::Dep(node) })
+    Ok((end, if approach { BlockBody::Appr(node) } else { BlockBody::Dep(node) }))
 }

@@ -3,20 +3,31 @@
 //!   end   := END PGM [name] [MM|INCH]         (a missing name or unit: a warning)
 //!   (`IN` for `INCH`: a lenient reading, said once per file by `lenient.rs`)
 
+use nom::Parser;
+use nom::branch::alt;
+use nom::combinator::cut;
+
 use super::Cx;
-use super::words::{keyword, sp, token};
+use super::words::{Step, choice, end_of_block, expected, invalid, keyword, kw, lex, or_expected, sp, token};
 use crate::ast::{BlockBody, Unit};
 use crate::diag::{DiagCode, Expected};
 
-/// `BEGIN PGM …` or `END PGM …`.
-pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let (rest, begin) = match (keyword(body, "BEGIN"), keyword(body, "END")) {
-        (Some(r), _) => (r, true),
-        (None, Some(r)) => (r, false),
-        (None, None) => return super::unknown(cx, body),
+/// The unit word: `MM`, `INCH` (or `IN`, a lenient reading).
+fn unit(i: &str) -> Step<'_, Unit> {
+    let inch = |i| match keyword(i, "IN").filter(|_| crate::unconfirmed::IMPORT_LENIENT_SPELLINGS) {
+        Some(r) => Ok((r, Unit::Inch)),
+        None => expected(i, Expected::Nc("IN")),
     };
-    let rest = sp(rest);
-    let Some(rest) = keyword(rest, "PGM") else { return cx.invalid(rest, Some(Expected::Nc("PGM"))) };
+    alt((choice(&[("MM", Unit::Mm), ("INCH", Unit::Inch)], "MM|INCH"), inch)).parse(i)
+}
+
+/// `BEGIN PGM …` or `END PGM …`.
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn pgm<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    let (rest, begin) = choice(&[("BEGIN", true), ("END", false)], "BEGIN|END").parse(body)?;
+    let (rest, _) = cut(lex(or_expected(kw("PGM"), Expected::Nc("PGM")))).parse(rest)?;
     let rest = sp(rest);
     // An exporting simulator writes `BEGIN PGM  MM` and `END PGM` without the name (the control
     // writes the file's name there): read as a program without a name, said once at BEGIN PGM.
@@ -24,7 +35,7 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         Ok((r, unit)) if matches!(unit, "MM" | "INCH" | "IN") && sp(r).is_empty() => (rest, ""),
         Ok(ok) => blank_in_name(rest, ok),
         Err(_) if rest.is_empty() => (rest, ""),
-        Err(e) => return cx.fail(e),
+        Err(e) => return Err(super::words::hard(e)),
     };
     if name.is_empty() && begin {
         cx.warn(body, body.len() - rest.len(), DiagCode::PgmNameMissing);
@@ -33,25 +44,20 @@ pub(super) fn pgm(cx: &mut Cx, body: &str) -> Option<BlockBody> {
         cx.warn(body, body.len() - rest.len(), DiagCode::PgmNameBlank);
     }
     let rest = sp(rest);
-    let (rest, unit) = if let Some(r) = keyword(rest, "MM") {
-        (r, Unit::Mm)
-    } else if let Some(r) = keyword(rest, "INCH")
-        .or_else(|| keyword(rest, "IN").filter(|_| crate::unconfirmed::IMPORT_LENIENT_SPELLINGS))
-    {
-        (r, Unit::Inch)
-    } else if rest.is_empty() && !begin {
-        // The unit of END PGM changes nothing: BEGIN PGM's applies.
-        cx.warn(body, body.len(), DiagCode::EndPgmUnitMissing);
-        (rest, Unit::Mm)
-    } else {
-        return cx.invalid(rest, Some(Expected::Nc("MM|INCH")));
+    let (rest, unit) = match unit(rest) {
+        Ok(ok) => ok,
+        Err(nom::Err::Error(_)) if rest.is_empty() && !begin => {
+            // The unit of END PGM changes nothing: BEGIN PGM's applies.
+            cx.warn(body, body.len(), DiagCode::EndPgmUnitMissing);
+            (rest, Unit::Mm)
+        }
+        Err(_) => {
+            return invalid(rest, Some(Expected::Nc("MM|INCH")));
+        }
     };
-    let rest = sp(rest);
-    if !rest.is_empty() {
-        return cx.invalid(rest, None);
-    }
+    let (rest, ()) = end_of_block(rest)?;
     let name = name.to_owned();
-    Some(if begin { BlockBody::BeginPgm { name, unit } } else { BlockBody::EndPgm { name, unit } })
+    Ok((rest, if begin { BlockBody::BeginPgm { name, unit } } else { BlockBody::EndPgm { name, unit } }))
 }
 
 /// A name with blanks (`SP1 1002 MM`, as an exporting simulator writes it): the words up to the

@@ -3,29 +3,24 @@
 //!   tcpm  := FUNCTION TCPM (F TCP|F CONT) (AXIS POS|AXIS SPAT) (PATHCTRL AXIS|PATHCTRL VECTOR)
 //!   reset := FUNCTION RESET TCPM
 
-use super::Cx;
-use super::transforms::end;
-use super::words::{Step, expected, failure, hard, keyword, sp};
+use nom::Parser;
+use nom::branch::alt;
+use nom::combinator::{cut, map};
+use nom::sequence::preceded;
+
+use super::words::{Step, expected, failure, hard, keyword, kw, sp, whole};
 use crate::ast::{BlockBody, PathCtrl, Tcpm, TcpmAxis, TcpmFeed};
 use crate::diag::Expected;
 
-/// `FUNCTION …`.
+/// `FUNCTION TCPM …` or `FUNCTION RESET TCPM`; every other `FUNCTION …` is a recoverable stop.
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn function(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let Some(i) = keyword(body, "FUNCTION").map(sp) else { return super::unknown(cx, body) };
-    if let Some(r) = keyword(i, "TCPM").map(sp) {
-        return match tcpm(r) {
-            Ok((rest, t)) => end(cx, rest, BlockBody::FunctionTcpm(t)),
-            Err(stop) => cx.fail(hard(stop)),
-        };
-    }
-    if let Some(r) = keyword(i, "RESET").map(sp).and_then(|r| keyword(r, "TCPM")) {
-        return end(cx, r, BlockBody::FunctionResetTcpm);
-    }
-    super::unknown(cx, body)
+pub(super) fn function(body: &str) -> Step<'_, BlockBody> {
+    let tcpm = preceded(kw("TCPM"), cut(whole(map(|i| tcpm(sp(i)).map_err(hard), BlockBody::FunctionTcpm))));
+    let reset = preceded((kw("RESET"), kw("TCPM")), cut(whole(|i| Ok((i, BlockBody::FunctionResetTcpm)))));
+    preceded(kw("FUNCTION"), alt((tcpm, reset))).parse(body)
 }
 
 /// The three mode words, in the control's order; each must be there.

@@ -9,17 +9,18 @@
 //! (the TNC manuals' Q parameter chapter: `FN 4: Q4 = +8 DIV +Q2`,
 //! `FN 12: IF +Q25 LT +Q35 GOTO LBL 2`; DOMAIN.md §8)
 
+use nom::Parser;
 use nom::bytes::complete::tag;
-use nom::character::complete::{char, space0, space1};
-use nom::combinator::opt;
+use nom::character::complete::{char, space1};
+use nom::combinator::{cut, opt};
 use nom::sequence::preceded;
 
-use super::Cx;
 use super::words::{
-    Step, at_boundary, failure, keyword, number, q_param, quoted, run, sp, token, uint, word_value,
+    Step, at_boundary, blanks, end_of_block, expected, failure, hard, invalid, keyword, kw, lex, number,
+    or_expected, q_param, quoted, run, soft, sp, token, uint, whole, word_value,
 };
 use crate::ast::{BinOp, BlockBody, Expr, FnJump, FnMath, FnOp, Func, JumpIf, Label, SysRead};
-use crate::diag::{DiagCode, Expected};
+use crate::diag::Expected;
 use crate::plane::Value;
 
 /// Formulas nest at most this deep: keeps the recursion (and the wasm stack) bounded.
@@ -39,67 +40,57 @@ fn label(i: &str) -> Step<'_, Label> {
 
 /// The keyword `LBL` before a label: `LBL 1` as the control writes it, `LBL1` and `LBL"name"`
 /// as some programs do.
-fn lbl(i: &str) -> Option<&str> {
-    let r = i.strip_prefix("LBL")?;
+fn lbl(i: &str) -> Step<'_, ()> {
+    let (r, _) = tag("LBL").parse(i)?;
     if at_boundary(r) {
-        Some(sp(r))
+        Ok((sp(r), ()))
+    } else if r.starts_with(|c: char| c.is_ascii_digit() || c == '"') {
+        Ok((r, ()))
     } else {
-        r.starts_with(|c: char| c.is_ascii_digit() || c == '"').then_some(r)
+        expected(i, Expected::Nc("LBL"))
     }
 }
 
-/// `LBL …`, `CALL LBL …`, `CALL PGM …`.
+/// `LBL …`, `CALL LBL …`, `CALL PGM …`; another `CALL …` is a recoverable stop.
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    if let Some(r) = lbl(body) {
-        return match label(r) {
-            Ok((rest, l)) => end(cx, rest, BlockBody::Lbl(l)),
-            Err(e) => cx.fail(e),
-        };
+pub(super) fn label_or_call(body: &str) -> Step<'_, BlockBody> {
+    if let Ok((r, ())) = lbl(body) {
+        let (rest, l) = whole(label).parse(r)?;
+        return Ok((rest, BlockBody::Lbl(l)));
     }
-    let Some(r) = keyword(body, "CALL").map(sp) else { return super::unknown(cx, body) };
-    if let Some(r) = keyword(r, "PGM").map(sp) {
-        return match token(r) {
-            Ok((rest, path)) => end(cx, rest, BlockBody::CallPgm { path: path.to_owned() }),
-            Err(e) => cx.fail(e),
-        };
-    }
-    let Some(r) = lbl(r) else { return super::unknown(cx, body) };
-    let (r, l) = match label(r) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
+    let (r, _) = kw("CALL").parse(body)?;
     let r = sp(r);
-    let mut rep = None;
-    let mut rest = r;
-    // `REP` with no count: an old control's empty word (`words::empty_word`), no repetition.
-    if let Some(after) = keyword(r, "REP").filter(|a| sp(a).is_empty()) {
-        rest = sp(after);
-    } else if let Some(after) = r.strip_prefix("REP") {
-        let param = q_param(sp(after)).filter(|_| crate::unconfirmed::REP_FROM_PARAMETER);
-        let count = match param {
-            Some(q) => q.map(|(r, index)| (r, Value::Param { index, negate: false })),
-            None => uint(sp(after)).map(|(r, n)| (r, Value::Number(f64::from(n)))),
-        };
-        match count {
-            Ok((after, n)) => {
-                rep = Some(n);
-                rest = after;
-                // The control shows `REP 2/2` (remaining/total) after a run: keep the total.
-                if let Some(total) = after.strip_prefix('/') {
-                    match uint(total) {
-                        Ok((after, _)) => rest = after,
-                        Err(e) => return cx.fail(e),
-                    }
-                }
-            }
-            Err(e) => return cx.fail(e),
-        }
+    if let Some(r) = keyword(r, "PGM").map(sp) {
+        let (rest, path) = cut(whole(token)).parse(r)?;
+        return Ok((rest, BlockBody::CallPgm { path: path.to_owned() }));
     }
-    end(cx, rest, BlockBody::CallLbl { label: l, rep })
+    let (r, ()) = lbl(r)?;
+    let (r, l) = cut(label).parse(r)?;
+    let (rest, rep) = cut(lex(opt(repeat))).parse(r)?;
+    let (rest, ()) = end_of_block(rest)?;
+    Ok((rest, BlockBody::CallLbl { label: l, rep: rep.flatten() }))
+}
+
+/// `REP n`, `REP n/n` (the control shows remaining/total after a run: the total is kept),
+/// `REP Qn`; `REP` with no count is an old control's empty word (`words::empty_word`), no
+/// repetition.
+fn repeat(i: &str) -> Step<'_, Option<Value>> {
+    let (after, _) = tag("REP").parse(i)?;
+    if at_boundary(after) && sp(after).is_empty() {
+        return Ok((sp(after), None));
+    }
+    let after = sp(after);
+    let param = q_param(after).filter(|_| crate::unconfirmed::REP_FROM_PARAMETER);
+    let (rest, n) = match param {
+        Some(q) => q.map(|(r, index)| (r, Value::Param { index, negate: false })),
+        None => uint(after).map(|(r, n)| (r, Value::Number(f64::from(n)))),
+    }
+    .map_err(hard)?;
+    let (rest, _) = opt(preceded(char('/'), cut(uint))).parse(rest)?;
+    Ok((rest, Some(n)))
 }
 
 /// `FN 0: Q1 = +5`, the arithmetic `FN 1..8` and the jumps `FN 9..12`; every other FN function
@@ -108,24 +99,22 @@ pub(super) fn label_or_call(cx: &mut Cx, body: &str) -> Option<BlockBody> {
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn fn_block(cx: &mut Cx, body: &str) -> Option<BlockBody> {
+pub(super) fn fn_block(body: &str) -> Step<'_, BlockBody> {
     // `FN 0:` as the control writes it, `FN0:` as CAM systems do.
-    let Some(r) = body.strip_prefix("FN").map(sp) else { return super::unknown(cx, body) };
-    let Ok((rest, n)) = uint(r) else { return super::unknown(cx, body) };
-    let Some(q) = sp(rest).strip_prefix(':').map(sp) else {
-        return cx.invalid(sp(rest), Some(Expected::Nc(":")));
-    };
+    let (rest, n) = preceded(tag("FN"), lex(|i| uint(i).map_err(soft))).parse(body)?;
+    let (q, _) = cut(lex(or_expected(char(':'), Expected::Nc(":")))).parse(rest)?;
+    let q = sp(q);
     match n {
-        0 => assign(cx, q, true),
-        9..=12 => jump(cx, n, q),
-        n if FnOp::of(n).is_some() => math(cx, n, q),
+        0 => assign_target(q, true),
+        9..=12 => jump(n, q),
+        n if FnOp::of(n).is_some() => math(n, q),
         18 if let Ok((rest, r)) = sysread(q)
             && sp(rest).is_empty() =>
         {
-            Some(BlockBody::SysRead(Box::new(r)))
+            Ok((rest, BlockBody::SysRead(Box::new(r))))
         }
-        _ if q.is_empty() => cx.invalid(q, Some(Expected::Nc("FN n: …"))),
-        _ => Some(BlockBody::FnOther { number: n, text: q.to_owned() }),
+        _ if q.is_empty() => invalid(q, Some(Expected::Nc("FN n: …"))),
+        _ => Ok((&q[q.len()..], BlockBody::FnOther { number: n, text: q.to_owned() })),
     }
 }
 
@@ -144,7 +133,7 @@ fn sysread(i: &str) -> Step<'_, SysRead> {
     let words = (
         (tag("SYSREAD"), space1),
         q,
-        (space0, char('='), space0, tag("ID")),
+        (blanks, char('='), blanks, tag("ID")),
         uint,
         preceded((space1, tag("NR")), word_value),
         opt(preceded((space1, tag("IDX")), word_value)),
@@ -154,109 +143,98 @@ fn sysread(i: &str) -> Step<'_, SysRead> {
 }
 
 /// `Q<n> = a op b` (`FN 1..4`) or `Q<n> = SQRT a` (`FN 5`).
-fn math(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
-    let Some(op) = FnOp::of(n) else { return cx.invalid(i, None) };
-    let (r, target) = match q_param(i) {
-        Some(Ok(ok)) => ok,
-        Some(Err(e)) => return cx.fail(e),
-        None => return cx.invalid(i, Some(Expected::Nc("Q|QL|QR"))),
-    };
-    let Some(r) = sp(r).strip_prefix('=').map(sp) else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
+fn math(n: u32, i: &str) -> Step<'_, BlockBody> {
+    let Some(op) = FnOp::of(n) else { return invalid(i, None) };
+    let (r, target) = target_eq(i)?;
     if op.unary() {
-        let Some(r) = keyword(r, op.word()).map(sp) else {
-            return cx.invalid(r, Some(Expected::Nc(op.word())));
-        };
-        return match word_value(r) {
-            Ok((rest, a)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: None }))),
-            Err(e) => cx.fail(e),
-        };
+        let (rest, a) = whole(preceded(|i| must(i, op.word()), cut(lex(word_value)))).parse(r)?;
+        return Ok((rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: None }))));
     }
-    let (r, a) = match word_value(r) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
-    let r = sp(r);
     // `+ +90` as the control writes it; `+90` (the operand without its own sign) as older
     // programs and CAM systems do: the same operation.
-    let Some(r) = r.strip_prefix(op.word()).map(sp) else {
-        return cx.invalid(r, Some(Expected::Nc(op.word())));
-    };
-    match word_value(r) {
-        Ok((rest, b)) => end(cx, rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: Some(b) }))),
-        Err(e) => cx.fail(e),
+    let op_word = cut(lex(or_expected(tag(op.word()), Expected::Nc(op.word()))));
+    let (rest, (a, _, b)) = whole((cut(word_value), op_word, cut(lex(word_value)))).parse(r)?;
+    Ok((rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: Some(b) }))))
+}
+
+/// `word` standing alone right here.
+fn kw_here<'a>(i: &'a str, word: &'static str) -> Step<'a, ()> {
+    match keyword(i, word) {
+        Some(r) => Ok((r, ())),
+        None => expected(i, Expected::Nc(word)),
+    }
+}
+
+/// The keyword `word` after blanks, which must be there.
+fn must<'a>(i: &'a str, word: &'static str) -> Step<'a, ()> {
+    cut(lex(or_expected(|i| kw_here(i, word), Expected::Nc(word)))).parse(i)
+}
+
+/// `GOTO LBL`, which must be there.
+fn goto(i: &str) -> Step<'_, ()> {
+    let at = sp(i);
+    match keyword(at, "GOTO").map(sp).map(lbl) {
+        Some(Ok(found)) => Ok(found),
+        _ => invalid(at, Some(Expected::Nc("GOTO LBL"))),
     }
 }
 
 /// `IF a OP b GOTO LBL label`, where OP must be the one of the FN number.
-fn jump(cx: &mut Cx, n: u32, i: &str) -> Option<BlockBody> {
+fn jump(n: u32, i: &str) -> Step<'_, BlockBody> {
     let condition = match n {
         9 => JumpIf::Equ,
         10 => JumpIf::Ne,
         11 => JumpIf::Gt,
         _ => JumpIf::Lt,
     };
-    let Some(r) = keyword(i, "IF").map(sp) else { return cx.invalid(i, Some(Expected::Nc("IF"))) };
-    let (r, a) = match word_value(r) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
-    let r = sp(r);
-    let Some(r) = keyword(r, condition.word()).map(sp) else {
-        return cx.invalid(r, Some(Expected::Nc(condition.word())));
-    };
-    let (r, b) = match word_value(r) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
-    let r = sp(r);
-    let Some(r) = keyword(r, "GOTO").map(sp).and_then(lbl) else {
-        return cx.invalid(r, Some(Expected::Nc("GOTO LBL")));
-    };
-    match label(r) {
-        Ok((rest, label)) => end(cx, rest, BlockBody::FnJump(Box::new(FnJump { condition, a, b, label }))),
-        Err(e) => cx.fail(e),
-    }
+    let (rest, (_, a, _, b, _, label)) = whole((
+        |i| must(i, "IF"),
+        cut(lex(word_value)),
+        |i| must(i, condition.word()),
+        cut(lex(word_value)),
+        goto,
+        cut(label),
+    ))
+    .parse(i)?;
+    Ok((rest, BlockBody::FnJump(Box::new(FnJump { condition, a, b, label }))))
 }
 
-/// `Q<n> = expr`.
+/// `Q<n> =` (`Q`, `QL` or `QR`) and the rest after the sign.
+fn target_eq(i: &str) -> Step<'_, u32> {
+    let (r, target) = match q_param(i) {
+        Some(q) => q?,
+        None => return invalid(i, Some(Expected::Nc("Q|QL|QR"))),
+    };
+    let (r, _) = cut(lex(or_expected(char('='), Expected::Nc("=")))).parse(r)?;
+    Ok((sp(r), target))
+}
+
+/// `Q<n> = expr` (`fn0`: written `FN 0: Q<n> = …`).
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn assign(cx: &mut Cx, body: &str, fn0: bool) -> Option<BlockBody> {
-    let (r, target) = match q_param(body) {
-        Some(Ok(ok)) => ok,
-        Some(Err(e)) => return cx.fail(e),
-        None => return cx.invalid(body, Some(Expected::Nc("Q|QL|QR"))),
-    };
-    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
-    match expr(sp(r), 0) {
-        Ok((rest, e)) => end(cx, rest, BlockBody::QAssign { target, expr: e, fn0 }),
-        Err(e) => cx.fail(e),
-    }
+pub(super) fn assign_target(body: &str, fn0: bool) -> Step<'_, BlockBody> {
+    let (r, target) = target_eq(body)?;
+    let (rest, e) = whole(|i| expr(i, 0)).parse(r).map_err(hard)?;
+    Ok((rest, BlockBody::QAssign { target, expr: e, fn0 }))
+}
+
+/// `Q<n> = expr`, `QL<n> = …`, `QR<n> = …`: the whole block `body`.
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn assign(body: &str) -> Step<'_, BlockBody> {
+    assign_target(body, false)
 }
 
 /// `QS<n> = …`: a string parameter, its right side kept as written.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn qs_assign(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let (r, index) = match body.strip_prefix("QS").map(uint) {
-        Some(Ok(ok)) => ok,
-        Some(Err(e)) => return cx.fail(e),
-        None => return cx.invalid(body, Some(Expected::Nc("QS"))),
-    };
-    let Some(r) = sp(r).strip_prefix('=') else { return cx.invalid(sp(r), Some(Expected::Nc("="))) };
-    Some(BlockBody::QsAssign { index, text: r.trim().to_owned() })
-}
-
-fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
-    let rest = sp(rest);
-    if rest.is_empty() {
-        Some(body)
-    } else {
-        let len = rest.find(' ').unwrap_or(rest.len());
-        cx.error(rest, len, DiagCode::InvalidInput);
-        None
-    }
+pub(super) fn qs_assign(body: &str) -> Step<'_, BlockBody> {
+    let (r, index) =
+        preceded(or_expected(tag("QS"), Expected::Nc("QS")), cut(uint)).parse(body).map_err(hard)?;
+    let (r, _) = cut(lex(or_expected(char('='), Expected::Nc("=")))).parse(r)?;
+    Ok((&r[r.len()..], BlockBody::QsAssign { index, text: r.trim().to_owned() }))
 }
 
 /// Bounds both the nesting depth and the number of operators of one formula, so recursion in

@@ -4,15 +4,39 @@
 //!   rnd  := RND R v [feed]        chf := CHF v [feed]        m_only := Mn { Mn }
 //!   after M140: [MB (MAX|v) [feed]]      after M128: [F v]
 
+use nom::Parser;
+use nom::branch::alt;
+use nom::bytes::complete::tag;
+use nom::combinator::{cut, map};
+use nom::sequence::preceded;
+
 use super::Cx;
 use super::words::{
-    Step, Stop, at_boundary, axis_word, empty_word, feed, hard, keyword, m_function, sign, sp, word_value,
+    Named, NcError, Step, Stop, at_boundary, axis_word, boundary, choice, duplicate, empty_word,
+    end_of_block, expected, feed, hard, invalid, keyword, letters, m_function, missing, not_allowed,
+    or_expected, sign, soft, sp, word_value,
 };
-use crate::ast::{BlockBody, Line, MWords, Motion, PolarWord, RadiusComp};
-use crate::diag::{DiagCode, Expected};
+use crate::ast::{AxisWord, BlockBody, Line, MWords, Motion, PolarWord, RadiusComp};
+use crate::diag::Expected;
 use crate::plane::{Feed, MoveBack, Sign, Value};
 
 const EXPECTED: &str = "X|Y|Z|A|B|C|R0|RL|RR|F|M";
+
+/// One word of a path block.
+#[derive(Clone, Copy)]
+enum PathWord {
+    /// An old control's empty `R`, `F` or `M` (`words::empty_word`): nothing programmed.
+    Empty,
+    M(u32),
+    Axis(AxisWord),
+    Feed(Feed),
+    Comp(RadiusComp),
+    Direction(Sign),
+    PolarRadius(PolarWord),
+    PolarAngle(PolarWord),
+    Radius(Value),
+    Speed(Value),
+}
 
 /// Words of a path block, with where each optional word stood (for "not allowed here").
 #[derive(Default)]
@@ -28,141 +52,137 @@ struct Words<'a> {
     m_words: MWords,
 }
 
-fn polar<'a>(i: &'a str, key: &'static str) -> Option<Step<'a, PolarWord>> {
-    let (incremental, rest) = match i.strip_prefix('I') {
-        Some(r) => (true, r),
-        None => (false, i),
-    };
-    let rest = rest.strip_prefix(key)?;
-    if !rest.starts_with(['+', '-', '.', '0', '1', '2', '3', '4', '5', '6', '7', '8', '9', 'Q']) {
-        return None;
+/// `[I]PR v` or `[I]PA v` (`key`): recoverable unless the key is followed by a value's start.
+fn polar<'a>(key: &'static str) -> impl Parser<&'a str, Output = PolarWord, Error = NcError<'a>> {
+    move |i: &'a str| {
+        let (incremental, rest) = match i.strip_prefix('I') {
+            Some(r) => (true, r),
+            None => (false, i),
+        };
+        let Some(rest) = rest.strip_prefix(key).filter(|r| {
+            r.starts_with(['+', '-', '.', '0', '1', '2', '3', '4', '5', '6', '7', '8', '9', 'Q'])
+        }) else {
+            return expected(i, Expected::Nc(key));
+        };
+        let (r, value) = word_value(rest).map_err(hard)?;
+        Ok((r, PolarWord { value, incremental }))
     }
-    Some(word_value(rest).map(|(r, value)| (r, PolarWord { value, incremental })))
 }
 
-/// Stores `v` in `slot` unless the word was already there.
+/// `key` directly followed by a value that ends its word; hard once the key is read.
+fn keyed<'a>(key: &'static str) -> impl Parser<&'a str, Output = Value, Error = NcError<'a>> {
+    preceded(tag(key), cut(word_value))
+}
+
+/// The radius-compensation words `R0`, `RL`, `RR`.
+pub(super) fn comp(i: &str) -> Step<'_, RadiusComp> {
+    const COMP: &[(&str, RadiusComp)] =
+        &[("R0", RadiusComp::R0), ("RL", RadiusComp::Rl), ("RR", RadiusComp::Rr)];
+    choice(COMP, "R0|RL|RR").parse(i)
+}
+
+/// `DR+` or `DR-` as one word.
+fn direction(i: &str) -> Step<'_, Sign> {
+    let (r, _) = tag("DR").parse(i)?;
+    match sign(r) {
+        Ok((r, s)) if at_boundary(r) => Ok((r, s)),
+        _ => invalid(i, Some(Expected::Nc("DR+|DR-"))),
+    }
+}
+
+/// One word of a path block, tried in the order that tells them apart (`R0` before `R…`).
+fn path_word(i: &str) -> Step<'_, PathWord> {
+    let empty = |i| match empty_word(i, b"RFM") {
+        Some(r) => Ok((r, PathWord::Empty)),
+        None => expected(i, Expected::Nc(EXPECTED)),
+    };
+    // An `M` that is not a whole M function is not one (`M3X`): the other words are tried.
+    let m = map(|i| m_function(i).map_err(soft), PathWord::M);
+    alt((
+        empty,
+        m,
+        map(axis_word, PathWord::Axis),
+        map(feed, PathWord::Feed),
+        map(comp, PathWord::Comp),
+        map(direction, PathWord::Direction),
+        map(polar("PR"), PathWord::PolarRadius),
+        map(polar("PA"), PathWord::PolarAngle),
+        map(keyed("R"), PathWord::Radius),
+        map(keyed("S"), PathWord::Speed),
+    ))
+    .parse(i)
+}
+
+/// Stores `v` in `slot`, where the word `at` (its first `len` bytes) stood; a hard stop if the
+/// word was already there.
 pub(super) fn once<'a, T>(
-    cx: &mut Cx,
     slot: &mut Option<(T, &'a str)>,
     v: T,
     at: &'a str,
     len: usize,
-) -> bool {
+) -> Result<(), Stop<'a>> {
     if slot.is_some() {
-        let word = at[..len.min(at.len())].to_owned();
-        cx.error(at, len, DiagCode::Duplicate { word });
-        return false;
+        return duplicate(at, len, Named::Written(len)).map(|(_, ())| ());
     }
     *slot = Some((v, at));
-    true
+    Ok(())
 }
 
-/// The feed and radius-compensation words every path block may carry (`F…`, `R0`, `RL`, `RR`)
-/// at `i`: `None` if `i` starts neither, else the rest and whether the word was new.
-pub(super) fn feed_or_comp<'a>(
-    cx: &mut Cx,
-    i: &'a str,
-    feed_slot: &mut Option<(Feed, &'a str)>,
-    comp: &mut Option<(RadiusComp, &'a str)>,
-) -> Option<Result<(&'a str, bool), Stop<'a>>> {
-    if i.starts_with('F') {
-        return Some(feed(i).map(|(r, f)| (r, once(cx, feed_slot, f, i, i.len() - r.len()))));
-    }
-    let (r, c) = [("R0", RadiusComp::R0), ("RL", RadiusComp::Rl), ("RR", RadiusComp::Rr)]
-        .into_iter()
-        .find_map(|(word, c)| keyword(i, word).map(|r| (r, c)))?;
-    Some(Ok((r, once(cx, comp, c, i, 2))))
+/// `L`, `CC`, `C`, `CR`, `CT`, `LP`, `CP`, `RND`, `CHF`: the whole block `body`.
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn path<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    let (rest, kw) = letters(body)?;
+    path_after(cx, kw, rest)
 }
 
-/// `L`, `CC`, `C`, `CR`, `CT`, `LP`, `CP`, `RND`, `CHF` (`rest` follows the keyword).
-pub(super) fn path(cx: &mut Cx, kw: &str, rest: &str) -> Option<BlockBody> {
-    cx.axes.clear();
-    cx.m.clear();
-    if !at_boundary(rest) {
-        return cx.invalid(rest, Some(Expected::Blank));
-    }
+/// A path block `kw` from `rest` on (right after the keyword; `CYCL CALL POS` reads its words
+/// as those of `L`).
+pub(super) fn path_after<'a>(cx: &Cx, kw: &str, rest: &'a str) -> Step<'a, BlockBody> {
+    cx.clear_words();
+    let (rest, ()) = cut(boundary).parse(rest)?;
     match kw {
-        "RND" | "CHF" => return rounding(cx, kw, sp(rest)),
-        _ => {}
+        "RND" | "CHF" => rounding(kw == "RND", sp(rest)),
+        _ => path_words(cx, kw, sp(rest)),
     }
-    path_words(cx, kw, sp(rest))
 }
 
 /// A straight line written without its `L` (`Z0.0 B0.0 C0.0 FMAX M91`, `body` starting with
 /// the first axis word), read as `L` (`lenient::lacks_l`).
-pub(super) fn line_without_l(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    cx.axes.clear();
-    cx.m.clear();
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn line_without_l<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    cx.clear_words();
     path_words(cx, "L", body)
 }
 
-/// The words of a path block `kw` from `i` on.
-fn path_words(cx: &mut Cx, kw: &str, mut i: &str) -> Option<BlockBody> {
+/// The words of a path block `kw` from `i` on: any number of [`path_word`]s, each at most once.
+fn path_words<'a>(cx: &Cx, kw: &str, mut i: &'a str) -> Step<'a, BlockBody> {
     let mut w = Words::default();
     while !i.is_empty() {
         let at = i;
-        if let Some(r) = empty_word(i, b"RFM") {
-            i = sp(r);
-            continue;
-        }
-        if let Ok((r, m)) = m_function(i) {
-            w.first_m.get_or_insert(at);
-            cx.m.push(m);
-            i = match m_args(m, r, &mut w.m_words) {
-                Ok(r) => sp(r),
-                Err(e) => return cx.fail(e),
-            };
-            continue;
-        }
-        match axis_word(i) {
-            Ok((r, word)) => {
-                if cx.axes.iter().any(|a| a.axis == word.axis) {
-                    let len = at.len() - r.len();
-                    cx.error(at, len, DiagCode::Duplicate { word: word.axis.as_str().to_owned() });
-                    return None;
-                }
-                cx.axes.push(word);
-                i = sp(r);
-                continue;
+        let (r, word) = or_expected(path_word, Expected::Nc(EXPECTED)).parse(i).map_err(hard)?;
+        let len = at.len() - r.len();
+        let mut r = r;
+        match word {
+            PathWord::Empty => {}
+            PathWord::M(m) => {
+                w.first_m.get_or_insert(at);
+                cx.push_m(m);
+                r = m_args(m, r, &mut w.m_words).map_err(hard)?;
             }
-            Err(nom::Err::Error(_)) => {}
-            Err(e) => return cx.fail(e),
-        }
-        let (r, ok) = if let Some(read) = feed_or_comp(cx, i, &mut w.feed, &mut w.comp) {
-            match read {
-                Ok(read) => read,
-                Err(e) => return cx.fail(e),
+            PathWord::Axis(word) => {
+                cx.push_axis(at, r, word)?;
             }
-        } else if let Some(after) = i.strip_prefix("DR") {
-            match sign(after) {
-                Ok((r, s)) if at_boundary(r) => (r, once(cx, &mut w.direction, s, at, 3)),
-                _ => return cx.invalid(at, Some(Expected::Nc("DR+|DR-"))),
-            }
-        } else if let Some(res) = polar(i, "PR") {
-            match res {
-                Ok((r, p)) => (r, once(cx, &mut w.polar_radius, p, at, i.len() - r.len())),
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(res) = polar(i, "PA") {
-            match res {
-                Ok((r, p)) => (r, once(cx, &mut w.polar_angle, p, at, i.len() - r.len())),
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(after) = i.strip_prefix('R') {
-            match word_value(after) {
-                Ok((r, v)) => (r, once(cx, &mut w.radius, v, at, i.len() - r.len())),
-                Err(e) => return cx.fail(e),
-            }
-        } else if let Some(after) = i.strip_prefix('S') {
-            match word_value(after) {
-                Ok((r, v)) => (r, once(cx, &mut w.speed, v, at, i.len() - r.len())),
-                Err(e) => return cx.fail(e),
-            }
-        } else {
-            return cx.invalid(at, Some(Expected::Nc(EXPECTED)));
-        };
-        if !ok {
-            return None;
+            PathWord::Feed(f) => once(&mut w.feed, f, at, len)?,
+            PathWord::Comp(c) => once(&mut w.comp, c, at, len)?,
+            PathWord::Direction(s) => once(&mut w.direction, s, at, len)?,
+            PathWord::PolarRadius(p) => once(&mut w.polar_radius, p, at, len)?,
+            PathWord::PolarAngle(p) => once(&mut w.polar_angle, p, at, len)?,
+            PathWord::Radius(v) => once(&mut w.radius, v, at, len)?,
+            PathWord::Speed(v) => once(&mut w.speed, v, at, len)?,
         }
         i = sp(r);
     }
@@ -170,7 +190,7 @@ fn path_words(cx: &mut Cx, kw: &str, mut i: &str) -> Option<BlockBody> {
 }
 
 /// Checks which words the block kind takes and builds the node.
-fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
+fn build<'a>(cx: &Cx, kw: &str, w: Words<'a>, end: &'a str) -> Step<'a, BlockBody> {
     let allowed = |word: &str| -> bool {
         match kw {
             "L" | "CT" => matches!(word, "comp" | "feed" | "speed" | "m"),
@@ -192,25 +212,16 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
         ("speed", w.speed.map(|p| p.1)),
         ("m", w.first_m),
     ];
-    for (word, at) in present {
-        if let Some(at) = at
-            && !allowed(word)
-        {
-            let len = at.find([' ', '\t']).unwrap_or(at.len());
-            let text = at[..len].to_owned();
-            cx.error(at, len, DiagCode::NotAllowed { word: text });
-            return None;
-        }
+    if let Some(at) = present.into_iter().find_map(|(word, at)| at.filter(|_| !allowed(word))) {
+        return not_allowed(at);
     }
     if kw == "CR" && w.radius.is_none() {
-        cx.error(end, 0, DiagCode::MissingWord { word: "R" });
-        return None;
+        return missing(end, "R");
     }
     // CP needs the end point's angle (manual: "Polar coordinates angle PA: angular position of
     // the arc end point").
     if kw == "CP" && w.polar_angle.is_none() {
-        cx.error(end, 0, DiagCode::MissingWord { word: "PA" });
-        return None;
+        return missing(end, "PA");
     }
     let comp = w.comp.map(|c| c.0);
     let feed = w.feed.map(|f| f.0);
@@ -218,7 +229,7 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
     if kw == "L" {
         let m_words = w.m_words;
         let axes = cx.take_line_axes();
-        return Some(BlockBody::L(Line { axes, comp, feed, speed, m: cx.take_m(), m_words }));
+        return Ok((end, BlockBody::L(Line { axes, comp, feed, speed, m: cx.take_m(), m_words })));
     }
     let motion = Box::new(Motion {
         axes: cx.take_axes(),
@@ -231,81 +242,65 @@ fn build(cx: &mut Cx, kw: &str, w: Words<'_>, end: &str) -> Option<BlockBody> {
         speed,
         m: cx.take_m(),
     });
-    Some(match kw {
-        "CC" => BlockBody::Cc(motion),
-        "C" => BlockBody::C(motion),
-        "CR" => BlockBody::Cr(motion),
-        "CT" => BlockBody::Ct(motion),
-        "LP" => BlockBody::Lp(motion),
-        _ => BlockBody::Cp(motion),
-    })
+    Ok((
+        end,
+        match kw {
+            "CC" => BlockBody::Cc(motion),
+            "C" => BlockBody::C(motion),
+            "CR" => BlockBody::Cr(motion),
+            "CT" => BlockBody::Ct(motion),
+            "LP" => BlockBody::Lp(motion),
+            _ => BlockBody::Cp(motion),
+        },
+    ))
 }
 
 /// `RND R…` and `CHF …`, each with an optional feed.
-fn rounding(cx: &mut Cx, kw: &str, i: &str) -> Option<BlockBody> {
-    let v = if kw == "RND" {
-        match i.strip_prefix('R') {
-            Some(r) => word_value(r),
-            None => return cx.invalid(i, Some(Expected::Nc("R"))),
-        }
+fn rounding(rnd: bool, i: &str) -> Step<'_, BlockBody> {
+    let (rest, v) = if rnd {
+        preceded(or_expected(tag("R"), Expected::Nc("R")), word_value).parse(i)
     } else {
         word_value(i)
-    };
-    let (rest, v) = match v {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
-    let rest = sp(rest);
-    let (rest, f) = if rest.is_empty() {
-        (rest, None)
-    } else {
-        match feed(rest) {
-            Ok((r, f)) => (sp(r), Some(f)),
-            Err(e) => return cx.fail(e),
-        }
-    };
-    if !rest.is_empty() {
-        return cx.invalid(rest, None);
     }
-    Some(if kw == "RND" {
-        BlockBody::Rnd { radius: v, feed: f }
-    } else {
-        BlockBody::Chf { length: v, feed: f }
-    })
+    .map_err(hard)?;
+    let rest = sp(rest);
+    let (rest, feed) =
+        if rest.is_empty() { (rest, None) } else { map(feed, Some).parse(rest).map_err(hard)? };
+    let (rest, ()) = end_of_block(rest)?;
+    Ok((rest, if rnd { BlockBody::Rnd { radius: v, feed } } else { BlockBody::Chf { length: v, feed } }))
 }
 
-/// `STOP` with optional M functions (`STOP M0`); `rest` follows the keyword.
+/// `STOP` with optional M functions (`STOP M0`): the whole block `body`.
 // Out of line in wasm, like the other rare families (see labels_q.rs).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn stop(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
+pub(super) fn stop<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    let (rest, _) = tag("STOP").parse(body)?;
     if !at_boundary(rest) {
-        return super::unknown(cx, rest);
+        return invalid(rest, None);
     }
-    let rest = sp(rest);
-    if rest.is_empty() {
-        return Some(BlockBody::Stop { m: Box::default() });
-    }
-    match m_only(cx, rest)? {
-        BlockBody::MFunctions(m, _) => Some(BlockBody::Stop { m }),
-        _ => None,
-    }
+    let (rest, (m, _)) = m_functions(cx, sp(rest))?;
+    Ok((rest, BlockBody::Stop { m }))
 }
 
 /// A block of only M functions (`M30`, `M99`, `M140 MB MAX`).
-pub(super) fn m_only(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    cx.m.clear();
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn m_only<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    map(|i| m_functions(cx, i), |(m, words)| BlockBody::MFunctions(m, words)).parse(body)
+}
+
+/// M functions with the words that belong to them, up to the end of the block.
+fn m_functions<'a>(cx: &Cx, mut i: &'a str) -> Step<'a, (Box<[u32]>, MWords)> {
+    cx.clear_words();
     let mut words = MWords::default();
-    let mut i = body;
     while !i.is_empty() {
-        match m_function(i).and_then(|(r, m)| m_args(m, r, &mut words).map(|r| (r, m))) {
-            Ok((r, m)) => {
-                cx.m.push(m);
-                i = sp(r);
-            }
-            Err(e) => return cx.fail(e),
-        }
+        let (r, m) = m_function(i).map_err(hard)?;
+        let r = m_args(m, r, &mut words).map_err(hard)?;
+        cx.push_m(m);
+        i = sp(r);
     }
-    Some(BlockBody::MFunctions(cx.take_m(), words))
+    Ok((i, (cx.take_m(), words)))
 }
 
 /// The words after M function `m` that belong to it ([`MWords`]): `MB MAX`, `MB+50` or `MB 50`

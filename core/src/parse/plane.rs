@@ -1,9 +1,22 @@
 //! PLANE blocks into the shared [`crate::plane`] vocabulary, with the control's input checks.
 //!   plane := PLANE def [MOVE [DIST v] [feed] | TURN [MB v|MB MAX] [feed] | STAY] [SEQ±|SYM±] [COORD ROT|TABLE ROT]
 //!   def   := SPATIAL SPA SPB SPC | PROJECTED PROPR PROMIN ROT | EULER EULPR EULNU EULROT | VECTOR BX…NZ | POINTS P1X…P3Z | RELATIV SPA|SPB|SPC | AXIAL {[I]A|B|C} | RESET
+//!
+//! `def` is one `alt` of its kinds, each `cut` once its keyword is read; the options after it
+//! come in any order, each at most once (a loop over one `alt`, which nom's `permutation`
+//! cannot say: it would take each exactly once).
+
+use nom::Parser;
+use nom::branch::alt;
+use nom::bytes::complete::tag;
+use nom::combinator::{cut, map, opt, value};
+use nom::sequence::preceded;
 
 use super::Cx;
-use super::words::{at_boundary, axis_word, feed, keyword, sign, sp, word_value};
+use super::words::{
+    Named, Step, Why, at_boundary, axis_word, choice, duplicate, fault, feed, hard, invalid, kw, lex,
+    missing, or_expected, sign, sp, spanned, word_len, word_value,
+};
 use crate::ast::{Axis, BlockBody};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{
@@ -11,25 +24,19 @@ use crate::plane::{
     TransformMode, Value, Word, check,
 };
 
-/// `KEY value` that must be there; checks a written number with [`check`].
-fn mandatory<'a>(cx: &mut Cx, i: &'a str, word: Word) -> Option<(&'a str, Value)> {
+/// `KEY value` that must be there; a written number is checked with [`check`].
+fn mandatory<'a>(cx: &Cx, word: Word, i: &'a str) -> Step<'a, Value> {
     let i = sp(i);
-    let Some(after) = i.strip_prefix(word.as_str()) else {
-        let len = i.find([' ', '\t']).unwrap_or(i.len());
-        cx.error(i, len, DiagCode::MissingWord { word: word.as_str() });
-        return None;
-    };
-    let (rest, v) = match word_value(sp(after)) {
-        Ok(ok) => ok,
-        Err(e) => return cx.fail(e),
-    };
+    let Some(after) = i.strip_prefix(word.as_str()) else { return missing(i, word.as_str()) };
+    let (rest, v) = cut(lex(word_value)).parse(after)?;
     checked(cx, word, v, i, rest);
-    Some((rest, v))
+    Ok((rest, v))
 }
 
-/// Reports a written number outside the input range of `word`; the span runs from the word at
-/// `at` to `rest`, where its value ends. Q parameters are checked when the program runs.
-fn checked(cx: &mut Cx, word: Word, v: Value, at: &str, rest: &str) {
+/// Reports a written number outside the input range of `word` (an error that does not stop the
+/// block); the span runs from the word at `at` to `rest`, where its value ends. Q parameters
+/// are checked when the program runs.
+fn checked(cx: &Cx, word: Word, v: Value, at: &str, rest: &str) {
     if let Value::Number(x) = v
         && let Err(code) = check(word, x)
     {
@@ -37,73 +44,109 @@ fn checked(cx: &mut Cx, word: Word, v: Value, at: &str, rest: &str) {
     }
 }
 
-fn triple<'a>(cx: &mut Cx, i: &'a str, words: [Word; 3]) -> Option<(&'a str, [Value; 3])> {
-    let (i, a) = mandatory(cx, i, words[0])?;
-    let (i, b) = mandatory(cx, i, words[1])?;
-    let (i, c) = mandatory(cx, i, words[2])?;
-    Some((i, [a, b, c]))
+fn triple<'a>(cx: &Cx, words: [Word; 3], i: &'a str) -> Step<'a, [Value; 3]> {
+    let [a, b, c] = words;
+    map(
+        (
+            |i: &'a str| mandatory(cx, a, i),
+            |i: &'a str| mandatory(cx, b, i),
+            |i: &'a str| mandatory(cx, c, i),
+        ),
+        |(a, b, c)| [a, b, c],
+    )
+    .parse(i)
 }
 
-/// `rest` follows the word `PLANE`.
-pub(super) fn plane(cx: &mut Cx, rest: &str) -> Option<BlockBody> {
-    let i = sp(rest);
+/// The kinds of definition, by their keyword.
+#[derive(Clone, Copy)]
+enum Kind {
+    Spatial,
+    Projected,
+    Euler,
+    Vector,
+    Points,
+    Relativ,
+    Axial,
+    Reset,
+}
+
+const KINDS: &[(&str, Kind)] = &[
+    ("SPATIAL", Kind::Spatial),
+    ("PROJECTED", Kind::Projected),
+    ("EULER", Kind::Euler),
+    ("VECTOR", Kind::Vector),
+    ("POINTS", Kind::Points),
+    ("RELATIV", Kind::Relativ),
+    ("AXIAL", Kind::Axial),
+    ("RESET", Kind::Reset),
+];
+
+/// The whole block; `body` starts with `PLANE` (what else is a recoverable stop).
+// Out of line in wasm, like the other families (the page split defers the ones a first screen
+// does not read: ARCHITECTURE.md).
+#[cfg_attr(target_arch = "wasm32", inline(never))]
+pub(super) fn plane<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
     const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
-    let (i, def) = if let Some(r) = keyword(i, "SPATIAL") {
-        let (r, [spa, spb, spc]) = triple(cx, r, [Word::Spa, Word::Spb, Word::Spc])?;
-        (r, PlaneDef::Spatial { spa, spb, spc })
-    } else if let Some(r) = keyword(i, "PROJECTED") {
-        let (r, propr) = mandatory(cx, r, Word::Propr)?;
-        let (r, promin) = mandatory(cx, r, Word::Promin)?;
-        let (r, rot) = mandatory(cx, r, Word::Rot)?;
-        (r, PlaneDef::Projected { propr, promin, rot })
-    } else if let Some(r) = keyword(i, "EULER") {
-        let (r, eulpr) = mandatory(cx, r, Word::Eulpr)?;
-        let (r, eulnu) = mandatory(cx, r, Word::Eulnu)?;
-        let (r, eulrot) = mandatory(cx, r, Word::Eulrot)?;
-        (r, PlaneDef::Euler { eulpr, eulnu, eulrot })
-    } else if let Some(r) = keyword(i, "VECTOR") {
-        let at = sp(r);
-        let (r, base) = triple(cx, r, [Word::Bx, Word::By, Word::Bz])?;
-        let at_n = sp(r);
-        let (r, normal) = triple(cx, r, [Word::Nx, Word::Ny, Word::Nz])?;
-        for (word, v, at) in [("B", base, at), ("N", normal, at_n)] {
-            if v.iter().all(|x| matches!(x, Value::Number(n) if *n == 0.0)) {
-                cx.error(at, 2, DiagCode::ZeroVector { word });
-            }
-        }
-        (r, PlaneDef::Vector { base, normal })
-    } else if let Some(r) = keyword(i, "POINTS") {
-        let (r, p1) = triple(cx, r, [Word::P1x, Word::P1y, Word::P1z])?;
-        let (r, p2) = triple(cx, r, [Word::P2x, Word::P2y, Word::P2z])?;
-        let (r, p3) = triple(cx, r, [Word::P3x, Word::P3y, Word::P3z])?;
-        (r, PlaneDef::Points { p1, p2, p3 })
-    } else if let Some(r) = keyword(i, "RELATIV") {
-        let r = sp(r);
-        let (key, axis) = match r.get(..3) {
-            Some("SPA") => (Word::Spa, RelAxis::Spa),
-            Some("SPB") => (Word::Spb, RelAxis::Spb),
-            Some("SPC") => (Word::Spc, RelAxis::Spc),
-            _ => {
-                cx.error(r, r.find(' ').unwrap_or(r.len()), DiagCode::MissingWord { word: "SPA|SPB|SPC" });
-                return None;
-            }
-        };
-        let (r, angle) = mandatory(cx, r, key)?;
-        (r, PlaneDef::Relativ { axis, angle })
-    } else if let Some(r) = keyword(i, "AXIAL") {
-        axial(cx, r)?
-    } else if let Some(r) = keyword(i, "RESET") {
-        (r, PlaneDef::Reset)
-    } else {
-        return cx.invalid(i, Some(Expected::Nc(DEFS)));
-    };
-    let block = options(cx, i, def)?;
-    Some(BlockBody::Plane(Box::new(block)))
+    let (i, kind) = preceded(tag("PLANE"), cut(choice(KINDS, DEFS))).parse(body)?;
+    // Each kind's words, `cut`: its keyword is read.
+    let (i, def) = match kind {
+        Kind::Spatial => triple(cx, [Word::Spa, Word::Spb, Word::Spc], i)
+            .map(|(r, [spa, spb, spc])| (r, PlaneDef::Spatial { spa, spb, spc })),
+        Kind::Projected => triple(cx, [Word::Propr, Word::Promin, Word::Rot], i)
+            .map(|(r, [propr, promin, rot])| (r, PlaneDef::Projected { propr, promin, rot })),
+        Kind::Euler => triple(cx, [Word::Eulpr, Word::Eulnu, Word::Eulrot], i)
+            .map(|(r, [eulpr, eulnu, eulrot])| (r, PlaneDef::Euler { eulpr, eulnu, eulrot })),
+        Kind::Vector => vector(cx, i),
+        Kind::Points => points(cx, i),
+        Kind::Relativ => relativ(cx, i),
+        Kind::Axial => axial(i),
+        Kind::Reset => Ok((i, PlaneDef::Reset)),
+    }
+    .map_err(hard)?;
+    let (i, block) = options(cx, i, def)?;
+    Ok((i, BlockBody::Plane(Box::new(block))))
 }
 
-/// `PLANE AXIAL B-45`, `PLANE AXIAL A+0 IC+90` (range UNCONFIRMED, not checked).
-fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
-    let mut i = sp(r);
+/// `POINTS P1X… P3Z`: three points.
+fn points<'a>(cx: &Cx, i: &'a str) -> Step<'a, PlaneDef> {
+    let (r, p1) = triple(cx, [Word::P1x, Word::P1y, Word::P1z], i)?;
+    let (r, p2) = triple(cx, [Word::P2x, Word::P2y, Word::P2z], r)?;
+    let (r, p3) = triple(cx, [Word::P3x, Word::P3y, Word::P3z], r)?;
+    Ok((r, PlaneDef::Points { p1, p2, p3 }))
+}
+
+/// `VECTOR BX… BY… BZ… NX… NY… NZ…`: a zero base or normal vector is an error that does not
+/// stop the block.
+fn vector<'a>(cx: &Cx, i: &'a str) -> Step<'a, PlaneDef> {
+    let (r, (at, base)) =
+        lex(spanned(|i: &'a str| triple(cx, [Word::Bx, Word::By, Word::Bz], i))).parse(i)?;
+    let (r, (at_n, normal)) =
+        lex(spanned(|i: &'a str| triple(cx, [Word::Nx, Word::Ny, Word::Nz], i))).parse(r)?;
+    for (word, v, at) in [("B", base, at), ("N", normal, at_n)] {
+        if v.iter().all(|x| matches!(x, Value::Number(n) if *n == 0.0)) {
+            cx.error(at, 2, DiagCode::ZeroVector { word });
+        }
+    }
+    Ok((r, PlaneDef::Vector { base, normal }))
+}
+
+/// `RELATIV SPA|SPB|SPC v`.
+fn relativ<'a>(cx: &Cx, i: &'a str) -> Step<'a, PlaneDef> {
+    let i = sp(i);
+    let (key, axis) = match i.get(..3) {
+        Some("SPA") => (Word::Spa, RelAxis::Spa),
+        Some("SPB") => (Word::Spb, RelAxis::Spb),
+        Some("SPC") => (Word::Spc, RelAxis::Spc),
+        _ => return missing(i, "SPA|SPB|SPC"),
+    };
+    let (r, angle) = mandatory(cx, key, i)?;
+    Ok((r, PlaneDef::Relativ { axis, angle }))
+}
+
+/// `PLANE AXIAL B-45`, `PLANE AXIAL A+0 IC+90` (range UNCONFIRMED, not checked): rotary axis
+/// words, each at most once, at least one.
+fn axial(i: &str) -> Step<'_, PlaneDef> {
+    let mut i = sp(i);
     let mut axes: Vec<AxialAngle> = Vec::new();
     loop {
         let at = i;
@@ -113,30 +156,106 @@ fn axial<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, PlaneDef)> {
                 w
             }
             Err(nom::Err::Error(_)) => break,
-            Err(e) => return cx.fail(e),
+            Err(e) => return Err(e),
         };
         let axis = match w.axis {
             Axis::A => RotaryAxis::A,
             Axis::B => RotaryAxis::B,
             Axis::C => RotaryAxis::C,
-            _ => return cx.invalid(at, Some(Expected::Nc("A|B|C"))),
+            _ => return invalid(at, Some(Expected::Nc("A|B|C"))),
         };
         if axes.iter().any(|a| a.axis == axis) {
-            cx.error(at, at.len() - i.len(), DiagCode::Duplicate { word: w.axis.as_str().to_owned() });
-            return None;
+            return duplicate(at, at.len() - i.len(), Named::Given(w.axis.as_str()));
         }
         axes.push(AxialAngle { axis, value: w.value, incremental: w.incremental });
     }
     if axes.is_empty() {
-        let len = i.find(' ').unwrap_or(i.len());
-        cx.error(i, len, DiagCode::MissingWord { word: "A|B|C" });
-        return None;
+        return missing(i, "A|B|C");
     }
-    Some((i, PlaneDef::Axial { axes }))
+    Ok((i, PlaneDef::Axial { axes }))
+}
+
+/// One option word after the definition.
+#[derive(Clone, Copy)]
+enum Opt {
+    Positioning(Positioning),
+    Selection(Selection),
+    Transform(TransformMode),
+}
+
+/// `MOVE [DIST v] [feed]`.
+fn move_words<'a>(cx: &Cx, i: &'a str) -> Step<'a, Positioning> {
+    let dist = preceded(lex(tag("DIST")), cut(lex(word_value)));
+    let (r, dist) = lex(opt(spanned(dist))).parse(i)?;
+    if let Some((at, v)) = dist {
+        checked(cx, Word::Dist, v, at, &at[at.len()..]);
+    }
+    let (r, feed) = opt_feed(cx, sp(r))?;
+    Ok((r, Positioning::Move { dist: dist.map(|d| d.1), feed }))
+}
+
+/// `TURN [MB v|MB MAX] [feed]`.
+fn turn_words<'a>(cx: &Cx, i: &'a str) -> Step<'a, Positioning> {
+    let mb = preceded(lex(tag("MB")), cut(lex(alt((value(None, kw("MAX")), map(word_value, Some))))));
+    let (r, mb) = lex(opt(spanned(mb))).parse(i)?;
+    let move_back = mb.map(|(at, v)| match v {
+        None => MoveBack::Max,
+        Some(v) => {
+            checked(cx, Word::Mb, v, at, &at[at.len()..]);
+            MoveBack::Dist(v)
+        }
+    });
+    let (r, feed) = opt_feed(cx, sp(r))?;
+    Ok((r, Positioning::Turn { move_back, feed }))
+}
+
+/// `SEQ±` or `SYM±` as one word.
+fn selection(i: &str) -> Step<'_, Selection> {
+    let (r, seq) = alt((value(true, tag("SEQ")), value(false, tag("SYM")))).parse(i)?;
+    match sign(r) {
+        Ok((r, s)) if at_boundary(r) => Ok((r, if seq { Selection::Seq(s) } else { Selection::Sym(s) })),
+        _ => invalid(i, Some(Expected::Nc("SEQ+|SEQ-|SYM+|SYM-"))),
+    }
+}
+
+/// The option words that stand alone, by their keyword (`SEQ±`/`SYM±` carry their sign).
+#[derive(Clone, Copy)]
+enum OptWord {
+    Move,
+    Turn,
+    Stay,
+    Coord,
+    Table,
+}
+
+const OPTION_WORDS: &[(&str, OptWord)] = &[
+    ("MOVE", OptWord::Move),
+    ("TURN", OptWord::Turn),
+    ("STAY", OptWord::Stay),
+    ("COORD", OptWord::Coord),
+    ("TABLE", OptWord::Table),
+];
+
+/// One option word with what belongs to it.
+fn option<'a>(cx: &Cx, i: &'a str) -> Step<'a, Opt> {
+    const OPTIONS: &str = "MOVE|TURN|STAY|SEQ±|SYM±|COORD ROT|TABLE ROT";
+    let Ok((r, word)) = choice(OPTION_WORDS, OPTIONS).parse(i) else {
+        return or_expected(selection, Expected::Nc(OPTIONS)).parse(i).map(|(r, s)| (r, Opt::Selection(s)));
+    };
+    let rot = |r, mode| {
+        cut(lex(or_expected(kw("ROT"), Expected::Nc("ROT")))).parse(r).map(|(r, _)| (r, Opt::Transform(mode)))
+    };
+    match word {
+        OptWord::Move => move_words(cx, r).map(|(r, p)| (r, Opt::Positioning(p))),
+        OptWord::Turn => turn_words(cx, r).map(|(r, p)| (r, Opt::Positioning(p))),
+        OptWord::Stay => Ok((r, Opt::Positioning(Positioning::Stay))),
+        OptWord::Coord => rot(r, TransformMode::CoordRot),
+        OptWord::Table => rot(r, TransformMode::TableRot),
+    }
 }
 
 /// Positioning, selection and transformation words, in any order, each at most once.
-fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
+fn options<'a>(cx: &Cx, mut i: &'a str, def: PlaneDef) -> Step<'a, PlaneBlock> {
     let mut block = PlaneBlock { def, positioning: None, selection: None, transform: None };
     loop {
         i = sp(i);
@@ -144,117 +263,49 @@ fn options(cx: &mut Cx, mut i: &str, def: PlaneDef) -> Option<PlaneBlock> {
             break;
         }
         let at = i;
-        let (rest, positioning) = if let Some(r) = keyword(i, "MOVE") {
-            let mut r = sp(r);
-            let mut dist = None;
-            if let Some(after) = r.strip_prefix("DIST") {
-                match word_value(sp(after)) {
-                    Ok((rr, v)) => {
-                        checked(cx, Word::Dist, v, r, rr);
-                        dist = Some(v);
-                        r = sp(rr);
-                    }
-                    Err(e) => return cx.fail(e),
+        let (rest, o) = option(cx, i).map_err(hard)?;
+        match o {
+            Opt::Positioning(p) => {
+                if block.positioning.is_some() {
+                    let len = word_len(at);
+                    return duplicate(at, len, Named::Written(len));
                 }
+                block.positioning = Some(p);
             }
-            let (r, feed) = opt_feed(cx, r)?;
-            (r, Some(Positioning::Move { dist, feed }))
-        } else if let Some(r) = keyword(i, "TURN") {
-            let mut r = sp(r);
-            let mut move_back = None;
-            if let Some(after) = r.strip_prefix("MB") {
-                let after = sp(after);
-                if let Some(rr) = keyword(after, "MAX") {
-                    move_back = Some(MoveBack::Max);
-                    r = sp(rr);
-                } else {
-                    match word_value(after) {
-                        Ok((rr, v)) => {
-                            checked(cx, Word::Mb, v, r, rr);
-                            move_back = Some(MoveBack::Dist(v));
-                            r = sp(rr);
-                        }
-                        Err(e) => return cx.fail(e),
-                    }
-                }
-            }
-            let (r, feed) = opt_feed(cx, r)?;
-            (r, Some(Positioning::Turn { move_back, feed }))
-        } else if let Some(r) = keyword(i, "STAY") {
-            (r, Some(Positioning::Stay))
-        } else {
-            (i, None)
-        };
-        if let Some(p) = positioning {
-            if block.positioning.is_some() {
-                let len = at.find(' ').unwrap_or(at.len());
-                cx.error(at, len, DiagCode::Duplicate { word: at[..len].to_owned() });
-                return None;
-            }
-            block.positioning = Some(p);
-            i = rest;
-            continue;
-        }
-        let seq = i.strip_prefix("SEQ").map(|r| (r, true));
-        if let Some((r, is_seq)) = seq.or_else(|| i.strip_prefix("SYM").map(|r| (r, false))) {
-            let Ok((r, s)) =
-                sign(r).map_err(|_| ()).and_then(|(r, s)| if at_boundary(r) { Ok((r, s)) } else { Err(()) })
-            else {
-                return cx.invalid(at, Some(Expected::Nc("SEQ+|SEQ-|SYM+|SYM-")));
-            };
-            let sel = if is_seq { Selection::Seq(s) } else { Selection::Sym(s) };
-            match block.selection {
+            Opt::Selection(sel) => match block.selection {
                 None => block.selection = Some(sel),
                 Some(prev) => {
-                    let code = if matches!(
+                    return if matches!(
                         (prev, sel),
                         (Selection::Seq(_), Selection::Sym(_)) | (Selection::Sym(_), Selection::Seq(_))
                     ) {
-                        DiagCode::SeqWithSym
+                        fault(at, 4, Why::SeqWithSym)
                     } else {
-                        DiagCode::Duplicate { word: at[..4].to_owned() }
+                        duplicate(at, 4, Named::Written(4))
                     };
-                    cx.error(at, 4, code);
-                    return None;
                 }
+            },
+            Opt::Transform(t) => {
+                if block.transform.is_some() {
+                    let len = at.len() - rest.len();
+                    return duplicate(at, len, Named::Written(len));
+                }
+                block.transform = Some(t);
             }
-            i = r;
-            continue;
         }
-        let transform = if let Some(r) = keyword(i, "COORD") {
-            Some((r, TransformMode::CoordRot))
-        } else {
-            keyword(i, "TABLE").map(|r| (r, TransformMode::TableRot))
-        };
-        if let Some((r, t)) = transform {
-            let Some(r) = keyword(sp(r), "ROT") else { return cx.invalid(sp(r), Some(Expected::Nc("ROT"))) };
-            if block.transform.is_some() {
-                let len = at.len() - r.len();
-                cx.error(at, len, DiagCode::Duplicate { word: at[..len].to_owned() });
-                return None;
-            }
-            block.transform = Some(t);
-            i = r;
-            continue;
-        }
-        return cx.invalid(at, Some(Expected::Nc("MOVE|TURN|STAY|SEQ±|SYM±|COORD ROT|TABLE ROT")));
+        i = rest;
     }
     if block.positioning.is_none() {
         cx.warn(i, 0, DiagCode::MissingPositioning);
     }
-    Some(block)
+    Ok((i, block))
 }
 
-/// An optional feed after MOVE/TURN.
-fn opt_feed<'a>(cx: &mut Cx, r: &'a str) -> Option<(&'a str, Option<Feed>)> {
-    match feed(r) {
-        Ok((rest, f)) => {
-            if let Feed::Value(v) = f {
-                checked(cx, Word::F, v, r, rest);
-            }
-            Some((rest, Some(f)))
-        }
-        Err(nom::Err::Error(_)) => Some((r, None)),
-        Err(e) => cx.fail(e),
+/// An optional feed after MOVE/TURN, checked against its range.
+fn opt_feed<'a>(cx: &Cx, r: &'a str) -> Step<'a, Option<Feed>> {
+    let (rest, f) = opt(feed).parse(r)?;
+    if let Some(Feed::Value(v)) = f {
+        checked(cx, Word::F, v, r, rest);
     }
+    Ok((rest, f))
 }

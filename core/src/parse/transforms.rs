@@ -2,97 +2,99 @@
 //!   trans := TRANS DATUM (AXIS {axis±v} | RESET) | TRANS MIRROR (AXIS {X|Y|Z…} | RESET)
 //!          | TRANS ROTATION ([I]ROT v | RESET)
 
-use super::Cx;
-use super::words::{axis_word, keyword, sp, word_value};
-use crate::ast::{Axis, BlockBody};
-use crate::diag::{DiagCode, Expected};
+use nom::Parser;
+use nom::branch::alt;
+use nom::bytes::complete::tag;
+use nom::combinator::{cut, opt, value};
 
-/// `TRANS …` (`TRANS SCALE` and others are kept as unknown blocks).
+use super::Cx;
+use super::words::{
+    Named, Step, axis_word, choice, duplicate, hard, invalid, kw, lex, missing, or_expected, sp, whole,
+    word_value,
+};
+use crate::ast::{Axis, BlockBody};
+use crate::diag::Expected;
+
+#[derive(Clone, Copy)]
+enum Kind {
+    Datum,
+    Mirror,
+    Rotation,
+}
+
+/// `TRANS …` (`TRANS SCALE` and others are a recoverable stop: kept as unknown blocks).
 // Out of line: the page split (scripts/split_pages.py) can leave this family's code to the
 // wasm loaded after the first screen (whose program has no such block). Only in wasm: natively
 // it cost 5-7 % of bench_parse.
 #[cfg_attr(target_arch = "wasm32", inline(never))]
-pub(super) fn trans(cx: &mut Cx, body: &str) -> Option<BlockBody> {
-    let Some(i) = keyword(body, "TRANS").map(sp) else { return super::unknown(cx, body) };
-    if let Some(r) = keyword(i, "DATUM").map(sp) {
-        if let Some(r) = keyword(r, "RESET") {
-            return end(cx, r, BlockBody::TransDatumReset);
-        }
-        let Some(mut r) = keyword(r, "AXIS").map(sp) else {
-            return cx.invalid(r, Some(Expected::Nc("AXIS|RESET")));
-        };
-        cx.axes.clear();
-        while !r.is_empty() {
-            match axis_word(r) {
-                Ok((rest, w)) => {
-                    if cx.axes.iter().any(|a| a.axis == w.axis) {
-                        cx.error(
-                            r,
-                            r.len() - rest.len(),
-                            DiagCode::Duplicate { word: w.axis.as_str().to_owned() },
-                        );
-                        return None;
-                    }
-                    cx.axes.push(w);
-                    r = sp(rest);
-                }
-                Err(e) => return cx.fail(e),
-            }
-        }
-        if cx.axes.is_empty() {
-            cx.error(r, 0, DiagCode::MissingWord { word: "X|Y|Z" });
-            return None;
-        }
-        return Some(BlockBody::TransDatum { axes: cx.take_axes() });
+pub(super) fn trans<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
+    let kind = choice(
+        &[("DATUM", Kind::Datum), ("MIRROR", Kind::Mirror), ("ROTATION", Kind::Rotation)],
+        "DATUM|MIRROR|ROTATION",
+    );
+    let (i, (_, kind)) = (kw("TRANS"), kind).parse(body)?;
+    let (i, reset) = opt(whole(kw("RESET"))).parse(i)?;
+    match (kind, reset.is_some()) {
+        (Kind::Datum, true) => Ok((i, BlockBody::TransDatumReset)),
+        (Kind::Mirror, true) => Ok((i, BlockBody::TransMirrorReset)),
+        (Kind::Rotation, true) => Ok((i, BlockBody::TransRotationReset)),
+        (Kind::Datum, false) => datum(cx, i),
+        (Kind::Mirror, false) => mirror(i),
+        (Kind::Rotation, false) => rotation(i),
     }
-    if let Some(r) = keyword(i, "MIRROR").map(sp) {
-        if let Some(r) = keyword(r, "RESET") {
-            return end(cx, r, BlockBody::TransMirrorReset);
-        }
-        let Some(mut r) = keyword(r, "AXIS").map(sp) else {
-            return cx.invalid(r, Some(Expected::Nc("AXIS|RESET")));
-        };
-        let mut axes: Vec<Axis> = Vec::new();
-        while !r.is_empty() {
-            let Some((rest, a)) = Axis::ALL.iter().find_map(|&a| keyword(r, a.as_str()).map(|x| (x, a)))
-            else {
-                return cx.invalid(r, Some(Expected::Nc("X|Y|Z")));
-            };
-            if axes.contains(&a) {
-                cx.error(r, 1, DiagCode::Duplicate { word: a.as_str().to_owned() });
-                return None;
-            }
-            axes.push(a);
-            r = sp(rest);
-        }
-        if axes.is_empty() {
-            cx.error(r, 0, DiagCode::MissingWord { word: "X|Y|Z" });
-            return None;
-        }
-        return Some(BlockBody::TransMirror { axes: axes.into_boxed_slice() });
-    }
-    if let Some(r) = keyword(i, "ROTATION").map(sp) {
-        if let Some(r) = keyword(r, "RESET") {
-            return end(cx, r, BlockBody::TransRotationReset);
-        }
-        let (incremental, after) = match (r.strip_prefix("IROT"), r.strip_prefix("ROT")) {
-            (Some(a), _) => (true, a),
-            (None, Some(a)) => (false, a),
-            _ => {
-                cx.error(r, r.find(' ').unwrap_or(r.len()), DiagCode::MissingWord { word: "ROT" });
-                return None;
-            }
-        };
-        return match word_value(sp(after)) {
-            Ok((rest, rot)) => end(cx, rest, BlockBody::TransRotation { rot, incremental }),
-            Err(e) => cx.fail(e),
-        };
-    }
-    super::unknown(cx, body)
 }
 
-/// Nothing may follow.
-pub(super) fn end(cx: &mut Cx, rest: &str, body: BlockBody) -> Option<BlockBody> {
-    let rest = sp(rest);
-    if rest.is_empty() { Some(body) } else { cx.invalid(rest, None) }
+/// `AXIS`, or else a stop naming `AXIS|RESET`.
+fn axis_keyword(i: &str) -> Step<'_, &'static str> {
+    cut(lex(or_expected(kw("AXIS"), Expected::Nc("AXIS|RESET")))).parse(i)
+}
+
+/// `AXIS X+10 Y-5`: axis words, each at most once, at least one.
+fn datum<'a>(cx: &Cx, i: &'a str) -> Step<'a, BlockBody> {
+    let (mut r, _) = axis_keyword(i)?;
+    r = sp(r);
+    cx.clear_words();
+    while !r.is_empty() {
+        let (rest, w) = axis_word(r).map_err(hard)?;
+        cx.push_axis(r, rest, w)?;
+        r = sp(rest);
+    }
+    if cx.axis_count() == 0 {
+        return missing(r, "X|Y|Z");
+    }
+    Ok((r, BlockBody::TransDatum { axes: cx.take_axes() }))
+}
+
+/// `AXIS X Y`: axis letters, each at most once, at least one.
+fn mirror(i: &str) -> Step<'_, BlockBody> {
+    let (mut r, _) = axis_keyword(i)?;
+    r = sp(r);
+    let mut axes: Vec<Axis> = Vec::new();
+    while !r.is_empty() {
+        let Some((rest, a)) =
+            Axis::ALL.iter().find_map(|&a| kw(a.as_str()).parse(r).ok().map(|(x, _)| (x, a)))
+        else {
+            return invalid(r, Some(Expected::Nc("X|Y|Z")));
+        };
+        if axes.contains(&a) {
+            return duplicate(r, 1, Named::Given(a.as_str()));
+        }
+        axes.push(a);
+        r = sp(rest);
+    }
+    if axes.is_empty() {
+        return missing(r, "X|Y|Z");
+    }
+    Ok((r, BlockBody::TransMirror { axes: axes.into_boxed_slice() }))
+}
+
+/// `ROT v` or `IROT v`.
+fn rotation(i: &str) -> Step<'_, BlockBody> {
+    let i = sp(i);
+    let key: Step<'_, bool> = alt((value(true, tag("IROT")), value(false, tag("ROT")))).parse(i);
+    let Ok((after, incremental)) = key else {
+        return missing(i, "ROT");
+    };
+    let (rest, rot) = whole(lex(word_value)).parse(after).map_err(hard)?;
+    Ok((rest, BlockBody::TransRotation { rot, incremental }))
 }

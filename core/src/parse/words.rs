@@ -6,25 +6,76 @@ use nom::bytes::complete::{tag, take_till1, take_until, take_while1};
 use nom::character::complete::{char, digit0, digit1, one_of, space0};
 use nom::combinator::opt;
 use nom::error::{ErrorKind, ParseError};
-use nom::sequence::preceded;
+use nom::sequence::{preceded, terminated};
 use nom::{IResult, Parser};
 
-use crate::diag::Expected;
+use crate::diag::{DiagCode, Expected};
 use crate::plane::{Feed, Sign, Value};
 
-/// The parser's nom error: where a word reader stopped and what it wanted there (if it can
-/// say). As nom's `Err::Error` it is recoverable: the word is not there, the caller may try
-/// another one. As `Err::Failure` (nom's `cut`) it is hard: the word began but is malformed, no
-/// alternative can help. [`super::Cx::fail`] turns either into the block's one diagnostic.
+/// The parser's nom error: where a word reader stopped and why ([`Why`]: what it wanted there,
+/// or a diagnostic of its own, whose span is then `at` itself). As nom's `Err::Error` it is
+/// recoverable: the word is not there, the caller may try another one (a whole family's
+/// `Err::Error`: the block is not of this family). As `Err::Failure` (nom's `cut`) it is hard:
+/// the word began but is malformed, no alternative can help. [`super::Cx::fail`] turns either
+/// into the block's one diagnostic. Small and `Copy`: a stop is moved through every combinator.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct NcError<'a> {
     pub(crate) at: &'a str,
-    pub(crate) what: Option<Expected>,
+    pub(crate) why: Why,
+}
+
+/// Why a reader stopped.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Why {
+    /// The word at the stop cannot be read; nothing more to say.
+    Unsaid,
+    /// The word at the stop cannot be read; this was expected there.
+    Expected(Expected),
+    /// A mandatory word is not there ([`DiagCode::MissingWord`]).
+    Missing(&'static str),
+    /// The same word twice ([`DiagCode::Duplicate`]).
+    Duplicate(Named),
+    /// A word this block does not take ([`DiagCode::NotAllowed`]).
+    NotAllowed,
+    /// `SEQ` and `SYM` in one PLANE block.
+    SeqWithSym,
+}
+
+/// How a duplicate names its word.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Named {
+    /// A name of the grammar (an axis letter, `DR2`).
+    Given(&'static str),
+    /// The first so many bytes at the stop, as written.
+    Written(usize),
+}
+
+impl NcError<'_> {
+    /// What was expected where the stop is an unreadable word.
+    pub(crate) fn expected(&self) -> Option<Expected> {
+        match self.why {
+            Why::Expected(what) => Some(what),
+            _ => None,
+        }
+    }
+
+    /// The diagnostic of a stop with one of its own, `None` for an unreadable word.
+    pub(crate) fn code(&self) -> Option<DiagCode> {
+        let written = |n: usize| self.at.get(..n).unwrap_or(self.at).to_owned();
+        Some(match self.why {
+            Why::Unsaid | Why::Expected(_) => return None,
+            Why::Missing(word) => DiagCode::MissingWord { word },
+            Why::Duplicate(Named::Given(word)) => DiagCode::Duplicate { word: word.to_owned() },
+            Why::Duplicate(Named::Written(n)) => DiagCode::Duplicate { word: written(n) },
+            Why::NotAllowed => DiagCode::NotAllowed { word: self.at.to_owned() },
+            Why::SeqWithSym => DiagCode::SeqWithSym,
+        })
+    }
 }
 
 impl<'a> ParseError<&'a str> for NcError<'a> {
     fn from_error_kind(input: &'a str, _: ErrorKind) -> Self {
-        NcError { at: input, what: None }
+        NcError { at: input, why: Why::Unsaid }
     }
 
     /// The innermost stop says best what was wrong.
@@ -41,12 +92,42 @@ pub(crate) type Step<'a, T> = IResult<&'a str, T, NcError<'a>>;
 
 /// A recoverable stop at `at` naming what was expected.
 pub(crate) fn expected<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
-    Err(nom::Err::Error(NcError { at, what: Some(what) }))
+    Err(nom::Err::Error(NcError { at, why: Why::Expected(what) }))
 }
 
 /// A hard stop (no alternative can help) at `at`.
 pub(crate) fn failure<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
-    Err(nom::Err::Failure(NcError { at, what: Some(what) }))
+    Err(nom::Err::Failure(NcError { at, why: Why::Expected(what) }))
+}
+
+/// A hard stop on the word at `at`, naming what was expected there if it can.
+pub(crate) fn invalid<'a, T>(at: &'a str, what: Option<Expected>) -> Step<'a, T> {
+    Err(nom::Err::Failure(NcError { at, why: what.map_or(Why::Unsaid, Why::Expected) }))
+}
+
+/// A hard stop with a diagnostic of its own, marking `len` bytes from `at`.
+pub(crate) fn fault<T>(at: &str, len: usize, why: Why) -> Step<'_, T> {
+    Err(nom::Err::Failure(NcError { at: at.get(..len).unwrap_or(at), why }))
+}
+
+/// A hard stop "the same word twice" on `len` bytes from `at`, naming `word`.
+pub(crate) fn duplicate<T>(at: &str, len: usize, word: Named) -> Step<'_, T> {
+    fault(at, len, Why::Duplicate(word))
+}
+
+/// A hard stop "missing word" at `at`, marking the word there (nothing at the end).
+pub(crate) fn missing<'a, T>(at: &'a str, word: &'static str) -> Step<'a, T> {
+    fault(at, word_len(at), Why::Missing(word))
+}
+
+/// A hard stop "not allowed in this block" on the word at `at`.
+pub(crate) fn not_allowed<T>(at: &str) -> Step<'_, T> {
+    fault(at, word_len(at), Why::NotAllowed)
+}
+
+/// The length of the word at `i`: up to the next blank.
+pub(crate) fn word_len(i: &str) -> usize {
+    i.find([' ', '\t']).unwrap_or(i.len())
 }
 
 /// The same stop as a hard one (the word has begun, so its absence is an error): what nom's
@@ -58,12 +139,20 @@ pub(crate) fn hard(e: Stop<'_>) -> Stop<'_> {
     }
 }
 
+/// The same stop as a recoverable one: the word is not this one, another may be.
+pub(crate) fn soft(e: Stop<'_>) -> Stop<'_> {
+    match e {
+        nom::Err::Failure(e) => nom::Err::Error(e),
+        e => e,
+    }
+}
+
 /// Where a reader stopped and what it expected there. Every reader is nom's `complete` kind,
 /// so an incomplete input does not occur; were it to, it reads as a stop at the end.
 pub(crate) fn stopped_at(e: Stop<'_>) -> NcError<'_> {
     match e {
         nom::Err::Error(e) | nom::Err::Failure(e) => e,
-        nom::Err::Incomplete(_) => NcError { at: "", what: None },
+        nom::Err::Incomplete(_) => NcError { at: "", why: Why::Unsaid },
     }
 }
 
@@ -92,6 +181,85 @@ pub(crate) fn at_boundary(i: &str) -> bool {
 /// The end of a word as a nom parser: consumes nothing, stops unless at a blank or the end.
 pub(crate) fn boundary(i: &str) -> Step<'_, ()> {
     if at_boundary(i) { Ok((i, ())) } else { expected(i, Expected::Blank) }
+}
+
+/// Blanks as a nom parser (nom 8.0's `space0` gives an all-blank input's empty rest at its
+/// start: `sp` places it at the end).
+pub(crate) fn blanks(i: &str) -> Step<'_, ()> {
+    Ok((sp(i), ()))
+}
+
+/// `p` after blanks.
+pub(crate) fn lex<'a, O>(
+    p: impl Parser<&'a str, Output = O, Error = NcError<'a>>,
+) -> impl Parser<&'a str, Output = O, Error = NcError<'a>> {
+    preceded(blanks, p)
+}
+
+/// The keyword `word` standing alone (followed by a blank or the end), after blanks; a
+/// recoverable stop naming it otherwise.
+pub(crate) fn kw<'a>(word: &'static str) -> impl Parser<&'a str, Output = &'static str, Error = NcError<'a>> {
+    move |i: &'a str| {
+        let i = sp(i);
+        match keyword(i, word) {
+            Some(rest) => Ok((rest, word)),
+            None => expected(i, Expected::Nc(word)),
+        }
+    }
+}
+
+/// The first of `table`'s keywords standing alone here (after blanks), as its value; a
+/// recoverable stop expecting `what` otherwise. One loop over a table where an `alt` of
+/// `value(…, kw(…))` would unroll a parser per word.
+pub(crate) fn choice<'a, T: Copy>(
+    table: &'static [(&'static str, T)],
+    what: &'static str,
+) -> impl Parser<&'a str, Output = T, Error = NcError<'a>> {
+    move |i: &'a str| {
+        let i = sp(i);
+        match table.iter().find_map(|&(word, v)| keyword(i, word).map(|rest| (rest, v))) {
+            Some(found) => Ok(found),
+            None => expected(i, Expected::Nc(what)),
+        }
+    }
+}
+
+/// The end of the block, after blanks: anything else is a hard stop on the word there.
+pub(crate) fn end_of_block(i: &str) -> Step<'_, ()> {
+    let rest = sp(i);
+    if rest.is_empty() {
+        Ok((rest, ()))
+    } else {
+        Err(nom::Err::Failure(NcError { at: rest, why: Why::Unsaid }))
+    }
+}
+
+/// `p`, and then nothing but blanks up to the end of the block.
+pub(crate) fn whole<'a, O>(
+    p: impl Parser<&'a str, Output = O, Error = NcError<'a>>,
+) -> impl Parser<&'a str, Output = O, Error = NcError<'a>> {
+    terminated(p, end_of_block)
+}
+
+/// `p` with what it consumed: the text of the word it read (a diagnostic's span).
+pub(crate) fn spanned<'a, O>(
+    mut p: impl Parser<&'a str, Output = O, Error = NcError<'a>>,
+) -> impl Parser<&'a str, Output = (&'a str, O), Error = NcError<'a>> {
+    move |i: &'a str| {
+        let (rest, o) = p.parse(i)?;
+        Ok((rest, (&i[..i.len() - rest.len()], o)))
+    }
+}
+
+/// `p`, its recoverable stop said as expecting `what` at the place it was tried.
+pub(crate) fn or_expected<'a, O>(
+    mut p: impl Parser<&'a str, Output = O, Error = NcError<'a>>,
+    what: Expected,
+) -> impl Parser<&'a str, Output = O, Error = NcError<'a>> {
+    move |i: &'a str| match p.parse(i) {
+        Err(nom::Err::Error(_)) => expected(i, what),
+        r => r,
+    }
 }
 
 /// A keyword that must stand alone (`TURN`, `FMAX`, `RESET`), followed by a blank or the end.
@@ -311,7 +479,7 @@ mod tests {
         assert_eq!(token("TNC:\\A.H"), Ok(("", "TNC:\\A.H")));
         assert_eq!(quoted("\"name\""), Ok(("", "name")));
         assert_eq!(keyword("STAY", "STAY"), Some(""));
-        assert_eq!(uint("4294967296").map_err(stopped_at).unwrap_err().what, Some(Expected::NumberU32));
+        assert_eq!(uint("4294967296").map_err(stopped_at).unwrap_err().expected(), Some(Expected::NumberU32));
         assert!(matches!(quoted("\"open"), Err(nom::Err::Failure(_))), "an open quote is hard");
         assert!(matches!(number("X"), Err(nom::Err::Error(_))), "no number: try another word");
     }
