@@ -10,7 +10,7 @@
 //! expected there, or a diagnostic of its own such as a missing or doubled word). A family's
 //! recoverable stop (`Err::Error`) means "not one of my blocks" and the block is kept as an
 //! unknown one; a hard stop (`Err::Failure`) is the block's error. Findings that do not stop a
-//! block (a value out of range, a warning) go to the shared [`Cx`] while the parser runs.
+//! block (a value out of range, a warning) go to the shared `Cx` while the parser runs.
 //!
 //! nom 8.0 hands back an all-matching `space0`'s or `digit0`'s empty rest at the wrong address
 //! (the start of the input), and diagnostics are placed by address: blanks are skipped with

@@ -14,13 +14,13 @@ use nom::sequence::preceded;
 
 use super::Cx;
 use super::words::{
-    Named, Step, Why, at_boundary, axis_word, choice, duplicate, fault, feed, hard, invalid, kw, lex,
-    missing, or_expected, sign, sp, spanned, word_len, word_value,
+    Named, Step, Why, at_boundary, axis_word, choice, duplicate, expected, fault, feed, hard, invalid,
+    keyword, kw, lex, missing, or_expected, sign, sp, spanned, word_len, word_value,
 };
 use crate::ast::{Axis, BlockBody};
 use crate::diag::{DiagCode, Expected};
 use crate::plane::{
-    AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, Positioning, RelAxis, RotaryAxis, Selection,
+    AxialAngle, Feed, MoveBack, PlaneBlock, PlaneDef, PlaneKind, Positioning, RelAxis, RotaryAxis, Selection,
     TransformMode, Value, Word, check,
 };
 
@@ -57,50 +57,35 @@ fn triple<'a>(cx: &Cx, words: [Word; 3], i: &'a str) -> Step<'a, [Value; 3]> {
     .parse(i)
 }
 
-/// The kinds of definition, by their keyword.
-#[derive(Clone, Copy)]
-enum Kind {
-    Spatial,
-    Projected,
-    Euler,
-    Vector,
-    Points,
-    Relativ,
-    Axial,
-    Reset,
+/// The kind of definition by its keyword (the words of the control's softkey row).
+fn kind(i: &str) -> Step<'_, PlaneKind> {
+    const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
+    let i = sp(i);
+    match PlaneKind::ALL.into_iter().find_map(|k| keyword(i, k.as_str()).map(|rest| (rest, k))) {
+        Some(found) => Ok(found),
+        None => expected(i, Expected::Nc(DEFS)),
+    }
 }
-
-const KINDS: &[(&str, Kind)] = &[
-    ("SPATIAL", Kind::Spatial),
-    ("PROJECTED", Kind::Projected),
-    ("EULER", Kind::Euler),
-    ("VECTOR", Kind::Vector),
-    ("POINTS", Kind::Points),
-    ("RELATIV", Kind::Relativ),
-    ("AXIAL", Kind::Axial),
-    ("RESET", Kind::Reset),
-];
 
 /// The whole block; `body` starts with `PLANE` (what else is a recoverable stop).
 // Out of line in wasm, like the other families (the page split defers the ones a first screen
 // does not read: ARCHITECTURE.md).
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn plane<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
-    const DEFS: &str = "SPATIAL|PROJECTED|EULER|VECTOR|POINTS|RELATIV|AXIAL|RESET";
-    let (i, kind) = preceded(tag("PLANE"), cut(choice(KINDS, DEFS))).parse(body)?;
+    let (i, kind) = preceded(tag("PLANE"), cut(kind)).parse(body)?;
     // Each kind's words, `cut`: its keyword is read.
     let (i, def) = match kind {
-        Kind::Spatial => triple(cx, [Word::Spa, Word::Spb, Word::Spc], i)
+        PlaneKind::Spatial => triple(cx, [Word::Spa, Word::Spb, Word::Spc], i)
             .map(|(r, [spa, spb, spc])| (r, PlaneDef::Spatial { spa, spb, spc })),
-        Kind::Projected => triple(cx, [Word::Propr, Word::Promin, Word::Rot], i)
+        PlaneKind::Projected => triple(cx, [Word::Propr, Word::Promin, Word::Rot], i)
             .map(|(r, [propr, promin, rot])| (r, PlaneDef::Projected { propr, promin, rot })),
-        Kind::Euler => triple(cx, [Word::Eulpr, Word::Eulnu, Word::Eulrot], i)
+        PlaneKind::Euler => triple(cx, [Word::Eulpr, Word::Eulnu, Word::Eulrot], i)
             .map(|(r, [eulpr, eulnu, eulrot])| (r, PlaneDef::Euler { eulpr, eulnu, eulrot })),
-        Kind::Vector => vector(cx, i),
-        Kind::Points => points(cx, i),
-        Kind::Relativ => relativ(cx, i),
-        Kind::Axial => axial(i),
-        Kind::Reset => Ok((i, PlaneDef::Reset)),
+        PlaneKind::Vector => vector(cx, i),
+        PlaneKind::Points => points(cx, i),
+        PlaneKind::Relativ => relativ(cx, i),
+        PlaneKind::Axial => axial(i),
+        PlaneKind::Reset => Ok((i, PlaneDef::Reset)),
     }
     .map_err(hard)?;
     let (i, block) = options(cx, i, def)?;
