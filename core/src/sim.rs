@@ -99,6 +99,7 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use crate::ast::{BlockBody, Label, Program};
+use crate::lang::Text;
 use crate::machine::Machine;
 
 pub use collision::{Collision, SafeAlternative};
@@ -339,7 +340,19 @@ impl Simulation {
                     });
                 }
                 Err(code) => {
-                    *error = Some(make_error(program, step, block, code));
+                    let mut e = make_error(program, step, block, code);
+                    // A stop from the tool's size with a size only assumed: said with it, or a
+                    // trainee looks for the fault in the program.
+                    if e.code.depends_on_tool_size()
+                        && let Some(assumed) = it.assumed_tool()
+                    {
+                        let why = assumed.text();
+                        e.detail = Text::owned(
+                            format!("{} ({})", e.detail.de, why.de),
+                            format!("{} ({})", e.detail.en, why.en),
+                        );
+                    }
+                    *error = Some(e);
                     break;
                 }
             }

@@ -292,6 +292,32 @@ fn error_of(src: &str) -> (u32, SimErrorCode, String) {
     (number, e.code, format!("{} {}", e.message.de, e.detail.de))
 }
 
+/// A stop that comes from the tool's size, with a tool the table does not have: the size was
+/// the default tool's (L=100 R=5, `static/tools.json`), and the stop says so with the numbers.
+#[test]
+fn a_stop_from_an_assumed_tool_size_says_the_tool_was_assumed() {
+    let bore = |tool: &str| {
+        format!(
+            "0 BEGIN PGM E MM\n1 TOOL CALL {tool} Z S5000 F800\n2 CYCL DEF 208 BOHRFRAESEN ~\n  Q200=+2 ~\n  Q201=-6 ~\n  Q206=+150 ~\n  Q334=+1.5 ~\n  Q203=+0 ~\n  Q204=+20 ~\n  Q335=+8 ~\n  Q342=+0 ~\n  Q351=+1\n3 L X+0 Y+0 Z+30 R0 FMAX M99\n4 END PGM E MM\n"
+        )
+    };
+    let (_, code, text) = error_of(&bore("99"));
+    assert_eq!(code, SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 8.0 });
+    assert!(text.contains("(Werkzeug 99 nicht in der Werkzeugtabelle: L=100 R=5 angenommen)"), "{text}");
+    let (p, _, sim) = run_on(&bore("\"T433219138\""), "ac-table");
+    let e = sim.error.expect("an error");
+    assert_eq!(p.blocks[e.block].number(), Some(3));
+    assert!(
+        e.detail.en.ends_with("(Tool \"T433219138\" not in the tool table: assuming L=100 R=5)"),
+        "{}",
+        e.detail.en
+    );
+    // A stop that has nothing to do with the tool's size says nothing of it.
+    let (_, code, text) = error_of(&drilling("4 CYCL CALL PAT FMAX\n"));
+    assert_eq!(code, SimErrorCode::NoPattern);
+    assert!(!text.contains("Werkzeugtabelle"), "{text}");
+}
+
 #[test]
 fn the_cycles_errors_stop_the_run_at_the_calling_block() {
     // Bore Ø 8 with the Ø 10 end mill of tool 1.
@@ -299,6 +325,7 @@ fn the_cycles_errors_stop_the_run_at_the_calling_block() {
     let (n, code, text) = error_of(src);
     assert_eq!((n, code), (3, SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 8.0 }));
     assert!(text.contains("Werkzeug-Radius zu groß") && text.contains("Zyklus 208"), "{text}");
+    assert!(!text.contains("Werkzeugtabelle"), "tool 1 is in the table: {text}");
     let (n, code, _) = error_of(&drilling("4 CYCL CALL PAT FMAX\n"));
     assert_eq!((n, code), (4, SimErrorCode::NoPattern));
     let (n, code, text) = error_of(&drilling(

@@ -141,6 +141,20 @@ fn t(de: impl Into<std::borrow::Cow<'static, str>>, en: impl Into<std::borrow::C
 }
 
 impl SimErrorCode {
+    /// Whether the stop comes from the tool's size (a bore, an arc or a contour element too
+    /// small for it): with a tool the table does not have, its size was assumed, and the stop
+    /// says so.
+    #[must_use]
+    pub fn depends_on_tool_size(&self) -> bool {
+        matches!(
+            self,
+            SimErrorCode::ToolTooLarge { .. }
+                | SimErrorCode::ToolTooSmall { .. }
+                | SimErrorCode::ToolRadiusTooLarge { .. }
+                | SimErrorCode::ContourElementTooSmall { .. }
+        )
+    }
+
     /// The control's message (wordings not found in a source are marked in
     /// [`crate::unconfirmed::SIM_MESSAGES_UNCONFIRMED`]).
     #[must_use]

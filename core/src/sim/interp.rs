@@ -346,6 +346,18 @@ impl Interp {
         it
     }
 
+    /// The tool in the spindle when the table does not have it: its length and radius are the
+    /// default tool's ([`Note::ToolNotInTable`], as its TOOL CALL said).
+    pub fn assumed_tool(&self) -> Option<Note> {
+        let t = &self.tool;
+        (!t.known).then(|| Note::ToolNotInTable {
+            number: t.number,
+            name: t.name.clone(),
+            length: t.length,
+            radius: t.radius,
+        })
+    }
+
     pub fn done(&self, program: &Program) -> bool {
         self.pc >= program.blocks.len()
     }
