@@ -99,7 +99,6 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use crate::ast::{BlockBody, Label, Program};
-use crate::lang::Text;
 use crate::machine::Machine;
 
 pub use collision::{Collision, SafeAlternative};
@@ -341,16 +340,10 @@ impl Simulation {
                 }
                 Err(code) => {
                     let mut e = make_error(program, step, block, code);
-                    // A stop from the tool's size with a size only assumed: said with it, or a
-                    // trainee looks for the fault in the program.
-                    if e.code.depends_on_tool_size()
-                        && let Some(assumed) = it.assumed_tool()
-                    {
-                        let why = assumed.text();
-                        e.detail = Text::owned(
-                            format!("{} ({})", e.detail.de, why.de),
-                            format!("{} ({})", e.detail.en, why.en),
-                        );
+                    // A stop that comes from what the trainer assumed or does not simulate says
+                    // so, or a trainee looks for the fault in the program.
+                    if let Some(because) = it.because(&e.code) {
+                        e.detail = e.code.detail_because(&because);
                     }
                     *error = Some(e);
                     break;

@@ -103,3 +103,36 @@ fn a_note_is_worded_from_its_numbers_and_serialised_with_its_code() {
     let json = serde_json::to_value(&n).expect("json");
     assert_eq!(json, serde_json::json!({"code": "pattern_call", "cycle": 200, "points": 4, "moves": 20}));
 }
+
+/// A stop that comes from what the trainer does not simulate says so: a touch-probe cycle's
+/// result parameter (Q150 to Q166, Q180 to Q182: the cycle manuals' "Measurement results in Q
+/// parameters") read after the cycle ran. Not said for another parameter, nor without a probe
+/// cycle before.
+#[test]
+fn a_probe_result_read_after_an_unsimulated_probe_says_why_it_has_no_value() {
+    let machine = Machine::builtin("ac-table").expect("machine");
+    let detail = |middle: &str| {
+        let src =
+            format!("0 BEGIN PGM P MM\n1 TOOL CALL 1 Z S2000\n{middle}9 Q1 = Q160 + Q5\n10 END PGM P MM\n");
+        let (program, _) = parse(&src);
+        let sim = simulate(&program, &machine, &SimOptions::default());
+        let e = sim.error.expect("the run stops");
+        (e.line, e.detail)
+    };
+    let probe = "2 TCH PROBE 427 MESSEN KOORDINATE ~\n  Q263=+0 ~\n  Q264=+0 ~\n  Q261=-5 ~\n  Q320=+2 ~\n  Q272=+3 ~\n  Q267=-1 ~\n  Q260=+50 ~\n  Q281=+0 ~\n  Q288=+0 ~\n  Q289=+0 ~\n  Q309=+0 ~\n  Q330=+0\n";
+    let (line, text) = detail(probe);
+    assert_eq!(line, 16);
+    assert_eq!(
+        text.get(Lang::En),
+        "Q160 has no value yet (TCH PROBE 427 does not measure in the trainer: touch-probe cycles save their results in Q150 to Q166 and Q180 to Q182)"
+    );
+    assert!(
+        text.get(Lang::De).starts_with("Q160 wurde noch kein Wert zugewiesen (TCH PROBE 427 misst nicht")
+    );
+    // Without the probe cycle: the plain stop.
+    let (_, text) = detail("2 L Z+50 R0 FMAX\n");
+    assert_eq!(text.get(Lang::En), "Q160 has no value yet");
+    // A parameter no probe cycle writes: the plain stop.
+    let (_, text) = detail(&format!("{probe}3 Q160 = 1\n"));
+    assert_eq!(text.get(Lang::En), "Q5 has no value yet");
+}

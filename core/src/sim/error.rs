@@ -136,6 +136,20 @@ pub struct SimError {
     pub detail: Text,
 }
 
+/// Why a touch-probe cycle's result has no value ([`SimErrorCode::is_probe_result`]): `cycle`
+/// ran before and is not simulated.
+#[must_use]
+pub fn unprobed(cycle: u32) -> Text {
+    t(
+        format!(
+            "TCH PROBE {cycle} misst nicht im Trainer: Tastsystemzyklen legen ihre Messwerte in Q150 bis Q166 und Q180 bis Q182 ab"
+        ),
+        format!(
+            "TCH PROBE {cycle} does not measure in the trainer: touch-probe cycles save their results in Q150 to Q166 and Q180 to Q182"
+        ),
+    )
+}
+
 fn t(de: impl Into<std::borrow::Cow<'static, str>>, en: impl Into<std::borrow::Cow<'static, str>>) -> Text {
     Text { de: de.into(), en: en.into() }
 }
@@ -153,6 +167,15 @@ impl SimErrorCode {
                 | SimErrorCode::ToolRadiusTooLarge { .. }
                 | SimErrorCode::ContourElementTooSmall { .. }
         )
+    }
+
+    /// Whether the stop is a touch-probe cycle's result parameter without a value: the cycles
+    /// save their measured values in Q150 to Q160, the deviations from nominal in Q161 to Q166
+    /// and the class of the result in Q180 to Q182 (iTNC 530, TNC 320 and TNC 640 cycle
+    /// manuals, "Measurement results in Q parameters").
+    #[must_use]
+    pub fn is_probe_result(&self) -> bool {
+        matches!(self, SimErrorCode::UndefinedQ { index: 150..=166 | 180..=182 })
     }
 
     /// The control's message (wordings not found in a source are marked in
@@ -228,6 +251,13 @@ impl SimErrorCode {
                 t(format!("Kollision: {}", pair.de), format!("Collision: {}", pair.en))
             }
         }
+    }
+
+    /// [`Self::detail`] with what the run assumed or left out that led to the stop, in brackets.
+    #[must_use]
+    pub fn detail_because(&self, because: &Text) -> Text {
+        let detail = self.detail();
+        t(format!("{} ({})", detail.de, because.de), format!("{} ({})", detail.en, because.en))
     }
 
     /// The detail with the numbers.

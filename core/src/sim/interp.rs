@@ -150,6 +150,8 @@ pub(crate) struct Interp {
     check: Checking,
     /// The unit of `BEGIN PGM`: lengths and feeds are converted to mm where a block uses them.
     unit: Unit,
+    /// The last touch-probe cycle run (not simulated: its results are not set).
+    probed: Option<u32>,
 }
 
 /// The contour's state between its elements: what the next `C`/`CP`, `RND`/`CHF` and the
@@ -339,6 +341,7 @@ impl Interp {
             tcpm: Tcpm::default(),
             check: Checking::default(),
             unit: Unit::Mm,
+            probed: None,
         };
         it.rebuild_bodies(machine);
         it.refresh();
@@ -346,16 +349,21 @@ impl Interp {
         it
     }
 
-    /// The tool in the spindle when the table does not have it: its length and radius are the
-    /// default tool's ([`Note::ToolNotInTable`], as its TOOL CALL said).
-    pub fn assumed_tool(&self) -> Option<Note> {
+    /// What the run assumed or left out that led to the stop `code`: the size of a tool the
+    /// table does not have (its length and radius are the default tool's, as its TOOL CALL
+    /// said: [`Note::ToolNotInTable`]), a touch-probe cycle's result never measured.
+    pub fn because(&self, code: &SimErrorCode) -> Option<crate::lang::Text> {
         let t = &self.tool;
-        (!t.known).then(|| Note::ToolNotInTable {
-            number: t.number,
-            name: t.name.clone(),
-            length: t.length,
-            radius: t.radius,
-        })
+        if code.depends_on_tool_size() && !t.known {
+            let assumed = Note::ToolNotInTable {
+                number: t.number,
+                name: t.name.clone(),
+                length: t.length,
+                radius: t.radius,
+            };
+            return Some(assumed.text());
+        }
+        self.probed.filter(|_| code.is_probe_result()).map(super::error::unprobed)
     }
 
     pub fn done(&self, program: &Program) -> bool {

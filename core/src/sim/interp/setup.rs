@@ -214,6 +214,7 @@ impl Interp {
                 at.note(|| Note::QsNotSimulated { index: *index });
             }
             BlockBody::TouchProbe(d) => {
+                self.probed = Some(d.number);
                 at.note(|| Note::TouchProbe { cycle: d.number });
             }
             _ => {}
