@@ -63,7 +63,8 @@ pub(super) fn label_or_call(body: &str) -> Step<'_, BlockBody> {
     }
     let (r, _) = kw("CALL").parse(body)?;
     let r = sp(r);
-    if let Some(r) = keyword(r, "PGM").map(sp) {
+    // `CALL PGM100`, the name run on as in `LBL1`: the same call as `CALL PGM 100`.
+    if let Some(r) = r.strip_prefix("PGM").filter(|p| !p.is_empty()).map(sp) {
         let (rest, path) = cut(whole(token)).parse(r)?;
         return Ok((rest, BlockBody::CallPgm { path: path.to_owned() }));
     }

@@ -30,11 +30,24 @@ fn is_axis(b: u8) -> bool {
     matches!(b, b'X' | b'Y' | b'Z' | b'A' | b'B' | b'C' | b'U' | b'V' | b'W')
 }
 
-/// Whether `body` (a block's text after its number) starts with an axis word (`Z0.0`, `X+Q11`,
-/// `Y-.5`): a straight line written without `L`.
+/// Whether `body` (a block's text after its number) starts with a word only a path block has:
+/// an axis word (`Z0.0`, `X+Q11`, `Y-.5`), a radius compensation (`R0`, `RL`, `RR`), a feed
+/// (`F250.`, `F MAX`, `FMAX`) or a spindle speed (`S1000`): a straight line written without `L`
+/// (`0560 R0 F MAX M99` and `0270 S1000 M3`, as an NX post for an older control writes them).
 pub(crate) fn lacks_l(body: &[u8]) -> bool {
-    body.first().copied().is_some_and(is_axis)
-        && body.get(1).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'))
+    let value_at =
+        |i: usize| body.get(i).is_some_and(|c| c.is_ascii_digit() || matches!(c, b'+' | b'-' | b'.'));
+    let word_ends = |i: usize| body.get(i).is_none_or(|&c| is_blank(c));
+    match body.first() {
+        Some(&c) if is_axis(c) => value_at(1),
+        Some(b'R') => matches!(body.get(1), Some(b'0' | b'L' | b'R')) && word_ends(2),
+        Some(b'F') => {
+            let after = body[1..].iter().take_while(|&&c| is_blank(c)).count() + 1;
+            value_at(1) || (body[after..].starts_with(b"MAX") && word_ends(after + 3))
+        }
+        Some(b'S') => body.get(1).is_some_and(u8::is_ascii_digit),
+        _ => false,
+    }
 }
 
 /// Where `IN` stands as the unit of a `BEGIN PGM`/`END PGM` block (`word`: from its first
@@ -65,8 +78,14 @@ fn first_word(line: &[u8]) -> usize {
 /// line without its `L`): the parser reads it as the spindle speed ([`Lenient::SpeedInPath`]).
 fn speed_in_path(word: &[u8]) -> Option<usize> {
     let kw = word.iter().take_while(|&&c| !is_blank(c)).count();
-    if !(matches!(&word[..kw], b"L" | b"C" | b"CR" | b"CT" | b"LP" | b"CP") || lacks_l(word)) {
-        return None;
+    if !matches!(&word[..kw], b"L" | b"C" | b"CR" | b"CT" | b"LP" | b"CP") {
+        if !lacks_l(word) {
+            return None;
+        }
+        // `S1000 M3`: a straight line without `L` whose first word is the speed.
+        if word[0] == b'S' {
+            return Some(0);
+        }
     }
     (kw + 1..word.len()).find(|&i| {
         is_blank(word[i - 1])

@@ -152,6 +152,22 @@ fn a_point_after_m_a_line_without_l_and_r0_in_dep_lt() {
     same_said("Z0.0 B0.0 C0.0 FMAX M91", "L Z+0 B+0 C+0 FMAX M91", &[no_l("Z0.0")]);
     same_said("X-.5 Y+Q11 R0 F500", "L X-0.5 Y+Q11 R0 F500", &[no_l("X-.5")]);
     same_said("C270.", "L C+270", &[no_l("C270.")]);
+    // A line that starts with another word only a path block has, as an NX post for an older
+    // control writes them.
+    same_said("R0 F MAX M99", "L R0 FMAX M99", &[no_l("R0")]);
+    same_said("RL F250.", "L RL F250", &[no_l("RL")]);
+    same_said("FMAX", "L FMAX", &[no_l("FMAX")]);
+    let (a, d) = parse("1 S1000 M3\n");
+    let speed = DiagCode::Lenient { kind: Lenient::SpeedInPath, text: "S1000".into() };
+    assert_eq!(d.iter().map(|d| d.code.clone()).collect::<Vec<_>>(), [no_l("S1000"), speed]);
+    assert_eq!(a.blocks[0].body(), parse("1 L S1000 M3\n").0.blocks[0].body());
+    // The run-on name of a program call, as `LBL1` and `TOOL DEF1`.
+    same("CALL PGM100", "CALL PGM 100");
+    // Not these: words that only start like a path word.
+    for other in ["SQL X", "RLX", "FUNCTION RESET TCPM", "FN 0: Q1 = +1"] {
+        let (_, d) = parse(&format!("1 {other}\n"));
+        assert!(!d.iter().any(|d| d.code == no_l(other.split(' ').next().unwrap_or(""))), "{other}: {d:?}");
+    }
     let r0 = DiagCode::Lenient { kind: Lenient::RadiusInDep, text: "R0".into() };
     same_said("DEP LT LEN10 R0", "DEP LT LEN10", std::slice::from_ref(&r0));
     same_said("DEP LN LEN+5 R0 F200 M9", "DEP LN LEN5 F200 M9", std::slice::from_ref(&r0));
