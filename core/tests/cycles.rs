@@ -293,18 +293,20 @@ fn error_of(src: &str) -> (u32, SimErrorCode, String) {
 }
 
 /// A stop that comes from the tool's size, with a tool the table does not have: the size was
-/// the default tool's (L=100 R=5, `static/tools.json`), and the stop says so with the numbers.
+/// the default tool's (L=100 R=5, `static/tools.json`), and the stop says so with the numbers:
+/// for a tool called by number or name, for a `TOOL DEF` that only preselects the tool (as CAM
+/// posts write it), and with no tool called at all (T0).
 #[test]
 fn a_stop_from_an_assumed_tool_size_says_the_tool_was_assumed() {
     let bore = |tool: &str| {
         format!(
-            "0 BEGIN PGM E MM\n1 TOOL CALL {tool} Z S5000 F800\n2 CYCL DEF 208 BOHRFRAESEN ~\n  Q200=+2 ~\n  Q201=-6 ~\n  Q206=+150 ~\n  Q334=+1.5 ~\n  Q203=+0 ~\n  Q204=+20 ~\n  Q335=+8 ~\n  Q342=+0 ~\n  Q351=+1\n3 L X+0 Y+0 Z+30 R0 FMAX M99\n4 END PGM E MM\n"
+            "0 BEGIN PGM E MM\n{tool}2 CYCL DEF 208 BOHRFRAESEN ~\n  Q200=+2 ~\n  Q201=-6 ~\n  Q206=+150 ~\n  Q334=+1.5 ~\n  Q203=+0 ~\n  Q204=+20 ~\n  Q335=+8 ~\n  Q342=+0 ~\n  Q351=+1\n3 L X+0 Y+0 Z+30 R0 FMAX M99\n4 END PGM E MM\n"
         )
     };
-    let (_, code, text) = error_of(&bore("99"));
+    let (_, code, text) = error_of(&bore("1 TOOL CALL 99 Z S5000 F800\n"));
     assert_eq!(code, SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 8.0 });
     assert!(text.contains("(Werkzeug 99 nicht in der Werkzeugtabelle: L=100 R=5 angenommen)"), "{text}");
-    let (p, _, sim) = run_on(&bore("\"T433219138\""), "ac-table");
+    let (p, _, sim) = run_on(&bore("1 TOOL CALL \"T433219138\" Z S5000 F800\n"), "ac-table");
     let e = sim.error.expect("an error");
     assert_eq!(p.blocks[e.block].number(), Some(3));
     assert!(
@@ -312,6 +314,17 @@ fn a_stop_from_an_assumed_tool_size_says_the_tool_was_assumed() {
         "{}",
         e.detail.en
     );
+    let (_, _, text) = error_of(&bore("1 TOOL DEF 7\n1 TOOL CALL 7 Z S5000 F800\n"));
+    assert!(text.contains("(Werkzeug 7 nicht in der Werkzeugtabelle: L=100 R=5 angenommen)"), "{text}");
+    let (_, _, text) = error_of(&bore(""));
+    assert!(
+        text.contains("(kein Werkzeug aufgerufen (T0): Standardwerkzeug L=100 R=5 angenommen)"),
+        "{text}"
+    );
+    // A TOOL DEF that gives the radius: the size is the program's, nothing assumed.
+    let (_, code, text) = error_of(&bore("1 TOOL DEF 7 L+80 R+5\n1 TOOL CALL 7 Z S5000 F800\n"));
+    assert_eq!(code, SimErrorCode::ToolTooLarge { cycle: 208, tool_diameter: 10.0, size: 8.0 });
+    assert!(!text.contains("Werkzeugtabelle") && !text.contains("angenommen"), "{text}");
     // A stop that has nothing to do with the tool's size says nothing of it.
     let (_, code, text) = error_of(&drilling("4 CYCL CALL PAT FMAX\n"));
     assert_eq!(code, SimErrorCode::NoPattern);

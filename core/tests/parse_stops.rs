@@ -50,7 +50,7 @@ fn dup(word: &str) -> DiagCode {
 fn a_hard_stop_names_its_word() {
     let missing = |word| DiagCode::MissingWord { word };
     let not_allowed = |word: &str| DiagCode::NotAllowed { word: word.to_owned() };
-    let cases: [(&str, DiagCode, &str); 14] = [
+    let cases: [(&str, DiagCode, &str); 15] = [
         ("PLANE SPATIAL SPA+0 SPB+0", missing("SPC"), ""),
         ("PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN SEQ+ SYM-", DiagCode::SeqWithSym, "SYM-"),
         ("PLANE SPATIAL SPA+0 SPB+0 SPC+0 TURN STAY", dup("STAY"), "STAY"),
@@ -65,6 +65,8 @@ fn a_hard_stop_names_its_word() {
         ("APPR LT X+1 Y+1 RL F100", missing("LEN"), ""),
         ("PATTERN DEF POS1 (Y+1)", missing("X"), "POS"),
         ("CYCL CALL POS X+1 Y+1 FMAX", missing("Z"), ""),
+        // Named by its number, however the line wrote it.
+        ("CYCL DEF 200 BOHREN ~\n  Q200=+2 ~\n  Q0200=+3", dup("Q200"), "Q0200=+3"),
     ];
     for (block, code, text) in cases {
         let (f, body) = one(block);
@@ -95,6 +97,16 @@ fn a_stop_inside_a_word_names_what_was_expected_there() {
         assert_eq!(f.expected, Some(Expected::Nc(expected)), "{block}");
         assert!(matches!(body, BlockBody::Invalid { .. }), "{block}");
     }
+}
+
+#[test]
+fn a_program_call_needs_its_name() {
+    let (f, body) = one("CALL PGM");
+    assert_eq!((f.code, f.marked.as_str(), f.expected), (DiagCode::InvalidInput, "", Some(Expected::Name)));
+    assert!(matches!(body, BlockBody::Invalid { .. }));
+    // A number run on is the name (`CALL PGM100`, as `LBL1`); letters run on are no call.
+    assert!(matches!(read("CALL PGM100").0, BlockBody::CallPgm { path } if path == "100"));
+    assert!(matches!(read("CALL PGMX").0, BlockBody::Unknown { .. }));
 }
 
 #[test]

@@ -77,10 +77,8 @@ pub(super) fn cycle_def<'a>(
         let (_, (index, value, label)) = param_line(line)?;
         let string = value.is_text();
         if out.iter().any(|p: &CycleParam| p.index == index && p.value.is_text() == string) {
-            // Named as `Q200`/`QS500`: the key and its number, up to the `=`.
             let body = super::strip_tilde(super::split_comment(line).0.trim());
-            let word = body.find(['=', ' ', '\t']).unwrap_or(body.len());
-            return duplicate(body, body.len(), Named::Written(word));
+            return duplicate(body, body.len(), Named::Param { index, string });
         }
         if k + 1 == params.len() && line.trim_end().ends_with('~') {
             let t = line.trim_end();

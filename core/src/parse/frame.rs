@@ -8,7 +8,7 @@ use nom::branch::alt;
 use nom::combinator::cut;
 
 use super::Cx;
-use super::words::{Step, choice, end_of_block, expected, invalid, keyword, kw, lex, or_expected, sp, token};
+use super::words::{Step, choice, end_of_block, expected, invalid, keyword, kw, sp, token};
 use crate::ast::{BlockBody, Unit};
 use crate::diag::{DiagCode, Expected};
 
@@ -27,7 +27,7 @@ fn unit(i: &str) -> Step<'_, Unit> {
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 pub(super) fn pgm<'a>(cx: &Cx, body: &'a str) -> Step<'a, BlockBody> {
     let (rest, begin) = choice(&[("BEGIN", true), ("END", false)], "BEGIN|END").parse(body)?;
-    let (rest, _) = cut(lex(or_expected(kw("PGM"), Expected::Nc("PGM")))).parse(rest)?;
+    let (rest, _) = cut(kw("PGM")).parse(rest)?;
     let rest = sp(rest);
     // An exporting simulator writes `BEGIN PGM  MM` and `END PGM` without the name (the control
     // writes the file's name there): read as a program without a name, said once at BEGIN PGM.

@@ -63,8 +63,12 @@ pub(super) fn label_or_call(body: &str) -> Step<'_, BlockBody> {
     }
     let (r, _) = kw("CALL").parse(body)?;
     let r = sp(r);
-    // `CALL PGM100`, the name run on as in `LBL1`: the same call as `CALL PGM 100`.
-    if let Some(r) = r.strip_prefix("PGM").filter(|p| !p.is_empty()).map(sp) {
+    // `CALL PGM100`, a number run on as in `LBL1`: the same call as `CALL PGM 100`.
+    if let Some(r) = r
+        .strip_prefix("PGM")
+        .filter(|p| at_boundary(p) || p.starts_with(|c: char| c.is_ascii_digit()))
+        .map(sp)
+    {
         let (rest, path) = cut(whole(token)).parse(r)?;
         return Ok((rest, BlockBody::CallPgm { path: path.to_owned() }));
     }
@@ -148,7 +152,7 @@ fn math(n: u32, i: &str) -> Step<'_, BlockBody> {
     let Some(op) = FnOp::of(n) else { return invalid(i, None) };
     let (r, target) = target_eq(i)?;
     if op.unary() {
-        let (rest, a) = whole(preceded(|i| must(i, op.word()), cut(lex(word_value)))).parse(r)?;
+        let (rest, a) = whole(preceded(cut(kw(op.word())), cut(lex(word_value)))).parse(r)?;
         return Ok((rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: None }))));
     }
     // `+ +90` as the control writes it; `+90` (the operand without its own sign) as older
@@ -156,19 +160,6 @@ fn math(n: u32, i: &str) -> Step<'_, BlockBody> {
     let op_word = cut(lex(or_expected(tag(op.word()), Expected::Nc(op.word()))));
     let (rest, (a, _, b)) = whole((cut(word_value), op_word, cut(lex(word_value)))).parse(r)?;
     Ok((rest, BlockBody::FnMath(Box::new(FnMath { op, target, a, b: Some(b) }))))
-}
-
-/// `word` standing alone right here.
-fn kw_here<'a>(i: &'a str, word: &'static str) -> Step<'a, ()> {
-    match keyword(i, word) {
-        Some(r) => Ok((r, ())),
-        None => expected(i, Expected::Nc(word)),
-    }
-}
-
-/// The keyword `word` after blanks, which must be there.
-fn must<'a>(i: &'a str, word: &'static str) -> Step<'a, ()> {
-    cut(lex(or_expected(|i| kw_here(i, word), Expected::Nc(word)))).parse(i)
 }
 
 /// `GOTO LBL`, which must be there.
@@ -189,9 +180,9 @@ fn jump(n: u32, i: &str) -> Step<'_, BlockBody> {
         _ => JumpIf::Lt,
     };
     let (rest, (_, a, _, b, _, label)) = whole((
-        |i| must(i, "IF"),
+        cut(kw("IF")),
         cut(lex(word_value)),
-        |i| must(i, condition.word()),
+        cut(kw(condition.word())),
         cut(lex(word_value)),
         goto,
         cut(label),

@@ -2,9 +2,9 @@
 //!   plane := PLANE def [MOVE [DIST v] [feed] | TURN [MB v|MB MAX] [feed] | STAY] [SEQ±|SYM±] [COORD ROT|TABLE ROT]
 //!   def   := SPATIAL SPA SPB SPC | PROJECTED PROPR PROMIN ROT | EULER EULPR EULNU EULROT | VECTOR BX…NZ | POINTS P1X…P3Z | RELATIV SPA|SPB|SPC | AXIAL {[I]A|B|C} | RESET
 //!
-//! `def` is one `alt` of its kinds, each `cut` once its keyword is read; the options after it
-//! come in any order, each at most once (a loop over one `alt`, which nom's `permutation`
-//! cannot say: it would take each exactly once).
+//! `def`'s keyword is one of [`PlaneKind`]'s words, and its words are `cut` once the keyword is
+//! read; the options after it come in any order, each at most once (a loop over one option
+//! word at a time, which nom's `permutation` cannot say: it would take each exactly once).
 
 use nom::Parser;
 use nom::branch::alt;
@@ -227,9 +227,7 @@ fn option<'a>(cx: &Cx, i: &'a str) -> Step<'a, Opt> {
     let Ok((r, word)) = choice(OPTION_WORDS, OPTIONS).parse(i) else {
         return or_expected(selection, Expected::Nc(OPTIONS)).parse(i).map(|(r, s)| (r, Opt::Selection(s)));
     };
-    let rot = |r, mode| {
-        cut(lex(or_expected(kw("ROT"), Expected::Nc("ROT")))).parse(r).map(|(r, _)| (r, Opt::Transform(mode)))
-    };
+    let rot = |r, mode| cut(kw("ROT")).parse(r).map(|(r, _)| (r, Opt::Transform(mode)));
     match word {
         OptWord::Move => move_words(cx, r).map(|(r, p)| (r, Opt::Positioning(p))),
         OptWord::Turn => turn_words(cx, r).map(|(r, p)| (r, Opt::Positioning(p))),

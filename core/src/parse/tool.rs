@@ -11,8 +11,8 @@ use nom::sequence::preceded;
 
 use super::Cx;
 use super::words::{
-    Named, NcError, Step, Why, axis_word, choice, def_keyword, duplicate, expected, hard, invalid, kw, lex,
-    or_expected, q_param, quoted, sp, uint, word_value,
+    Named, Step, axis_word, choice, def_keyword, duplicate, expected, hard, invalid, kw, lex, or_expected,
+    q_param, quoted, sp, uint, word_value,
 };
 use crate::ast::{Axis, BlkForm, BlockBody, ToolCall, ToolRef};
 use crate::diag::Expected;
@@ -80,15 +80,11 @@ pub(super) fn tool_def(body: &str) -> Step<'_, BlockBody> {
     i = sp(i);
     while !i.is_empty() {
         let at = i;
-        let (r, (key, v)) = alt((
+        let word = alt((
             map(preceded(tag("L"), cut(word_value)), |v| ("L", v)),
             map(preceded(tag("R"), cut(word_value)), |v| ("R", v)),
-        ))
-        .parse(i)
-        .map_err(|e| match e {
-            nom::Err::Error(_) => nom::Err::Failure(NcError { at, why: Why::Expected(Expected::Nc("L|R")) }),
-            e => e,
-        })?;
+        ));
+        let (r, (key, v)) = or_expected(word, Expected::Nc("L|R")).parse(i).map_err(hard)?;
         let slot = if key == "L" { &mut length } else { &mut radius };
         if slot.replace(v).is_some() {
             return duplicate(at, at.len() - r.len(), Named::Given(key));

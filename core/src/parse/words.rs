@@ -48,6 +48,8 @@ pub(crate) enum Named {
     Given(&'static str),
     /// The first so many bytes at the stop, as written.
     Written(usize),
+    /// A cycle's parameter by its number, `QS` for a string parameter (`Q200`, `QS500`).
+    Param { index: u32, string: bool },
 }
 
 impl NcError<'_> {
@@ -67,6 +69,9 @@ impl NcError<'_> {
             Why::Missing(word) => DiagCode::MissingWord { word },
             Why::Duplicate(Named::Given(word)) => DiagCode::Duplicate { word: word.to_owned() },
             Why::Duplicate(Named::Written(n)) => DiagCode::Duplicate { word: written(n) },
+            Why::Duplicate(Named::Param { index, string }) => {
+                DiagCode::Duplicate { word: format!("{}{index}", if string { "QS" } else { "Q" }) }
+            }
             Why::NotAllowed => DiagCode::NotAllowed { word: self.at.to_owned() },
             Why::SeqWithSym => DiagCode::SeqWithSym,
         })
@@ -338,7 +343,8 @@ pub(crate) fn word_value(i: &str) -> Step<'_, Value> {
     if at_boundary(rest) { Ok((rest, v)) } else { failure(rest, Expected::Blank) }
 }
 
-/// `FMAX`, `F MAX`, `F AUTO` or `F` value. Stops with `Expected` (not `Cut`) if no `F` is there.
+/// `FMAX`, `F MAX`, `F AUTO` or `F` value: a recoverable stop if no `F` is there, a hard one
+/// once it began.
 pub(crate) fn feed(i: &str) -> Step<'_, Feed> {
     if let Some(rest) = keyword(i, "FMAX") {
         return Ok((rest, Feed::Max));

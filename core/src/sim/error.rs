@@ -136,6 +136,15 @@ pub struct SimError {
     pub detail: Text,
 }
 
+/// Why a stop from the tool's size used the default tool's: no tool was called (T0).
+#[must_use]
+pub fn no_tool(length: f64, radius: f64) -> Text {
+    t(
+        format!("kein Werkzeug aufgerufen (T0): Standardwerkzeug L={length} R={radius} angenommen"),
+        format!("no tool called (T0): assuming the default tool L={length} R={radius}"),
+    )
+}
+
 /// Why a touch-probe cycle's result has no value ([`SimErrorCode::is_probe_result`]): `cycle`
 /// ran before and is not simulated.
 #[must_use]

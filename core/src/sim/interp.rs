@@ -350,11 +350,15 @@ impl Interp {
     }
 
     /// What the run assumed or left out that led to the stop `code`: the size of a tool the
-    /// table does not have (its length and radius are the default tool's, as its TOOL CALL
-    /// said: [`Note::ToolNotInTable`]), a touch-probe cycle's result never measured.
+    /// table does not have (the default tool's, as its TOOL CALL said:
+    /// [`Note::ToolNotInTable`]) or of no tool called (T0), a touch-probe cycle's result never
+    /// measured.
     pub fn because(&self, code: &SimErrorCode) -> Option<crate::lang::Text> {
         let t = &self.tool;
         if code.depends_on_tool_size() && !t.known {
+            if t.number == 0 && t.name.is_empty() {
+                return Some(super::error::no_tool(t.length, t.radius));
+            }
             let assumed = Note::ToolNotInTable {
                 number: t.number,
                 name: t.name.clone(),

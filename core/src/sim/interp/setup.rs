@@ -128,14 +128,15 @@ impl Interp {
     /// integer part; a tool number is ≥ 0), anything else as written. A string parameter's
     /// text is not simulated: the tool stays unknown and the block says so.
     /// The data of `tool` as a TOOL CALL loads it: the tool table's entry with the length and
-    /// radius of a `TOOL DEF` in the program over it; `false` when neither knows the tool (the
-    /// entry is then the stated default tool).
+    /// radius of a `TOOL DEF` in the program over it; `false` when neither gives the tool's
+    /// radius (it is then the stated default tool's: a `TOOL DEF 7` that only preselects the
+    /// tool, as CAM posts write it, gives none).
     pub(super) fn tool_entry(&self, cx: &Cx<'_>, tool: &ToolRef) -> (tools::ToolEntry, bool) {
         let (mut entry, mut known) = tools::lookup_in(cx.options.tool_table(), tool);
         if let Some((_, l, r)) = self.tool_defs.iter().find(|(t, ..)| t == tool) {
             entry.length = l.unwrap_or(entry.length);
             entry.radius = r.unwrap_or(entry.radius);
-            known = true;
+            known |= r.is_some();
         }
         (entry, known)
     }
