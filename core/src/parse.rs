@@ -28,231 +28,34 @@
 
 mod across;
 mod approach;
+mod cx;
 mod cycles;
 mod fast;
 mod frame;
 mod function;
 mod labels_q;
 mod lenient;
+mod lines;
 mod motion;
 mod pattern;
 mod plane;
 mod tool;
 mod transforms;
+mod typed;
 mod words;
 
 use std::borrow::Cow;
-use std::cell::RefCell;
 
-use crate::ast::{AxisWord, AxisWords, Block, BlockBody, Program, Span};
+use crate::ast::{Block, BlockBody, Program, Span};
 use crate::diag::{DiagCode, Diagnostic, Expected, Severity};
-use crate::plane::Value;
 
 pub use across::AcrossBlocks;
+pub(crate) use cx::Cx;
 pub(crate) use labels_q::tabread_targets;
 pub use lenient::Lenient;
-pub(crate) use words::{Step, Stop};
-
-/// A finding inside one block, with offsets relative to the block text being read.
-#[derive(Debug)]
-pub(crate) struct Issue {
-    start: usize,
-    end: usize,
-    severity: Severity,
-    code: DiagCode,
-    expected: Option<Expected>,
-}
-
-/// Per-block context handed to the family parsers: collects the findings that do not stop a
-/// block (a value out of range, a warning) while its grammar runs, and lends scratch buffers so
-/// that collecting axis words does not allocate per word. Shared (`&Cx`) by the nom parsers of
-/// one block, so its parts are cells.
-pub(crate) struct Cx {
-    base: usize,
-    len: usize,
-    issues: RefCell<Vec<Issue>>,
-    axes: RefCell<Vec<AxisWord>>,
-    m: RefCell<Vec<u32>>,
-}
-
-impl Cx {
-    fn new() -> Self {
-        Cx {
-            base: 0,
-            len: 0,
-            issues: RefCell::new(Vec::new()),
-            axes: RefCell::new(Vec::with_capacity(9)),
-            m: RefCell::new(Vec::with_capacity(4)),
-        }
-    }
-
-    /// Offset of `s` (a sub-slice of the block text) from the start of the block text.
-    pub(crate) fn off(&self, s: &str) -> usize {
-        (s.as_ptr() as usize).saturating_sub(self.base).min(self.len)
-    }
-
-    fn record(
-        &self,
-        start: usize,
-        len: usize,
-        severity: Severity,
-        code: DiagCode,
-        expected: Option<Expected>,
-    ) {
-        let end = (start + len).min(self.len);
-        self.issues.borrow_mut().push(Issue { start, end, severity, code, expected });
-    }
-
-    pub(crate) fn error(&self, at: &str, len: usize, code: DiagCode) {
-        self.record(self.off(at), len, Severity::Error, code, None);
-    }
-
-    pub(crate) fn warn(&self, at: &str, len: usize, code: DiagCode) {
-        self.record(self.off(at), len, Severity::Warning, code, None);
-    }
-
-    /// Records a syntax error on the word at `at` and returns `None`.
-    pub(crate) fn invalid<T>(&self, at: &str, expected: Option<Expected>) -> Option<T> {
-        let word = words::word_len(at).max(1);
-        self.record(self.off(at), word, Severity::Error, DiagCode::InvalidInput, expected);
-        None
-    }
-
-    /// The one conversion of a stop into the block's diagnostic: a coded stop says its own
-    /// (a missing word, a duplicate), any other labels the word at the stop with what was
-    /// expected there as the help.
-    pub(crate) fn fail<T>(&self, stop: Stop<'_>) -> Option<T> {
-        let e = words::stopped_at(stop);
-        match e.code() {
-            Some(code) => {
-                self.record(self.off(e.at), e.at.len(), Severity::Error, code, None);
-                None
-            }
-            None => self.invalid(e.at, e.expected()),
-        }
-    }
-
-    /// Adds an axis word to the block's collection; a hard stop if its axis is there already
-    /// (`at`: the word, `rest`: after it).
-    pub(crate) fn push_axis<'a>(&self, at: &'a str, rest: &'a str, word: AxisWord) -> Step<'a, ()> {
-        let mut axes = self.axes.borrow_mut();
-        if axes.iter().any(|a| a.axis == word.axis) {
-            return words::duplicate(at, at.len() - rest.len(), words::Named::Given(word.axis.as_str()));
-        }
-        axes.push(word);
-        Ok((rest, ()))
-    }
-
-    /// How many axis words are collected.
-    pub(crate) fn axis_count(&self) -> usize {
-        self.axes.borrow().len()
-    }
-
-    pub(crate) fn push_m(&self, m: u32) {
-        self.m.borrow_mut().push(m);
-    }
-
-    /// Empties the scratch buffers at the start of a block family that uses them.
-    pub(crate) fn clear_words(&self) {
-        self.axes.borrow_mut().clear();
-        self.m.borrow_mut().clear();
-    }
-
-    /// Takes the collected axis words as an exactly sized slice.
-    pub(crate) fn take_axes(&self) -> Box<[AxisWord]> {
-        let mut axes = self.axes.borrow_mut();
-        let b = Box::from(&axes[..]);
-        axes.clear();
-        b
-    }
-
-    /// Takes the collected axis words of a straight line.
-    pub(crate) fn take_line_axes(&self) -> AxisWords {
-        let mut axes = self.axes.borrow_mut();
-        let words = AxisWords::from(&axes[..]);
-        axes.clear();
-        words
-    }
-
-    pub(crate) fn take_m(&self) -> Box<[u32]> {
-        let mut m = self.m.borrow_mut();
-        let b = Box::from(&m[..]);
-        m.clear();
-        b
-    }
-}
-
-/// A physical line: byte range without the line break, 1-based number.
-#[derive(Debug, Clone, Copy)]
-struct PhysLine {
-    start: usize,
-    end: usize,
-    number: u32,
-}
-
-/// Splits into lines (`\n`, `\r\n` and a lone `\r` at the end of a line).
-struct Lines<'a> {
-    src: &'a str,
-    pos: usize,
-    number: u32,
-}
-
-impl Iterator for Lines<'_> {
-    type Item = PhysLine;
-
-    fn next(&mut self) -> Option<PhysLine> {
-        if self.pos >= self.src.len() {
-            return None;
-        }
-        let rest = &self.src.as_bytes()[self.pos..];
-        let (len, next) = match find_newline(rest) {
-            Some(i) => (i, self.pos + i + 1),
-            None => (rest.len(), self.src.len()),
-        };
-        let mut end = self.pos + len;
-        if end > self.pos && self.src.as_bytes()[end - 1] == b'\r' {
-            end -= 1;
-        }
-        self.number += 1;
-        let line = PhysLine { start: self.pos, end, number: self.number };
-        self.pos = next;
-        Some(line)
-    }
-}
-
-const ONES: u64 = 0x0101_0101_0101_0101;
-const HIGH: u64 = 0x8080_8080_8080_8080;
-
-/// `\n`s in `b`, eight bytes at a time (wasm32 has no vectorised byte loop).
-fn count_newlines(b: &[u8]) -> usize {
-    let mut chunks = b.chunks_exact(8);
-    let mut n = 0;
-    for chunk in &mut chunks {
-        let word = u64::from_le_bytes(chunk.try_into().unwrap_or_default()) ^ (ONES * u64::from(b'\n'));
-        // Exactly the high bit of each zero byte (no carries between bytes).
-        let low7 = !HIGH;
-        n += (!(((word & low7) + low7) | word | low7)).count_ones() as usize;
-    }
-    n + chunks.remainder().iter().filter(|&&c| c == b'\n').count()
-}
-
-/// Index of the first `\n`, eight bytes at a time: the parser's fast path spends a quarter of its
-/// time finding line ends byte by byte otherwise.
-fn find_newline(b: &[u8]) -> Option<usize> {
-    let mut chunks = b.chunks_exact(8);
-    let mut at = 0;
-    for chunk in &mut chunks {
-        let word = u64::from_le_bytes(chunk.try_into().unwrap_or_default()) ^ (ONES * u64::from(b'\n'));
-        // The lowest high bit set marks the first zero byte, i.e. the first `\n` (a borrow only
-        // carries upwards, so the false hits are above a true one).
-        let zero = word.wrapping_sub(ONES) & !word & HIGH;
-        if zero != 0 {
-            return Some(at + (zero.trailing_zeros() / 8) as usize);
-        }
-        at += 8;
-    }
-    chunks.remainder().iter().position(|&c| c == b'\n').map(|i| at + i)
-}
+use lines::{Lines, PhysLine, count_newlines};
+pub use typed::{PlaneTextError, parse_value, plane_block};
+pub(crate) use words::Step;
 
 /// Splits `text` at the first `;` outside double quotes: (body, comment). The program pane's
 /// colours split there too.
@@ -673,70 +476,5 @@ pub(crate) fn unknown(cx: &Cx, body: &str) -> Option<BlockBody> {
         Some(BlockBody::Unknown { text: body.trim_end().to_owned() })
     } else {
         cx.invalid(body, None)
-    }
-}
-
-/// A whole string as one value (`15`, `-7.5`, `.5`, `+Q27`), as typed into a dialog field;
-/// `None` if it is anything else. Uses the parser's own number rules.
-#[must_use]
-pub fn parse_value(text: &str) -> Option<Value> {
-    match words::value(text) {
-        Ok(("", v)) => Some(v),
-        _ => None,
-    }
-}
-
-/// Why a text is not one PLANE block (see [`plane_block`]).
-#[derive(Debug, Clone, PartialEq)]
-pub enum PlaneTextError {
-    /// The first error the parser found in the text.
-    Invalid(Box<Diagnostic>),
-    /// No PLANE block in the text.
-    NoPlane,
-    /// More than one PLANE block.
-    SeveralPlanes,
-}
-
-impl PlaneTextError {
-    /// The message in `lang`.
-    #[must_use]
-    pub fn message(&self, lang: crate::Lang) -> String {
-        match self {
-            PlaneTextError::Invalid(d) => d.message(lang),
-            PlaneTextError::NoPlane => lang
-                .t(
-                    "Kein PLANE-Satz erkannt (er beginnt mit PLANE)",
-                    "No PLANE block found (it starts with PLANE)",
-                )
-                .to_owned(),
-            PlaneTextError::SeveralPlanes => lang
-                .t(
-                    "Mehr als ein PLANE-Satz: bitte genau einen",
-                    "More than one PLANE block: please exactly one",
-                )
-                .to_owned(),
-        }
-    }
-}
-
-/// The one PLANE block of `text` (a typed answer, a command-line argument, one line of a
-/// program): the first parse error, or no PLANE block, or more than one, is an error. Other
-/// blocks around it are allowed.
-///
-/// # Errors
-/// See [`PlaneTextError`].
-pub fn plane_block(text: &str) -> Result<crate::plane::PlaneBlock, PlaneTextError> {
-    let (program, diags) = parse(text);
-    if let Some(d) = diags.into_iter().find(Diagnostic::is_error) {
-        return Err(PlaneTextError::Invalid(Box::new(d)));
-    }
-    let mut planes = program.blocks.into_iter().filter_map(|b| match b.into_body() {
-        BlockBody::Plane(p) => Some(p),
-        _ => None,
-    });
-    match (planes.next(), planes.next()) {
-        (Some(p), None) => Ok(*p),
-        (None, _) => Err(PlaneTextError::NoPlane),
-        (Some(_), Some(_)) => Err(PlaneTextError::SeveralPlanes),
     }
 }

@@ -102,7 +102,7 @@ pub(crate) fn expected<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
 
 /// A hard stop (no alternative can help) at `at`.
 pub(crate) fn failure<'a, T>(at: &'a str, what: Expected) -> Step<'a, T> {
-    Err(nom::Err::Failure(NcError { at, why: Why::Expected(what) }))
+    invalid(at, Some(what))
 }
 
 /// A hard stop on the word at `at`, naming what was expected there if it can.
